@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The test command: installs what is missing, builds what is stale, and runs every CTest label but
+# `slow` twice: in the normal build (build/) and in the ASan+UBSan build (build-asan/).
+# Set GMR_SKIP_ASAN=1 to skip the sanitizer pass locally (CI never sets it).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+"$root/tools/setup.sh"
+jobs="$(nproc)"
+run() {  # run <build dir> <extra cmake args...>
+  local build="$1"; shift
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  cmake --build "$build" -j"$jobs"
+  (cd "$build" && ctest -LE slow -j"$jobs" --output-on-failure --timeout 900)
+}
+echo "== gmr tests: release build =="
+run "$root/build"
+if [ "${GMR_SKIP_ASAN:-0}" != 1 ]; then
+  echo "== gmr tests: ASan+UBSan build =="
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  run "$root/build-asan" -DGMR_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
+fi
+echo "== gmr tests: all passed =="
