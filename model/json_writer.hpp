@@ -1,0 +1,14 @@
+// Layout of the JSON text written by gmr (all gmr.* files): members keep their insertion order
+// (nlohmann::ordered_json, so that "format" and "version" come first, SPEC "Files and formats"),
+// objects and arrays are broken over indented lines, except that arrays of scalars (dart arrays of
+// any length) and values whose compact form fits in 100 characters stay on one line.
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace gmr {
+
+std::string dump_json(const nlohmann::ordered_json& value);
+
+}  // namespace gmr
