@@ -1,0 +1,575 @@
+#include "checker/scheme_checker.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <set>
+
+namespace gmr {
+
+const char* to_string(SchemeSeverity s) {
+  switch (s) {
+    case SchemeSeverity::Error: return "error";
+    case SchemeSeverity::Warning: return "warning";
+    case SchemeSeverity::Note: return "note";
+  }
+  return "?";
+}
+
+bool SchemeCheckReport::ok() const { return errors() == 0; }
+size_t SchemeCheckReport::errors() const {
+  return std::count_if(diagnostics.begin(), diagnostics.end(),
+                       [](const auto& d) { return d.severity == SchemeSeverity::Error; });
+}
+size_t SchemeCheckReport::warnings() const {
+  return std::count_if(diagnostics.begin(), diagnostics.end(),
+                       [](const auto& d) { return d.severity == SchemeSeverity::Warning; });
+}
+size_t SchemeCheckReport::count(const std::string& code) const {
+  return std::count_if(diagnostics.begin(), diagnostics.end(), [&](const auto& d) { return d.code == code; });
+}
+bool SchemeCheckReport::holds(const std::string& c) const {
+  for (const auto& [name, ok] : conditions)
+    if (name == c) return ok;
+  return false;
+}
+
+std::vector<int> gmap_word_normal_form(std::vector<int> w) {
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    for (size_t k = 0; k + 1 < w.size(); ++k) {
+      if (w[k] == w[k + 1]) {
+        w.erase(w.begin() + static_cast<long>(k), w.begin() + static_cast<long>(k) + 2);
+        changed = true;
+        break;
+      }
+      if (w[k] >= w[k + 1] + 2) {
+        std::swap(w[k], w[k + 1]);
+        changed = true;
+        break;
+      }
+    }
+  }
+  return w;
+}
+
+namespace {
+
+std::string word_str(const std::vector<int>& w) {
+  if (w.empty()) return "ε";
+  std::string s;
+  for (int x : w) s += std::to_string(x);
+  return s;
+}
+
+// The (i,j)-core of one side: per node and label, the out-arc (target, W-letter or -1 for ε).
+struct CoreArc {
+  bool exists = false;
+  uint32_t target = 0;
+  int letter = -1;
+};
+
+class Checker {
+ public:
+  Checker(const RuleScheme& s, const SchemeCheckOptions& opt) : s_(s), opt_(opt) { rep_.rule = s.name; }
+
+  SchemeCheckReport run() {
+    const bool structure_ok = structure();
+    rep_.conditions.emplace_back("structure", structure_ok);
+    rep_.conditions.emplace_back("hooks", hooks());
+    if (!structure_ok) return std::move(rep_);
+    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back("I(" + std::to_string(d) + ")", incident(d));
+    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back("O(" + std::to_string(d) + ")", true);
+    for (int i = 0; i <= s_.dimension; ++i)
+      for (int j = i + 2; j <= s_.dimension; ++j)
+        rep_.conditions.emplace_back("C(" + std::to_string(i) + "," + std::to_string(j) + ")", cycle(i, j));
+    if (!s_.precondition.empty())
+      add("S-precondition", SchemeSeverity::Warning, "structure", "", {},
+          "the Jerboa precondition is not evaluated; the verdict is about the topology only");
+    for (uint32_t v = 0; v < s_.left.size(); ++v)
+      if (!s_.right_of(v) && !s_.left.nodes[v].expressions.empty())
+        add("S-left-expression", SchemeSeverity::Warning, "structure", "L", {s_.left.nodes[v].name},
+            "embedding expression on a deleted node (ignored)");
+    return std::move(rep_);
+  }
+
+ private:
+  SchemeDiagnostic& add(std::string code, SchemeSeverity sev, std::string cond, std::string side,
+                        std::vector<std::string> nodes, std::string msg) {
+    SchemeDiagnostic d;
+    d.code = std::move(code);
+    d.severity = sev;
+    d.condition = std::move(cond);
+    d.side = std::move(side);
+    d.nodes = std::move(nodes);
+    d.message = std::move(msg);
+    rep_.diagnostics.push_back(std::move(d));
+    return rep_.diagnostics.back();
+  }
+  const GraphScheme& side(bool right) const { return right ? s_.right : s_.left; }
+  static const char* tag(bool right) { return right ? "R" : "L"; }
+
+  // ---------------------------------------------------------------------------------------------
+  bool structure() {
+    bool ok = true;
+    const int n = s_.dimension;
+    std::set<int> seen;
+    bool orbit_ok = true;
+    for (int x : s_.orbit.dims())
+      if (x == OrbitType::kHole || x < 0 || x > n || !seen.insert(x).second) orbit_ok = false;
+    if (!orbit_ok) {
+      add("S-orbit", SchemeSeverity::Error, "structure", "", {},
+          "the rule's orbit type " + s_.orbit.str() + " must list distinct dimensions of 0.." + std::to_string(n) +
+              " without `_`");
+      ok = false;
+    }
+    for (bool r : {false, true}) {
+      const GraphScheme& g = side(r);
+      std::map<std::string, int> names;
+      for (uint32_t v = 0; v < g.size(); ++v) {
+        const SchemeNode& nd = g.nodes[v];
+        if (++names[nd.name] == 2) {
+          add("S-duplicate-name", SchemeSeverity::Error, "structure", tag(r), {nd.name},
+              "two nodes named " + nd.name + " in " + tag(r));
+          ok = false;
+        }
+        if (nd.label.size() != s_.orbit.size()) {
+          add("S-label-arity", SchemeSeverity::Error, "structure", tag(r), {nd.name},
+              "label " + nd.label.str() + " has arity " + std::to_string(nd.label.size()) + ", the orbit type " +
+                  s_.orbit.str() + " has " + std::to_string(s_.orbit.size()));
+          ok = false;
+        }
+        for (int x : nd.label.dims())
+          if (x != OrbitType::kHole && (x < 0 || x > n)) {
+            add("S-dim-range", SchemeSeverity::Error, "structure", tag(r), {nd.name},
+                "label " + nd.label.str() + " uses dimension " + std::to_string(x) + " outside 0.." +
+                    std::to_string(n));
+            ok = false;
+          }
+      }
+      for (const auto& e : g.arcs) {
+        if (e.a >= g.size() || e.b >= g.size()) {
+          add("S-dim-range", SchemeSeverity::Error, "structure", tag(r), {}, "arc end out of range");
+          ok = false;
+          continue;
+        }
+        if (e.dim < 0 || e.dim > n) {
+          auto& d = add("S-dim-range", SchemeSeverity::Error, "structure", tag(r),
+                        {g.nodes[e.a].name, g.nodes[e.b].name},
+                        "arc dimension " + std::to_string(e.dim) + " outside 0.." + std::to_string(n));
+          d.arc = arc_text(g, e);
+          ok = false;
+        }
+      }
+      if (!ok) continue;
+      for (uint32_t v = 0; v < g.size(); ++v)
+        for (int d = 0; d <= n; ++d) {
+          const size_t c = g.count_arcs(v, d);
+          if (c > 1) {
+            add("S-dim-twice", SchemeSeverity::Error, "structure", tag(r), {g.nodes[v].name},
+                "dimension " + std::to_string(d) + " is used " + std::to_string(c) + " times at " +
+                    node_label_text(g.nodes[v]) + " (label positions and explicit arcs)" +
+                    (r ? "" : ": no match into a G-map exists (E1)"));
+            ok = false;
+          }
+        }
+    }
+    return ok;
+  }
+
+  static std::string arc_text(const GraphScheme& g, const SchemeArc& e) {
+    return g.nodes[e.a].name + " -" + std::to_string(e.dim) + "- " + g.nodes[e.b].name;
+  }
+
+  bool hooks() {
+    bool ok = true;
+    std::vector<uint32_t> comp;
+    const size_t k = s_.left.components(comp);
+    std::vector<std::vector<std::string>> hooks_of(k);
+    for (size_t h = 0; h < s_.hooks.size(); ++h) {
+      auto v = s_.left.find(s_.hooks[h]);
+      if (!v) {
+        add("S-no-hook", SchemeSeverity::Error, "hooks", "L", {s_.hooks[h]}, "hook " + s_.hooks[h] + " is not an L node");
+        ok = false;
+        continue;
+      }
+      hooks_of[comp[*v]].push_back(s_.hooks[h]);
+      const OrbitType& lab = s_.left.nodes[*v].label;
+      if (lab.has_hole()) {
+        add("S-hook-hole", SchemeSeverity::Error, "hooks", "L", {s_.hooks[h]},
+            "hook " + node_label_text(s_.left.nodes[*v]) + " has `_` in its label");
+        ok = false;
+      } else if (h == 0 && lab != s_.orbit) {
+        add("S-hook-orbit", SchemeSeverity::Error, "hooks", "L", {s_.hooks[h]},
+            "the reference hook's label " + lab.str() + " differs from the rule's orbit type " + s_.orbit.str());
+        ok = false;
+      }
+    }
+    for (size_t c = 0; c < k; ++c) {
+      std::vector<std::string> members;
+      for (uint32_t v = 0; v < s_.left.size(); ++v)
+        if (comp[v] == c) members.push_back(s_.left.nodes[v].name);
+      if (hooks_of[c].empty()) {
+        add("S-no-hook", SchemeSeverity::Error, "hooks", "L", members,
+            "connected component {" + join(members) + "} of L has no hook");
+        ok = false;
+      } else if (hooks_of[c].size() > 1) {
+        add("S-several-hooks", SchemeSeverity::Error, "hooks", "L", hooks_of[c],
+            "connected component {" + join(members) + "} of L has " + std::to_string(hooks_of[c].size()) +
+                " hooks (" + join(hooks_of[c]) + ")");
+        ok = false;
+      }
+    }
+    return ok;
+  }
+
+  static std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (size_t k = 0; k < v.size(); ++k) s += (k ? ", " : "") + v[k];
+    return s;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  bool incident(int d) {
+    bool ok = true;
+    const std::string cond = "I(" + std::to_string(d) + ")";
+    const std::string ds = std::to_string(d);
+    for (uint32_t v = 0; v < s_.left.size(); ++v) {
+      const size_t cl = s_.left.count_arcs(v, d);
+      const std::string& nm = s_.left.nodes[v].name;
+      if (cl > 1) {
+        ok = false;  // reported as S-dim-twice
+        continue;
+      }
+      if (auto r = s_.right_of(v)) {
+        const size_t cr = s_.right.count_arcs(*r, d);
+        if (cr > 1) {
+          ok = false;
+          continue;
+        }
+        if (cr != cl) {
+          add("I-preserved-node", SchemeSeverity::Error, cond, cl ? "R" : "L", {nm},
+              "preserved node " + nm + (cl ? " has a " + ds + "-arc in L but none in R"
+                                           : " gains a " + ds + "-arc in R it does not have in L") +
+                  " (E2): its instances would have " + (cl ? "no " : "two ") + ds + "-links");
+          ok = false;
+        }
+      } else if (cl != 1) {
+        add("I-deleted-node", SchemeSeverity::Error, cond, "L", {nm},
+            "deleted node " + nm + " has no " + ds + "-arc in L (E3, gluing condition): the links of its darts "
+            "outside the match would dangle, so the rule never applies");
+        ok = false;
+      }
+    }
+    for (uint32_t v = 0; v < s_.right.size(); ++v) {
+      if (s_.left_of(v)) continue;
+      const size_t cr = s_.right.count_arcs(v, d);
+      if (cr == 0) {
+        add("I-added-node", SchemeSeverity::Error, cond, "R", {s_.right.nodes[v].name},
+            "added node " + s_.right.nodes[v].name + " has no " + ds + "-arc in R (E4)");
+        ok = false;
+      } else if (cr > 1) {
+        ok = false;  // S-dim-twice
+      }
+    }
+    return ok;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // (i,j)-core of a side.
+  std::vector<std::array<CoreArc, 2>> core(bool r, int i, int j) const {
+    const GraphScheme& g = side(r);
+    std::vector<std::array<CoreArc, 2>> out(g.size());
+    const int lab[2] = {i, j};
+    for (uint32_t v = 0; v < g.size(); ++v)
+      for (int k = 0; k < 2; ++k) {
+        for (size_t p = 0; p < g.nodes[v].label.size(); ++p)
+          if (g.nodes[v].label[p] == lab[k]) out[v][k] = CoreArc{true, v, s_.orbit[p]};
+        for (const auto& e : g.arcs)
+          if (e.dim == lab[k] && (e.a == v || e.b == v)) out[v][k] = CoreArc{true, e.a == v ? e.b : e.a, -1};
+      }
+    return out;
+  }
+
+  struct SideData {
+    std::vector<std::array<CoreArc, 2>> core;
+    std::vector<std::array<bool, 2>> changed;   // out-arc deleted (L) / added (R)
+    std::vector<std::array<bool, 2>> on_cycle;  // on an alternating cycle of length 2 or 4
+    std::vector<std::array<bool, 2>> on_path;   // on an optimal path
+    struct Path {
+      std::vector<std::pair<uint32_t, int>> arcs;  // (source node, label index)
+      uint32_t src, tgt;
+      std::vector<int> labels, word;
+    };
+    std::vector<Path> paths;
+  };
+
+  bool same_arc(const CoreArc& a, const std::string& tgt_name, const CoreArc& b, bool b_right) const {
+    return a.exists && b.exists && a.letter == b.letter && side(b_right).nodes[b.target].name == tgt_name;
+  }
+
+  bool cycle(int i, int j) {
+    const std::string cond = "C(" + std::to_string(i) + "," + std::to_string(j) + ")";
+    for (bool r : {false, true})
+      for (uint32_t v = 0; v < side(r).size(); ++v)
+        if (side(r).count_arcs(v, i) > 1 || side(r).count_arcs(v, j) > 1) {
+          add("C-skipped", SchemeSeverity::Note, cond, tag(r), {side(r).nodes[v].name},
+              cond + " not evaluated: a node has two " + std::to_string(i) + "- or " + std::to_string(j) + "-arcs");
+          return false;
+        }
+    const int lab[2] = {i, j};
+    SideData sd[2];
+    for (int r = 0; r < 2; ++r) sd[r].core = core(r == 1, i, j);
+    // Status of each out-arc.
+    for (int r = 0; r < 2; ++r) {
+      const GraphScheme& g = side(r == 1);
+      sd[r].changed.assign(g.size(), {false, false});
+      sd[r].on_cycle.assign(g.size(), {false, false});
+      sd[r].on_path.assign(g.size(), {false, false});
+      for (uint32_t v = 0; v < g.size(); ++v) {
+        auto other = r == 0 ? s_.right_of(v) : s_.left_of(v);
+        for (int k = 0; k < 2; ++k) {
+          const CoreArc& a = sd[r].core[v][k];
+          if (!a.exists) continue;
+          const bool preserved = other && same_arc(sd[1 - r].core[*other][k], g.nodes[a.target].name, a, r == 1);
+          sd[r].changed[v][k] = !preserved;
+        }
+      }
+    }
+    bool ok = true;
+    std::set<std::string> reported;
+    // Alternating cycles: E10, E11.
+    for (int r = 0; r < 2; ++r) {
+      const GraphScheme& g = side(r == 1);
+      const auto& c = sd[r].core;
+      for (uint32_t v = 0; v < g.size(); ++v)
+        for (int k0 = 0; k0 < 2; ++k0) {
+          // Walk alternately from v, first label k0, until return at an even step or dead end.
+          uint32_t x = v;
+          int k = k0;
+          size_t steps = 0;
+          bool closed = false;
+          const size_t limit = 2 * g.size() + 4;
+          std::vector<uint32_t> nodes{v};
+          while (steps < limit) {
+            if (!c[x][k].exists) break;
+            x = c[x][k].target;
+            k = 1 - k;
+            ++steps;
+            if (x == v && steps % 2 == 0) {
+              closed = true;
+              break;
+            }
+            nodes.push_back(x);
+          }
+          if (!closed) continue;
+          std::vector<std::string> names;
+          for (uint32_t y : nodes) names.push_back(g.nodes[y].name);
+          if (steps != 2 && steps != 4) {
+            std::vector<std::string> key = names;
+            std::sort(key.begin(), key.end());
+            if (reported.insert("len" + std::to_string(r) + join(key)).second) {
+              auto& d = add("C-cycle-length", SchemeSeverity::Error, cond, tag(r == 1), names,
+                            "alternating (" + std::to_string(i) + "," + std::to_string(j) + ")-cycle of length " +
+                                std::to_string(steps) + " through " + join(names) +
+                                " (E10): its instances cannot be ijij-cycles");
+              d.path = names;
+            }
+            ok = false;
+            continue;
+          }
+          // The full ijij traversal (length-2 cycles twice), marking arcs and reading the word.
+          std::vector<int> word;
+          x = v;
+          k = k0;
+          for (int t = 0; t < 4; ++t) {
+            sd[r].on_cycle[x][k] = true;
+            if (c[x][k].letter >= 0) word.push_back(c[x][k].letter);
+            x = c[x][k].target;
+            k = 1 - k;
+          }
+          if (!gmap_word_normal_form(word).empty()) {
+            std::vector<std::string> key = names;
+            std::sort(key.begin(), key.end());
+            if (reported.insert("word" + std::to_string(r) + join(key)).second) {
+              auto& d = add("C-cycle-word", SchemeSeverity::Error, cond, tag(r == 1), names,
+                            "the (" + std::to_string(lab[k0]) + "," + std::to_string(lab[1 - k0]) +
+                                ")-cycle through " + join(names) + " reads the word " + word_str(word) +
+                                ", whose normal form " + word_str(gmap_word_normal_form(word)) +
+                                " is not ε (E11): its instances do not close");
+              d.path = names;
+            }
+            ok = false;
+          }
+        }
+    }
+    // Optimal paths: maximal alternating chains of changed arcs, not overlapping, not on cycles.
+    for (int r = 0; r < 2; ++r) {
+      const auto& c = sd[r].core;
+      const auto& ch = sd[r].changed;
+      const size_t nv = c.size();
+      auto has_pred = [&](uint32_t v, int k) {
+        // in-arc of v with the other label = reverse of the out-arc (v, 1-k)
+        const CoreArc& o = c[v][1 - k];
+        if (!o.exists) return false;
+        const uint32_t u = o.target;
+        return c[u][1 - k].exists && c[u][1 - k].target == v && ch[u][1 - k];
+      };
+      for (uint32_t v = 0; v < nv; ++v)
+        for (int k = 0; k < 2; ++k) {
+          if (!c[v][k].exists || !ch[v][k] || has_pred(v, k)) continue;
+          SideData::Path p;
+          p.src = v;
+          std::set<std::pair<uint32_t, int>> used;
+          uint32_t x = v;
+          int kk = k;
+          while (c[x][kk].exists && ch[x][kk] && !used.count({x, kk})) {
+            used.insert({x, kk});
+            p.arcs.push_back({x, kk});
+            p.labels.push_back(lab[kk]);
+            if (c[x][kk].letter >= 0) p.word.push_back(c[x][kk].letter);
+            x = c[x][kk].target;
+            kk = 1 - kk;
+          }
+          p.tgt = x;
+          bool all_on_cycles = true;
+          for (auto [y, l] : p.arcs) all_on_cycles = all_on_cycles && sd[r].on_cycle[y][l];
+          if (all_on_cycles) continue;
+          for (auto [y, l] : p.arcs) sd[r].on_path[y][l] = true;
+          sd[r].paths.push_back(std::move(p));
+        }
+    }
+    // Strong coherence (E8, E9).
+    for (int r = 0; r < 2; ++r) {
+      const GraphScheme& g = side(r == 1);
+      const GraphScheme& h = side(r == 0);
+      for (const auto& p : sd[r].paths) {
+        std::vector<const SideData::Path*> partners;
+        for (const auto& q : sd[1 - r].paths)
+          if (h.nodes[q.src].name == g.nodes[p.src].name && h.nodes[q.tgt].name == g.nodes[p.tgt].name &&
+              q.labels == p.labels)
+            partners.push_back(&q);
+        std::vector<std::string> names{g.nodes[p.src].name};
+        for (size_t t = 0; t < p.arcs.size(); ++t) names.push_back(g.nodes[c_target(sd[r], p.arcs[t])].name);
+        std::string lw;
+        for (int l : p.labels) lw += std::to_string(l);
+        const std::string what = "the (" + std::to_string(i) + "," + std::to_string(j) + ")-optimal path " +
+                                 join(names) + " of " + tag(r == 1) + " (labels " + lw + ")";
+        if (partners.size() != 1) {
+          auto& d = add(partners.empty() ? "C-incoherent" : "C-ambiguous", SchemeSeverity::Error, cond, tag(r == 1),
+                        {g.nodes[p.src].name, g.nodes[p.tgt].name},
+                        what + (partners.empty() ? " has no coherent optimal path in " + std::string(tag(r == 0))
+                                                 : " has " + std::to_string(partners.size()) +
+                                                       " coherent optimal paths in " + tag(r == 0)) +
+                            " (E8): some instance of an ijij-cycle through it is broken");
+          d.path = names;
+          ok = false;
+        } else if (gmap_word_normal_form(p.word) != gmap_word_normal_form(partners[0]->word)) {
+          auto& d = add("C-word", SchemeSeverity::Error, cond, tag(r == 1), {g.nodes[p.src].name, g.nodes[p.tgt].name},
+                        what + " reads the word " + word_str(p.word) + ", its partner " + word_str(partners[0]->word) +
+                            ": not congruent (E9), the instances end at different darts");
+          d.path = names;
+          ok = false;
+        }
+      }
+    }
+    // Sub-conditions 2 and 3 of Def. 40 (E12, E13).
+    for (uint32_t v = 0; v < s_.right.size(); ++v) {
+      auto l = s_.left_of(v);
+      for (int k = 0; k < 2; ++k) {
+        bool concerned;
+        if (l) {
+          const CoreArc& la = sd[0].core[*l][k];
+          concerned = la.exists && (opt_.algorithm3_strict || sd[0].changed[*l][k]);
+        } else {
+          concerned = true;
+        }
+        if (!concerned) continue;
+        const CoreArc& ra = sd[1].core[v][k];
+        if (ra.exists && (sd[1].on_cycle[v][k] || sd[1].on_path[v][k])) continue;
+        const std::string& nm = s_.right.nodes[v].name;
+        const std::string ds = std::to_string(lab[k]);
+        std::string msg;
+        if (!ra.exists)
+          msg = "has no " + ds + "-arc in R";
+        else
+          msg = "gets in R a " + ds + "-arc (to " + s_.right.nodes[ra.target].name +
+                ") that is neither on an alternating (" + std::to_string(i) + "," + std::to_string(j) +
+                ")-cycle nor on an optimal path";
+        if (l)
+          add("C-preserved-node", SchemeSeverity::Error, cond, "R", {nm},
+              "preserved node " + nm + (opt_.algorithm3_strict ? " with a " : " with a deleted ") + ds +
+                  "-arc in L " + msg + (opt_.algorithm3_strict ? " (E12, Algorithm 3)" : " (E12, Def. 40.2)"));
+        else
+          add("C-added-node", SchemeSeverity::Error, cond, "R", {nm}, "added node " + nm + " " + msg + " (E13)");
+        ok = false;
+      }
+    }
+    return ok;
+  }
+
+  static uint32_t c_target(const SideData& sd, std::pair<uint32_t, int> a) { return sd.core[a.first][a.second].target; }
+
+  const RuleScheme& s_;
+  SchemeCheckOptions opt_;
+  SchemeCheckReport rep_;
+};
+
+}  // namespace
+
+SchemeCheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt) { return Checker(s, opt).run(); }
+
+static std::string join_names(const std::vector<std::string>& v) {
+  std::string s;
+  for (size_t k = 0; k < v.size(); ++k) s += (k ? "," : "") + v[k];
+  return s;
+}
+
+std::string to_text(const SchemeDiagnostic& d) {
+  std::string s = std::string(to_string(d.severity)) + " " + d.code + " [" + d.condition + "]";
+  if (!d.side.empty()) s += " " + d.side;
+  if (!d.nodes.empty()) s += " " + join_names(d.nodes);
+  if (!d.arc.empty()) s += " arc " + d.arc;
+  return s + ": " + d.message;
+}
+
+std::string to_text(const SchemeCheckReport& r) {
+  std::string s = "rule " + (r.rule.empty() ? std::string("(unnamed)") : r.rule) + ": " +
+                  (r.ok() ? "accepted" : "rejected") + " (" + std::to_string(r.errors()) + " error(s), " +
+                  std::to_string(r.warnings()) + " warning(s))\n";
+  s += "  conditions:";
+  for (const auto& [c, ok] : r.conditions) s += " " + c + (ok ? "=ok" : "=FAIL");
+  s += "\n";
+  for (const auto& d : r.diagnostics) s += "  " + to_text(d) + "\n";
+  return s;
+}
+
+nlohmann::ordered_json to_json(const SchemeDiagnostic& d) {
+  nlohmann::ordered_json j;
+  j["code"] = d.code;
+  j["severity"] = to_string(d.severity);
+  j["condition"] = d.condition;
+  if (!d.side.empty()) j["side"] = d.side;
+  if (!d.nodes.empty()) j["nodes"] = d.nodes;
+  if (!d.arc.empty()) j["arc"] = d.arc;
+  if (!d.path.empty()) j["path"] = d.path;
+  j["message"] = d.message;
+  return j;
+}
+
+nlohmann::ordered_json to_json(const SchemeCheckReport& r) {
+  nlohmann::ordered_json j;
+  j["rule"] = r.rule;
+  j["verdict"] = r.ok() ? "accepted" : "rejected";
+  j["errors"] = r.errors();
+  j["warnings"] = r.warnings();
+  nlohmann::ordered_json c = nlohmann::ordered_json::object();
+  for (const auto& [name, ok] : r.conditions) c[name] = ok;
+  j["conditions"] = c;
+  j["diagnostics"] = nlohmann::ordered_json::array();
+  for (const auto& d : r.diagnostics) j["diagnostics"].push_back(to_json(d));
+  return j;
+}
+
+}  // namespace gmr
