@@ -1,0 +1,291 @@
+// Cycle condition C_r(i,j): ij-completion (Assumption 5), optimal paths (Def. 38), coherence
+// (Def. 39) and the condition itself (Def. 40). Readings: rule_check.hpp.
+#include <functional>
+#include <set>
+
+#include "checker/rule_check.hpp"
+#include "model/error.hpp"
+#include "model/match.hpp"
+
+namespace gmr {
+
+namespace {
+
+bool has_arc(const DGraph& g, Node s, Node t, int l) {
+  for (ArcId a : g.out_arcs(s))
+    if (g.arc(a).tgt == t && g.arc(a).label == l) return true;
+  return false;
+}
+
+bool has_out(const DGraph& g, Node s, int l) { return !g.successors(s, l).empty(); }
+bool has_in(const DGraph& g, Node t, int l) { return !g.predecessors(t, l).empty(); }
+
+std::string lbl(int l) { return std::to_string(l); }
+
+bool combinatorial_on(const DGraph& g, int i, int j) {
+  for (Node v = 0; v < g.num_nodes(); ++v)
+    for (int l : {i, j})
+      if (g.successors(v, l).size() > 1 || g.predecessors(v, l).size() > 1) return false;
+  return true;
+}
+
+std::vector<std::string> path_names(const DGraph& g, const OptimalPath& p) {
+  std::vector<std::string> s{g.name(p.source)};
+  for (ArcId a : p.arcs) s.push_back(g.name(g.arc(a).tgt));
+  return s;
+}
+
+std::string word_str(const std::vector<int>& w) {
+  std::string s;
+  for (int l : w) s += (s.empty() ? "" : ".") + std::to_string(l);
+  return s;
+}
+
+}  // namespace
+
+Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
+  DGraph L = r.left(), R = r.right();
+  std::set<std::string> seen;
+  auto note = [&](const std::string& code, const std::string& msg, std::vector<std::string> path, const char* side) {
+    if (!notes || !seen.insert(code + msg).second) return;
+    notes->push_back({code, "C", i, j, Severity::Note, msg, {}, {}, std::move(path), side});
+  };
+  auto name_of_r = [&](Node l) { return R.find(L.name(l)); };
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    for (auto [a, b] : {std::pair{i, j}, std::pair{j, i}}) {
+      for (ArcId e1 = 0; e1 < L.num_arc_slots() && !changed; ++e1) {
+        if (!L.arc_alive(e1) || L.arc(e1).label != a) continue;
+        const Node u0 = L.arc(e1).src, u1 = L.arc(e1).tgt;
+        for (Node u2 : L.successors(u1, b)) {
+          for (Node u3 : L.successors(u2, a)) {
+            if (has_arc(L, u3, u0, b)) continue;
+            std::vector<std::string> path{L.name(u0), L.name(u1), L.name(u2), L.name(u3)};
+            const std::string w = lbl(a) + lbl(b) + lbl(a);
+            if (has_out(L, u3, b) || has_in(L, u0, b)) {
+              note("C-completion-conflict",
+                   "the " + w + "-path cannot be closed by a " + lbl(b) + "-arc " + L.name(u3) + " -> " + L.name(u0) +
+                       " (another " + lbl(b) + "-arc is already there): L matches no graph satisfying C_G(" + lbl(i) + "," +
+                       lbl(j) + ")",
+                   path, "L");
+              continue;
+            }
+            auto r3 = name_of_r(u3), r0 = name_of_r(u0);
+            if (!r3 || !r0) continue;  // a deleted end: I_r fails there (dangling arc)
+            L.add_arc(u3, u0, b);
+            R.add_arc(*r3, *r0, b);
+            note("C-completed",
+                 "ij-completion: the " + w + "-path is closed by the preserved " + lbl(b) + "-arc " + L.name(u3) + " -> " +
+                     L.name(u0) + " added to L and R (Assumption 5)",
+                 path, "L");
+            changed = true;
+            break;
+          }
+          if (changed) break;
+        }
+      }
+      if (changed) break;
+    }
+  }
+  for (auto [a, b] : {std::pair{i, j}, std::pair{j, i}})
+    for (ArcId e1 = 0; e1 < R.num_arc_slots(); ++e1) {
+      if (!R.arc_alive(e1) || R.arc(e1).label != a) continue;
+      const Node u0 = R.arc(e1).src, u1 = R.arc(e1).tgt;
+      for (Node u2 : R.successors(u1, b))
+        for (Node u3 : R.successors(u2, a))
+          if (!has_arc(R, u3, u0, b))
+            note("C-open-R",
+                 "the " + lbl(a) + lbl(b) + lbl(a) + "-path of R is not closed in R (not completed, digest erratum 5)",
+                 {R.name(u0), R.name(u1), R.name(u2), R.name(u3)}, "R");
+    }
+  return Rule(std::move(L), std::move(R), r.dimension(), r.kind(), r.name());
+}
+
+Rule complete_for_model(const Rule& r0, std::vector<Diagnostic>* notes) {
+  Rule r = r0;
+  std::set<std::string> seen;
+  auto note = [&](Diagnostic d) {
+    if (!notes || !seen.insert(d.code + d.message).second) return;
+    notes->push_back(std::move(d));
+  };
+  for (;;) {
+    DGraph L = r.left(), R = r.right();
+    bool changed = false;
+    for (int i : r.labels()) {
+      if (r.kind() == MapKind::OMap && i == 1) continue;
+      for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+        if (!L.arc_alive(a) || L.arc(a).label != i) continue;
+        const Node u = L.arc(a).src, v = L.arc(a).tgt;
+        if (has_arc(L, v, u, i)) continue;
+        auto ru = R.find(L.name(u)), rv = R.find(L.name(v));
+        if (!ru || !rv || has_out(L, v, i) || has_in(L, u, i)) continue;  // I_r / vacuity handle these
+        L.add_arc(v, u, i);
+        R.add_arc(*rv, *ru, i);
+        note({"C-O-completed", "C", i, -1, Severity::Note,
+              "model completion: the reverse " + lbl(i) + "-arc " + L.name(v) + " -> " + L.name(u) + " of " +
+                  L.name(u) + " -> " + L.name(v) + " was added to L and R (preserved) before checking C_r",
+              {L.name(u), L.name(v)}, {}, {}, "L"});
+        changed = true;
+      }
+    }
+    Rule next(std::move(L), std::move(R), r.dimension(), r.kind(), r.name());
+    for (int i : r.labels())
+      for (int j : r.labels())
+        if (j >= i + 2) {
+          const size_t before = next.left().num_arcs();
+          std::vector<Diagnostic> ns;
+          next = ij_complete(next, i, j, &ns);
+          for (auto& d : ns)
+            if (d.code != "C-open-R") note(std::move(d));
+          changed = changed || next.left().num_arcs() != before;
+        }
+    r = std::move(next);
+    if (!changed) return r;
+  }
+}
+
+bool on_alternating_cycle(const DGraph& g, ArcId a, int i, int j) {
+  const Arc& e = g.arc(a);
+  std::function<bool(Node, int, int)> walk = [&](Node at, int label, int steps) -> bool {
+    if (steps == 4) return at == e.src;
+    for (Node w : g.successors(at, label))
+      if (walk(w, label == i ? j : i, steps + 1)) return true;
+    return false;
+  };
+  return walk(e.tgt, e.label == i ? j : i, 1);
+}
+
+std::vector<OptimalPath> optimal_paths(const Rule& r, bool right, int i, int j) {
+  const DGraph& g = r.side(right);
+  if (!combinatorial_on(g, i, j))
+    throw Error(ErrorCode::Usage, "optimal paths need a side with at most one i- and j-arc per node",
+                right ? "right" : "left");
+  const ElemStatus changed = right ? ElemStatus::Added : ElemStatus::Deleted;
+  std::vector<bool> in(g.num_arc_slots(), false);
+  for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+    in[a] = g.arc_alive(a) && (g.arc(a).label == i || g.arc(a).label == j) && r.arc_status(right, a) == changed;
+  auto other = [&](int l) { return l == i ? j : i; };
+  auto succ = [&](ArcId a) -> ArcId {
+    for (ArcId b : g.out_arcs(g.arc(a).tgt))
+      if (in[b] && g.arc(b).label == other(g.arc(a).label)) return b;
+    return kNoArc;
+  };
+  auto pred = [&](ArcId a) -> ArcId {
+    for (ArcId b : g.in_arcs(g.arc(a).src))
+      if (in[b] && g.arc(b).label == other(g.arc(a).label)) return b;
+    return kNoArc;
+  };
+  std::vector<OptimalPath> cand;
+  std::vector<bool> done(g.num_arc_slots(), false);
+  auto make = [&](const std::vector<ArcId>& arcs) {
+    OptimalPath p;
+    p.arcs = arcs;
+    p.source = g.arc(arcs.front()).src;
+    p.target = g.arc(arcs.back()).tgt;
+    for (ArcId a : arcs) p.word.push_back(g.arc(a).label);
+    cand.push_back(std::move(p));
+  };
+  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {  // open chains
+    if (!in[a] || pred(a) != kNoArc) continue;
+    std::vector<ArcId> chain;
+    for (ArcId b = a; b != kNoArc; b = succ(b)) {
+      chain.push_back(b);
+      done[b] = true;
+    }
+    make(chain);
+  }
+  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {  // closed chains: every rotation (erratum 14)
+    if (!in[a] || done[a]) continue;
+    std::vector<ArcId> cyc;
+    for (ArcId b = a; !done[b]; b = succ(b)) {
+      cyc.push_back(b);
+      done[b] = true;
+    }
+    for (size_t k = 0; k < cyc.size(); ++k) {
+      std::vector<ArcId> rot(cyc.begin() + static_cast<long>(k), cyc.end());
+      rot.insert(rot.end(), cyc.begin(), cyc.begin() + static_cast<long>(k));
+      make(rot);
+    }
+  }
+  std::vector<OptimalPath> out;
+  for (auto& p : cand)
+    if (!(p.arcs.size() <= 4 && on_alternating_cycle(g, p.arcs.front(), i, j))) out.push_back(std::move(p));
+  return out;
+}
+
+bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
+  std::vector<Diagnostic> notes;
+  const Rule r = ij_complete(r0, i, j, &notes);
+  for (auto& n : notes) out.push_back(std::move(n));
+  if (!combinatorial_on(r.left(), i, j) || !combinatorial_on(r.right(), i, j)) {
+    out.push_back({"C-skipped", "C", i, j, Severity::Note,
+                   "not evaluated: a node has two " + lbl(i) + "- or " + lbl(j) +
+                       "-arcs on one side (the rule fails Def. 35 or I_r)",
+                   {}, {}, {}, ""});
+    return true;
+  }
+  bool ok = true;
+  const auto PL = optimal_paths(r, false, i, j), PR = optimal_paths(r, true, i, j);
+  const DGraph &L = r.left(), &R = r.right();
+  for (bool right : {false, true}) {
+    const auto& mine = right ? PR : PL;
+    const auto& theirs = right ? PL : PR;
+    const DGraph& g = right ? R : L;
+    const DGraph& h = right ? L : R;
+    for (const auto& p : mine) {
+      size_t partners = 0;
+      for (const auto& q : theirs)
+        if (h.name(q.source) == g.name(p.source) && h.name(q.target) == g.name(p.target) && q.word == p.word) ++partners;
+      if (partners == 1) continue;
+      ok = false;
+      Diagnostic d{partners == 0 ? "C-incoherent" : "C-ambiguous", "C", i, j, Severity::Error, "", {}, {}, path_names(g, p),
+                   right ? "R" : "L"};
+      d.message = "the (" + lbl(i) + "," + lbl(j) + ")-optimal path " + g.name(p.source) + " ~" + word_str(p.word) + "~> " +
+                  g.name(p.target) + " of " + (right ? "R" : "L") + " has " + std::to_string(partners) +
+                  " coherent optimal paths in " + (right ? "L" : "R") + "; exactly one is required (Defs. 39, 40.1)";
+      d.nodes = {g.name(p.source), g.name(p.target)};
+      for (ArcId a : p.arcs) d.arcs.push_back(r.arc_str(right, a));
+      out.push_back(std::move(d));
+    }
+  }
+  std::set<ArcId> on_opt;
+  for (const auto& p : PR) on_opt.insert(p.arcs.begin(), p.arcs.end());
+  auto covered = [&](Node w, int d) {
+    for (ArcId a : R.out_arcs(w))
+      if (R.arc(a).label == d && (on_opt.count(a) || on_alternating_cycle(R, a, i, j))) return true;
+    return false;
+  };
+  for (Node v : r.preserved_nodes()) {
+    const Node w = *r.right_of(v);
+    for (int d : {i, j}) {
+      bool rewired = false;
+      for (ArcId a : L.out_arcs(v))
+        if (L.arc(a).label == d && r.left_arc_status(a) == ElemStatus::Deleted) rewired = true;
+      if (!rewired || covered(w, d)) continue;
+      ok = false;
+      Diagnostic dg{"C-preserved-node", "C", i, j, Severity::Error, "", {L.name(v)}, {}, {}, "R"};
+      dg.message = "preserved node " + L.name(v) + " loses its " + lbl(d) + "-arc but its " + lbl(d) +
+                   "-arc in R is neither on an " + lbl(i) + lbl(j) + lbl(i) + lbl(j) + "-cycle nor on an (" + lbl(i) + "," +
+                   lbl(j) + ")-optimal path (Def. 40.2)";
+      for (ArcId a : R.out_arcs(w))
+        if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(true, a));
+      out.push_back(std::move(dg));
+    }
+  }
+  for (Node w : r.added_nodes()) {
+    for (int d : {i, j}) {
+      if (covered(w, d)) continue;
+      ok = false;
+      Diagnostic dg{"C-added-node", "C", i, j, Severity::Error, "", {R.name(w)}, {}, {}, "R"};
+      dg.message = "added node " + R.name(w) + " is not the source of a " + lbl(d) + "-arc on an " + lbl(i) + lbl(j) + lbl(i) +
+                   lbl(j) + "-cycle or on an (" + lbl(i) + "," + lbl(j) + ")-optimal path of R (Def. 40.3)";
+      for (ArcId a : R.out_arcs(w))
+        if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(true, a));
+      out.push_back(std::move(dg));
+    }
+  }
+  return ok;
+}
+
+}  // namespace gmr

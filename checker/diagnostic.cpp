@@ -1,0 +1,86 @@
+#include "checker/diagnostic.hpp"
+
+namespace gmr {
+
+std::string Diagnostic::condition_str() const {
+  if (i < 0) return condition;
+  if (j < 0) return condition + "(" + std::to_string(i) + ")";
+  return condition + "(" + std::to_string(i) + "," + std::to_string(j) + ")";
+}
+
+bool CheckReport::ok() const {
+  for (const auto& d : diagnostics)
+    if (d.severity == Severity::Error) return false;
+  return true;
+}
+
+bool CheckReport::holds(const std::string& condition) const {
+  for (const auto& [c, h] : conditions)
+    if (c == condition) return h;
+  return false;
+}
+
+size_t CheckReport::count(const std::string& code) const {
+  size_t k = 0;
+  for (const auto& d : diagnostics) k += d.code == code;
+  return k;
+}
+
+static std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string s;
+  for (size_t k = 0; k < v.size(); ++k) s += (k ? sep : "") + v[k];
+  return s;
+}
+
+std::string to_text(const Diagnostic& d) {
+  std::string s = std::string(d.severity == Severity::Error ? "error" : "note") + " [" + d.code + "] " +
+                  d.condition_str() + ": " + d.message;
+  if (!d.nodes.empty()) s += "; nodes: " + join(d.nodes, ", ");
+  if (!d.arcs.empty()) s += "; arcs: " + join(d.arcs, ", ");
+  if (!d.path.empty()) s += "; path" + (d.side.empty() ? "" : " in " + d.side) + ": " + join(d.path, " ");
+  return s;
+}
+
+std::string to_text(const CheckReport& r) {
+  std::string s = "rule" + (r.rule_name.empty() ? std::string() : " " + r.rule_name) + " (" + to_string(r.kind) + ", n=" +
+                  std::to_string(r.n) + "): " + (r.ok() ? "all conditions hold" : "some conditions fail") + "\n";
+  s += "conditions:";
+  for (const auto& [c, h] : r.conditions) s += " " + c + (h ? "=ok" : "=FAIL");
+  s += "\n";
+  for (const auto& d : r.diagnostics) s += to_text(d) + "\n";
+  return s;
+}
+
+nlohmann::ordered_json to_json(const Diagnostic& d) {
+  nlohmann::ordered_json j;
+  j["code"] = d.code;
+  j["severity"] = d.severity == Severity::Error ? "error" : "note";
+  j["condition"] = d.condition;
+  if (d.i >= 0) {
+    j["dims"] = nlohmann::ordered_json::array({d.i});
+    if (d.j >= 0) j["dims"].push_back(d.j);
+  }
+  j["message"] = d.message;
+  if (!d.nodes.empty()) j["nodes"] = d.nodes;
+  if (!d.arcs.empty()) j["arcs"] = d.arcs;
+  if (!d.path.empty()) j["path"] = d.path;
+  if (!d.side.empty()) j["side"] = d.side;
+  return j;
+}
+
+nlohmann::ordered_json to_json(const CheckReport& r) {
+  nlohmann::ordered_json j;
+  j["format"] = "gmr.check";
+  j["version"] = 1;
+  if (!r.rule_name.empty()) j["rule"] = r.rule_name;
+  j["map"] = r.kind == MapKind::OMap ? "omap" : "gmap";
+  j["n"] = r.n;
+  j["ok"] = r.ok();
+  j["conditions"] = nlohmann::ordered_json::object();
+  for (const auto& [c, h] : r.conditions) j["conditions"][c] = h;
+  j["diagnostics"] = nlohmann::ordered_json::array();
+  for (const auto& d : r.diagnostics) j["diagnostics"].push_back(to_json(d));
+  return j;
+}
+
+}  // namespace gmr

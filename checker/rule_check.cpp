@@ -1,0 +1,29 @@
+#include "checker/rule_check.hpp"
+
+namespace gmr {
+
+CheckReport check_rule(const Rule& r, bool model_completion) {
+  CheckReport rep;
+  rep.rule_name = r.name();
+  rep.kind = r.kind();
+  rep.n = r.dimension();
+  auto& d = rep.diagnostics;
+  rep.conditions.emplace_back("combinatorial", check_combinatorial(r, d));
+  const auto labels = r.labels();
+  for (int i : labels) rep.conditions.emplace_back("I(" + std::to_string(i) + ")", check_incident_arcs(r, i, d));
+  for (int i : labels)
+    if (!(r.kind() == MapKind::OMap && i == 1))
+      rep.conditions.emplace_back("O(" + std::to_string(i) + ")", check_non_orientation(r, i, d));
+  bool any_pair = false;
+  for (int i : labels)
+    for (int j : labels) any_pair = any_pair || j >= i + 2;
+  if (!any_pair) return rep;
+  const Rule c = model_completion ? complete_for_model(r, &d) : r;
+  for (int i : labels)
+    for (int j : labels)
+      if (j >= i + 2)
+        rep.conditions.emplace_back("C(" + std::to_string(i) + "," + std::to_string(j) + ")", check_cycle(c, i, j, d));
+  return rep;
+}
+
+}  // namespace gmr

@@ -1,0 +1,244 @@
+// The worked examples of the digest (notes/thesis-ch3-4-conditions.md §6) that are concrete rules,
+// loaded from checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is
+// applicable to small maps — against the semantics. F8, F10, F14, F15 are rule-scheme / rewriting-
+// system / product fixtures (digest §4-5): they belong to the scheme checker, not to issue 3.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "checker/rule_check.hpp"
+#include "checker/semantic.hpp"
+#include "model/dpo.hpp"
+#include "model/orbit.hpp"
+#include "model/rule_json.hpp"
+#include "model/signature.hpp"
+#include "model/validity.hpp"
+
+using namespace gmr;
+
+namespace {
+
+std::string data(const std::string& name) {
+  const char* root = std::getenv("GMR_SOURCE_DIR");
+  return std::string(root ? root : ".") + "/checker/tests/data/" + name + ".json";
+}
+
+Rule load(const std::string& name) { return read_rule_file(data(name)); }
+
+std::vector<Diagnostic> diags;
+
+bool wI(const Rule& r, int i) { return check_weak_incident_arcs(r, i, diags); }
+bool I(const Rule& r, int i) { return check_incident_arcs(r, i, diags); }
+bool O(const Rule& r, int i) { return check_non_orientation(r, i, diags); }
+bool C(const Rule& r, int i, int j) { return check_cycle(r, i, j, diags); }
+
+// Applies r on g through the match "node name -> dart" given by name_to_dart, both ways.
+GMap apply_both(const Rule& r, const GMap& g, const std::function<Dart(const std::string&)>& name_to_dart) {
+  std::vector<Dart> m;
+  for (Node v = 0; v < r.left().num_nodes(); ++v) m.push_back(name_to_dart(r.left().name(v)));
+  MapDerivation a = apply_in_map(r, g, m), b = apply_to_map(r, g, m);
+  EXPECT_TRUE(is_isomorphic(a.H, b.H));
+  return a.H;
+}
+
+GMap isolated_face(size_t k) {  // 2k darts, numbering of the fixture generator
+  GMap g(2);
+  g.add_darts(2 * k);
+  for (Dart d = 0; d < 2 * k; d += 2) g.link(0, d, d + 1);
+  for (Dart d = 1; d < 2 * k; d += 2) g.link(1, d, static_cast<Dart>((d + 1) % (2 * k)));
+  return g;
+}
+
+}  // namespace
+
+TEST(Fixtures, F1_Ex34_WeakIncidentArcs) {
+  const Rule r = load("F1_ex34_weak_incident");
+  EXPECT_TRUE(wI(r, 2));
+  EXPECT_FALSE(wI(r, 1));
+  std::vector<Diagnostic> d;
+  check_weak_incident_arcs(r, 1, d);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].code, "I-added-node");
+  EXPECT_EQ(d[0].nodes, std::vector<std::string>{"d"});
+}
+
+TEST(Fixtures, F2_Ex35_ArcDeductionAndJointRepresentation) {
+  const Rule r = load("F2_ex35_arc_deduction");
+  size_t preserved = 0;
+  for (ArcId a = 0; a < r.left().num_arc_slots(); ++a)
+    if (r.left_arc_status(a) == ElemStatus::Preserved) ++preserved;
+  EXPECT_EQ(preserved, 3u);  // c-1->b, 2-loop on c, b-3->c
+  EXPECT_EQ(r.deleted_nodes().size(), 1u);
+  EXPECT_EQ(r.added_nodes().size(), 1u);
+  const JointRepresentation j = to_joint(r);
+  EXPECT_EQ(j.graph.num_nodes(), 8u);  // a,b,c,d + κ(a),κ(b),κ(c),e
+  size_t kappa = 0;
+  for (ArcId a = 0; a < j.graph.num_arc_slots(); ++a) kappa += j.graph.arc(a).label == kKappaLabel;
+  EXPECT_EQ(kappa, 3u);
+  const Rule back = from_joint(j);
+  EXPECT_EQ(rule_to_json(back), rule_to_json(r));
+}
+
+TEST(Fixtures, F3_Ex37_NonOrientation) {
+  const Rule r = load("F3_ex37_non_orientation");
+  EXPECT_TRUE(O(r, 1));
+  std::vector<Diagnostic> d;
+  EXPECT_FALSE(check_non_orientation(r, 2, d));
+  ASSERT_EQ(d.size(), 2u);  // the deleted a->c and the added c->a
+  EXPECT_EQ(d[0].code, "O-no-reverse");
+  EXPECT_EQ(d[0].side, "L");
+  EXPECT_EQ(d[1].side, "R");
+}
+
+TEST(Fixtures, F4_Fig318_CycleCondition) {
+  const Rule r = load("F4_fig318_flip");
+  EXPECT_TRUE(C(r, 1, 2));
+  // Ex. 39: in the rule as drawn, fecb is (1,3)-optimal. Assumption 5 then closes the 131-path
+  // fecb by a preserved 3-arc b-f, which puts it on a 1313-cycle: after completion it is no longer
+  // optimal, and C_r(1,3) fails through R's unpaired f-1-c, e-1-b and the rewired c, e.
+  bool fecb = false;
+  for (const auto& p : optimal_paths(r, false, 1, 3))
+    if (r.left().name(p.source) == "f" && r.left().name(p.target) == "b" && p.word == std::vector<int>{1, 3, 1}) fecb = true;
+  EXPECT_TRUE(fecb) << "the (1,3)-optimal path fecb of Ex. 39";
+  std::vector<Diagnostic> d;
+  EXPECT_FALSE(check_cycle(r, 1, 3, d));
+  size_t completed = 0, incoherent = 0, rewired = 0;
+  for (const auto& x : d) {
+    completed += x.code == "C-completed";
+    incoherent += x.code == "C-incoherent";
+    rewired += x.code == "C-preserved-node";
+  }
+  EXPECT_EQ(completed, 2u);
+  EXPECT_EQ(incoherent, 4u);
+  EXPECT_EQ(rewired, 2u);
+  EXPECT_FALSE(I(r, 3));  // erratum 4
+  // Optimal paths of Ex. 39: in L only f-e-h and h-e-f are (1,2)-optimal.
+  const auto pl = optimal_paths(ij_complete(r, 1, 2), false, 1, 2);
+  ASSERT_EQ(pl.size(), 2u);
+  const Rule r3 = load("F4_fig318_flip_3loops");
+  EXPECT_TRUE(I(r3, 3));
+  EXPECT_TRUE(C(r3, 1, 2));
+  EXPECT_FALSE(C(r3, 1, 3));
+}
+
+TEST(Fixtures, F5_Fig319a_SewAndUnsew) {
+  const MapFamily fam = map_family(2, MapKind::GMap, 4);
+  for (const char* name : {"F5_fig319a_sew", "F5_fig319a_unsew"}) {
+    const Rule r = load(name);
+    const CheckReport rep = check_rule(r);
+    EXPECT_TRUE(rep.ok()) << to_text(rep);
+    EXPECT_TRUE(rep.holds("C(0,2)"));
+    const SemanticVerdict v = semantic_verdict(r, fam);
+    EXPECT_TRUE(v.applicable());
+    EXPECT_TRUE(v.preserves);
+  }
+  // L of the sewing rule has no (0,2)-optimal path (every node on a 0202-cycle of loops).
+  EXPECT_TRUE(optimal_paths(load("F5_fig319a_sew"), false, 0, 2).empty());
+}
+
+TEST(Fixtures, F6_Fig319b_Partial) {
+  const Rule r = load("F6_fig319b_partial");
+  const CheckReport rep = check_rule(r);
+  EXPECT_TRUE(rep.ok()) << to_text(rep);
+  EXPECT_EQ(optimal_paths(r, false, 0, 2).size(), 2u);  // a-b-c and c-b-a
+  const SemanticVerdict v = semantic_verdict(r, map_family(2, MapKind::GMap, 4));
+  EXPECT_TRUE(v.applicable());
+  EXPECT_TRUE(v.preserves);
+}
+
+TEST(Fixtures, F7_Fig424_CoreRule) {
+  const Rule r = load("F7_fig424_core");
+  EXPECT_TRUE(C(r, 1, 2));
+  for (int i : {0, 1, 2, 3}) EXPECT_TRUE(I(r, i));
+}
+
+TEST(Fixtures, F9_F13_QuadSubdivisionOnIsolatedQuad) {
+  const Rule r = load("F9_quad_subdivision_isolated_quad");
+  const CheckReport rep = check_rule(r);
+  EXPECT_TRUE(rep.ok()) << to_text(rep);
+  const GMap q = isolated_face(4);
+  ASSERT_TRUE(is_valid(q));
+  const GMap h = apply_both(r, q, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
+  EXPECT_TRUE(is_valid(h));
+  EXPECT_EQ(h.size(), 32u);
+  EXPECT_EQ(count_cells(h, 0), 9u);
+  EXPECT_EQ(count_cells(h, 1), 12u);
+  EXPECT_EQ(count_cells(h, 2), 4u);
+}
+
+TEST(Fixtures, F11_VertexInsertionOnFreeEdge) {
+  const Rule r = load("F11_vertex_insertion_free_edge");
+  EXPECT_TRUE(check_rule(r).ok()) << to_text(check_rule(r));
+  GMap e(2);
+  e.add_darts(2);
+  e.link(0, 0, 1);
+  const GMap h = apply_both(r, e, [](const std::string& s) { return s == "a" ? Dart{0} : Dart{1}; });
+  EXPECT_TRUE(is_valid(h));
+  EXPECT_EQ(h.size(), 4u);
+  const SemanticVerdict v = semantic_verdict(r, map_family(2, MapKind::GMap, 4));
+  EXPECT_TRUE(v.applicable() && v.preserves);
+}
+
+TEST(Fixtures, F12_TriangulationOfIsolatedTriangle) {
+  const Rule r = load("F12_triangulation_isolated_triangle");
+  EXPECT_TRUE(check_rule(r).ok()) << to_text(check_rule(r));
+  const GMap t = isolated_face(3);
+  const GMap h = apply_both(r, t, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
+  EXPECT_TRUE(is_valid(h));
+  EXPECT_EQ(h.size(), 18u);
+  EXPECT_EQ(count_cells(h, 2), 3u);
+  EXPECT_EQ(count_cells(h, 0), 4u);
+  EXPECT_EQ(count_cells(h, 1), 6u);
+}
+
+TEST(Fixtures, Theorem2_VacuousCounterexample) {
+  const Rule r = load("thm2_vacuous_3cycle");
+  EXPECT_TRUE(I(r, 0));
+  EXPECT_FALSE(O(r, 0));
+  const SemanticVerdict v = semantic_verdict(r, map_family(1, MapKind::GMap, 6));
+  EXPECT_FALSE(v.applicable());  // no G-map contains an oriented 3-cycle of 0-arcs
+}
+
+TEST(Fixtures, Def33_MultiplicityReading) {
+  const Rule r = load("def33_multiplicity");
+  EXPECT_FALSE(wI(r, 0));
+  const SemanticVerdict v = semantic_verdict(r, map_family(1, MapKind::GMap, 4));
+  EXPECT_TRUE(v.applicable());
+  EXPECT_FALSE(v.preserves);
+}
+
+TEST(Fixtures, Erratum6_IdentityRuleAccepted) {
+  const Rule r = load("erratum6_identity");
+  EXPECT_TRUE(check_rule(r).ok());
+  EXPECT_TRUE(semantic_verdict(r, map_family(2, MapKind::GMap, 4)).preserves);
+}
+
+TEST(Fixtures, OCompletionGap) {
+  const Rule r = load("O_completion_gap");
+  EXPECT_FALSE(check_rule(r, /*model_completion=*/false).ok());
+  const CheckReport rep = check_rule(r);
+  EXPECT_TRUE(rep.ok()) << to_text(rep);
+  EXPECT_EQ(rep.count("C-O-completed"), 1u);
+  const SemanticVerdict v = semantic_verdict(r, map_family(2, MapKind::GMap, 4));
+  EXPECT_TRUE(v.applicable() && v.preserves);
+}
+
+TEST(Fixtures, OMapFaceSplit) {
+  const Rule r = load("omap_face_split");
+  const CheckReport rep = check_rule(r);
+  EXPECT_TRUE(rep.ok()) << to_text(rep);
+  const SemanticVerdict v = semantic_verdict(r, map_family(2, MapKind::OMap, 4));
+  EXPECT_TRUE(v.applicable() && v.preserves);
+}
+
+TEST(Fixtures, ReportsAsTextAndJson) {
+  const CheckReport rep = check_rule(load("F1_ex34_weak_incident"));
+  EXPECT_FALSE(rep.ok());
+  EXPECT_NE(to_text(rep).find("[I-added-node]"), std::string::npos);
+  const auto j = to_json(rep);
+  EXPECT_EQ(j["format"], "gmr.check");
+  EXPECT_EQ(j["ok"], false);
+  EXPECT_EQ(j["conditions"]["I(1)"], false);
+  EXPECT_EQ(j["diagnostics"][0]["code"], "I-added-node");
+}
