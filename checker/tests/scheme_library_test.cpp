@@ -1,0 +1,167 @@
+// The library of standard operations (tools/data/rules/*.json): every file reads, is accepted by the
+// scheme checker, and applies on the builders' objects with the expected cell counts and a valid
+// result.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "checker/scheme_checker.hpp"
+#include "model/builders.hpp"
+#include "model/orbit.hpp"
+#include "model/scheme_engine.hpp"
+#include "model/scheme_json.hpp"
+#include "model/signature.hpp"
+#include "model/validity.hpp"
+
+using namespace gmr;
+
+namespace {
+
+std::filesystem::path rules_dir() {
+  const char* root = std::getenv("GMR_SOURCE_DIR");
+  return std::filesystem::path(root ? root : ".") / "tools/data/rules";
+}
+
+RuleScheme lib(const std::string& name) { return read_scheme_file(rules_dir() / (name + ".json")); }
+
+struct Outcome {
+  GMap map{0};
+  size_t darts = 0;
+  std::vector<size_t> cells;
+};
+
+Outcome apply_ok(const std::string& rule, const GMap& g, const std::vector<Dart>& hooks) {
+  auto [h, a] = apply_scheme(g, lib(rule), hooks);
+  EXPECT_TRUE(a.applied) << rule << ": " << a.why;
+  EXPECT_TRUE(is_valid(h)) << rule;
+  return Outcome{h, h.size(), count_all_cells(h)};
+}
+
+using Cells = std::vector<size_t>;
+
+}  // namespace
+
+TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
+  size_t count = 0;
+  std::set<std::string> strict_rejects;
+  for (const auto& e : std::filesystem::directory_iterator(rules_dir())) {
+    if (e.path().extension() != ".json") continue;
+    ++count;
+    RuleScheme r = read_scheme_file(e.path());
+    EXPECT_EQ(r.name, e.path().stem().string());
+    SchemeCheckReport rep = check_scheme(r);
+    EXPECT_TRUE(rep.ok()) << to_text(rep);
+    EXPECT_EQ(rep.warnings(), 0u) << to_text(rep);
+    // Erratum 6: the literal Algorithm 3 also rejects preserved nodes whose PRESERVED 0-arc is
+    // not on a (0,2)-cycle of R (their 2-link lies outside the orbit), although these operations
+    // are valid (every application in the tests below yields a valid G-map).
+    SchemeCheckOptions strict;
+    strict.algorithm3_strict = true;
+    if (!check_scheme(r, strict).ok()) strict_rejects.insert(r.name);
+    EXPECT_TRUE(SchemeEngine(r).not_combinatorial().empty());
+  }
+  EXPECT_EQ(count, 14u);
+  EXPECT_EQ(strict_rejects, (std::set<std::string>{"face_extrusion", "face_triangulation", "sew3", "unsew3"}));
+}
+
+TEST(SchemeLibrary, VertexInsertion) {
+  const GMap cube = make_cube(2);
+  Outcome a = apply_ok("vertex_insertion", cube, {0});
+  EXPECT_EQ(a.darts, 52u);
+  EXPECT_EQ(a.cells, (Cells{9, 13, 6}));
+  // Folded on <2>: the same operation (isomorphic results).
+  Outcome b = apply_ok("vertex_insertion_folded_2", cube, {0});
+  EXPECT_EQ(b.darts, 52u);
+  EXPECT_TRUE(is_isomorphic(a.map, b.map));
+  // Free edge: 2 -> 4 darts; boundary edge of a grid: +2 darts.
+  EXPECT_EQ(apply_ok("vertex_insertion", make_free_edge(2), {0}).darts, 4u);
+  const GMap grid = make_grid(2, 2);
+  Dart boundary = 0;
+  while (!grid.is_free(2, boundary)) ++boundary;
+  Outcome c = apply_ok("vertex_insertion", grid, {boundary});
+  EXPECT_EQ(c.darts, grid.size() + 2);
+  EXPECT_EQ(apply_ok("vertex_insertion", make_torus(4, 3), {5}).cells, (Cells{13, 25, 12}));
+}
+
+TEST(SchemeLibrary, Triangulations) {
+  const GMap cube = make_cube(2);
+  Outcome f = apply_ok("face_triangulation", cube, {0});
+  EXPECT_EQ(f.darts, 64u);
+  EXPECT_EQ(f.cells, (Cells{9, 16, 9}));
+  Outcome b = apply_ok("edge_triangulation", cube, {0});
+  EXPECT_EQ(b.darts, 288u);
+  EXPECT_EQ(b.cells, (Cells{26, 72, 48}));
+  Outcome t = apply_ok("edge_triangulation", make_tetrahedron(2), {0});
+  EXPECT_EQ(t.cells, (Cells{14, 36, 24}));
+}
+
+TEST(SchemeLibrary, Subdivisions) {
+  Outcome q = apply_ok("quad_subdivision", make_cube(2), {0});
+  EXPECT_EQ(q.darts, 192u);
+  EXPECT_EQ(q.cells, (Cells{26, 48, 24}));
+  Outcome qt = apply_ok("quad_subdivision", make_torus(4, 3), {0});
+  EXPECT_EQ(qt.darts, 384u);
+  EXPECT_EQ(qt.cells, (Cells{48, 96, 48}));
+  EXPECT_EQ(euler_characteristic(qt.map), 0);
+  Outcome qg = apply_ok("quad_subdivision", make_grid(2, 2), {0});
+  EXPECT_EQ(qg.darts, 128u);
+  EXPECT_EQ(qg.cells, (Cells{25, 40, 16}));
+  Outcome l = apply_ok("loop_subdivision", make_tetrahedron(2), {0});
+  EXPECT_EQ(l.darts, 96u);
+  EXPECT_EQ(l.cells, (Cells{10, 24, 16}));
+  Outcome lc = apply_ok("loop_subdivision", make_cube(2), {0});
+  EXPECT_EQ(lc.cells, (Cells{20, 48, 30}));
+}
+
+TEST(SchemeLibrary, ExtrusionAndDualVertex) {
+  const GMap cube = make_cube(2);
+  Outcome e = apply_ok("face_extrusion", cube, {0});
+  EXPECT_EQ(e.darts, 80u);
+  EXPECT_EQ(e.cells, (Cells{12, 20, 10}));
+  Outcome et = apply_ok("face_extrusion", make_torus(3, 3), {0});
+  EXPECT_EQ(et.cells, (Cells{13, 26, 13}));
+  Outcome d = apply_ok("dual_vertex_insertion", cube, {0});
+  EXPECT_EQ(d.darts, 52u);
+  EXPECT_EQ(d.cells, (Cells{8, 13, 7}));
+}
+
+TEST(SchemeLibrary, SewAndUnsew2) {
+  const GMap cube = make_cube(2);
+  const Dart d = 0, e = cube.alpha(2, 0);
+  Outcome u = apply_ok("unsew2", cube, {d});
+  EXPECT_EQ(u.cells, (Cells{8, 13, 6}));
+  EXPECT_TRUE(u.map.is_free(2, d) && u.map.is_free(2, e));
+  Outcome s = apply_ok("sew2", u.map, {d, e});
+  EXPECT_TRUE(is_isomorphic(s.map, cube));
+  // Sewing non-free edges is not applicable.
+  auto [h, a] = apply_scheme(cube, lib("sew2"), {d, e});
+  EXPECT_FALSE(a.applied);
+}
+
+TEST(SchemeLibrary, SewAndUnsew3OnStackedCubes) {
+  const GMap g = make_stacked_cubes();
+  Dart d = 0;
+  while (g.is_free(3, d)) ++d;
+  const Dart e = g.alpha(3, d);
+  Outcome u = apply_ok("unsew3", g, {d});
+  EXPECT_EQ(count_components(u.map), 2u);
+  EXPECT_EQ(free_darts(u.map, 3).size(), 96u);
+  Outcome s = apply_ok("sew3", u.map, {d, e});
+  EXPECT_TRUE(is_isomorphic(s.map, g));
+  EXPECT_EQ(count_components(s.map), 1u);
+}
+
+TEST(SchemeLibrary, EdgeDeletionAndCollapse) {
+  const GMap cube = make_cube(2);
+  Outcome del = apply_ok("edge_deletion", cube, {0});
+  EXPECT_EQ(del.darts, 44u);
+  EXPECT_EQ(del.cells, (Cells{8, 11, 5}));
+  Outcome col = apply_ok("edge_collapse", cube, {0});
+  EXPECT_EQ(col.darts, 44u);
+  EXPECT_EQ(col.cells, (Cells{7, 11, 6}));
+  Outcome t = apply_ok("edge_collapse", make_torus(3, 3), {0});
+  EXPECT_EQ(t.cells, (Cells{8, 17, 9}));
+}
