@@ -100,6 +100,11 @@ InstantiatedRule instantiate(const RuleScheme& r, const OrbitGraph& O) {
   return InstantiatedRule{instantiate(r.left, O), instantiate(r.right, O)};
 }
 
+Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O) {
+  InstantiatedRule ir = instantiate(r, O);
+  return Rule(std::move(ir.left.graph), std::move(ir.right.graph), r.dimension, MapKind::GMap, r.name);
+}
+
 OrbitGraph hook_orbit_graph(const GMap& g, const RuleScheme& r, Dart hook_dart) {
   if (r.hooks.empty()) return single_dart_orbit(r.orbit.size());
   const auto hooks = r.hook_nodes();

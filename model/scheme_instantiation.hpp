@@ -17,6 +17,7 @@
 
 #include "model/dgraph.hpp"
 #include "model/gmap.hpp"
+#include "model/rule.hpp"
 #include "model/rule_scheme.hpp"
 
 namespace gmr {
@@ -59,6 +60,10 @@ struct InstantiatedRule {
   InstantiatedGraph left, right;
 };
 InstantiatedRule instantiate(const RuleScheme& r, const OrbitGraph& O);
+// The instantiated rule as a concrete DPO rule (model/rule.hpp): L and R with the names "u_v",
+// preserved instances sharing names, arcs deduced by Assumption 4. The concrete L node of
+// (scheme node v, orbit dart b) has index v * |O| + b (same for R).
+Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O);
 
 // The orbit graph a scheme is instantiated on when applied at `hook_dart` (reference hook): the
 // orbit of the reference hook's label, positions in the order of that label (so that position p
