@@ -249,7 +249,7 @@ class Checker {
           continue;
         }
         if (cr != cl) {
-          add("I-preserved-node", SchemeSeverity::Error, cond, cl ? "R" : "L", {nm},
+          add("I-preserved-node", SchemeSeverity::Error, cond, cl ? "L" : "R", {nm},
               "preserved node " + nm + (cl ? " has a " + ds + "-arc in L but none in R"
                                            : " gains a " + ds + "-arc in R it does not have in L") +
                   " (E2): its instances would have " + (cl ? "no " : "two ") + ds + "-links");
