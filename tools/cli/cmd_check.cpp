@@ -1,0 +1,56 @@
+// `gmr check RULE.json [--json]`: the static consistency conditions of a concrete rule (thesis
+// Defs. 33-40, checker/rule_check.hpp) for its model (G-map or O-map of dimension n). Prints every
+// diagnostic (stable codes, checker/diagnostic.hpp). Exit 0 if all conditions hold, 1 if one
+// fails, 2 on bad input.
+#include <iostream>
+#include <memory>
+
+#include "checker/rule_check.hpp"
+#include "model/rule_json.hpp"
+#include "tools/cli/cli.hpp"
+#include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files (issue 4)
+
+namespace gmr::cli {
+
+namespace {
+
+struct CheckArgs {
+  std::string input;
+  bool json = false;
+  bool per_constraint = false;
+  bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (issue 4)
+};
+
+int run_check(const CheckArgs& a) {
+  // --- rule schemes (issue 4): .jme files and gmr.rule files of kind "scheme" ---
+  if (auto code = check_scheme_input(a.input, a.json, a.algorithm3)) return *code;
+  // --- concrete rules ---
+  const Rule r = read_rule_file(a.input);
+  const CheckReport rep = check_rule(r, !a.per_constraint);
+  if (a.json) {
+    auto j = to_json(rep);
+    j["file"] = a.input;
+    print_json(j);
+  } else {
+    std::cout << a.input << ": " << to_text(rep);
+  }
+  return rep.ok() ? kExitOk : kExitNegative;
+}
+
+}  // namespace
+
+void register_check(CLI::App& app) {
+  auto args = std::make_shared<CheckArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "check", "Check the consistency conditions of a concrete rule (incident arcs, non-orientation, cycles); exit 1 if one fails");
+  sub->add_option("rule", args->input, "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")->required();
+  sub->add_flag("--json", args->json, "Print JSON (format gmr.check)");
+  sub->add_flag("--per-constraint", args->per_constraint,
+                "Check C_r on the ij-completion only (the thesis' per-constraint reading), without the model completion");
+  // Rule schemes (issue 4): a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
+  sub->add_flag("--algorithm3", args->algorithm3,
+                "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones; erratum 6)");
+  set_action(sub, [args] { return run_check(*args); });
+}
+
+}  // namespace gmr::cli
