@@ -117,7 +117,8 @@ int64_t JsonAt::as_int(int64_t lo, int64_t hi) const {
   const std::string range = " in " + std::to_string(lo) + ".." + std::to_string(hi);
   if (v_->is_number_unsigned()) {
     const uint64_t u = v_->get<uint64_t>();
-    if (hi < 0 || u > static_cast<uint64_t>(hi)) fail("expected an integer" + range + ", found " + v_->dump());
+    if (hi < 0 || u > static_cast<uint64_t>(hi) || (lo > 0 && u < static_cast<uint64_t>(lo)))
+      fail("expected an integer" + range + ", found " + v_->dump());
     return static_cast<int64_t>(u);
   }
   if (!v_->is_number_integer()) fail("expected an integer" + range + ", found " + describe_json(*v_));
