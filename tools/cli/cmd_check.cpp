@@ -1,4 +1,5 @@
-// `gmr check RULE.json [--json]`: the static consistency conditions of a concrete rule (thesis
+// `gmr check RULE.json [--json]`: rule schemes are delegated to scheme_check.hpp; for a concrete
+// rule, the static consistency conditions of a concrete rule (thesis
 // Defs. 33-40, checker/rule_check.hpp) for its model (G-map or O-map of dimension n). Prints every
 // diagnostic (stable codes, checker/diagnostic.hpp). Exit 0 if all conditions hold, 1 if one
 // fails, 2 on bad input.
@@ -8,6 +9,7 @@
 #include "checker/rule_check.hpp"
 #include "model/rule_json.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/scheme_check.hpp"
 #include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files (issue 4)
 
 namespace gmr::cli {
@@ -18,6 +20,7 @@ struct CheckArgs {
   std::string input;
   bool json = false;
   bool per_constraint = false;
+  bool algorithm3_strict = false;
   bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (issue 4)
 };
 
@@ -25,6 +28,8 @@ int run_check(const CheckArgs& a) {
   // --- rule schemes (issue 4): .jme files and gmr.rule files of kind "scheme" ---
   if (auto code = check_scheme_input(a.input, a.json, a.algorithm3)) return *code;
   // --- concrete rules ---
+  // Rule schemes (.jme, gmr.rule kind "scheme") go to the scheme checker (issue 4).
+  if (auto rc = check_scheme_input(a.input, a.json, a.algorithm3_strict)) return *rc;
   const Rule r = read_rule_file(a.input);
   const CheckReport rep = check_rule(r, !a.per_constraint);
   if (a.json) {
@@ -50,6 +55,7 @@ void register_check(CLI::App& app) {
   // Rule schemes (issue 4): a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
   sub->add_flag("--algorithm3", args->algorithm3,
                 "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones; erratum 6)");
+  sub->add_flag("--algorithm3-strict", args->algorithm3_strict, "Rule schemes: follow Algorithm 3 literally (see scheme_check.hpp)");
   set_action(sub, [args] { return run_check(*args); });
 }
 
