@@ -1,0 +1,116 @@
+#include "tools/cli/cli.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+#include "model/atomic_write.hpp"
+#include "model/io_json.hpp"
+#include "model/io_obj.hpp"
+#include "model/io_off.hpp"
+#include "model/json_writer.hpp"
+#include "model/position.hpp"
+#include "model/read_file.hpp"
+#include "tools/render.hpp"
+
+namespace gmr::cli {
+
+namespace {
+int g_exit = kExitOk;
+}
+
+void set_action(CLI::App* sub, std::function<int()> action) {
+  sub->callback([action = std::move(action)] { g_exit = action(); });
+}
+
+int exit_code() { return g_exit; }
+
+const char* to_string(Format f) {
+  switch (f) {
+    case Format::Json: return "json";
+    case Format::Off: return "off";
+    case Format::Obj: return "obj";
+    case Format::Dot: return "dot";
+    case Format::Svg: return "svg";
+    case Format::Png: return "png";
+  }
+  return "?";
+}
+
+std::optional<Format> parse_format(const std::string& name) {
+  for (Format f : {Format::Json, Format::Off, Format::Obj, Format::Dot, Format::Svg, Format::Png})
+    if (name == to_string(f)) return f;
+  return std::nullopt;
+}
+
+namespace {
+
+Format detect(const std::string& path, const std::string& override, const char* option) {
+  if (!override.empty()) {
+    if (auto f = parse_format(override)) return *f;
+    throw Error(ErrorCode::Usage, "unknown format \"" + override + "\"", option);
+  }
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (!ext.empty())
+    if (auto f = parse_format(ext.substr(1))) return *f;
+  throw Error(ErrorCode::Usage,
+              "cannot tell the format from the file name" + std::string(ext.empty() ? "" : " (extension " + ext + ")") +
+                  "; name it with " + option,
+              path);
+}
+
+}  // namespace
+
+Format input_format(const std::string& path, const std::string& override) {
+  const Format f = detect(path, override, "--from");
+  if (f != Format::Json && f != Format::Off)
+    throw Error(ErrorCode::Usage, std::string("cannot read ") + to_string(f) + " maps (input formats: " + kInputFormats + ")",
+                path);
+  return f;
+}
+
+Format output_format(const std::string& path, const std::string& override) { return detect(path, override, "--to"); }
+
+GMapFile load_map(const std::string& path, const std::string& from) {
+  const Format f = input_format(path, from);
+  if (f == Format::Off) return to_gmap_file(path == "-" ? read_off(read_text_file(path), "<stdin>") : read_off_file(path));
+  return path == "-" ? read_gmap_json(read_text_file(path), "<stdin>") : read_gmap_json_file(path);
+}
+
+void write_output(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text << std::flush;
+    return;
+  }
+  write_file_atomic(path, text);
+}
+
+void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot) {
+  switch (format) {
+    case Format::Json: write_output(path, write_gmap_json(f)); return;
+    case Format::Off: {
+      const PositionedMap m = to_positioned(f);
+      write_output(path, write_off(m.map, m.position));
+      return;
+    }
+    case Format::Obj: {
+      const PositionedMap m = to_positioned(f);
+      write_output(path, write_obj(m.map, m.position));
+      return;
+    }
+    case Format::Dot: write_output(path, to_dot(f.map, dot)); return;
+    case Format::Svg:
+    case Format::Png: {
+      if (path == "-") throw Error(ErrorCode::Usage, "images are not written to standard output", path);
+      render_dot_file(to_dot(f.map, dot), format == Format::Svg ? ImageFormat::Svg : ImageFormat::Png, path);
+      return;
+    }
+  }
+}
+
+void print_json(const nlohmann::ordered_json& j) { std::cout << dump_json(j) << std::flush; }
+
+std::string default_data_dir() { return GMR_DATA_DIR; }
+
+}  // namespace gmr::cli

@@ -1,0 +1,55 @@
+// Shared plumbing of the `gmr` subcommands (tools/cli/cmd_*.cpp).
+//
+// Exit codes (SPEC "Command line"): 0 success, 1 negative verdict (e.g. an invalid map), 2 bad
+// input or usage. A subcommand's action returns 0 or 1; bad input is a thrown gmr::Error, which
+// main.cpp prints as "gmr: error: <location>: <message>" and maps to 2.
+//
+// Map files: the format comes from the extension (.json, .off for input; .json, .off, .obj, .dot,
+// .svg, .png for output) unless --from/--to names it. "-" is standard input (with --from) or
+// standard output (text formats, with --to).
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "model/gmap_file.hpp"
+#include "model/io_dot.hpp"
+
+namespace gmr::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitNegative = 1;
+inline constexpr int kExitBadInput = 2;
+
+// Attaches `action` to subcommand `sub`; its result becomes the exit code of the process.
+void set_action(CLI::App* sub, std::function<int()> action);
+int exit_code();
+
+enum class Format { Json, Off, Obj, Dot, Svg, Png };
+const char* to_string(Format f);
+// "json" -> Json, ...; nullopt for an unknown name.
+std::optional<Format> parse_format(const std::string& name);
+// The format of `path` from `override` when given, else from its extension. Error(Usage) when
+// neither tells, or when the format cannot be read (input) / written (output).
+Format input_format(const std::string& path, const std::string& override);
+Format output_format(const std::string& path, const std::string& override);
+// Help text for --from / --to.
+inline constexpr const char* kInputFormats = "json|off";
+inline constexpr const char* kOutputFormats = "json|off|obj|dot|svg|png";
+
+GMapFile load_map(const std::string& path, const std::string& from = {});
+// Writes `f` to `path` (atomically; "-" = standard output for text formats).
+void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot = {});
+// Writes text to `path` atomically, or to standard output for "-".
+void write_output(const std::string& path, const std::string& text);
+
+// Pretty JSON on standard output (model/json_writer.hpp layout).
+void print_json(const nlohmann::ordered_json& j);
+
+// Directory of the example data files (tools/data/), from the build.
+std::string default_data_dir();
+
+}  // namespace gmr::cli

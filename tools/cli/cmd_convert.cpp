@@ -1,0 +1,40 @@
+// `gmr convert IN OUT`: map file conversion. Input json|off, output json|off|obj|dot|svg|png, by
+// extension or --from/--to. OFF/OBJ output needs a 2-G-map with a "position" embedding.
+#include <iostream>
+#include <memory>
+
+#include "tools/cli/cli.hpp"
+
+namespace gmr::cli {
+
+namespace {
+
+struct ConvertArgs {
+  std::string input, output, from, to;
+  bool loops = false;
+};
+
+int run_convert(const ConvertArgs& a) {
+  const Format out = output_format(a.output, a.to);
+  const GMapFile f = load_map(a.input, a.from);
+  DotOptions dot;
+  dot.loops = a.loops;
+  save_map(f, a.output, out, dot);
+  return kExitOk;
+}
+
+}  // namespace
+
+void register_convert(CLI::App& app) {
+  auto args = std::make_shared<ConvertArgs>();
+  CLI::App* sub = app.add_subcommand("convert", "Convert a map file (json, off -> json, off, obj, dot, svg, png)");
+  sub->add_option("input", args->input, "Input file (- for standard input with --from)")->required();
+  sub->add_option("output", args->output, "Output file, written atomically (- for standard output with --to)")
+      ->required();
+  sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
+  sub->add_option("--to", args->to, std::string("Output format (") + kOutputFormats + ")");
+  sub->add_flag("--loops", args->loops, "Draw i-loops of free darts (dot, svg, png)");
+  set_action(sub, [args] { return run_convert(*args); });
+}
+
+}  // namespace gmr::cli

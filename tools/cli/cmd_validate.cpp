@@ -1,0 +1,86 @@
+// `gmr validate FILE`: every violation of the G-map / O-map constraints (validity.hpp), located by
+// dart, and for a valid map the orbits whose embedding values are missing or inconsistent
+// (Embedding::check). Exit 1 when anything is reported.
+#include <iostream>
+#include <memory>
+
+#include "model/validity.hpp"
+#include "tools/cli/cli.hpp"
+#include "tools/cli/summary.hpp"
+
+namespace gmr::cli {
+
+namespace {
+
+struct ValidateArgs {
+  std::string input, from;
+  size_t limit = 1000;
+  bool json = false;
+};
+
+int run_validate(const ValidateArgs& a) {
+  const GMapFile f = load_map(a.input, a.from);
+  const ValidityReport r = check_validity(f.map, a.limit);
+  struct Issue {
+    std::string embedding;
+    EmbeddingIssue issue;
+  };
+  std::vector<Issue> issues;
+  if (r.ok())  // orbits of an invalid map do not describe cells: embeddings are checked on valid maps
+    for (const auto& e : f.embeddings)
+      for (auto& i : e.check(f.map)) issues.push_back({e.name(), i});
+  const bool valid = r.ok() && issues.empty();
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["file"] = a.input;
+    j["map"] = map_name(f.map);
+    j["valid"] = valid;
+    nlohmann::ordered_json vs = nlohmann::ordered_json::array();
+    for (const Violation& v : r.violations) {
+      nlohmann::ordered_json x;
+      x["constraint"] = to_string(v.kind);
+      x["dart"] = v.dart;
+      x["i"] = v.i;
+      if (v.j >= 0) x["j"] = v.j;
+      x["path"] = v.path;
+      x["message"] = v.describe();
+      vs.push_back(x);
+    }
+    j["violations"] = vs;
+    j["truncated"] = r.truncated;
+    nlohmann::ordered_json es = nlohmann::ordered_json::array();
+    for (const Issue& i : issues) es.push_back({{"embedding", i.embedding}, {"dart", i.issue.dart}, {"problem", i.issue.problem}});
+    j["embedding_issues"] = es;
+    print_json(j);
+    return valid ? kExitOk : kExitNegative;
+  }
+  if (valid) {
+    std::cout << a.input << ": valid " << map_name(f.map) << " (" << f.map.size() << " darts)\n";
+    return kExitOk;
+  }
+  if (!r.ok()) {
+    std::cout << a.input << ": invalid " << map_name(f.map) << ": " << r.total() << " violation(s)\n";
+    for (const Violation& v : r.violations) std::cout << "  " << v.describe() << "\n";
+    if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
+  } else {
+    std::cout << a.input << ": valid " << map_name(f.map) << ", but " << issues.size() << " embedding issue(s)\n";
+    for (const Issue& i : issues)
+      std::cout << "  embedding '" << i.embedding << "' at dart " << i.issue.dart << ": " << i.issue.problem << "\n";
+  }
+  return kExitNegative;
+}
+
+}  // namespace
+
+void register_validate(CLI::App& app) {
+  auto args = std::make_shared<ValidateArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "validate", "Check the G-map/O-map constraints and the embeddings; list every violation (exit 1 if any)");
+  sub->add_option("file", args->input, "Map file (.json, .off; - for standard input with --from)")->required();
+  sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
+  sub->add_option("--limit", args->limit, "Maximum number of violations listed")->capture_default_str();
+  sub->add_flag("--json", args->json, "Print JSON");
+  set_action(sub, [args] { return run_validate(*args); });
+}
+
+}  // namespace gmr::cli

@@ -1,0 +1,58 @@
+#include "tools/cli/summary.hpp"
+
+#include "model/orbit.hpp"
+#include "model/validity.hpp"
+
+namespace gmr::cli {
+
+std::string map_name(const GMap& g) {
+  return std::to_string(g.dimension()) + (g.is_omap() ? "-O-map" : "-G-map");
+}
+
+std::string per_dimension(const std::vector<size_t>& v, int lo) {
+  std::string s;
+  for (size_t i = static_cast<size_t>(lo); i < v.size(); ++i)
+    s += (s.empty() ? "" : " ") + std::to_string(i) + ":" + std::to_string(v[i]);
+  return s;
+}
+
+MapSummary summarize(const GMap& g) {
+  MapSummary s{};
+  s.kind = g.kind();
+  s.dimension = g.dimension();
+  s.darts = g.size();
+  s.links.assign(static_cast<size_t>(g.dimension()) + 1, 0);
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i) s.links[static_cast<size_t>(i)] = g.count_links(i);
+  const ValidityReport r = check_validity(g, 0);
+  s.valid = r.ok();
+  s.violations = r.total();
+  s.cells_known = s.valid;
+  if (s.valid) {
+    s.cells = count_all_cells(g);
+    s.components = count_components(g);
+    s.euler = euler_characteristic(g);
+    s.closed = is_closed(g);
+    s.boundary_cells = count_boundary_cells(g);
+  }
+  return s;
+}
+
+void add_to_json(nlohmann::ordered_json& j, const MapSummary& s) {
+  j["kind"] = to_string(s.kind);
+  j["dimension"] = s.dimension;
+  j["darts"] = s.darts;
+  nlohmann::ordered_json links = nlohmann::ordered_json::object();
+  for (int i = s.kind == MapKind::OMap ? 1 : 0; i <= s.dimension; ++i) links[std::to_string(i)] = s.links[static_cast<size_t>(i)];
+  j["links"] = links;
+  j["valid"] = s.valid;
+  j["violations"] = s.violations;
+  if (s.cells_known) {
+    j["cells"] = s.cells;
+    j["components"] = s.components;
+    j["euler"] = s.euler;
+    j["closed"] = s.closed;
+    j["boundary_cells"] = s.boundary_cells;
+  }
+}
+
+}  // namespace gmr::cli

@@ -1,0 +1,38 @@
+// Facts about a map for `gmr info` and `gmr demo`: kind, dimension, darts, links per dimension,
+// cells per dimension, components, Euler characteristic, boundary, validity (orbit.hpp,
+// validity.hpp). Cell counts are computed only for a valid map (orbits of an invalid map do not
+// describe cells).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/gmap.hpp"
+
+namespace gmr::cli {
+
+struct MapSummary {
+  MapKind kind;
+  int dimension;
+  size_t darts;
+  std::vector<size_t> links;  // indexed by dimension (lowest..n; 0 unused for an O-map)
+  bool valid;
+  size_t violations;
+  bool cells_known;  // the rest is meaningful only when valid
+  std::vector<size_t> cells;
+  size_t components = 0;
+  long long euler = 0;
+  bool closed = false;
+  size_t boundary_cells = 0;
+};
+
+MapSummary summarize(const GMap& g);
+// "2-G-map", "3-O-map".
+std::string map_name(const GMap& g);
+// "0:8 1:12 2:6"
+std::string per_dimension(const std::vector<size_t>& v, int lo);
+// Appends the summary's members to the object j.
+void add_to_json(nlohmann::ordered_json& j, const MapSummary& s);
+
+}  // namespace gmr::cli

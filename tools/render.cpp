@@ -1,0 +1,79 @@
+#include "tools/render.hpp"
+
+#include <graphviz/gvc.h>
+
+
+#include "model/atomic_write.hpp"
+#include "model/error.hpp"
+
+namespace gmr {
+
+const char* to_string(ImageFormat f) { return f == ImageFormat::Svg ? "svg" : "png"; }
+
+namespace {
+
+std::string& captured() {
+  static std::string text;
+  return text;
+}
+
+int capture(char* msg) {
+  captured() += msg;
+  return 0;
+}
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
+// Owns the Graphviz context, graph and layout; restores the error handler on exit.
+struct Session {
+  GVC_t* gvc = nullptr;
+  Agraph_t* graph = nullptr;
+  bool laid_out = false;
+  agusererrf previous = nullptr;
+  Session() {
+    captured().clear();
+    previous = agseterrf(capture);
+    agseterr(AGERR);
+    gvc = gvContext();
+  }
+  ~Session() {
+    if (laid_out) gvFreeLayout(gvc, graph);
+    if (graph) agclose(graph);
+    if (gvc) gvFreeContext(gvc);
+    agseterrf(previous);
+  }
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+};
+
+}  // namespace
+
+std::string render_dot(std::string_view dot, ImageFormat format, const std::string& engine) {
+  Session s;
+  if (!s.gvc) throw Error(ErrorCode::Io, "cannot create a Graphviz context");
+  const std::string text(dot);
+  s.graph = agmemread(text.c_str());
+  if (!s.graph) throw Error(ErrorCode::Parse, "Graphviz rejected the DOT text: " + trimmed(captured()));
+  if (gvLayout(s.gvc, s.graph, engine.c_str()) != 0)
+    throw Error(ErrorCode::Usage, "Graphviz layout with engine \"" + engine + "\" failed: " + trimmed(captured()));
+  s.laid_out = true;
+  char* data = nullptr;
+  unsigned int length = 0;
+  if (gvRenderData(s.gvc, s.graph, to_string(format), &data, &length) != 0 || !data) {
+    if (data) gvFreeRenderData(data);
+    throw Error(ErrorCode::Io, std::string("Graphviz could not render ") + to_string(format) + ": " + trimmed(captured()));
+  }
+  std::string out(data, length);
+  gvFreeRenderData(data);
+  return out;
+}
+
+void render_dot_file(std::string_view dot, ImageFormat format, const std::filesystem::path& out,
+                     const std::string& engine) {
+  write_file_atomic(out, render_dot(dot, format, engine));
+}
+
+}  // namespace gmr

@@ -1,0 +1,218 @@
+// The `gmr` binary (tools/cli/) on good and malformed inputs: exit codes 0/1/2, error messages
+// "gmr: error: <location>: <message>" naming the JSON path or line, and no output file left
+// behind by a failed command. The binary's path comes from the build (GMR_BIN), the data files
+// from GMR_SOURCE_DIR.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "model/io_json.hpp"
+#include "model/io_off.hpp"
+#include "model/read_file.hpp"
+#include "model/signature.hpp"
+
+using namespace gmr;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+fs::path source_dir() {
+  const char* s = std::getenv("GMR_SOURCE_DIR");
+  return s ? s : ".";
+}
+fs::path test_data(const std::string& name) { return source_dir() / "model/tests/data" / name; }
+fs::path tools_data(const std::string& name) { return source_dir() / "tools/data" / name; }
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("gmr_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "out");
+  }
+  void TearDown() override { fs::remove_all(dir); }
+
+  Result run(const std::string& args, const std::string& stdin_file = "") {
+    const std::string cmd = q(GMR_BIN) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") +
+                            (stdin_file.empty() ? " </dev/null" : " <" + q(stdin_file));
+    const int status = std::system(cmd.c_str());
+    Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text_file(dir / "stdout"), read_text_file(dir / "stderr")};
+    return r;
+  }
+  // Entries of the output directory (temporary files included).
+  size_t outputs() const {
+    return static_cast<size_t>(std::distance(fs::directory_iterator(dir / "out"), fs::directory_iterator()));
+  }
+  void expect_bad_input(const std::string& args, const std::string& location, const std::string& what = "") {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_EQ(r.err.rfind("gmr: error: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(location), std::string::npos) << "expected location " << location << " in: " << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << "expected " << what << " in: " << r.err;
+  }
+  fs::path dir;
+};
+
+}  // namespace
+
+TEST_F(Cli, HelpForEverySubcommand) {
+  Result r = run("--help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* sub : {"info", "validate", "convert", "dot", "signature", "demo"}) {
+    EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
+    const Result h = run(std::string(sub) + " --help");
+    EXPECT_EQ(h.code, 0) << sub;
+    EXPECT_NE(h.out.find("Usage"), std::string::npos) << sub;
+  }
+}
+
+TEST_F(Cli, UsageErrorsExitTwo) {
+  expect_bad_input("", "usage", "subcommand");
+  expect_bad_input("frobnicate", "usage");
+  expect_bad_input("info", "usage", "file");
+  expect_bad_input("info " + q(tools_data("cube.off")) + " --bogus", "usage", "--bogus");
+  expect_bad_input("info " + q(dir / "missing.json"), (dir / "missing.json").string(), "cannot open");
+  expect_bad_input("info " + q(dir / "noext"), (dir / "noext").string(), "--from");
+  expect_bad_input("info " + q(tools_data("cube.off")) + " --from xyz", "--from", "unknown format");
+}
+
+TEST_F(Cli, InfoOnOffAndJson) {
+  Result r = run("info " + q(tools_data("cube.off")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cells:       0:8 1:12 2:6"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("euler:       2"), std::string::npos) << r.out;
+  r = run("info --json " + q(test_data("square.json")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["darts"], 8);
+  EXPECT_EQ(j["cells"], nlohmann::json::array({4, 4, 1}));
+  EXPECT_EQ(j["boundary_cells"], 4);
+  EXPECT_EQ(j["closed"], false);
+  EXPECT_EQ(j["embeddings"][0]["values"], 4);
+}
+
+TEST_F(Cli, MalformedInputsNameTheirLocation) {
+  expect_bad_input("info " + q(test_data("bad_syntax.json")), "bad_syntax.json:4:8", "malformed JSON");
+  expect_bad_input("validate " + q(test_data("wrong_format.json")), "wrong_format.json:$.format", "gmr.gmap");
+  expect_bad_input("validate " + q(test_data("dart_out_of_range.json")), "dart_out_of_range.json:$.alpha.1[3]",
+                   "dart index 7 out of range");
+  expect_bad_input("info " + q(test_data("nonmanifold_edge.off")), "nonmanifold_edge.off:11", "non-manifold edge");
+  expect_bad_input("info " + q(test_data("pinched_vertex.off")), "pinched_vertex.off:4", "non-manifold vertex");
+  expect_bad_input("info " + q(test_data("bad_line.off")), "bad_line.off:5", "3 numbers");
+}
+
+TEST_F(Cli, ValidateVerdicts) {
+  Result r = run("validate " + q(test_data("square.json")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("valid 2-G-map"), std::string::npos);
+  r = run("validate " + q(test_data("invalid_gmap.json")));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.out.find("4 violation(s)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cycle at dart 0"), std::string::npos) << r.out;
+  r = run("validate --json " + q(test_data("invalid_gmap.json")));
+  EXPECT_EQ(r.code, 1);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["valid"], false);
+  EXPECT_EQ(j["violations"].size(), 4u);
+  EXPECT_EQ(j["violations"][0]["constraint"], "cycle");
+  EXPECT_EQ(j["violations"][0]["dart"], 0);
+  // An orbit without an embedding value is reported on a valid map.
+  std::string text = read_text_file(test_data("square.json"));
+  text.replace(text.find("      {\"dart\": 5, \"value\": [0, 1, 0]}\n"), 0, "");
+  const size_t at = text.find(",\n      {\"dart\": 5");
+  text.erase(at, text.find('}', at) + 1 - at);
+  std::ofstream(dir / "partial.json") << text;
+  r = run("validate " + q(dir / "partial.json"));
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("embedding 'position' at dart"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, ConvertRoundTripsAndFormats) {
+  const fs::path json = dir / "out/cube.json", off = dir / "out/cube.off", obj = dir / "out/cube.obj";
+  EXPECT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(json)).code, 0);
+  EXPECT_EQ(run("convert " + q(json) + " " + q(off)).code, 0);
+  EXPECT_EQ(run("convert " + q(json) + " " + q(obj)).code, 0);
+  const PositionedMap a = read_off_file(tools_data("cube.off")), b = read_off_file(off);
+  EXPECT_TRUE(is_isomorphic(a.map, b.map));
+  EXPECT_TRUE(is_isomorphic(a.map, read_gmap_json_file(json).map));
+  EXPECT_NE(read_text_file(obj).find("\nf "), std::string::npos);
+  for (const char* ext : {"dot", "svg", "png"}) {
+    const fs::path p = dir / "out" / (std::string("square.") + ext);
+    EXPECT_EQ(run("convert " + q(test_data("square.json")) + " " + q(p)).code, 0) << ext;
+    const std::string bytes = read_text_file(p);
+    const std::string e = ext;
+    const bool ok = e == "dot" ? bytes.rfind("graph", 0) == 0
+                    : e == "svg" ? bytes.find("<svg") != std::string::npos
+                                 : bytes.substr(1, 3) == "PNG";
+    EXPECT_TRUE(ok) << ext;
+  }
+  // --from / --to overrides and standard input/output.
+  Result r = run("convert - - --from off --to json", tools_data("cube.off"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(read_gmap_json(r.out).map.size(), 48u);
+  EXPECT_EQ(outputs(), 6u);
+}
+
+TEST_F(Cli, FailedCommandsLeaveNoOutput) {
+  const fs::path out = dir / "out/x.json";
+  expect_bad_input("convert " + q(test_data("bad_syntax.json")) + " " + q(out), "bad_syntax.json:4:8");
+  expect_bad_input("convert " + q(test_data("nonmanifold_edge.off")) + " " + q(out), "nonmanifold_edge.off:11");
+  expect_bad_input("convert " + q(test_data("square.json")) + " " + q(dir / "out/x.txt"), "x.txt", "--to");
+  // OFF output needs positions: the 2-G-map of invalid_gmap.json has none.
+  expect_bad_input("convert " + q(test_data("invalid_gmap.json")) + " " + q(dir / "out/x.off"), "", "\"position\"");
+  expect_bad_input("convert " + q(test_data("square.json")) + " " + q(dir / "out/missing/x.json"), "missing/x.json");
+  EXPECT_EQ(outputs(), 0u);
+  // A failed conversion keeps the previous content of the destination.
+  std::ofstream(out) << "previous";
+  expect_bad_input("convert " + q(test_data("dart_out_of_range.json")) + " " + q(out), "$.alpha.1[3]");
+  EXPECT_EQ(read_text_file(out), "previous");
+  EXPECT_EQ(outputs(), 1u);
+}
+
+TEST_F(Cli, DotAndSignature) {
+  Result r = run("dot " + q(test_data("square.json")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("graph \"gmap\" {", 0), 0u);
+  EXPECT_EQ(r.out.find("0 -- 0"), std::string::npos);
+  r = run("dot --loops " + q(test_data("square.json")));
+  EXPECT_NE(r.out.find("0 -- 0 [color=blue]"), std::string::npos) << r.out;
+  EXPECT_EQ(run("dot " + q(test_data("square.json")) + " -o " + q(dir / "out/sq.svg")).code, 0);
+  expect_bad_input("dot " + q(test_data("square.json")) + " -o " + q(dir / "out/sq.obj"), "sq.obj", "dot, svg or png");
+
+  const Result s1 = run("signature " + q(tools_data("cube.off")));
+  EXPECT_EQ(s1.code, 0) << s1.err;
+  ASSERT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(dir / "out/cube.json")).code, 0);
+  const Result s2 = run("signature " + q(dir / "out/cube.json"));
+  EXPECT_EQ(s1.out, s2.out);
+  EXPECT_EQ(s1.out.rfind("gmap2:[", 0), 0u) << s1.out;
+  const Result f = run("signature --json --flags position " + q(dir / "out/cube.json"));
+  EXPECT_EQ(f.code, 0) << f.err;
+  EXPECT_NE(nlohmann::json::parse(f.out)["signature"], nlohmann::json(s1.out.substr(0, s1.out.size() - 1)));
+  expect_bad_input("signature --flags colour " + q(dir / "out/cube.json"), "--flags", "no embedding");
+}
+
+TEST_F(Cli, Demo) {
+  const Result r = run("demo --json --out " + q(dir / "out/demo"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["ok"], true);
+  ASSERT_EQ(j["objects"].size(), 5u);
+  EXPECT_EQ(j["objects"][0]["darts"], 96);
+  EXPECT_EQ(j["objects"][0]["cells"], nlohmann::json::array({12, 20, 11, 2}));
+  for (const char* f : {"stacked_cubes.dot", "stacked_cubes.svg", "cube.dot", "cube.svg", "cube.obj", "torus.obj"})
+    EXPECT_TRUE(fs::exists(dir / "out/demo" / f)) << f;
+  // The torus OBJ round-trips into the torus of the builders.
+  EXPECT_EQ(run("info " + q(dir / "out/demo/torus.json")).code, 0);
+}
