@@ -38,6 +38,9 @@ class Bitset {
   size_t size() const { return size_; }
   size_t bytes() const { return words_.size() * sizeof(uint64_t); }
   size_t count() const;
+  // Raw words (bit d of word d/64 is dart d), for hot loops that hoist the indirections.
+  uint64_t* data() { return words_.data(); }
+  const uint64_t* data() const { return words_.data(); }
 
  private:
   std::vector<uint64_t> words_;
@@ -109,6 +112,8 @@ class GMap {
   void mark(Dart d, int m) const { marks_[m].set(d); }
   void unmark(Dart d, int m) const { marks_[m].reset(d); }
   void clear_marker(int m) const { marks_[m].clear(); }
+  // The bitset of a reserved marker (sized to capacity()), for hot loops.
+  Bitset& marker_bits(int m) const { return marks_[static_cast<size_t>(m)]; }
 
   // Bytes held by the map's own arrays (links, dead set, free list, allocated markers).
   size_t memory_bytes() const;

@@ -44,16 +44,7 @@ std::vector<Dart> orbit(const GMap& g, const OrbitType& o, Dart d) {
 
 template <class F>
 static size_t for_each_orbit(const GMap& g, DimMask mask, F&& on_representative) {
-  ScopedMarker seen(g);
-  std::vector<Dart> stack;
-  size_t n = 0;
-  g.for_each_dart([&](Dart d) {
-    if (seen.test(d)) return;
-    ++n;
-    on_representative(d);
-    visit_orbit_marked(g, mask, d, seen.id(), stack, [](Dart) {});
-  });
-  return n;
+  return visit_all_orbits(g, mask, on_representative, [](Dart) {});
 }
 
 size_t count_orbits(const GMap& g, const OrbitType& o) {

@@ -20,31 +20,168 @@ void require_orbit_type(const GMap& g, const OrbitType& o);
 // of `o`).
 std::vector<Dart> orbit(const GMap& g, const OrbitType& o, Dart d);
 
-// Visits the <mask>-orbit of d using marker m, leaving every visited dart marked (so that a caller
-// can iterate over all orbits of a type with one marker). `stack` is scratch space. Returns the
-// number of darts visited.
-template <class F>
-size_t visit_orbit_marked(const GMap& g, DimMask mask, Dart d, int m, std::vector<Dart>& stack,
-                          F&& f) {
-  size_t count = 0;
-  stack.clear();
-  stack.push_back(d);
-  g.mark(d, m);
-  while (!stack.empty()) {
-    const Dart v = stack.back();
-    stack.pop_back();
+namespace detail {
+// The traversal of visit_orbit_marked on raw arrays: link[p] is the link array of the p-th
+// dimension of the mask (increasing), K their number (0: runtime count k).
+// The last neighbour found is kept in a register instead of being pushed and popped at once (the
+// visiting order is the one of the plain stack DFS), and a neighbour equal to the current or the
+// previously visited dart is known to be marked without reading the marker.
+template <int K, class F>
+size_t visit_orbit_raw(const Dart* const* link, int k, uint64_t* words, Dart cap, Dart d,
+                       std::vector<Dart>& stack, F& f) {
+  const int kk = K ? K : k;
+  size_t top = 0, count = 0;
+  words[d >> 6] |= uint64_t(1) << (d & 63);
+  Dart v = d, u = d;  // u: the dart visited before v
+  for (;;) {
     f(v);
     ++count;
-    for (DimMask rest = mask; rest; rest &= rest - 1) {
-      const int i = __builtin_ctz(rest);
-      const Dart w = g.alpha(i, v);
-      if (!g.is_marked(w, m)) {
-        g.mark(w, m);
-        stack.push_back(w);
+    Dart next = kNoDart;
+    for (int p = 0; p < kk; ++p) {
+      const Dart w = link[p][v];
+      if (w == v || w == u) continue;  // visited, hence marked
+      if (w >= cap) continue;          // dangling link of an invalid map: not a dart
+      uint64_t& word = words[w >> 6];
+      const uint64_t bit = uint64_t(1) << (w & 63);
+      if (word & bit) continue;
+      word |= bit;
+      if (next != kNoDart) {
+        if (top == stack.size()) stack.resize(top < 16 ? 16 : 2 * top);
+        stack[top++] = next;
       }
+      next = w;
+    }
+    u = v;
+    if (next != kNoDart) v = next;
+    else if (top) v = stack[--top];
+    else break;
+  }
+  return count;
+}
+
+// Two dimensions (a < b): in a G-map, <a,b>-orbits are paths or cycles, and the stack DFS walks
+// them: a dart v reached from the previously visited u by link y has link[y][v] == u, so its only
+// candidate is link[1-y][v]. This fast path takes that step with predictable branches; any other
+// situation (the start, a dart popped from the stack, a non-involutive link) takes the general
+// step of visit_orbit_raw. Same visiting order as visit_orbit_raw.
+template <class F>
+size_t visit_orbit_raw2(const Dart* const* link, uint64_t* words, Dart cap, Dart d,
+                        std::vector<Dart>& stack, F& f) {
+  const Dart* const l0 = link[0];
+  const Dart* const l1 = link[1];
+  // Marks w and returns it when it is a dart not yet marked; kNoDart otherwise.
+  auto take = [words, cap](Dart w) -> Dart {
+    if (w >= cap) return kNoDart;  // dangling link of an invalid map: not a dart
+    uint64_t& word = words[w >> 6];
+    const uint64_t bit = uint64_t(1) << (w & 63);
+    if (word & bit) return kNoDart;
+    word |= bit;
+    return w;
+  };
+  size_t top = 0, count = 0;
+  words[d >> 6] |= uint64_t(1) << (d & 63);
+  Dart v = d, u = d;
+  int y = -1;  // the link (0 or 1) by which v was reached from u; -1: unknown
+  for (;;) {
+    f(v);
+    ++count;
+    Dart next;
+    int ny;
+    if (y == 0 && l0[v] == u) {
+      next = take(l1[v]);
+      ny = 1;
+    } else if (y == 1 && l1[v] == u) {
+      next = take(l0[v]);
+      ny = 0;
+    } else {
+      // General step: both links, in order; the first new one is pushed when there are two.
+      const Dart w0 = l0[v], w1 = l1[v];
+      const Dart n0 = (w0 == v || w0 == u || w0 == d) ? kNoDart : take(w0);  // v, u, d: marked
+      const Dart n1 = (w1 == v || w1 == u || w1 == d) ? kNoDart : take(w1);
+      if (n1 != kNoDart) {
+        if (n0 != kNoDart) {
+          if (top == stack.size()) stack.resize(top < 16 ? 16 : 2 * top);
+          stack[top++] = n0;
+        }
+        next = n1;
+        ny = 1;
+      } else {
+        next = n0;
+        ny = 0;
+      }
+    }
+    u = v;
+    if (next != kNoDart) {
+      v = next;
+      y = ny;
+    } else if (top) {
+      v = stack[--top];
+      y = -1;
+    } else {
+      break;
     }
   }
   return count;
+}
+}  // namespace detail
+
+// Visits the <mask>-orbit of d using marker m, leaving every visited dart marked (so that a caller
+// can iterate over all orbits of a type with one marker). `stack` is scratch space (its contents
+// on return are unspecified). Returns the number of darts visited.
+// Order: depth-first — pop a dart, visit it, push its unmarked neighbours in increasing dimension
+// order. A link to a non-existent index (dangling link of an invalid map) is not followed.
+// The mask's dimensions must be dimensions of g (see require_orbit_type).
+template <class F>
+size_t visit_orbit_marked(const GMap& g, DimMask mask, Dart d, int m, std::vector<Dart>& stack,
+                          F&& f) {
+  // Hot loop on raw arrays: the link arrays of the mask's dimensions and the marker's words are
+  // hoisted out of the loop (no per-step vector-of-vector indirection).
+  const Dart* link[kMaxDim];
+  int k = 0;
+  for (DimMask rest = mask; rest; rest &= rest - 1) link[k++] = g.links(__builtin_ctz(rest)).data();
+  uint64_t* const words = g.marker_bits(m).data();
+  const Dart cap = g.capacity();
+  switch (k) {
+    case 1: return detail::visit_orbit_raw<1>(link, k, words, cap, d, stack, f);
+    case 2: return detail::visit_orbit_raw2(link, words, cap, d, stack, f);
+    case 3: return detail::visit_orbit_raw<3>(link, k, words, cap, d, stack, f);
+    default: return detail::visit_orbit_raw<0>(link, k, words, cap, d, stack, f);
+  }
+}
+
+// Visits every <mask>-orbit of g once, with a marker of its own: on_orbit(r) for the orbit's
+// smallest dart r (orbits are met in increasing order of r), then on_dart(x) for each of its
+// darts in visit_orbit_marked order. Returns the number of orbits. Without deleted darts, the
+// scan for the next unmarked dart skips 64 marked darts at a time.
+template <class R, class F>
+size_t visit_all_orbits(const GMap& g, DimMask mask, R&& on_orbit, F&& on_dart) {
+  ScopedMarker seen(g);
+  std::vector<Dart> stack;
+  size_t n = 0;
+  if (g.has_holes()) {
+    g.for_each_dart([&](Dart d) {
+      if (seen.test(d)) return;
+      ++n;
+      on_orbit(d);
+      visit_orbit_marked(g, mask, d, seen.id(), stack, on_dart);
+    });
+    return n;
+  }
+  const uint64_t* const words = g.marker_bits(seen.id()).data();
+  const Dart cap = g.capacity();
+  const size_t nw = (size_t(cap) + 63) / 64;
+  for (size_t wi = 0; wi < nw; ++wi) {
+    const uint64_t valid =
+        (wi + 1 < nw || cap % 64 == 0) ? ~uint64_t(0) : (uint64_t(1) << (cap % 64)) - 1;
+    // Re-read the word after each orbit: the visit marks darts further on.
+    for (uint64_t todo; (todo = ~words[wi] & valid) != 0;) {
+      const Dart d = static_cast<Dart>(wi * 64 + static_cast<size_t>(__builtin_ctzll(todo)));
+      ++n;
+      on_orbit(d);
+      visit_orbit_marked(g, mask, d, seen.id(), stack, on_dart);
+    }
+  }
+  return n;
 }
 
 // Number of <o>-orbits of g.
