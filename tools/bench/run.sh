@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Builds the benchmarks (-DGMR_BENCH=ON, Release) in a build directory of their own, runs gmr
+# against CGAL on G-maps of >= 10^7 darts (tools/bench/cgal_peer_bench.cpp), and prints a table of
+# gmr/CGAL time ratios (< 1: gmr faster) and the bytes per dart of both.
+#
+#   tools/bench/run.sh                                  # everything (~2-3 min, ~1.5 GB RAM)
+#   tools/bench/run.sh --benchmark_filter='torus2d/'    # extra arguments go to Google Benchmark
+#   GMR_BENCH_SCALE=0.05 tools/bench/run.sh             # small maps, quick check
+#   GMR_BENCH_BUILD=/tmp/b tools/bench/run.sh           # build directory (default: build-bench)
+#   GMR_BENCH_REPS=5 tools/bench/run.sh                 # repetitions, medians reported (default 3)
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+build=${GMR_BENCH_BUILD:-$root/build-bench}
+reps=${GMR_BENCH_REPS:-3}
+jobs=$(nproc 2>/dev/null || echo 2)
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
+cmake --build "$build" --target gmr_bench_cgal -j"$jobs"
+
+out="$build/bench-results.json"
+mem="$build/bench-memory.txt"
+"$build/tools/bench/gmr_bench_cgal" --benchmark_repetitions="$reps" \
+  --benchmark_report_aggregates_only=true --benchmark_out="$out" --benchmark_out_format=json "$@" \
+  | tee "$mem"
+
+python3 - "$out" <<'PY'
+import json, sys
+data = json.load(open(sys.argv[1]))
+runs = {}
+for b in data["benchmarks"]:
+    name = b.get("run_name", b["name"])
+    if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+        continue
+    name = name.replace("/real_time", "")
+    runs[name] = (b["real_time"], b["cpu_time"], b.get("time_unit", "ms"))
+rows = []
+for name, (rt, ct, unit) in runs.items():
+    if not name.endswith("/gmr"):
+        continue
+    peer = name[: -len("/gmr")] + "/cgal"
+    if peer not in runs:
+        continue
+    prt, pct, _ = runs[peer]
+    rows.append((name[: -len("/gmr")], rt, prt, rt / prt, ct / pct, unit))
+print()
+print("gmr vs CGAL (medians; ratio = gmr / CGAL, < 1 means gmr is faster)")
+print(f"{'benchmark':28} {'gmr':>10} {'CGAL':>10} {'real ratio':>11} {'cpu ratio':>10}")
+for what, rt, prt, rr, cr, unit in rows:
+    print(f"{what:28} {rt:8.1f}{unit:>2} {prt:8.1f}{unit:>2} {rr:11.2f} {cr:10.2f}")
+slower = [r[0] for r in rows if r[3] > 1.0]
+print("gmr slower than CGAL on: " + (", ".join(slower) if slower else "none"))
+PY
