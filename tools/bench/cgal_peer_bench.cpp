@@ -9,6 +9,9 @@
 // Benchmarks (each `<map>/<what>/gmr` has a `<map>/<what>/cgal` peer doing the same work):
 //   orbits<o>  traverse every <o>-orbit once (marker + per-orbit traversal, counting darts and
 //              orbits); gmr: visit_all_orbits, CGAL: a marker + darts_of_orbit<o> per orbit;
+//   components every connected component (box3d; torus2d: orbits<0,1,2>): gmr visit_all_orbits
+//              over all dimensions, CGAL darts_of_cell<4> (darts_of_orbit<0,1,2,3> does not compile
+//              in CGAL 5.5);
 //   valid      full validity check; gmr::is_valid vs CGAL is_valid;
 //   cells      number of i-cells for every i and of connected components; gmr::count_all_cells +
 //              count_components vs CGAL count_all_cells.
@@ -225,6 +228,30 @@ void cgal_orbits(benchmark::State& state, Fixture<N>& f) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * m.number_of_darts()));
 }
 
+// CGAL: every I-cell once (darts_of_cell<I>; I = N+1: connected components).
+template <unsigned N, unsigned I>
+void cgal_cell_orbits(benchmark::State& state, Fixture<N>& f) {
+  const CMap<N>& m = f.c;
+  size_t orbits = 0, darts = 0;
+  for (auto _ : state) {
+    const auto mark = m.get_new_mark();
+    orbits = darts = 0;
+    for (auto it = m.darts().begin(), end = m.darts().end(); it != end; ++it) {
+      if (m.is_marked(it, mark)) continue;
+      ++orbits;
+      for (auto o = m.template darts_of_cell<I>(it).begin(); o.cont(); ++o) {
+        m.mark(o, mark);
+        ++darts;
+      }
+    }
+    m.free_mark(mark);
+    benchmark::DoNotOptimize(darts);
+  }
+  state.counters["orbits"] = static_cast<double>(orbits);
+  if (darts != m.number_of_darts()) state.SkipWithError("not every dart visited");
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * m.number_of_darts()));
+}
+
 template <unsigned N>
 void gmr_valid(benchmark::State& state, Fixture<N>& f) {
   bool ok = true;
@@ -322,6 +349,12 @@ void register_all() {
     gmr_orbits(s, box(), mask_of({0, 1, 2}));
   });
   reg("box3d/orbits<0,1,2>/cgal", [](benchmark::State& s) { cgal_orbits<3, 0, 1, 2>(s, box()); });
+  // CGAL 5.5 cannot compile darts_of_orbit with 4 alphas (GMap_extend_iterator<..., Tag_true>
+  // calls alpha(amap, Ai)); the connected component is its (dimension+1)-cell.
+  reg("box3d/components/gmr", [](benchmark::State& s) {
+    gmr_orbits(s, box(), mask_of({0, 1, 2, 3}));
+  });
+  reg("box3d/components/cgal", [](benchmark::State& s) { cgal_cell_orbits<3, 4>(s, box()); });
   reg("box3d/orbits<1,2>/gmr", [](benchmark::State& s) { gmr_orbits(s, box(), mask_of({1, 2})); });
   reg("box3d/orbits<1,2>/cgal", [](benchmark::State& s) { cgal_orbits<3, 1, 2>(s, box()); });
   reg("box3d/valid/gmr", [](benchmark::State& s) { gmr_valid(s, box()); });
