@@ -27,7 +27,15 @@ std::string trimmed(std::string s) {
   return s;
 }
 
-// Owns the Graphviz context, graph and layout; restores the error handler on exit.
+// One Graphviz context for the whole process, never freed: the pango text-layout plugin of
+// Graphviz 2.43 keeps a pointer to the last font name in a static, which a gvFreeContext frees,
+// so a second context would read freed memory (seen with AddressSanitizer).
+GVC_t* context() {
+  static GVC_t* const gvc = gvContext();
+  return gvc;
+}
+
+// Owns the graph and its layout; restores the error handler on exit.
 struct Session {
   GVC_t* gvc = nullptr;
   Agraph_t* graph = nullptr;
@@ -37,12 +45,11 @@ struct Session {
     captured().clear();
     previous = agseterrf(capture);
     agseterr(AGERR);
-    gvc = gvContext();
+    gvc = context();
   }
   ~Session() {
     if (laid_out) gvFreeLayout(gvc, graph);
     if (graph) agclose(graph);
-    if (gvc) gvFreeContext(gvc);
     agseterrf(previous);
   }
   Session(const Session&) = delete;

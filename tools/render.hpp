@@ -2,6 +2,7 @@
 // text, gvLayout lays it out (engine "dot" by default), gvRenderData produces the image in memory,
 // and the file is written atomically (write_file_atomic), so a failed rendering leaves no file.
 // Graphviz's own diagnostics are captured and returned in the Error, never printed.
+// One Graphviz context serves the whole process (see render.cpp).
 #pragma once
 #include <filesystem>
 #include <string>
