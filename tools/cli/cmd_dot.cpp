@@ -1,9 +1,11 @@
 // `gmr dot FILE [-o OUT]`: the drawing of a map (model/io_dot.hpp): DOT text on standard output,
-// or DOT/SVG/PNG written atomically to OUT (format by extension or --to).
+// or DOT/SVG/PNG written atomically to OUT (format by extension or --to). Rule files (gmr.rule
+// concrete or scheme, Jerboa .jme with --rule NAME) are drawn by rule_dot.hpp (--kappa, --check).
 #include <iostream>
 #include <memory>
 
 #include "tools/cli/cli.hpp"
+#include "tools/cli/rule_dot.hpp"
 
 namespace gmr::cli {
 
@@ -13,9 +15,13 @@ struct DotArgs {
   std::string input, from, output = "-", to;
   bool loops = false;
   std::string name = "gmap";
+  std::string rule;           // rule files: a rule of a .jme file
+  bool kappa = false, check = false;
 };
 
 int run_dot(const DotArgs& a) {
+  if (auto rc = dot_rule_input({a.input, a.output, a.to, a.rule, a.name == "gmap" ? "" : a.name, a.kappa, a.check}))
+    return *rc;
   const Format out = a.output == "-" && a.to.empty() ? Format::Dot : output_format(a.output, a.to);
   if (out != Format::Dot && out != Format::Svg && out != Format::Png)
     throw Error(ErrorCode::Usage, std::string("gmr dot writes dot, svg or png, not ") + to_string(out), a.output);
@@ -34,12 +40,17 @@ void register_dot(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "dot", "Draw a map: darts as nodes, links coloured per dimension (0 black, 1 red, 2 blue, 3 green, "
              "4 orange, 5 purple, 6 brown, 7 cyan)");
-  sub->add_option("file", args->input, "Map file (.json, .off; - for standard input with --from)")->required();
+  sub->add_option("file", args->input,
+                  "Map file (.json, .off; - for standard input with --from), or rule file (gmr.rule JSON, concrete or "
+                  "scheme; Jerboa .jme)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("-o,--output", args->output, "Output file (.dot, .svg, .png); default: DOT on standard output");
   sub->add_option("--to", args->to, "Output format (dot|svg|png)");
   sub->add_flag("--loops", args->loops, "Draw the i-loops of free darts");
   sub->add_option("--name", args->name, "Graph name")->capture_default_str();
+  sub->add_option("--rule", args->rule, "Rule files: the rule of a .jme file to draw");
+  sub->add_flag("--kappa", args->kappa, "Concrete rules: draw the kappa arcs of the joint representation (pink dashed)");
+  sub->add_flag("--check", args->check, "Rule files: run the checker and highlight the offending nodes");
   set_action(sub, [args] { return run_dot(*args); });
 }
 

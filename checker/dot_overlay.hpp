@@ -1,0 +1,16 @@
+// Checker diagnostics as highlights of a rule diagram (model/io_rule_dot.hpp): every diagnostic that
+// names nodes (or, failing that, a path) highlights them on its side, with its code as xlabel and
+// its message as tooltip. Notes are not drawn; scheme warnings get the warning colour.
+#pragma once
+#include <vector>
+
+#include "checker/diagnostic.hpp"
+#include "checker/scheme_checker.hpp"
+#include "model/io_rule_dot.hpp"
+
+namespace gmr {
+
+std::vector<DotHighlight> dot_highlights(const CheckReport& r);
+std::vector<DotHighlight> dot_highlights(const SchemeCheckReport& r);
+
+}  // namespace gmr

@@ -1,0 +1,45 @@
+#include "tools/cli/rule_dot.hpp"
+
+#include "checker/dot_overlay.hpp"
+#include "checker/rule_check.hpp"
+#include "checker/scheme_checker.hpp"
+#include "model/error.hpp"
+#include "model/io_rule_dot.hpp"
+#include "tools/cli/cli.hpp"
+#include "tools/cli/rule_input.hpp"
+#include "tools/render.hpp"
+
+namespace gmr::cli {
+
+std::optional<int> dot_rule_input(const RuleDotArgs& a) {
+  if (!is_rule_file(a.input)) {
+    if (!a.rule.empty() || a.kappa || a.check)
+      throw Error(ErrorCode::Usage, "--rule, --kappa and --check apply to rule files (gmr.rule JSON, .jme)", a.input);
+    return std::nullopt;
+  }
+  const Format out = a.output == "-" && a.to.empty() ? Format::Dot : output_format(a.output, a.to);
+  if (out != Format::Dot && out != Format::Svg && out != Format::Png)
+    throw Error(ErrorCode::Usage, std::string("gmr dot writes dot, svg or png, not ") + to_string(out), a.output);
+  const RuleInput in = load_rule_input(a.input, a.rule);
+  RuleDotOptions opt;
+  opt.kappa = a.kappa;
+  opt.name = a.name;
+  std::string dot;
+  if (in.is_scheme()) {
+    if (a.kappa) throw Error(ErrorCode::Usage, "--kappa draws the joint representation of a concrete rule", a.input);
+    if (a.check) opt.highlights = dot_highlights(check_scheme(*in.scheme));
+    dot = to_dot(*in.scheme, opt);
+  } else {
+    if (a.check) opt.highlights = dot_highlights(check_rule(*in.concrete));
+    dot = to_dot(*in.concrete, opt);
+  }
+  if (out == Format::Dot) {
+    write_output(a.output, dot);
+  } else {
+    if (a.output == "-") throw Error(ErrorCode::Usage, "images are not written to standard output", a.output);
+    render_dot_file(dot, out == Format::Svg ? ImageFormat::Svg : ImageFormat::Png, a.output);
+  }
+  return kExitOk;
+}
+
+}  // namespace gmr::cli

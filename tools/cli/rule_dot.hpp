@@ -1,0 +1,19 @@
+// `gmr dot` on rule files (issue 4): concrete rules and rule schemes (gmr.rule JSON, .jme) drawn by
+// model/io_rule_dot.hpp, optionally with κ arcs and the checker's diagnostics overlaid. Called by
+// tools/cli/cmd_dot.cpp before its map path.
+#pragma once
+#include <optional>
+#include <string>
+
+namespace gmr::cli {
+
+struct RuleDotArgs {
+  std::string input, output = "-", to, rule, name;
+  bool kappa = false;  // κ arcs (concrete rules)
+  bool check = false;  // overlay the checker's diagnostics
+};
+
+// nullopt when the input is not a rule file; otherwise the exit code (0). Bad input throws.
+std::optional<int> dot_rule_input(const RuleDotArgs& a);
+
+}  // namespace gmr::cli
