@@ -5,6 +5,8 @@
 // used. Embeddings of the input are not carried over (the output has none).
 // Exit 0 when the result is a valid map (written to -o when given), 1 when no match applies or the
 // result breaks a constraint of the model (listed), 2 on bad input.
+// Rule schemes (gmr.rule kind "scheme", Jerboa .jme with --rule) go to scheme_apply.hpp
+// (--hook D[,D...] or --all).
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -14,6 +16,8 @@
 #include "model/rule_json.hpp"
 #include "model/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/rule_input.hpp"
+#include "tools/cli/scheme_apply.hpp"
 
 namespace gmr::cli {
 
@@ -22,6 +26,8 @@ namespace {
 struct ApplyArgs {
   std::string rule, input, from, output, to, match;
   bool json = false;
+  std::string hooks, rule_name;  // rule schemes
+  bool all = false;
 };
 
 std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, const std::string& text) {
@@ -49,7 +55,14 @@ std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, con
 }
 
 int run_apply(const ApplyArgs& a) {
-  const Rule r = read_rule_file(a.rule);
+  const RuleInput in = load_rule_input(a.rule, a.rule_name);
+  if (in.is_scheme()) {
+    if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
+    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json});
+  }
+  if (!a.hooks.empty() || a.all)
+    throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
+  const Rule& r = *in.concrete;
   const GMapFile f = load_map(a.input, a.from);
   const GMap& g = f.map;
   const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_pairs(r, g, a.match);
@@ -128,14 +141,18 @@ int run_apply(const ApplyArgs& a) {
 
 void register_apply(CLI::App& app) {
   auto args = std::make_shared<ApplyArgs>();
-  CLI::App* sub = app.add_subcommand("apply", "Apply a concrete rule once (DPO) at a match; exit 1 if it does not apply or breaks the map");
-  sub->add_option("rule", args->rule, "Rule file (gmr.rule JSON)")->required();
+  CLI::App* sub = app.add_subcommand(
+      "apply", "Apply a concrete rule once (DPO) at a match, or a rule scheme at hook darts; exit 1 if it does not apply or breaks the map");
+  sub->add_option("rule", args->rule, "Rule file (gmr.rule JSON, concrete or scheme; Jerboa .jme with --rule)")->required();
   sub->add_option("map", args->input, "Map file (.json, .off)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--match", args->match, "L-node=dart pairs, e.g. a=3,b=5 (default: the first applicable match)");
   sub->add_option("-o,--output", args->output, "Write the result map here");
   sub->add_option("--to", args->to, std::string("Output format (") + kOutputFormats + ")");
-  sub->add_flag("--json", args->json, "Print JSON");
+  sub->add_flag("--json", args->json, "Print JSON (schemes: with the match and comatch tables)");
+  sub->add_option("--hook", args->hooks, "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
+  sub->add_flag("--all", args->all, "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
+  sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
   set_action(sub, [args] { return run_apply(*args); });
 }
 

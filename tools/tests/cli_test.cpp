@@ -216,3 +216,109 @@ TEST_F(Cli, Demo) {
   // The torus OBJ round-trips into the torus of the builders.
   EXPECT_EQ(run("info " + q(dir / "out/demo/torus.json")).code, 0);
 }
+
+fs::path rule_data(const std::string& name) { return tools_data("rules/" + name); }
+fs::path checker_data(const std::string& name) { return source_dir() / "checker/tests/data" / name; }
+
+TEST_F(Cli, DotOfRulesAndSchemes) {
+  // A rule scheme: labels "n0 <_,1,2>", arcs coloured per dimension, double-bordered hook.
+  Result r = run("dot " + q(rule_data("quad_subdivision.json")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("digraph \"quad_subdivision\" {", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("label=\"n0 <0,1,2>\", peripheries=2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("label=\"n0 <_,1,2>\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("color=red"), std::string::npos);
+  EXPECT_NE(r.out.find("color=black"), std::string::npos);
+  // A concrete rule with κ arcs.
+  r = run("dot --kappa " + q(checker_data("F5_fig319a_sew.json")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("subgraph cluster_L"), std::string::npos);
+  EXPECT_NE(r.out.find("subgraph cluster_R"), std::string::npos);
+  EXPECT_NE(r.out.find("color=pink, style=dashed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("color=blue"), std::string::npos) << r.out;
+  // A rejected rule: the offending added node d is highlighted with its code.
+  r = run("dot --check " + q(checker_data("F1_ex34_weak_incident.json")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const size_t at = r.out.find("R3 [label=\"d\"");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+  EXPECT_NE(line.find("I-added-node"), std::string::npos) << line;
+  EXPECT_NE(line.find("style=\"bold,filled\""), std::string::npos) << line;
+  // Rendering and .jme files.
+  EXPECT_EQ(run("dot --check " + q(rule_data("sew2.json")) + " -o " + q(dir / "out/sew2.svg")).code, 0);
+  EXPECT_NE(read_text_file(dir / "out/sew2.svg").find("<svg"), std::string::npos);
+  EXPECT_EQ(run("dot --kappa " + q(checker_data("F1_ex34_weak_incident.json")) + " -o " + q(dir / "out/f1.png")).code, 0);
+  EXPECT_EQ(read_text_file(dir / "out/f1.png").substr(1, 3), "PNG");
+  r = run("dot " + q(test_data("JerboaTrackingOrbit.jme")) + " --rule " + "NOTARULE");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("rules: "), std::string::npos) << r.err;
+  expect_bad_input("dot " + q(test_data("JerboaTrackingOrbit.jme")), "JerboaTrackingOrbit.jme", "--rule NAME");
+  expect_bad_input("dot --kappa " + q(rule_data("sew2.json")), "sew2.json", "concrete rule");
+  expect_bad_input("dot --check " + q(test_data("square.json")), "square.json", "rule files");
+  EXPECT_EQ(outputs(), 2u);
+}
+
+TEST_F(Cli, DotOfJerboaRule) {
+  Result r = run("check --json " + q(test_data("JerboaTrackingOrbit.jme")));
+  ASSERT_NE(r.out, "");
+  const auto j = nlohmann::json::parse(r.out);
+  const std::string name = j["reports"][0]["rule"];
+  r = run("dot --check " + q(test_data("JerboaTrackingOrbit.jme")) + " --rule " + q(name));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("subgraph cluster_L"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, CheckAndApplyConcreteRule) {
+  EXPECT_EQ(run("check " + q(checker_data("F5_fig319a_unsew.json"))).code, 0);
+  EXPECT_EQ(run("check " + q(checker_data("F1_ex34_weak_incident.json"))).code, 1);
+  const fs::path out = dir / "out/unsewn.json";
+  Result r = run("apply --json " + q(checker_data("F5_fig319a_unsew.json")) + " " + q(tools_data("cube.off")) + " -o " + q(out));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["valid"], true);
+  EXPECT_EQ(read_gmap_json_file(out).map.size(), 48u);
+  // No match: sew on a closed cube; a scheme option on a concrete rule.
+  EXPECT_EQ(run("apply " + q(checker_data("F5_fig319a_sew.json")) + " " + q(tools_data("cube.off")) + " -o " + q(dir / "out/x.json")).code, 1);
+  expect_bad_input("apply --all " + q(checker_data("F5_fig319a_sew.json")) + " " + q(tools_data("cube.off")), "F5_fig319a_sew.json", "--match");
+  EXPECT_EQ(outputs(), 1u);
+}
+
+TEST_F(Cli, CheckAndApplyScheme) {
+  EXPECT_EQ(run("check " + q(rule_data("quad_subdivision.json"))).code, 0);
+  // Quad subdivision of the cube at one hook: the whole component, 48 -> 192 darts.
+  const fs::path out = dir / "out/quads.json";
+  Result r = run("apply --json " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --hook 0 -o " + q(out));
+  EXPECT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["darts"], 192);
+  EXPECT_EQ(j["valid"], true);
+  ASSERT_EQ(j["tables"].size(), 1u);
+  EXPECT_EQ(j["tables"][0]["comatch"]["n3"].size(), 48u);
+  EXPECT_EQ(j["tables"][0]["comatch"]["n0"][0], j["tables"][0]["orbit"][0]);
+  EXPECT_EQ(read_gmap_json_file(out).map.size(), 192u);
+  // --all: vertex insertion on every edge of the cube (12 applications), then quad subdivision once.
+  r = run("apply --json --all " + q(rule_data("vertex_insertion.json")) + " " + q(tools_data("cube.off")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["darts"], 96);
+  EXPECT_EQ(j["valid"], true);
+  r = run("apply --all " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("applied 1 time"), std::string::npos) << r.out;
+  // Two hooks: sew two free edges of an open square.
+  r = run("apply " + q(rule_data("sew2.json")) + " " + q(test_data("square.json")) + " --hook 0,4 -o " + q(dir / "out/sewn.json"));
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  // Not applicable (exit 1, the reason, no output): sew on the closed cube.
+  r = run("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --hook 0,8 -o " + q(dir / "out/x.json"));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.out.find("not applicable, because"), std::string::npos) << r.out;
+  r = run("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --hook 0,0 -o " + q(dir / "out/x.json"));
+  EXPECT_EQ(r.code, 1) << r.err;
+  // Bad input (exit 2): unknown dart, wrong number of hooks, --all with two hooks, no hook.
+  const std::string quad = q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off"));
+  expect_bad_input("apply " + quad + " --hook 999 -o " + q(dir / "out/x.json"), "--hook", "not a dart");
+  expect_bad_input("apply " + quad + " --hook 0,1 -o " + q(dir / "out/x.json"), "quad_subdivision", "1 hook(s), 2 dart(s)");
+  expect_bad_input("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --all", "--all", "one hook");
+  expect_bad_input("apply " + quad, "--hook", "--all");
+  expect_bad_input("apply " + quad + " --hook 0 --match n0=0", "--match");
+  EXPECT_EQ(outputs(), 2u);
+}
