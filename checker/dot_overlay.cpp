@@ -1,5 +1,7 @@
 #include "checker/dot_overlay.hpp"
 
+#include <algorithm>
+
 namespace gmr {
 
 namespace {
@@ -13,8 +15,18 @@ void add(std::vector<DotHighlight>& out, const std::string& side, const std::vec
 
 std::vector<DotHighlight> dot_highlights(const CheckReport& r) {
   std::vector<DotHighlight> out;
-  for (const auto& d : r.diagnostics)
-    if (d.severity == Severity::Error) add(out, d.side, d.nodes, d.path, d.code, d.message, true);
+  for (const auto& d : r.diagnostics) {
+    if (d.severity != Severity::Error) continue;
+    // Without a side, the arcs' tags ("a -2-> c (L)") tell it when they agree.
+    std::string side = d.side;
+    if (side.empty() && !d.arcs.empty()) {
+      auto on = [&](const char* tag) {
+        return std::all_of(d.arcs.begin(), d.arcs.end(), [&](const std::string& a) { return a.ends_with(tag); });
+      };
+      side = on("(L)") ? "L" : on("(R)") ? "R" : "";
+    }
+    add(out, side, d.nodes, d.path, d.code, d.message, true);
+  }
   return out;
 }
 

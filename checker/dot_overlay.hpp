@@ -1,6 +1,7 @@
 // Checker diagnostics as highlights of a rule diagram (model/io_rule_dot.hpp): every diagnostic that
-// names nodes (or, failing that, a path) highlights them on its side, with its code as xlabel and
-// its message as tooltip. Notes are not drawn; scheme warnings get the warning colour.
+// names nodes (or, failing that, a path) highlights them on its side (for a concrete diagnostic
+// without side: the side its arcs are tagged with), with its code in the node's note and
+// "code: message" as tooltip. Notes are not drawn; scheme warnings get the warning colour.
 #pragma once
 #include <vector>
 

@@ -23,9 +23,11 @@ std::string graph_header(const std::string& kind, const std::string& name, const
   return out;
 }
 
-// Attributes of a node: role, hook, highlights.
-std::string node_attrs(const std::string& label, bool right, const std::string& name, int role, bool hook,
-                       const std::vector<DotHighlight>& hl) {
+// A node statement: role, hook, highlights. A highlighted node is filled, its tooltip lists
+// "code: message" lines, and a note node (shape=note, the codes) is attached to it by a dotted edge:
+// Graphviz places xlabels poorly in clusters, a note stays next to its node.
+std::string node_stmt(const std::string& id, const std::string& label, bool right, const std::string& name, int role,
+                      bool hook, const std::vector<DotHighlight>& hl) {
   std::vector<std::string> style;
   std::string a = "label=" + quote(label);
   if (role == 1) style.push_back("dashed");  // deleted
@@ -37,21 +39,26 @@ std::string node_attrs(const std::string& label, bool right, const std::string& 
     if (h.node != name || !(h.side.empty() || h.side == (right ? "R" : "L"))) continue;
     any = true;
     error = error || h.error;
-    if (!h.code.empty() && codes.find(h.code) == std::string::npos) codes += (codes.empty() ? "" : ", ") + h.code;
-    if (!h.message.empty()) messages += (messages.empty() ? "" : "\n") + h.message;
+    if (!h.code.empty() && ("\n" + codes + "\n").find("\n" + h.code + "\n") == std::string::npos)
+      codes += (codes.empty() ? "" : "\n") + h.code;
+    const std::string line = h.code.empty() ? h.message : h.message.empty() ? h.code : h.code + ": " + h.message;
+    messages += (messages.empty() ? "" : "\n") + line;
   }
+  std::string note;
   if (any) {
     style.push_back("filled");
     a += std::string(", fillcolor=\"") + (error ? kDotErrorFill : kDotWarningFill) + "\"";
-    if (!codes.empty()) a += ", xlabel=" + quote(codes) + ", fontcolor=black";
-    a += ", tooltip=" + quote(messages.empty() ? codes : messages);
+    a += ", tooltip=" + quote(messages);
+    if (!codes.empty())
+      note = "    " + id + "_note [shape=note, fontsize=8, fontcolor=darkred, color=gray, label=" + quote(codes) +
+             "];\n    " + id + " -> " + id + "_note [style=dotted, color=gray, dir=none, arrowhead=none];\n";
   }
   if (!style.empty()) {
-    std::string s;
-    for (const auto& x : style) s += (s.empty() ? "" : ",") + x;
-    a += ", style=\"" + s + "\"";
+    std::string st;
+    for (const auto& x : style) st += (st.empty() ? "" : ",") + x;
+    a += ", style=\"" + st + "\"";
   }
-  return a;
+  return "    " + id + " [" + a + "];\n" + note;
 }
 
 std::string arc_attrs(int dim, bool changed) {
@@ -77,8 +84,7 @@ std::string to_dot(const Rule& r, const RuleDotOptions& opt) {
     out += cluster_open(right);
     for (Node v = 0; v < g.num_nodes(); ++v) {
       const int role = r.node_status(right, v) == ElemStatus::Preserved ? 0 : right ? 2 : 1;
-      out += "    " + node_id(right, v) + " [" + node_attrs(g.node_str(v), right, g.name(v), role, false, opt.highlights) +
-             "];\n";
+      out += node_stmt(node_id(right, v), g.node_str(v), right, g.name(v), role, false, opt.highlights);
     }
     // Opposite arcs of one label are drawn as one undirected edge; the others are directed.
     std::vector<bool> drawn(g.num_arc_slots(), false);
@@ -126,9 +132,8 @@ std::string to_dot(const RuleScheme& s, const RuleDotOptions& opt) {
     for (uint32_t v = 0; v < g.size(); ++v) {
       const NodeRole role = right ? s.role_right(v) : s.role_left(v);
       const int r = role == NodeRole::Preserved ? 0 : role == NodeRole::Deleted ? 1 : 2;
-      out += "    " + node_id(right, v) + " [" +
-             node_attrs(node_label_text(g.nodes[v]), right, g.nodes[v].name, r, !right && hook[v], opt.highlights) +
-             "];\n";
+      out += node_stmt(node_id(right, v), node_label_text(g.nodes[v]), right, g.nodes[v].name, r, !right && hook[v],
+                       opt.highlights);
     }
     const GraphScheme& other = right ? s.left : s.right;
     for (const SchemeArc& arc : g.arcs) {

@@ -14,8 +14,8 @@
 // (penwidth=2.5) than preserved ones.
 //
 // Diagnostics overlay: each DotHighlight names a node (by side and name) and a text; the node is
-// filled (errors light red, warnings light orange), gets the codes as xlabel and the messages as
-// tooltip (shown by SVG viewers). The conversion from checker reports is in
+// filled (errors light red, warnings light orange), gets "code: message" lines as tooltip (shown by
+// SVG viewers), and a note node "<id>_note" (shape=note) listing the codes is attached to it. The conversion from checker reports is in
 // checker/dot_overlay.hpp (the model does not depend on the checker).
 #pragma once
 #include <string>
@@ -29,7 +29,7 @@ namespace gmr {
 struct DotHighlight {
   std::string side;     // "L", "R", or "" for a node of that name on either side
   std::string node;     // node name
-  std::string code;     // short text shown next to the node (xlabel), e.g. "I-added-node"
+  std::string code;     // short text shown in the note next to the node, e.g. "I-added-node"
   std::string message;  // tooltip
   bool error = true;    // false: warning colour
 };

@@ -102,10 +102,11 @@ TEST(IoRuleDot, Highlights) {
   RuleDotOptions opt;
   opt.highlights = {{"R", "n1", "X-code", "a message", true}, {"", "n0", "W-code", "careful", false}};
   const std::string dot = to_dot(sew, opt);
-  EXPECT_NE(dot.find("R1 [label=\"n1 <0>\", fillcolor=\"#ff9c9c\", xlabel=\"X-code\", fontcolor=black, "
-                     "tooltip=\"a message\", style=\"filled\"]"),
+  EXPECT_NE(dot.find("R1 [label=\"n1 <0>\", fillcolor=\"#ff9c9c\", tooltip=\"X-code: a message\", style=\"filled\"]"),
             std::string::npos)
       << dot;
+  EXPECT_NE(dot.find("R1_note [shape=note, fontsize=8, fontcolor=darkred, color=gray, label=\"X-code\"]"), std::string::npos);
+  EXPECT_NE(dot.find("R1 -> R1_note [style=dotted"), std::string::npos);
   EXPECT_EQ(dot.find("L1 [label=\"n1 <0>\", peripheries=2, fill"), std::string::npos) << dot;  // R only
   EXPECT_EQ(count(dot, "fillcolor=\"#ffd58a\""), 2u) << dot;                                  // n0 on both sides
 }
