@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Regenerates the README's diagrams (docs/diagrams/*.svg) with the gmr binary: rule schemes, a
+# concrete rule with its kappa arcs, a rejected rule with the checker's diagnostics overlaid, and
+# the cube G-map. Colours per dimension: 0 black, 1 red, 2 blue, 3 green.
+#
+#   tools/diagrams.sh                   # builds gmr in build/ if needed
+#   GMR_BIN=build-diag/tools/gmr tools/diagrams.sh   # use an existing binary
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+if [[ -z "${GMR_BIN:-}" ]]; then
+  cmake -S "$root" -B "$root/build" >/dev/null
+  cmake --build "$root/build" --target gmr -j"$(nproc)" >/dev/null
+  GMR_BIN="$root/build/tools/gmr"
+fi
+out=docs/diagrams
+mkdir -p "$out"
+run() { echo "gmr $*"; "$GMR_BIN" "$@"; }
+
+# Rule schemes: labels "n0 <_,1,2>", hooks double-bordered, explicit arcs coloured per dimension.
+run dot tools/data/rules/quad_subdivision.json -o "$out/quad_subdivision.svg"
+run dot tools/data/rules/sew2.json -o "$out/sew2.svg"
+run dot tools/data/rules/vertex_insertion.json -o "$out/vertex_insertion.svg"
+# A concrete rule (2-sew, thesis Fig. 3.19a) with the kappa arcs of its joint representation.
+run dot --kappa checker/tests/data/F5_fig319a_sew.json -o "$out/sew_concrete_kappa.svg"
+# A rule the checker rejects (thesis Ex. 34): offending nodes filled, diagnostic codes as labels.
+run dot --check checker/tests/data/F1_ex34_weak_incident.json -o "$out/rejected_ex34.svg"
+# The cube as a 2-G-map (48 darts).
+run dot tools/data/cube.off -o "$out/cube.svg"
