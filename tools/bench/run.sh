@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds the benchmarks (-DGMR_BENCH=ON, Release) in a build directory of their own, runs gmr
 # against CGAL on G-maps of >= 10^7 darts (tools/bench/cgal_peer_bench.cpp), and prints a table of
-# gmr/CGAL time ratios (< 1: gmr faster) and the bytes per dart of both.
+# gmr/CGAL time ratios (< 1: gmr faster) and the bytes per dart of both. Then the rule-scheme engine
+# against hand-written CGAL code (tools/bench/scheme_bench.cpp: quad subdivision of a torus, 2*10^6
+# darts after), with the darts created per second of both.
 #
 #   tools/bench/run.sh                                  # everything (~2-3 min, ~1.5 GB RAM)
 #   tools/bench/run.sh --benchmark_filter='torus2d/'    # extra arguments go to Google Benchmark
@@ -15,24 +17,34 @@ reps=${GMR_BENCH_REPS:-3}
 jobs=$(nproc 2>/dev/null || echo 2)
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
-cmake --build "$build" --target gmr_bench_cgal -j"$jobs"
+cmake --build "$build" --target gmr_bench_cgal gmr_bench_scheme -j"$jobs"
 
 out="$build/bench-results.json"
 mem="$build/bench-memory.txt"
 "$build/tools/bench/gmr_bench_cgal" --benchmark_repetitions="$reps" \
   --benchmark_report_aggregates_only=true --benchmark_out="$out" --benchmark_out_format=json "$@" \
   | tee "$mem"
+out2="$build/bench-results-scheme.json"
+"$build/tools/bench/gmr_bench_scheme" --benchmark_repetitions="$reps" \
+  --benchmark_report_aggregates_only=true --benchmark_out="$out2" --benchmark_out_format=json "$@" \
+  || rm -f "$out2"  # e.g. a --benchmark_filter that matches none of its benchmarks
 
-python3 - "$out" <<'PY'
-import json, sys
-data = json.load(open(sys.argv[1]))
+python3 - "$out" "$out2" <<'PY'
+import json, os, sys
+benchmarks = []
+for path in sys.argv[1:]:
+    if os.path.exists(path):
+        benchmarks += json.load(open(path))["benchmarks"]
 runs = {}
-for b in data["benchmarks"]:
+rates = {}
+for b in benchmarks:
     name = b.get("run_name", b["name"])
     if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
         continue
     name = name.replace("/real_time", "")
     runs[name] = (b["real_time"], b["cpu_time"], b.get("time_unit", "ms"))
+    if "darts_per_second" in b:
+        rates[name] = b["darts_per_second"]
 rows = []
 for name, (rt, ct, unit) in runs.items():
     if not name.endswith("/gmr"):
@@ -49,4 +61,14 @@ for what, rt, prt, rr, cr, unit in rows:
     print(f"{what:28} {rt:8.1f}{unit:>2} {prt:8.1f}{unit:>2} {rr:11.2f} {cr:10.2f}")
 slower = [r[0] for r in rows if r[3] > 1.0]
 print("gmr slower than CGAL on: " + (", ".join(slower) if slower else "none"))
+if rates:
+    print()
+    print("darts created per second (medians; rule-scheme engine vs hand-written CGAL; gmr/CGAL > 1 means gmr is faster)")
+    print(f"{'benchmark':28} {'gmr':>12} {'CGAL':>12} {'gmr/CGAL':>10}")
+    for name, r in rates.items():
+        if not name.endswith("/gmr") or name[:-4] + "/cgal" not in rates:
+            continue
+        what = name[:-4]
+        pr = rates[what + "/cgal"]
+        print(f"{what:28} {r/1e6:9.1f}M/s {pr/1e6:9.1f}M/s {r/pr:10.2f}")
 PY
