@@ -20,16 +20,13 @@ struct CheckArgs {
   std::string input;
   bool json = false;
   bool per_constraint = false;
-  bool algorithm3_strict = false;
-  bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (issue 4)
+  bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (issue 4, erratum 6)
 };
 
 int run_check(const CheckArgs& a) {
-  // --- rule schemes (issue 4): .jme files and gmr.rule files of kind "scheme" ---
+  // Rule schemes (.jme files, gmr.rule files of kind "scheme") go to the scheme checker (issue 4).
   if (auto code = check_scheme_input(a.input, a.json, a.algorithm3)) return *code;
-  // --- concrete rules ---
-  // Rule schemes (.jme, gmr.rule kind "scheme") go to the scheme checker (issue 4).
-  if (auto rc = check_scheme_input(a.input, a.json, a.algorithm3_strict)) return *rc;
+  // Concrete rules (issue 3).
   const Rule r = read_rule_file(a.input);
   const CheckReport rep = check_rule(r, !a.per_constraint);
   if (a.json) {
@@ -47,7 +44,7 @@ int run_check(const CheckArgs& a) {
 void register_check(CLI::App& app) {
   auto args = std::make_shared<CheckArgs>();
   CLI::App* sub = app.add_subcommand(
-      "check", "Check the consistency conditions of a concrete rule (incident arcs, non-orientation, cycles); exit 1 if one fails");
+      "check", "Check the consistency conditions of a concrete rule or rule scheme (incident arcs, non-orientation, cycles); exit 1 if one fails");
   sub->add_option("rule", args->input, "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")->required();
   sub->add_flag("--json", args->json, "Print JSON (format gmr.check)");
   sub->add_flag("--per-constraint", args->per_constraint,
@@ -55,7 +52,6 @@ void register_check(CLI::App& app) {
   // Rule schemes (issue 4): a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
   sub->add_flag("--algorithm3", args->algorithm3,
                 "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones; erratum 6)");
-  sub->add_flag("--algorithm3-strict", args->algorithm3_strict, "Rule schemes: follow Algorithm 3 literally (see scheme_check.hpp)");
   set_action(sub, [args] { return run_check(*args); });
 }
 
