@@ -213,7 +213,7 @@ std::vector<Voxel> menger_voxels(int level) {
 
 GMap make_stacked_cubes() { return make_polycube({{0, 0, 0}, {0, 0, 1}}); }
 
-GMap orient(const GMap& g, Dart d) {
+GMap orient(const GMap& g, Dart d, bool keep_boundary) {
   if (g.is_omap()) throw Error(ErrorCode::Usage, "orient expects a G-map");
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
   const int n = g.dimension();
@@ -225,6 +225,7 @@ GMap orient(const GMap& g, Dart d) {
     const Dart v = queue[h];
     for (int i = 0; i <= n; ++i) {
       const Dart w = g.alpha(i, v);
+      if (w == v && keep_boundary && i == 2) continue;  // boundary: beta_2(v) = v below
       if (w == v)
         throw Error(ErrorCode::InvalidMap, "cannot orient: dart is " + std::to_string(i) + "-free (open object)",
                     "dart " + std::to_string(v));
@@ -243,7 +244,12 @@ GMap orient(const GMap& g, Dart d) {
   GMap o(n, MapKind::OMap);
   o.add_darts(even.size());
   for (size_t k = 0; k < even.size(); ++k)
-    for (int i = 1; i <= n; ++i) o.set_alpha(i, static_cast<Dart>(k), index.at(g.alpha(i, g.alpha(0, even[k]))));
+    for (int i = 1; i <= n; ++i) {
+      // A 2-free dart stays 2-free: alpha_2(alpha_0(d)) = alpha_0(d) then, since alpha_0 alpha_2
+      // is an involution (cycle constraint), so the boundary is a beta_2 loop.
+      const bool free_i = i == 2 && g.alpha(i, even[k]) == even[k];
+      o.set_alpha(i, static_cast<Dart>(k), free_i ? static_cast<Dart>(k) : index.at(g.alpha(i, g.alpha(0, even[k]))));
+    }
   return o;
 }
 

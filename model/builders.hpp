@@ -46,6 +46,12 @@ GMap make_torus(size_t w, size_t h, int n = 2);
 // The O-map of the orientation class of dart `d` of a closed orientable G-map:
 // beta_i = alpha_i o alpha_0 (i >= 1) restricted to the darts reachable from d by even words.
 // Throws Error(InvalidMap) when the component is not orientable or has a free dart.
-GMap orient(const GMap& g, Dart d = 0);
+// keep_boundary: 2-free darts are allowed (surfaces with boundary) and give beta_2 loops (the
+// graph form of a free dart in an O-map, thesis Def. 32). Other free darts are still refused:
+// 0-/1-free darts (open polygons) have no orientation class, and an i-loop with i >= 3 cannot
+// satisfy the O-map cycle constraint C(1,i) (beta_i beta_1 beta_i beta_1 (d) = beta_1^2(d) != d
+// on a boundary face): Def. 32 O-maps have no 3-boundary — close the volume first (e.g.
+// double_along_boundary in random_maps.hpp).
+GMap orient(const GMap& g, Dart d = 0, bool keep_boundary = false);
 
 }  // namespace gmr

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "model/error.hpp"
+#include "model/orbit.hpp"
 #include "model/sew.hpp"
 
 namespace gmr {
@@ -211,6 +212,65 @@ GMap random_gmap(Rng& rng, Generator gen, int n) {
     }
   }
   throw Error(ErrorCode::Usage, "unknown generator");
+}
+
+GMap random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt) {
+  const size_t k = draw(rng, std::max<size_t>(opt.min_darts, 1), opt.max_darts, "random_permutation_omap");
+  GMap o(2, MapKind::OMap);
+  o.add_darts(k);
+  const std::vector<Dart> beta1 = random_permutation(rng, k);
+  for (Dart d = 0; d < k; ++d) o.set_alpha(1, d, beta1[d]);
+  // beta_2: pair up a random order of the darts, leaving some as loops.
+  const std::vector<Dart> order = random_permutation(rng, k);
+  for (size_t p = 0; p < k; ++p) {
+    const Dart d = order[p];
+    if (o.alpha(2, d) != d) continue;  // already paired
+    if (chance(rng, opt.loop_percent) || p + 1 == k) continue;
+    size_t q = p + 1;
+    while (q < k && o.alpha(2, order[q]) != order[q]) ++q;
+    if (q == k) continue;
+    o.set_alpha(2, d, order[q]);
+    o.set_alpha(2, order[q], d);
+  }
+  return o;
+}
+
+GMap double_along_boundary(const GMap& g) {
+  require_gmap(g, "double_along_boundary");
+  GMap out(g.dimension());
+  std::vector<Dart> a(g.capacity(), kNoDart), b(g.capacity(), kNoDart);
+  g.for_each_dart([&](Dart d) { a[d] = out.add_dart(); });
+  g.for_each_dart([&](Dart d) { b[d] = out.add_dart(); });
+  const int n = g.dimension();
+  g.for_each_dart([&](Dart d) {
+    for (int i = 0; i <= n; ++i) {
+      if (i == n && g.alpha(i, d) == d) {
+        out.set_alpha(i, a[d], b[d]);
+        out.set_alpha(i, b[d], a[d]);
+        continue;
+      }
+      out.set_alpha(i, a[d], a[g.alpha(i, d)]);
+      out.set_alpha(i, b[d], b[g.alpha(i, d)]);
+    }
+  });
+  return out;
+}
+
+GMap oriented_components(const GMap& g) {
+  require_gmap(g, "oriented_components");
+  GMap out(g.dimension(), MapKind::OMap);
+  std::vector<bool> seen(g.capacity(), false);
+  const OrbitType all = OrbitType::range(0, g.dimension());
+  g.for_each_dart([&](Dart d) {
+    if (seen[d]) return;
+    for (Dart e : orbit(g, all, d)) seen[e] = true;
+    try {
+      append(out, orient(g, d, true));
+    } catch (const Error&) {
+      // not orientable, or an open polygon: skipped
+    }
+  });
+  return out;
 }
 
 // --- edits ---------------------------------------------------------------------------------

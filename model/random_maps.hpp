@@ -82,6 +82,29 @@ std::vector<Generator> generators_for(int n);
 // One map of the given family with default options (Polycube requires n == 3).
 GMap random_gmap(Rng& rng, Generator gen, int n);
 
+// --- random O-maps (Def. 32: beta_1 a permutation, beta_2..n involutions, cycle constraint on
+// (1..n)_{+2}) -------------------------------------------------------------------------------
+
+struct PermutationOMapOptions {
+  size_t min_darts = 1, max_darts = 12;  // number of darts, uniform in the range
+  unsigned loop_percent = 25;            // chance that a dart stays 2-free (a 2-loop: boundary)
+};
+// A 2-O-map drawn directly: beta_1 a uniformly random permutation (its cycles are the oriented
+// faces), beta_2 a random involution with ~loop_percent fixed points. For n = 2 there is no cycle
+// constraint on O-maps, so every such pair is a valid 2-O-map (possibly several components).
+GMap random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt = {});
+
+// The double of g along its boundary: g, a copy of g, and every n-free dart n-sewn to its copy
+// (a closed n-G-map; valid because the boundary of a valid G-map is closed under alpha_0..n-2).
+// Orientable when g is. Used to build closed volumes (n = 3) for random O-maps.
+GMap double_along_boundary(const GMap& g);
+
+// The O-maps of the orientable components of g (orient(g, d, keep_boundary = true) on one dart
+// per component), as one O-map; components that cannot be oriented (not orientable, or with 0- or
+// 1-free darts, or 3-free ones) are skipped. Used on random glued polygons (n = 2) and doubled
+// polycubes (n = 3).
+GMap oriented_components(const GMap& g);
+
 // --- edits ---------------------------------------------------------------------------------
 
 // An isomorphic copy of g with dart d renamed perm[d]. perm must be a permutation of

@@ -4,6 +4,7 @@
 #include "model/builders.hpp"
 #include "model/error.hpp"
 #include "model/orbit.hpp"
+#include "model/sew.hpp"
 #include "model/validity.hpp"
 
 using namespace gmr;
@@ -104,6 +105,28 @@ TEST(Orbit, OrientRejectsOpenAndNonOrientable) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("not orientable"), std::string::npos);
   }
+}
+
+// keep_boundary: a 2x3 grid (open) becomes an O-map with 2-loops on its boundary half-edges; a
+// Moebius strip stays refused (not orientable), an open polygon too (0-free darts would be needed).
+TEST(Orbit, OrientWithBoundary) {
+  const GMap grid = make_grid(2, 3);
+  const GMap o = orient(grid, 0, true);
+  EXPECT_TRUE(o.is_omap());
+  EXPECT_EQ(o.size(), grid.size() / 2);
+  EXPECT_TRUE(is_valid(o));
+  size_t loops = 0;
+  for (Dart d : o.darts()) loops += o.alpha(2, d) == d;
+  EXPECT_EQ(loops, count_boundary_cells(grid));  // one boundary half-edge per boundary edge
+  EXPECT_EQ(count_cells(o, 2), 6u);
+  GMap mob = surface_from_faces({{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 4, 0, 7}}, 8);
+  EXPECT_THROW(orient(mob, 0, true), Error);
+  GMap edge = make_polygon(3);
+  gmr::unsew(edge, 0, 0);
+  EXPECT_THROW(orient(edge, 0, true), Error);
+  // A polycube has 3-free boundary faces: 3-loops would break C(1,3) of Def. 32, refused.
+  const GMap pc = make_polycube({{0, 0, 0}, {1, 0, 0}});
+  EXPECT_THROW(orient(pc, 0, true), Error);
 }
 
 TEST(Orbit, Algorithm5Isomorphism) {
