@@ -1,5 +1,8 @@
 #include "model/face_list.hpp"
 
+#include <algorithm>
+#include <map>
+
 #include "model/orbit.hpp"
 #include "model/validity.hpp"
 
@@ -59,7 +62,26 @@ FaceList face_list_from_map(const GMap& g, const PositionEmbedding& pos) {
     if (face.size() < 3)
       throw Error(ErrorCode::Schema, "face with " + std::to_string(face.size()) + " side(s); a polygon needs at least 3",
                   "dart " + std::to_string(rep));
+    // Faithfulness: a face list names vertices, so a face through one vertex twice, or two edges
+    // joining the same two vertices, would be read back as another map (found by the OFF round-
+    // trip property, proptests/model_prop.cpp). Refused instead of written wrong.
+    std::vector<uint32_t> sorted = face;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      throw Error(ErrorCode::NonManifold, "a face passes twice through one vertex; a face list cannot describe it",
+                  "dart " + std::to_string(rep));
     fl.faces.push_back(std::move(face));
+  }
+  // Every edge (<0,2>-orbit) must be the only one joining its two vertices.
+  std::map<std::pair<uint32_t, uint32_t>, Dart> edge_of;
+  for (Dart rep : orbit_representatives(g, OrbitType{0, 2})) {
+    const uint32_t a = vertex_of[rep], b = vertex_of[g.alpha(0, rep)];
+    const auto [it, fresh] = edge_of.emplace(std::minmax(a, b), rep);
+    if (!fresh)
+      throw Error(ErrorCode::NonManifold,
+                  "two edges join the same two vertices (darts " + std::to_string(it->second) + " and " +
+                      std::to_string(rep) + "); a face list would merge them",
+                  "dart " + std::to_string(rep));
   }
   fl.num_edges = count_orbits(g, OrbitType{0, 2});
   return fl;

@@ -30,7 +30,9 @@ struct FaceList {
 // Requires a valid 2-G-map whose faces are closed polygons (no 0- or 1-free dart) with at least 3
 // sides, and a position on every vertex. Throws Error(Usage) for another kind or dimension,
 // Error(InvalidMap) for an invalid map or an open face, Error(Schema) for a missing position or a
-// face with fewer than 3 sides, each naming a dart.
+// face with fewer than 3 sides, Error(NonManifold) for a map a face list cannot describe
+// faithfully (a face through one vertex twice, two edges joining the same two vertices), each
+// naming a dart.
 FaceList face_list_from_map(const GMap& g, const PositionEmbedding& pos);
 
 // Builds the 2-G-map (dimension opt.n) of the face list with positions on <1,2>. Errors of

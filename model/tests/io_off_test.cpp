@@ -12,6 +12,7 @@
 #include "model/io_off.hpp"
 #include "model/orbit.hpp"
 #include "model/read_file.hpp"
+#include "model/sew.hpp"
 #include "model/signature.hpp"
 #include "model/validity.hpp"
 
@@ -204,4 +205,27 @@ TEST(IoObj, WritesVerticesAndOneBasedFaces) {
   EXPECT_EQ(faces, 4u);
   EXPECT_EQ(vertices, 4u);
   EXPECT_NE(obj.find("f 1 2 3\n"), std::string::npos) << obj;  // face (0 2 1) re-read as vertices 1 2 3
+}
+
+// A map a face list cannot describe is refused by the writer (it used to be written and read back
+// as another map: found by the off_roundtrip property). A "pillow" (two quads glued along their
+// four edges, a sphere) round-trips; with one edge unsewn, two edges join the same two vertices.
+TEST(IoOff, WriterRefusesUnfaithfulMaps) {
+  GMap g = surface_from_faces({{0, 1, 3, 2}, {1, 0, 2, 3}}, 4);
+  ASSERT_TRUE(is_valid(g));
+  ASSERT_EQ(euler_characteristic(g), 2);
+  PositionEmbedding pos(kPositionName, OrbitType{1, 2});
+  double k = 0;
+  for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) pos.set(g, rep, Vec3{k, 2 * k, 0}), k += 1;
+  const PositionedMap back = read_off(write_off(g, pos));
+  EXPECT_TRUE(is_isomorphic(g, back.map));
+  gmr::unsew(g, 2, 0);
+  ASSERT_TRUE(is_valid(g));
+  try {
+    write_off(g, pos);
+    FAIL() << "an unfaithful OFF was written";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::NonManifold);
+    EXPECT_NE(std::string(e.what()).find("two edges join the same two vertices"), std::string::npos);
+  }
 }
