@@ -5,6 +5,7 @@
 #include <string>
 
 #include "model/error.hpp"
+#include "model/random_maps.hpp"
 
 namespace gmr {
 
@@ -142,6 +143,53 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
   }
   // Remove deleted nodes' names from R side: build L with all nodes (deleted ones stay in L only).
   return Rule(std::move(L), std::move(R), fam.n, fam.kind, "random");
+}
+
+Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes) {
+  if (max_nodes < 1 || max_nodes > 8) throw Error(ErrorCode::Range, "random_small_rule: 1..8 nodes");
+  const size_t count = static_cast<size_t>(uniform(rng, 1, static_cast<uint64_t>(max_nodes)));
+  const std::string names = "abcdefgh";
+  DGraph L, R;
+  std::vector<Node> lpos(count, kNoNode), rpos(count, kNoNode);
+  for (size_t x = 0; x < count; ++x) {
+    const uint64_t status = uniform(rng, 0, 2);  // 0 preserved, 1 deleted, 2 added
+    if (status != 2) lpos[x] = L.add_node(std::string(1, names[x]));
+    if (status != 1) rpos[x] = R.add_node(std::string(1, names[x]));
+  }
+  // A random partial injection on the nodes of one side, as i-arcs.
+  auto arcs = [&](DGraph& side, int i) {
+    const size_t m = side.num_nodes();
+    std::vector<bool> used(m, false);
+    for (Node s = 0; s < m; ++s) {
+      if (chance(rng, 30)) continue;
+      const Node t = static_cast<Node>(uniform(rng, 0, m - 1));
+      if (used[t]) continue;
+      used[t] = true;
+      side.add_arc(s, t, i);
+    }
+  };
+  for (int i = kind == MapKind::OMap ? 1 : 0; i <= n; ++i) {
+    if (L.num_nodes()) arcs(L, i);
+    if (R.num_nodes()) arcs(R, i);
+  }
+  return Rule(std::move(L), std::move(R), n, kind, "random-small");
+}
+
+Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& fam) {
+  if (fam.graphs.empty()) throw Error(ErrorCode::Usage, "empty map family", "component_replacement_rule");
+  const DGraph& GL = fam.graphs[uniform(rng, 0, fam.graphs.size() - 1)];
+  const DGraph& GR = fam.graphs[uniform(rng, 0, fam.graphs.size() - 1)];
+  const size_t p = uniform(rng, 0, std::min(GL.num_nodes(), GR.num_nodes()));
+  auto copy = [](const DGraph& G, const std::function<std::string(Node)>& name) {
+    DGraph out;
+    for (Node v = 0; v < G.num_nodes(); ++v) out.add_node(name(v));
+    for (ArcId a = 0; a < G.num_arc_slots(); ++a)
+      if (G.arc_alive(a)) out.add_arc(G.arc(a).src, G.arc(a).tgt, G.arc(a).label);
+    return out;
+  };
+  DGraph L = copy(GL, [](Node v) { return "l" + std::to_string(v); });
+  DGraph R = copy(GR, [p](Node v) { return (v < p ? "l" : "r") + std::to_string(v); });
+  return Rule(std::move(L), std::move(R), fam.n, fam.kind, "component-replacement");
 }
 
 }  // namespace gmr

@@ -27,4 +27,16 @@ size_t for_each_small_rule(int n, MapKind kind, int max_nodes, const std::vector
 
 Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& family, size_t max_left_nodes = 4);
 
+// One random member of the `for_each_small_rule` family (property tests): up to max_nodes nodes,
+// each preserved, deleted or added, and for every label of the model a random partial injection
+// as i-arcs of L and of R. Drawn with the portable `uniform` (random_maps.hpp).
+Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes = 3);
+
+// A rule consistent by construction: L is a whole map of the family (every node has every label:
+// a complete G-map, resp. O-map), R another whole map; the first p nodes of R take the names of
+// the first p nodes of L (preserved), the other L nodes are deleted and the other R nodes added.
+// It matches exactly the isolated components isomorphic to L and replaces them by R, so it
+// preserves the model and the checker must accept it (property concrete_valid_accepted).
+Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& family);
+
 }  // namespace gmr
