@@ -1,14 +1,100 @@
 #include "proptests/generators.hpp"
 
+#include <sstream>
+
 #include "model/io_dot.hpp"
 #include "model/io_json.hpp"
+#include "model/scheme_engine.hpp"
+#include "proptests/library.hpp"
 
 namespace gmr::prop {
+
+namespace {
+
+constexpr Family kAll[] = {Family::GluedPolygons,    Family::Polycube,        Family::SewSequence,
+                           Family::RuleApplications, Family::PermutationOMap, Family::Oriented};
+
+// A copy of g without deleted darts (live darts renumbered in increasing order).
+GMap compact(const GMap& g) {
+  const auto darts = g.darts();
+  std::vector<Dart> index(g.capacity(), kNoDart);
+  for (size_t k = 0; k < darts.size(); ++k) index[darts[k]] = static_cast<Dart>(k);
+  GMap out(g.dimension(), g.kind());
+  out.add_darts(darts.size());
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
+    for (size_t k = 0; k < darts.size(); ++k) out.set_alpha(i, static_cast<Dart>(k), index[g.alpha(i, darts[k])]);
+  return out;
+}
+
+// A small map edited by `steps` random applications of accepted library schemes of dimension n
+// (2 or 3) at random hook darts; refused applications are skipped, and the map is kept under
+// ~600 darts (quad subdivision of a whole component multiplies it by 4).
+GMap rule_applications(Rng& rng, int n, size_t steps) {
+  GMap g(n);
+  if (n == 3) {
+    PolycubeOptions o;
+    o.max_voxels = 2;
+    g = random_polycube(rng, o);
+  } else {
+    GluedPolygonsOptions o;
+    o.n = n;
+    o.max_faces = 2;
+    o.max_extra_sews = 1;
+    g = random_glued_polygons(rng, o);
+  }
+  const std::vector<size_t> lib = library_of_dim(n, true);
+  if (lib.empty()) return g;
+  for (size_t s = 0; s < steps; ++s) {
+    const RuleScheme& sch = scheme_library()[lib[uniform(rng, 0, lib.size() - 1)]].scheme;
+    const auto darts = g.darts();
+    std::vector<Dart> hooks;
+    for (size_t h = 0; h < sch.hooks.size(); ++h) hooks.push_back(darts[uniform(rng, 0, darts.size() - 1)]);
+    GMap h = g;
+    if (SchemeEngine(sch).apply(h, hooks).applied && h.size() <= 600 && h.size() > 0) g = compact(h);
+  }
+  return g;
+}
+
+}  // namespace
+
+const char* to_string(Family f) {
+  switch (f) {
+    case Family::GluedPolygons: return "glued-polygons";
+    case Family::Polycube: return "polycube";
+    case Family::SewSequence: return "sew-sequence";
+    case Family::RuleApplications: return "rule-applications";
+    case Family::PermutationOMap: return "permutation-omap";
+    case Family::Oriented: return "oriented";
+  }
+  return "?";
+}
+
+std::optional<Family> parse_family(const std::string& s) {
+  for (Family f : kAll)
+    if (s == to_string(f)) return f;
+  return std::nullopt;
+}
+
+bool is_omap_family(Family f) { return f == Family::PermutationOMap || f == Family::Oriented; }
+
+std::vector<Family> families_for(int n, bool omap) {
+  std::vector<Family> out;
+  if (omap) {
+    if (n == 2) out.push_back(Family::PermutationOMap);
+    if (n == 2 || n == 3) out.push_back(Family::Oriented);
+    return out;
+  }
+  if (n >= 2) out.push_back(Family::GluedPolygons);
+  if (n == 3) out.push_back(Family::Polycube);
+  out.push_back(Family::SewSequence);
+  if (n == 2 || n == 3) out.push_back(Family::RuleApplications);
+  return out;
+}
 
 GMap MapCase::build() const {
   Rng rng(seed);
   switch (family) {
-    case Generator::GluedPolygons: {
+    case Family::GluedPolygons: {
       GluedPolygonsOptions o;
       o.n = n;
       o.min_faces = 1;
@@ -16,13 +102,13 @@ GMap MapCase::build() const {
       o.max_extra_sews = size;
       return random_glued_polygons(rng, o);
     }
-    case Generator::Polycube: {
+    case Family::Polycube: {
       PolycubeOptions o;
       o.min_voxels = 1;
       o.max_voxels = size;
       return random_polycube(rng, o);
     }
-    case Generator::SewSequence: {
+    case Family::SewSequence: {
       SewSequenceOptions o;
       o.n = n;
       o.min_cells = 1;
@@ -30,28 +116,71 @@ GMap MapCase::build() const {
       o.steps = 3 * size;
       return random_sewn_cells(rng, o);
     }
+    case Family::RuleApplications:
+      return rule_applications(rng, n, size);
+    case Family::PermutationOMap: {
+      PermutationOMapOptions o;
+      o.max_darts = 2 * size;
+      return random_permutation_omap(rng, o);
+    }
+    case Family::Oriented: {
+      if (n == 3) {
+        PolycubeOptions o;
+        o.max_voxels = size;
+        return oriented_components(double_along_boundary(random_polycube(rng, o)));
+      }
+      GluedPolygonsOptions o;
+      o.n = n;
+      o.max_faces = size;
+      o.max_extra_sews = size;
+      return oriented_components(random_glued_polygons(rng, o));
+    }
   }
   return GMap(n);
 }
 
-std::string MapCase::str() const {
-  return std::string("MapCase{") + to_string(family) + ", n=" + std::to_string(n) +
-         ", size=" + std::to_string(size) + ", seed=" + std::to_string(seed) + "}";
+std::string MapCase::str() const { return "MapCase{" + corpus_line() + "}"; }
+
+std::string MapCase::corpus_line() const {
+  return std::string(to_string(family)) + " " + std::to_string(n) + " " + std::to_string(size) + " " +
+         std::to_string(seed);
+}
+
+std::optional<MapCase> MapCase::parse(const std::string& line) {
+  std::istringstream ss(line);
+  std::string fam;
+  MapCase c;
+  if (!(ss >> fam >> c.n >> c.size >> c.seed)) return std::nullopt;
+  const auto f = parse_family(fam);
+  if (!f) return std::nullopt;
+  c.family = *f;
+  const auto fits = families_for(c.n, is_omap_family(c.family));
+  if (std::find(fits.begin(), fits.end(), c.family) == fits.end() || c.size == 0) return std::nullopt;
+  return c;
 }
 
 rc::Gen<MapCase> gen_map_case_of_dim(int n, size_t max_size) {
-  const auto families = generators_for(n);
+  const auto families = families_for(n, false);
   return rc::gen::apply(
-      [n, families](size_t fam, size_t size, uint64_t seed) {
-        return MapCase{families[fam], n, size, seed};
-      },
+      [n, families](size_t fam, size_t size, uint64_t seed) { return MapCase{families[fam], n, size, seed}; },
       rc::gen::inRange<size_t>(0, families.size()), rc::gen::inRange<size_t>(1, max_size + 1),
       rc::gen::inRange<uint64_t>(0, 1u << 20));
 }
 
 rc::Gen<MapCase> gen_map_case(size_t max_size) {
-  return rc::gen::mapcat(rc::gen::inRange(1, 4),
-                         [max_size](int n) { return gen_map_case_of_dim(n, max_size); });
+  return rc::gen::mapcat(rc::gen::inRange(1, 4), [max_size](int n) { return gen_map_case_of_dim(n, max_size); });
+}
+
+rc::Gen<MapCase> gen_omap_case_of_dim(int n, size_t max_size) {
+  const auto families = families_for(n, true);
+  return rc::gen::apply(
+      [n, families](size_t fam, size_t size, uint64_t seed) { return MapCase{families[fam], n, size, seed}; },
+      rc::gen::inRange<size_t>(0, families.size()), rc::gen::inRange<size_t>(1, max_size + 1),
+      rc::gen::inRange<uint64_t>(0, 1u << 20));
+}
+
+rc::Gen<MapCase> gen_omap_case(size_t max_size) {
+  return rc::gen::mapcat(rc::gen::inRange(2, 4), [max_size](int n) { return gen_omap_case_of_dim(n, max_size); });
 }
 
 rc::Gen<OrbitType> gen_orbit_type(int n) {

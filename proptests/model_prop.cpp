@@ -5,20 +5,24 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <tuple>
 
 #include "model/constraints.hpp"
 #include "model/dgraph.hpp"
 #include "model/io_json.hpp"
+#include "model/io_off.hpp"
+#include "model/position.hpp"
 #include "model/orbit.hpp"
 #include "model/signature.hpp"
 #include "model/validity.hpp"
+#include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 
 using namespace gmr;
 using namespace gmr::prop;
 
 TEST(ModelProps, GeneratedMapsAreValid) {
-  EXPECT_TRUE(check_map_property("generated_valid", gen_map_case(), [](const MapCase& c) {
+  EXPECT_TRUE(check_property<MapCase>("generated_valid", gen_map_case(), [](const MapCase& c) {
     const GMap g = c.build();
     RC_ASSERT(g.size() > 0u);
     RC_ASSERT(check_validity(g).ok());
@@ -29,7 +33,7 @@ TEST(ModelProps, GeneratedMapsAreValid) {
 // The set of (kind, dart, dims) reported by check_validity equals the one found by the D-graph
 // checker (constraints.cpp, a separate implementation over arc lists), after a random raw write.
 TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
-  EXPECT_TRUE(check_map_property("validity_locates", gen_map_case(4), [](const MapCase& c) {
+  EXPECT_TRUE(check_property<MapCase>("validity_locates", gen_map_case(4), [](const MapCase& c) {
     GMap g = c.build();
     const auto darts = g.darts();
     const Dart d = darts[*rc::gen::inRange<size_t>(0, darts.size())];
@@ -70,7 +74,7 @@ TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
 }
 
 TEST(ModelProps, OrbitsPartitionTheDarts) {
-  EXPECT_TRUE(check_map_property("orbits_partition", gen_map_case(), [](const MapCase& c) {
+  EXPECT_TRUE(check_property<MapCase>("orbits_partition", gen_map_case(), [](const MapCase& c) {
     const GMap g = c.build();
     const OrbitType o = *gen_orbit_type(g.dimension());
     std::vector<int> owner(g.capacity(), -1);
@@ -91,7 +95,7 @@ TEST(ModelProps, OrbitsPartitionTheDarts) {
 }
 
 TEST(ModelProps, SignatureInvariantUnderRelabeling) {
-  EXPECT_TRUE(check_map_property("signature_relabel", gen_map_case(4), [](const MapCase& c) {
+  EXPECT_TRUE(check_property<MapCase>("signature_relabel", gen_map_case(4), [](const MapCase& c) {
     const GMap g = c.build();
     const GMap h = relabel(g, *gen_permutation(g.capacity()));
     RC_ASSERT(signature(g) == signature(h));
@@ -100,7 +104,7 @@ TEST(ModelProps, SignatureInvariantUnderRelabeling) {
 }
 
 TEST(ModelProps, OneLinkChangeBreaksIsomorphism) {
-  EXPECT_TRUE(check_map_property("signature_mutation", gen_map_case(4), [](const MapCase& c) {
+  EXPECT_TRUE(check_property<MapCase>("signature_mutation", gen_map_case(4), [](const MapCase& c) {
     const GMap g = c.build();
     GMap h = g;
     Rng rng(c.seed ^ 0x9e3779b97f4a7c15ull);
@@ -113,7 +117,7 @@ TEST(ModelProps, OneLinkChangeBreaksIsomorphism) {
 }
 
 TEST(ModelProps, SignatureEqualityIsIsomorphism) {
-  EXPECT_TRUE(check_map_property("signature_iff_iso", gen_map_case(4), [](const MapCase& c) {
+  EXPECT_TRUE(check_property<MapCase>("signature_iff_iso", gen_map_case(4), [](const MapCase& c) {
     const GMap g = c.build();
     GMap h = g;
     Rng rng(c.seed * 31 + 7);
@@ -124,12 +128,91 @@ TEST(ModelProps, SignatureEqualityIsIsomorphism) {
 }
 
 TEST(ModelProps, JsonRoundTrip) {
-  EXPECT_TRUE(check_map_property("json_roundtrip", gen_map_case(), [](const MapCase& c) {
+  EXPECT_TRUE(check_property<MapCase>("json_roundtrip", gen_map_case(), [](const MapCase& c) {
     const GMap g = c.build();
     const GMapFile f = read_gmap_json(write_gmap_json(g, {}));
     RC_ASSERT(f.map.dimension() == g.dimension());
     RC_ASSERT(f.map.size() == g.size());
     RC_ASSERT(is_isomorphic(g, f.map));
     RC_ASSERT(signature(g) == signature(f.map));
+  }));
+}
+
+// --- O-maps (Def. 32) ----------------------------------------------------------------------
+
+TEST(ModelProps, GeneratedOMapsAreValid) {
+  EXPECT_TRUE(check_property<MapCase>("omap_generated_valid", gen_omap_case(), [](const MapCase& c) {
+    const GMap g = c.build();
+    RC_TAG(to_string(c.family));
+    RC_ASSERT(g.is_omap());
+    RC_ASSERT(check_validity(g).ok());
+    RC_ASSERT(check_gmap_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
+  }));
+}
+
+TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
+  EXPECT_TRUE(check_property<MapCase>("omap_signature_json", gen_omap_case(4), [](const MapCase& c) {
+    const GMap g = c.build();
+    const GMap h = relabel(g, *gen_permutation(g.capacity()));
+    RC_ASSERT(signature(g) == signature(h));
+    RC_ASSERT(is_isomorphic(g, h));
+    const GMapFile f = read_gmap_json(write_gmap_json(g, {}));
+    RC_ASSERT(f.map.is_omap());
+    RC_ASSERT(is_isomorphic(g, f.map));
+    // One beta_1 change (swap the images of two darts) keeps a valid 2-O-map and changes the
+    // cycle type of beta_1 unless both darts are in one orbit in a way that preserves it; the
+    // signature must follow isomorphism either way.
+    if (g.dimension() == 2 && g.size() >= 2) {
+      GMap m = g;
+      const auto darts = m.darts();
+      const Dart a = darts[*rc::gen::inRange<size_t>(0, darts.size())];
+      const Dart b = darts[*rc::gen::inRange<size_t>(0, darts.size())];
+      const Dart fa = m.alpha(1, a), fb = m.alpha(1, b);
+      m.set_alpha(1, a, fb);
+      m.set_alpha(1, b, fa);
+      RC_ASSERT(is_valid(m));
+      RC_ASSERT(is_isomorphic(g, m) == (signature(g) == signature(m)));
+    }
+  }));
+}
+
+// --- OFF round trip --------------------------------------------------------------------------
+
+// A 2-G-map whose faces are polygons with >= 3 sides, given distinct positions per vertex, written
+// as OFF and read back: the same map up to isomorphism, and every vertex keeps its position. Maps
+// OFF cannot describe (a face through one vertex twice, pinched vertices, non-manifold edges) are
+// refused by the writer or the reader with an Error: discarded, and counted by RC_TAG.
+TEST(ModelProps, OffRoundTrip) {
+  EXPECT_TRUE(check_property<MapCase>("off_roundtrip", gen_map_case_of_dim(2, 6), [](const MapCase& c) {
+    const GMap g = c.build();
+    PositionEmbedding pos(kPositionName, OrbitType{1, 2});
+    double k = 0;
+    for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) {
+      pos.set(g, rep, Vec3{k, k * k, 1.0 / (k + 1)});
+      k += 1;
+    }
+    std::string text;
+    try {
+      text = write_off(g, pos);
+    } catch (const Error& e) {
+      RC_TAG("not OFF-writable");
+      RC_DISCARD(e.what());
+    }
+    PositionedMap back;
+    try {
+      back = read_off(text, "roundtrip.off");
+    } catch (const Error& e) {
+      RC_TAG("not OFF-readable (pinched)");
+      RC_DISCARD(e.what());
+    }
+    RC_TAG("round trip");
+    RC_ASSERT(is_isomorphic(g, back.map));
+    // Positions: the multiset of vertex positions is the same.
+    std::multiset<Vec3> pg, pb;
+    for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) pg.insert(pos.get(rep));
+    for (Dart rep : orbit_representatives(back.map, OrbitType{1, 2})) {
+      pb.insert(back.position.get(rep));
+    }
+    RC_ASSERT(pg == pb);
   }));
 }

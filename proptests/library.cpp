@@ -1,0 +1,49 @@
+#include "proptests/library.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "checker/scheme_checker.hpp"
+#include "model/error.hpp"
+#include "model/jme_import.hpp"
+#include "model/scheme_engine.hpp"
+#include "model/scheme_json.hpp"
+
+namespace gmr::prop {
+
+const std::vector<LibraryScheme>& scheme_library() {
+  static const std::vector<LibraryScheme> lib = [] {
+    std::vector<LibraryScheme> out;
+    const char* r = std::getenv("GMR_SOURCE_DIR");
+    const std::string root = r ? r : ".";
+    std::vector<std::pair<RuleScheme, bool>> all;
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(root + "/tools/data/rules")) files.push_back(e.path());
+    std::sort(files.begin(), files.end());  // directory order is not portable
+    for (const auto& f : files) all.emplace_back(read_scheme_file(f), true);
+    for (auto& s : read_jme_file(root + "/model/tests/data/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
+    for (auto& [s, standard] : all) {
+      try {
+        SchemeEngine e(s);
+        if (!e.not_combinatorial().empty()) continue;
+      } catch (const Error&) {
+        continue;
+      }
+      out.push_back({s, check_scheme(s).ok(), standard});
+    }
+    return out;
+  }();
+  return lib;
+}
+
+std::vector<size_t> library_of_dim(int n, bool accepted_only) {
+  std::vector<size_t> out;
+  const auto& lib = scheme_library();
+  for (size_t k = 0; k < lib.size(); ++k)
+    if (lib[k].scheme.dimension == n && (!accepted_only || lib[k].accepted)) out.push_back(k);
+  return out;
+}
+
+}  // namespace gmr::prop

@@ -1,0 +1,71 @@
+#include "proptests/scheme_cases.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "model/io_rule_dot.hpp"
+#include "model/random_schemes.hpp"
+#include "model/scheme_json.hpp"
+#include "proptests/library.hpp"
+
+namespace gmr::prop {
+
+const char* to_string(SchemeFamily f) {
+  switch (f) {
+    case SchemeFamily::Random: return "random";
+    case SchemeFamily::LibraryMutant: return "library-mutant";
+    case SchemeFamily::Library: return "library";
+  }
+  return "?";
+}
+
+RuleScheme SchemeCase::build() const {
+  Rng rng(seed);
+  if (family == SchemeFamily::Random) {
+    RandomSchemeOptions o;
+    o.n = n;
+    o.max_added = size;
+    return random_scheme(rng, o);
+  }
+  const std::vector<size_t> lib = library_of_dim(n, false);
+  if (lib.empty()) throw std::logic_error("no library scheme of dimension " + std::to_string(n));
+  RuleScheme s = scheme_library()[lib[seed % lib.size()]].scheme;
+  if (family == SchemeFamily::LibraryMutant)
+    for (size_t k = 0; k < size; ++k) mutate_scheme(rng, s);
+  return s;
+}
+
+std::string SchemeCase::str() const { return "SchemeCase{" + corpus_line() + "}"; }
+
+std::string SchemeCase::corpus_line() const {
+  return std::string(to_string(family)) + " " + std::to_string(n) + " " + std::to_string(size) + " " +
+         std::to_string(seed);
+}
+
+std::optional<SchemeCase> SchemeCase::parse(const std::string& line) {
+  std::istringstream ss(line);
+  std::string fam;
+  SchemeCase c;
+  if (!(ss >> fam >> c.n >> c.size >> c.seed) || c.n < 1 || c.n > 3) return std::nullopt;
+  for (SchemeFamily f : {SchemeFamily::Random, SchemeFamily::LibraryMutant, SchemeFamily::Library})
+    if (fam == to_string(f)) {
+      if (f != SchemeFamily::Random && c.n < 2) return std::nullopt;
+      c.family = f;
+      return c;
+    }
+  return std::nullopt;
+}
+
+rc::Gen<SchemeCase> gen_scheme_case_of_dim(int n) {
+  std::vector<SchemeFamily> fams{SchemeFamily::Random};
+  if (n >= 2) fams.insert(fams.end(), {SchemeFamily::LibraryMutant, SchemeFamily::Library});
+  return rc::gen::apply([n](SchemeFamily f, size_t size, uint64_t seed) { return SchemeCase{f, n, size, seed}; },
+                        rc::gen::elementOf(fams), rc::gen::inRange<size_t>(1, 4),
+                        rc::gen::inRange<uint64_t>(0, 1u << 20));
+}
+
+std::string describe_scheme(const RuleScheme& s) {
+  return "--- scheme (gmr.rule) ---\n" + scheme_to_json_text(s) + "\n--- diagram (DOT) ---\n" + to_dot(s);
+}
+
+}  // namespace gmr::prop
