@@ -100,6 +100,24 @@ RuleScheme random_scheme(Rng& rng, const RandomSchemeOptions& opt) {
   return s;
 }
 
+RuleScheme random_copies_scheme(Rng& rng, int n, size_t max_nodes) {
+  RuleScheme s;
+  s.name = "copies";
+  s.dimension = n;
+  s.orbit = OrbitType::range(0, n);
+  std::vector<int> rev;
+  for (int i = n; i >= 0; --i) rev.push_back(i);
+  s.left.add_node("n0", s.orbit);
+  s.hooks = {"n0"};
+  const size_t count = static_cast<size_t>(uniform(rng, 1, std::max<size_t>(max_nodes, 1)));
+  const bool keep_hook = chance(rng, 70);
+  for (size_t k = 0; k < count; ++k) {
+    const std::string name = k == 0 && keep_hook ? "n0" : "c" + std::to_string(k);
+    s.right.add_node(name, chance(rng, 50) ? s.orbit : OrbitType(rev));
+  }
+  return s;
+}
+
 std::string mutate_scheme(Rng& rng, RuleScheme& s) {
   const int n = s.dimension;
   for (int attempt = 0; attempt < 16; ++attempt) {

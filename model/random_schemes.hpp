@@ -26,6 +26,13 @@ struct RandomSchemeOptions {
 };
 RuleScheme random_scheme(Rng& rng, const RandomSchemeOptions& opt = {});
 
+// A scheme consistent by construction: <o> = <0..n>, L = the hook alone (its whole connected
+// component), R = 1..max_nodes nodes, the hook preserved or deleted, each node labelled with the
+// identity <0,..,n> or the reversal <n,..,0>. Its instance replaces a component by copies of it and
+// of its dual (i -> n-i maps (0..n)_{+2} onto itself, so both copies are valid G-maps): the
+// checker must accept it and every application must give a valid G-map.
+RuleScheme random_copies_scheme(Rng& rng, int n, size_t max_nodes);
+
 // The kind of edit made, for messages ("relabel R n1 position 0 -> _").
 std::string mutate_scheme(Rng& rng, RuleScheme& s);
 

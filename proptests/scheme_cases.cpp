@@ -15,12 +15,14 @@ const char* to_string(SchemeFamily f) {
     case SchemeFamily::Random: return "random";
     case SchemeFamily::LibraryMutant: return "library-mutant";
     case SchemeFamily::Library: return "library";
+    case SchemeFamily::Copies: return "copies";
   }
   return "?";
 }
 
 RuleScheme SchemeCase::build() const {
   Rng rng(seed);
+  if (family == SchemeFamily::Copies) return random_copies_scheme(rng, n, size + 1);
   if (family == SchemeFamily::Random) {
     RandomSchemeOptions o;
     o.n = n;
@@ -47,9 +49,9 @@ std::optional<SchemeCase> SchemeCase::parse(const std::string& line) {
   std::string fam;
   SchemeCase c;
   if (!(ss >> fam >> c.n >> c.size >> c.seed) || c.n < 1 || c.n > 3) return std::nullopt;
-  for (SchemeFamily f : {SchemeFamily::Random, SchemeFamily::LibraryMutant, SchemeFamily::Library})
+  for (SchemeFamily f : {SchemeFamily::Random, SchemeFamily::LibraryMutant, SchemeFamily::Library, SchemeFamily::Copies})
     if (fam == to_string(f)) {
-      if (f != SchemeFamily::Random && c.n < 2) return std::nullopt;
+      if ((f == SchemeFamily::LibraryMutant || f == SchemeFamily::Library) && c.n < 2) return std::nullopt;
       c.family = f;
       return c;
     }
@@ -57,11 +59,17 @@ std::optional<SchemeCase> SchemeCase::parse(const std::string& line) {
 }
 
 rc::Gen<SchemeCase> gen_scheme_case_of_dim(int n) {
-  std::vector<SchemeFamily> fams{SchemeFamily::Random};
+  std::vector<SchemeFamily> fams{SchemeFamily::Random, SchemeFamily::Copies};
   if (n >= 2) fams.insert(fams.end(), {SchemeFamily::LibraryMutant, SchemeFamily::Library});
   return rc::gen::apply([n](SchemeFamily f, size_t size, uint64_t seed) { return SchemeCase{f, n, size, seed}; },
                         rc::gen::elementOf(fams), rc::gen::inRange<size_t>(1, 4),
                         rc::gen::inRange<uint64_t>(0, 1u << 20));
+}
+
+rc::Gen<SchemeCase> gen_copies_scheme_case() {
+  return rc::gen::apply(
+      [](int n, size_t size, uint64_t seed) { return SchemeCase{SchemeFamily::Copies, n, size, seed}; },
+      rc::gen::inRange(1, 4), rc::gen::inRange<size_t>(1, 4), rc::gen::inRange<uint64_t>(0, 1u << 20));
 }
 
 std::string describe_scheme(const RuleScheme& s) {

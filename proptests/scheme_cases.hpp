@@ -4,9 +4,10 @@
 //                   incident-arc consistency, up to `size` added nodes (n = 1..3);
 //   library-mutant  a library scheme of dimension n (proptests/library.hpp) after `size` random
 //                   edits (mutate_scheme) — near misses of real operations (n = 2, 3);
-//   library         a library scheme unchanged (n = 2, 3).
-// "Valid" schemes for a property are the ones the scheme checker accepts (filtering), the
-// library's accepted operations being the valid-by-construction part.
+//   library         a library scheme unchanged (n = 2, 3);
+//   copies          random_copies_scheme: consistent by construction (a component replaced by
+//                   copies of it and of its dual), n = 1..3.
+// Valid schemes: the copies family by construction; otherwise the ones the scheme checker accepts.
 #pragma once
 #include <rapidcheck.h>
 
@@ -18,7 +19,7 @@
 
 namespace gmr::prop {
 
-enum class SchemeFamily { Random, LibraryMutant, Library };
+enum class SchemeFamily { Random, LibraryMutant, Library, Copies };
 const char* to_string(SchemeFamily f);
 
 struct SchemeCase {
@@ -33,6 +34,7 @@ struct SchemeCase {
 };
 
 rc::Gen<SchemeCase> gen_scheme_case_of_dim(int n);
+rc::Gen<SchemeCase> gen_copies_scheme_case();
 
 std::string describe_scheme(const RuleScheme& s);
 inline void showValue(const SchemeCase& c, std::ostream& os) { os << c.str() << "\n" << describe_scheme(c.build()); }

@@ -82,3 +82,16 @@ TEST(SchemeProps, EngineEqualsDpoAndAcceptedSchemesPreserveGMaps3D) {
 TEST(SchemeProps, EngineEqualsDpoOnRandom1DSchemes) {
   EXPECT_TRUE(check_property<SchemeCase>("scheme_engine_dpo_1d", gen_scheme_case_of_dim(1), scheme_case_property));
 }
+
+// Schemes consistent by construction are accepted by the checker, and their applications give
+// valid G-maps (with the engine == DPO property on the way).
+TEST(SchemeProps, ConsistentByConstructionSchemesAreAcceptedAndPreserve) {
+  EXPECT_TRUE(check_property<SchemeCase>("scheme_valid_accepted", gen_copies_scheme_case(), [](const SchemeCase& c) {
+    const RuleScheme s = c.build();
+    RC_ASSERT(engine_usable(s));
+    const auto rep = check_scheme(s);
+    if (!rep.ok()) RC_LOG() << to_text(rep) << "\n";
+    RC_ASSERT(rep.ok());
+    engine_dpo_property(s, true, c.n == 3 ? 2 : 4);
+  }));
+}

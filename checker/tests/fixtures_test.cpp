@@ -1,7 +1,8 @@
 // The worked examples of the digest (notes/thesis-ch3-4-conditions.md §6) that are concrete rules,
 // loaded from checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is
 // applicable to small maps — against the semantics. F8, F10, F14, F15 are rule-scheme / rewriting-
-// system / product fixtures (digest §4-5): they belong to the scheme checker, not to issue 3.
+// system / product fixtures (digest §4-5): model/tests/word_scheme_test.cpp (F8, F9, F10),
+// word_rewriting_test.cpp (F14), graph_product_test.cpp (F15).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
