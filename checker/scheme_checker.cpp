@@ -305,8 +305,14 @@ class Checker {
     std::vector<Path> paths;
   };
 
-  bool same_arc(const CoreArc& a, const std::string& tgt_name, const CoreArc& b, bool b_right) const {
-    return a.exists && b.exists && a.letter == b.letter && side(b_right).nodes[b.target].name == tgt_name;
+  // Is `this_arc` (an out-arc on side this_right, towards the node named tgt_name) preserved, i.e.
+  // is `other_arc` (the same node's out-arc with the same label on the other side) the same arc:
+  // same letter and a target of the same name? (The target name must be read on the OTHER side:
+  // comparing this_arc's own target with itself accepted every rewired arc as preserved — found by
+  // the random-scheme property, proptests/scheme_prop.cpp.)
+  bool same_arc(const CoreArc& other_arc, const std::string& tgt_name, const CoreArc& this_arc, bool this_right) const {
+    return other_arc.exists && this_arc.exists && other_arc.letter == this_arc.letter &&
+           side(!this_right).nodes[other_arc.target].name == tgt_name;
   }
 
   bool cycle(int i, int j) {

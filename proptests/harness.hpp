@@ -34,7 +34,8 @@ bool check_property(const std::string& property, const rc::Gen<Case>& gen, const
       std::cerr << "corpus " << property << ": ignoring malformed line: " << line << "\n";
       continue;
     }
-    if (!rc::check(property + " (corpus " + c->str() + ")", [&] { body(*c); })) return false;
+    // Through rc::gen::just so that RapidCheck shows the case (showValue: JSON and diagram).
+    if (!rc::check(property + " (corpus " + c->str() + ")", [&] { body(*rc::gen::just(*c)); })) return false;
   }
   Case last_failure{};
   bool failed_once = false;
