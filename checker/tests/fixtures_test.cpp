@@ -10,6 +10,7 @@
 
 #include "checker/rule_check.hpp"
 #include "checker/semantic.hpp"
+#include "model/builders.hpp"
 #include "model/dpo.hpp"
 #include "model/orbit.hpp"
 #include "model/rule_json.hpp"
@@ -166,6 +167,53 @@ TEST(Fixtures, F9_F13_QuadSubdivisionOnIsolatedQuad) {
   EXPECT_EQ(count_cells(h, 0), 9u);
   EXPECT_EQ(count_cells(h, 1), 12u);
   EXPECT_EQ(count_cells(h, 2), 4u);
+}
+
+// F13 (Fig. 4.5, prose only): the "intermediate" quad-subdivision rule. Reconstruction: the maximal
+// rule (F9 on an isolated quad) without the 2-loops of the 8 face darts on both sides, so that L
+// matches a face of any surface and the face darts keep their outside 2-links; the added darts'
+// 2-arcs are those computed for an isolated face. The thesis says it violates C_r(0,2) and breaks
+// the constraint on non-isolated faces: the checker rejects C(0,2) only (I and O hold), the rule
+// still yields a valid map on an isolated quad, and an invalid one on a face of the cube.
+TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
+  const Rule full = load("F9_quad_subdivision_isolated_quad");
+  auto strip = [&](const DGraph& g) {
+    DGraph out;
+    for (Node v = 0; v < g.num_nodes(); ++v) out.add_node(g.name(v));
+    for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+      if (!g.arc_alive(a)) continue;
+      const Arc& e = g.arc(a);
+      const bool face_dart_loop = e.label == 2 && e.src == e.tgt && g.name(e.src)[0] == 'a';
+      if (!face_dart_loop) out.add_arc(e.src, e.tgt, e.label);
+    }
+    return out;
+  };
+  const Rule r(strip(full.left()), strip(full.right()), 2, MapKind::GMap, "F13_intermediate");
+  ASSERT_EQ(r.left().num_arcs() + 8, full.left().num_arcs());
+  for (int i = 0; i <= 2; ++i) {
+    EXPECT_TRUE(I(r, i)) << i;
+    EXPECT_TRUE(O(r, i)) << i;
+  }
+  std::vector<Diagnostic> d;
+  EXPECT_FALSE(check_cycle(r, 0, 2, d));
+  EXPECT_FALSE(d.empty());
+  EXPECT_FALSE(check_rule(r).ok());
+  // Isolated quad: the outside 2-links are loops, the result is the maximal rule's.
+  const auto by_index = [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); };
+  const GMap h = apply_both(r, isolated_face(4), by_index);
+  EXPECT_TRUE(is_valid(h));
+  EXPECT_EQ(h.size(), 32u);
+  // A face of the cube: match a_k along the face of dart 0 (a0 = 0, a1 = alpha0(a0), a2 = alpha1(a1)...).
+  const GMap cube = make_cube(2);
+  std::vector<Dart> face{0};
+  while (face.size() < 8) face.push_back(cube.alpha(face.size() % 2 == 1 ? 0 : 1, face.back()));
+  ASSERT_EQ(cube.alpha(1, face[7]), face[0]);
+  const GMap hc = apply_both(r, cube, [&](const std::string& s) { return face[std::stoul(s.substr(1))]; });
+  const auto rep = check_validity(hc);
+  EXPECT_FALSE(rep.ok());
+  bool c02 = false;
+  for (const auto& v : rep.violations) c02 = c02 || (v.kind == ViolationKind::Cycle && v.i == 0 && v.j == 2);
+  EXPECT_TRUE(c02);
 }
 
 TEST(Fixtures, F11_VertexInsertionOnFreeEdge) {
