@@ -159,9 +159,9 @@ TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
     const GMapFile f = read_gmap_json(write_gmap_json(g, {}));
     RC_ASSERT(f.map.is_omap());
     RC_ASSERT(is_isomorphic(g, f.map));
-    // One beta_1 change (swap the images of two darts) keeps a valid 2-O-map and changes the
-    // cycle type of beta_1 unless both darts are in one orbit in a way that preserves it; the
-    // signature must follow isomorphism either way.
+    // Swapping the beta_1 images of two darts keeps a valid 2-O-map (beta_1 stays a permutation,
+    // no cycle constraint for n = 2); isomorphic or not, signature equality must agree with
+    // is_isomorphic.
     if (g.dimension() == 2 && g.size() >= 2) {
       GMap m = g;
       const auto darts = m.darts();
