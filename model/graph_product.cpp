@@ -69,16 +69,22 @@ std::pair<int, int> label_pair(const Alphabet& sigma, int code) {
   return {sigma[static_cast<size_t>(code) / k], sigma[static_cast<size_t>(code) % k]};
 }
 
+// A graph with the nodes of G (same ids and names) and, for every live arc a of G, the arcs that
+// emit(out, a) adds: the common shape of E_Σ, π_Σ and the direct relabeling.
+template <class Emit>
+DGraph map_arcs(const DGraph& G, Emit emit) {
+  DGraph out;
+  for (Node p = 0; p < G.num_nodes(); ++p) out.add_node(G.name(p));
+  for (ArcId e = 0; e < G.num_arc_slots(); ++e)
+    if (G.arc_alive(e)) emit(out, G.arc(e));
+  return out;
+}
+
 DGraph embed_pairs(const DGraph& P, const Alphabet& sigma) {
   check_labels(P, sigma, "embed_pairs");
-  DGraph out;
-  for (Node p = 0; p < P.num_nodes(); ++p) out.add_node(P.name(p));
-  for (ArcId e = 0; e < P.num_arc_slots(); ++e) {
-    if (!P.arc_alive(e)) continue;
-    const Arc& a = P.arc(e);
+  return map_arcs(P, [&](DGraph& out, const Arc& a) {
     for (int j : sigma) out.add_arc(a.src, a.tgt, pair_label(sigma, a.label, j));
-  }
-  return out;
+  });
 }
 
 DGraph relabeling_graph(const Alphabet& sigma, const Relabeling& rel) {
@@ -93,14 +99,7 @@ DGraph relabeling_graph(const Alphabet& sigma, const Relabeling& rel) {
 }
 
 DGraph project_second(const DGraph& G, const Alphabet& sigma) {
-  DGraph out;
-  for (Node p = 0; p < G.num_nodes(); ++p) out.add_node(G.name(p));
-  for (ArcId e = 0; e < G.num_arc_slots(); ++e) {
-    if (!G.arc_alive(e)) continue;
-    const Arc& a = G.arc(e);
-    out.add_arc(a.src, a.tgt, label_pair(sigma, a.label).second);
-  }
-  return out;
+  return map_arcs(G, [&](DGraph& out, const Arc& a) { out.add_arc(a.src, a.tgt, label_pair(sigma, a.label).second); });
 }
 
 DGraph relabel_literal(const DGraph& P, const Alphabet& sigma, const Relabeling& rel) {
@@ -111,15 +110,10 @@ DGraph relabel_literal(const DGraph& P, const Alphabet& sigma, const Relabeling&
 DGraph relabel(const DGraph& P, const Alphabet& sigma, const Relabeling& rel) {
   relabeling_graph(sigma, rel);  // validates ℜ
   check_labels(P, sigma, "relabel");
-  DGraph out;
-  for (Node p = 0; p < P.num_nodes(); ++p) out.add_node(P.name(p));
-  for (ArcId e = 0; e < P.num_arc_slots(); ++e) {
-    if (!P.arc_alive(e)) continue;
-    const Arc& a = P.arc(e);
+  return map_arcs(P, [&](DGraph& out, const Arc& a) {
     for (auto [i, j] : rel)
       if (i == a.label) out.add_arc(a.src, a.tgt, j);
-  }
-  return out;
+  });
 }
 
 }  // namespace gmr

@@ -1,10 +1,12 @@
 #include "proptests/generators.hpp"
 
-#include <sstream>
+#include <algorithm>
 
+#include "model/dgraph.hpp"
 #include "model/io_dot.hpp"
 #include "model/io_json.hpp"
 #include "model/scheme_engine.hpp"
+#include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 
 namespace gmr::prop {
@@ -13,18 +15,6 @@ namespace {
 
 constexpr Family kAll[] = {Family::GluedPolygons,    Family::Polycube,        Family::SewSequence,
                            Family::RuleApplications, Family::PermutationOMap, Family::Oriented};
-
-// A copy of g without deleted darts (live darts renumbered in increasing order).
-GMap compact(const GMap& g) {
-  const auto darts = g.darts();
-  std::vector<Dart> index(g.capacity(), kNoDart);
-  for (size_t k = 0; k < darts.size(); ++k) index[darts[k]] = static_cast<Dart>(k);
-  GMap out(g.dimension(), g.kind());
-  out.add_darts(darts.size());
-  for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
-    for (size_t k = 0; k < darts.size(); ++k) out.set_alpha(i, static_cast<Dart>(k), index[g.alpha(i, darts[k])]);
-  return out;
-}
 
 // A small map edited by `steps` random applications of accepted library schemes of dimension n
 // (2 or 3) at random hook darts; refused applications are skipped, and the map is kept under
@@ -50,7 +40,7 @@ GMap rule_applications(Rng& rng, int n, size_t steps) {
     std::vector<Dart> hooks;
     for (size_t h = 0; h < sch.hooks.size(); ++h) hooks.push_back(darts[uniform(rng, 0, darts.size() - 1)]);
     GMap h = g;
-    if (SchemeEngine(sch).apply(h, hooks).applied && h.size() <= 600 && h.size() > 0) g = compact(h);
+    if (SchemeEngine(sch).apply(h, hooks).applied && h.size() <= 600 && h.size() > 0) g = to_gmap(to_dgraph(h), n);  // renumbers the live darts densely
   }
   return g;
 }
@@ -141,43 +131,36 @@ GMap MapCase::build() const {
 
 std::string MapCase::str() const { return "MapCase{" + corpus_line() + "}"; }
 
-std::string MapCase::corpus_line() const {
-  return std::string(to_string(family)) + " " + std::to_string(n) + " " + std::to_string(size) + " " +
-         std::to_string(seed);
-}
+std::string MapCase::corpus_line() const { return CaseLine{to_string(family), n, size, seed}.str(); }
 
 std::optional<MapCase> MapCase::parse(const std::string& line) {
-  std::istringstream ss(line);
-  std::string fam;
-  MapCase c;
-  if (!(ss >> fam >> c.n >> c.size >> c.seed)) return std::nullopt;
-  const auto f = parse_family(fam);
+  const auto l = CaseLine::parse(line);
+  const auto f = l ? parse_family(l->family) : std::nullopt;
   if (!f) return std::nullopt;
-  c.family = *f;
-  const auto fits = families_for(c.n, is_omap_family(c.family));
-  if (std::find(fits.begin(), fits.end(), c.family) == fits.end() || c.size == 0) return std::nullopt;
-  return c;
+  const auto fits = families_for(l->n, is_omap_family(*f));
+  if (std::find(fits.begin(), fits.end(), *f) == fits.end()) return std::nullopt;
+  return MapCase{*f, l->n, l->size, l->seed};
 }
 
-rc::Gen<MapCase> gen_map_case_of_dim(int n, size_t max_size) {
-  const auto families = families_for(n, false);
+namespace {
+
+rc::Gen<MapCase> gen_case_of_dim(int n, size_t max_size, bool omap) {
+  const auto families = families_for(n, omap);
   return rc::gen::apply(
       [n, families](size_t fam, size_t size, uint64_t seed) { return MapCase{families[fam], n, size, seed}; },
       rc::gen::inRange<size_t>(0, families.size()), rc::gen::inRange<size_t>(1, max_size + 1),
       rc::gen::inRange<uint64_t>(0, 1u << 20));
 }
+
+}  // namespace
+
+rc::Gen<MapCase> gen_map_case_of_dim(int n, size_t max_size) { return gen_case_of_dim(n, max_size, false); }
 
 rc::Gen<MapCase> gen_map_case(size_t max_size) {
   return rc::gen::mapcat(rc::gen::inRange(1, 4), [max_size](int n) { return gen_map_case_of_dim(n, max_size); });
 }
 
-rc::Gen<MapCase> gen_omap_case_of_dim(int n, size_t max_size) {
-  const auto families = families_for(n, true);
-  return rc::gen::apply(
-      [n, families](size_t fam, size_t size, uint64_t seed) { return MapCase{families[fam], n, size, seed}; },
-      rc::gen::inRange<size_t>(0, families.size()), rc::gen::inRange<size_t>(1, max_size + 1),
-      rc::gen::inRange<uint64_t>(0, 1u << 20));
-}
+rc::Gen<MapCase> gen_omap_case_of_dim(int n, size_t max_size) { return gen_case_of_dim(n, max_size, true); }
 
 rc::Gen<MapCase> gen_omap_case(size_t max_size) {
   return rc::gen::mapcat(rc::gen::inRange(2, 4), [max_size](int n) { return gen_omap_case_of_dim(n, max_size); });

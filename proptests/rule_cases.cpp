@@ -1,13 +1,13 @@
 #include "proptests/rule_cases.hpp"
 
 #include <map>
-#include <sstream>
 
 #include "checker/rule_family.hpp"
 #include "model/io_rule_dot.hpp"
 #include "model/random_maps.hpp"
 #include "model/rule_json.hpp"
 #include "model/scheme_instantiation.hpp"
+#include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 
 namespace gmr::prop {
@@ -104,22 +104,16 @@ Rule RuleCase::build() const {
 
 std::string RuleCase::str() const { return "RuleCase{" + corpus_line() + "}"; }
 
-std::string RuleCase::corpus_line() const {
-  return std::string(to_string(family)) + " " + std::to_string(n) + " " + std::to_string(size) + " " +
-         std::to_string(seed);
-}
+std::string RuleCase::corpus_line() const { return CaseLine{to_string(family), n, size, seed}.str(); }
 
 std::optional<RuleCase> RuleCase::parse(const std::string& line) {
-  std::istringstream ss(line);
-  std::string fam;
-  RuleCase c;
-  if (!(ss >> fam >> c.n >> c.size >> c.seed) || c.size == 0) return std::nullopt;
+  const auto l = CaseLine::parse(line);
+  if (!l) return std::nullopt;
   for (RuleFamily f : kAll)
-    if (fam == to_string(f)) {
+    if (l->family == to_string(f)) {
       const auto [lo, hi] = dims_of(f);
-      if (c.n < lo || c.n > hi) return std::nullopt;
-      c.family = f;
-      return c;
+      if (l->n < lo || l->n > hi) return std::nullopt;
+      return RuleCase{f, l->n, l->size, l->seed};
     }
   return std::nullopt;
 }

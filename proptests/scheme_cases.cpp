@@ -1,11 +1,11 @@
 #include "proptests/scheme_cases.hpp"
 
-#include <sstream>
 #include <stdexcept>
 
 #include "model/io_rule_dot.hpp"
 #include "model/random_schemes.hpp"
 #include "model/scheme_json.hpp"
+#include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 
 namespace gmr::prop {
@@ -39,21 +39,15 @@ RuleScheme SchemeCase::build() const {
 
 std::string SchemeCase::str() const { return "SchemeCase{" + corpus_line() + "}"; }
 
-std::string SchemeCase::corpus_line() const {
-  return std::string(to_string(family)) + " " + std::to_string(n) + " " + std::to_string(size) + " " +
-         std::to_string(seed);
-}
+std::string SchemeCase::corpus_line() const { return CaseLine{to_string(family), n, size, seed}.str(); }
 
 std::optional<SchemeCase> SchemeCase::parse(const std::string& line) {
-  std::istringstream ss(line);
-  std::string fam;
-  SchemeCase c;
-  if (!(ss >> fam >> c.n >> c.size >> c.seed) || c.n < 1 || c.n > 3) return std::nullopt;
+  const auto l = CaseLine::parse(line);
+  if (!l || l->n < 1 || l->n > 3) return std::nullopt;
   for (SchemeFamily f : {SchemeFamily::Random, SchemeFamily::LibraryMutant, SchemeFamily::Library, SchemeFamily::Copies})
-    if (fam == to_string(f)) {
-      if ((f == SchemeFamily::LibraryMutant || f == SchemeFamily::Library) && c.n < 2) return std::nullopt;
-      c.family = f;
-      return c;
+    if (l->family == to_string(f)) {
+      if ((f == SchemeFamily::LibraryMutant || f == SchemeFamily::Library) && l->n < 2) return std::nullopt;
+      return SchemeCase{f, l->n, l->size, l->seed};
     }
   return std::nullopt;
 }
