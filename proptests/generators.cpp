@@ -5,7 +5,6 @@
 #include "model/dgraph.hpp"
 #include "model/io_dot.hpp"
 #include "model/io_json.hpp"
-#include "model/scheme_engine.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 
@@ -35,12 +34,13 @@ GMap rule_applications(Rng& rng, int n, size_t steps) {
   const std::vector<size_t> lib = library_of_dim(n, true);
   if (lib.empty()) return g;
   for (size_t s = 0; s < steps; ++s) {
-    const RuleScheme& sch = scheme_library()[lib[uniform(rng, 0, lib.size() - 1)]].scheme;
+    const LibraryScheme& ls = scheme_library()[lib[uniform(rng, 0, lib.size() - 1)]];
+    const RuleScheme& sch = ls.scheme;
     const auto darts = g.darts();
     std::vector<Dart> hooks;
     for (size_t h = 0; h < sch.hooks.size(); ++h) hooks.push_back(darts[uniform(rng, 0, darts.size() - 1)]);
     GMap h = g;
-    if (SchemeEngine(sch).apply(h, hooks).applied && h.size() <= 600 && h.size() > 0) g = to_gmap(to_dgraph(h), n);  // renumbers the live darts densely
+    if (ls.engine->apply(h, hooks).applied && h.size() <= 600 && h.size() > 0) g = to_gmap(to_dgraph(h), n);  // renumbers the live darts densely
   }
   return g;
 }

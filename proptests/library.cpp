@@ -8,7 +8,6 @@
 #include "checker/scheme_checker.hpp"
 #include "model/error.hpp"
 #include "model/jme_import.hpp"
-#include "model/scheme_engine.hpp"
 #include "model/scheme_json.hpp"
 
 namespace gmr::prop {
@@ -25,13 +24,14 @@ const std::vector<LibraryScheme>& scheme_library() {
     for (const auto& f : files) all.emplace_back(read_scheme_file(f), true);
     for (auto& s : read_jme_file(root + "/model/tests/data/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
     for (auto& [s, standard] : all) {
+      std::shared_ptr<const SchemeEngine> e;
       try {
-        SchemeEngine e(s);
-        if (!e.not_combinatorial().empty()) continue;
+        e = std::make_shared<const SchemeEngine>(s);
       } catch (const Error&) {
         continue;
       }
-      out.push_back({s, check_scheme(s).ok(), standard});
+      if (!e->not_combinatorial().empty()) continue;
+      out.push_back({s, check_scheme(s).ok(), standard, e});
     }
     return out;
   }();

@@ -3,9 +3,11 @@
 // scheme checker's verdict. Schemes the engine cannot apply (malformed, or breaking I_S) are left
 // out. Loaded once from $GMR_SOURCE_DIR (set by CTest).
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "model/rule_scheme.hpp"
+#include "model/scheme_engine.hpp"
 
 namespace gmr::prop {
 
@@ -13,6 +15,7 @@ struct LibraryScheme {
   RuleScheme scheme;
   bool accepted = false;  // check_scheme(scheme).ok()
   bool standard = false;  // from tools/data/rules (not the Jerboa fixture)
+  std::shared_ptr<const SchemeEngine> engine;  // prepared once
 };
 
 const std::vector<LibraryScheme>& scheme_library();
