@@ -4,8 +4,8 @@
 #include <set>
 
 #include "checker/rule_check.hpp"
-#include "model/error.hpp"
-#include "model/match.hpp"
+#include "model/core/error.hpp"
+#include "model/rewrite/match.hpp"
 
 namespace gmr {
 

@@ -40,7 +40,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/gmap.hpp"
+#include "model/core/gmap.hpp"
 
 namespace gmr {
 

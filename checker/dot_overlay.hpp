@@ -7,7 +7,7 @@
 
 #include "checker/diagnostic.hpp"
 #include "checker/scheme_checker.hpp"
-#include "model/io_rule_dot.hpp"
+#include "model/draw/rule_dot.hpp"
 
 namespace gmr {
 

@@ -39,7 +39,7 @@
 #include <vector>
 
 #include "checker/diagnostic.hpp"
-#include "model/rule.hpp"
+#include "model/rewrite/rule.hpp"
 
 namespace gmr {
 

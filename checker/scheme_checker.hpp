@@ -57,7 +57,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/rule_scheme.hpp"
+#include "model/scheme/rule_scheme.hpp"
 
 namespace gmr {
 

@@ -1,13 +1,6 @@
-// Enumeration engine and semantic verdicts (issue 3; reused by the SMT and property-based work).
+// Semantic verdicts of concrete rules on the bounded family of small maps (model/graph/map_family.hpp):
+// the reference the static checker and the SMT encodings are compared with.
 //
-//  * `connected_maps(n, kind, k)`: every connected n-G-map (labels 0..n, all involutions,
-//    C(i,j) for i+2 <= j) or n-O-map (beta_1 any permutation, beta_2..n involutions,
-//    C on (1..n)_{+2}) with exactly k darts, one per isomorphism class (canonical dedup by
-//    the BFS-word signature of signature.hpp). Brute force over the involutions/permutations of
-//    k darts: meant for k <= 6 (n <= 2) — larger sizes grow as (#involutions(k))^(n+1).
-//  * `map_family(n, kind, max_darts)`: every map with 1..max_darts darts up to isomorphism, i.e.
-//    the multisets of connected classes of total size <= max_darts, sorted by size (so the first
-//    counterexample found is a smallest one), with their D-graphs.
 //  * `semantic_verdict(rule, family)`: applies the rule through EVERY match (injective,
 //    label-preserving) satisfying the gluing condition on every map of the family and checks that
 //    the result is a G-map (resp. O-map) of the same dimension (Def. 32, check_gmap_constraints).
@@ -21,24 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "model/constraints.hpp"
-#include "model/dgraph.hpp"
-#include "model/gmap.hpp"
-#include "model/match.hpp"
-#include "model/rule.hpp"
+#include "model/graph/constraints.hpp"
+#include "model/graph/dgraph.hpp"
+#include "model/graph/map_family.hpp"
+#include "model/core/gmap.hpp"
+#include "model/rewrite/match.hpp"
+#include "model/rewrite/rule.hpp"
 
 namespace gmr {
-
-std::vector<GMap> connected_maps(int n, MapKind kind, size_t darts);
-
-struct MapFamily {
-  int n = 0;
-  MapKind kind = MapKind::GMap;
-  size_t max_darts = 0;
-  std::vector<GMap> maps;
-  std::vector<DGraph> graphs;  // to_dgraph(maps[k])
-};
-MapFamily map_family(int n, MapKind kind, size_t max_darts);
 
 struct SemanticWitness {
   size_t map_index = 0;

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "model/dgraph.hpp"
-#include "model/io_dot.hpp"
-#include "model/io_json.hpp"
+#include "model/graph/dgraph.hpp"
+#include "model/draw/map_dot.hpp"
+#include "model/io/gmap_json.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "model/gmap.hpp"
-#include "model/orbit_type.hpp"
-#include "model/random_maps.hpp"
+#include "model/core/gmap.hpp"
+#include "model/core/orbit_type.hpp"
+#include "model/testing/random_maps.hpp"
 
 namespace gmr::prop {
 

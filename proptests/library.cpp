@@ -6,9 +6,9 @@
 #include <string>
 
 #include "checker/scheme_checker.hpp"
-#include "model/error.hpp"
-#include "model/jme_import.hpp"
-#include "model/scheme_json.hpp"
+#include "model/core/error.hpp"
+#include "model/io/jme_import.hpp"
+#include "model/io/scheme_json.hpp"
 
 namespace gmr::prop {
 
@@ -22,7 +22,7 @@ const std::vector<LibraryScheme>& scheme_library() {
     for (const auto& e : std::filesystem::directory_iterator(root + "/tools/data/rules")) files.push_back(e.path());
     std::sort(files.begin(), files.end());  // directory order is not portable
     for (const auto& f : files) all.emplace_back(read_scheme_file(f), true);
-    for (auto& s : read_jme_file(root + "/model/tests/data/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
+    for (auto& s : read_jme_file(root + "/model/io/tests/data/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
     for (auto& [s, standard] : all) {
       std::shared_ptr<const SchemeEngine> e;
       try {

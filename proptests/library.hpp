@@ -1,13 +1,13 @@
 // The scheme library used by the property tests: the standard operations of tools/data/rules and
-// the 50 rules of the Jerboa fixture (model/tests/data/JerboaTrackingOrbit.jme), each with the
+// the 50 rules of the Jerboa fixture (model/io/tests/data/JerboaTrackingOrbit.jme), each with the
 // scheme checker's verdict. Schemes the engine cannot apply (malformed, or breaking I_S) are left
 // out. Loaded once from $GMR_SOURCE_DIR (set by CTest).
 #pragma once
 #include <memory>
 #include <vector>
 
-#include "model/rule_scheme.hpp"
-#include "model/scheme_engine.hpp"
+#include "model/scheme/rule_scheme.hpp"
+#include "model/scheme/scheme_engine.hpp"
 
 namespace gmr::prop {
 

@@ -4,7 +4,7 @@
 // for G-maps of dimensions 1, 2, 3 from every generator family.
 #include <gtest/gtest.h>
 
-#include "model/tests/cgal_diff.hpp"
+#include "model/core/tests/cgal_diff.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 

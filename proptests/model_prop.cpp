@@ -7,14 +7,14 @@
 #include <set>
 #include <tuple>
 
-#include "model/constraints.hpp"
-#include "model/dgraph.hpp"
-#include "model/io_json.hpp"
-#include "model/io_off.hpp"
-#include "model/position.hpp"
-#include "model/orbit.hpp"
-#include "model/signature.hpp"
-#include "model/validity.hpp"
+#include "model/graph/constraints.hpp"
+#include "model/graph/dgraph.hpp"
+#include "model/io/gmap_json.hpp"
+#include "model/io/off.hpp"
+#include "model/core/position.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/signature.hpp"
+#include "model/core/validity.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 

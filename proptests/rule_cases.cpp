@@ -2,11 +2,11 @@
 
 #include <map>
 
-#include "checker/rule_family.hpp"
-#include "model/io_rule_dot.hpp"
-#include "model/random_maps.hpp"
-#include "model/rule_json.hpp"
-#include "model/scheme_instantiation.hpp"
+#include "model/testing/rule_family.hpp"
+#include "model/draw/rule_dot.hpp"
+#include "model/testing/random_maps.hpp"
+#include "model/io/rule_json.hpp"
+#include "model/scheme/scheme_instantiation.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 

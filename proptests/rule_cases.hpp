@@ -20,7 +20,7 @@
 #include <string>
 
 #include "checker/semantic.hpp"
-#include "model/rule.hpp"
+#include "model/rewrite/rule.hpp"
 
 namespace gmr::prop {
 

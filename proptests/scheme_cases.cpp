@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "model/io_rule_dot.hpp"
-#include "model/random_schemes.hpp"
-#include "model/scheme_json.hpp"
+#include "model/draw/rule_dot.hpp"
+#include "model/testing/random_schemes.hpp"
+#include "model/io/scheme_json.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 

@@ -15,7 +15,7 @@
 #include <ostream>
 #include <string>
 
-#include "model/rule_scheme.hpp"
+#include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::prop {
 

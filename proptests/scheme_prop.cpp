@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "checker/scheme_checker.hpp"
-#include "model/error.hpp"
-#include "model/scheme_engine.hpp"
-#include "model/tests/scheme_dpo_compare.hpp"
-#include "model/validity.hpp"
+#include "model/core/error.hpp"
+#include "model/scheme/scheme_engine.hpp"
+#include "model/scheme/tests/scheme_dpo_compare.hpp"
+#include "model/core/validity.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 #include "proptests/library.hpp"

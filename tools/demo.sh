@@ -4,8 +4,11 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/tools/setup.sh"
+# ccache keys on paths relative to the checkout, so a fresh clone reuses the cache.
+export CCACHE_BASEDIR="$root"
 build="$root/build"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+gen=(); [ -f "$build/CMakeCache.txt" ] || gen=(-G Ninja)
+cmake -S "$root" -B "$build" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --target gmr -j"$(nproc)"
 cd "$root"
 exec "$build/tools/gmr" demo "$@"

@@ -6,11 +6,11 @@
 
 #include <random>
 
-#include "checker/rule_family.hpp"
+#include "model/testing/rule_family.hpp"
 #include "checker/semantic.hpp"
-#include "model/dpo.hpp"
-#include "model/error.hpp"
-#include "model/signature.hpp"
+#include "model/rewrite/dpo.hpp"
+#include "model/core/error.hpp"
+#include "model/core/signature.hpp"
 
 using namespace gmr;
 

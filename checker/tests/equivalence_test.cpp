@@ -18,9 +18,9 @@
 #include <tuple>
 
 #include "checker/rule_check.hpp"
-#include "checker/rule_family.hpp"
+#include "model/testing/rule_family.hpp"
 #include "checker/semantic.hpp"
-#include "model/rule_json.hpp"
+#include "model/io/rule_json.hpp"
 
 using namespace gmr;
 

@@ -10,12 +10,12 @@
 
 #include "checker/rule_check.hpp"
 #include "checker/semantic.hpp"
-#include "model/builders.hpp"
-#include "model/dpo.hpp"
-#include "model/orbit.hpp"
-#include "model/rule_json.hpp"
-#include "model/signature.hpp"
-#include "model/validity.hpp"
+#include "model/core/builders.hpp"
+#include "model/rewrite/dpo.hpp"
+#include "model/core/orbit.hpp"
+#include "model/io/rule_json.hpp"
+#include "model/core/signature.hpp"
+#include "model/core/validity.hpp"
 
 using namespace gmr;
 

@@ -5,8 +5,8 @@
 #include <map>
 
 #include "checker/scheme_checker.hpp"
-#include "model/jme_import.hpp"
-#include "model/tests/scheme_fixtures.hpp"
+#include "model/io/jme_import.hpp"
+#include "model/scheme/tests/scheme_fixtures.hpp"
 
 using namespace gmr;
 using namespace gmr::fixtures;
@@ -180,7 +180,7 @@ TEST(SchemeChecker, Erratum6DefinitionVersusAlgorithm3) {
 
 TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
   const char* root = std::getenv("GMR_SOURCE_DIR");
-  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme");
   ASSERT_EQ(m.rules.size(), 50u);
   size_t accepted = 0;
   std::map<std::string, bool> verdict;

@@ -9,12 +9,12 @@
 #include <set>
 
 #include "checker/scheme_checker.hpp"
-#include "model/builders.hpp"
-#include "model/orbit.hpp"
-#include "model/scheme_engine.hpp"
-#include "model/scheme_json.hpp"
-#include "model/signature.hpp"
-#include "model/validity.hpp"
+#include "model/core/builders.hpp"
+#include "model/core/orbit.hpp"
+#include "model/scheme/scheme_engine.hpp"
+#include "model/io/scheme_json.hpp"
+#include "model/core/signature.hpp"
+#include "model/core/validity.hpp"
 
 using namespace gmr;
 

@@ -8,10 +8,10 @@
 #include <optional>
 
 #include "checker/scheme_checker.hpp"
-#include "model/builders.hpp"
-#include "model/jme_import.hpp"
-#include "model/scheme_engine.hpp"
-#include "model/validity.hpp"
+#include "model/core/builders.hpp"
+#include "model/io/jme_import.hpp"
+#include "model/scheme/scheme_engine.hpp"
+#include "model/core/validity.hpp"
 
 using namespace gmr;
 
@@ -49,7 +49,7 @@ std::optional<Witness> find_witness(const RuleScheme& s) {
 
 TEST(SchemeWitness, RejectedJerboaRules) {
   const char* root = std::getenv("GMR_SOURCE_DIR");
-  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme");
   std::map<std::string, std::optional<Witness>> found;
   for (const RuleScheme& s : m.rules) {
     if (check_scheme(s).ok()) continue;

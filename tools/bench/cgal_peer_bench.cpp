@@ -39,9 +39,9 @@
 #include <CGAL/Generalized_map.h>
 #pragma GCC diagnostic pop
 
-#include "model/builders.hpp"
-#include "model/orbit.hpp"
-#include "model/validity.hpp"
+#include "model/core/builders.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/validity.hpp"
 
 using gmr::Dart;
 using gmr::GMap;

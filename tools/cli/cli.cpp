@@ -4,14 +4,14 @@
 #include <filesystem>
 #include <iostream>
 
-#include "model/atomic_write.hpp"
-#include "model/io_json.hpp"
-#include "model/io_obj.hpp"
-#include "model/io_off.hpp"
-#include "model/json_writer.hpp"
-#include "model/position.hpp"
-#include "model/read_file.hpp"
-#include "tools/render.hpp"
+#include "model/io/atomic_write.hpp"
+#include "model/io/gmap_json.hpp"
+#include "model/io/obj.hpp"
+#include "model/io/off.hpp"
+#include "model/io/json_writer.hpp"
+#include "model/core/position.hpp"
+#include "model/io/read_file.hpp"
+#include "model/draw/render.hpp"
 
 namespace gmr::cli {
 

@@ -15,8 +15,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "model/gmap_file.hpp"
-#include "model/io_dot.hpp"
+#include "model/core/gmap_file.hpp"
+#include "model/draw/map_dot.hpp"
 
 namespace gmr::cli {
 

@@ -11,10 +11,10 @@
 #include <memory>
 #include <sstream>
 
-#include "model/dpo.hpp"
-#include "model/error.hpp"
-#include "model/rule_json.hpp"
-#include "model/validity.hpp"
+#include "model/rewrite/dpo.hpp"
+#include "model/core/error.hpp"
+#include "model/io/rule_json.hpp"
+#include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/rule_input.hpp"
 #include "tools/cli/scheme_apply.hpp"

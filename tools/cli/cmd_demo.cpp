@@ -13,17 +13,17 @@
 #include <numbers>
 #include <optional>
 
-#include "model/atomic_write.hpp"
-#include "model/builders.hpp"
-#include "model/face_list.hpp"
-#include "model/io_json.hpp"
-#include "model/io_obj.hpp"
-#include "model/io_off.hpp"
-#include "model/io_voxels.hpp"
-#include "model/signature.hpp"
+#include "model/io/atomic_write.hpp"
+#include "model/core/builders.hpp"
+#include "model/io/face_list.hpp"
+#include "model/io/gmap_json.hpp"
+#include "model/io/obj.hpp"
+#include "model/io/off.hpp"
+#include "model/io/voxels.hpp"
+#include "model/core/signature.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/summary.hpp"
-#include "tools/render.hpp"
+#include "model/draw/render.hpp"
 
 namespace gmr::cli {
 

@@ -3,7 +3,7 @@
 #include <iostream>
 #include <memory>
 
-#include "model/orbit.hpp"
+#include "model/core/orbit.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/summary.hpp"
 

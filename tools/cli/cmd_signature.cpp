@@ -7,7 +7,7 @@
 #include <map>
 #include <memory>
 
-#include "model/signature.hpp"
+#include "model/core/signature.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/summary.hpp"
 

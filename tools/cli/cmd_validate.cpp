@@ -4,7 +4,7 @@
 #include <iostream>
 #include <memory>
 
-#include "model/validity.hpp"
+#include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/summary.hpp"
 

@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "model/error.hpp"
+#include "model/core/error.hpp"
 #include "tools/cli/cli.hpp"
 
 // ===== SUBCOMMAND REGISTRATION LIST =====================================================

@@ -3,11 +3,11 @@
 #include "checker/dot_overlay.hpp"
 #include "checker/rule_check.hpp"
 #include "checker/scheme_checker.hpp"
-#include "model/error.hpp"
-#include "model/io_rule_dot.hpp"
+#include "model/core/error.hpp"
+#include "model/draw/rule_dot.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/rule_input.hpp"
-#include "tools/render.hpp"
+#include "model/draw/render.hpp"
 
 namespace gmr::cli {
 

@@ -2,12 +2,12 @@
 
 #include <filesystem>
 
-#include "model/error.hpp"
-#include "model/jme_import.hpp"
-#include "model/json_reader.hpp"
-#include "model/read_file.hpp"
-#include "model/rule_json.hpp"
-#include "model/scheme_json.hpp"
+#include "model/core/error.hpp"
+#include "model/io/jme_import.hpp"
+#include "model/io/json_reader.hpp"
+#include "model/io/read_file.hpp"
+#include "model/io/rule_json.hpp"
+#include "model/io/scheme_json.hpp"
 
 namespace gmr::cli {
 

@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "model/rule.hpp"
-#include "model/rule_scheme.hpp"
+#include "model/rewrite/rule.hpp"
+#include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::cli {
 

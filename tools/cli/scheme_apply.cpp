@@ -3,9 +3,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "model/error.hpp"
-#include "model/scheme_engine.hpp"
-#include "model/validity.hpp"
+#include "model/core/error.hpp"
+#include "model/scheme/scheme_engine.hpp"
+#include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {

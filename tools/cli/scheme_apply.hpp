@@ -10,7 +10,7 @@
 #pragma once
 #include <string>
 
-#include "model/rule_scheme.hpp"
+#include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::cli {
 

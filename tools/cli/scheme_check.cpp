@@ -5,10 +5,10 @@
 #include <map>
 
 #include "checker/scheme_checker.hpp"
-#include "model/jme_import.hpp"
-#include "model/json_reader.hpp"
-#include "model/read_file.hpp"
-#include "model/scheme_json.hpp"
+#include "model/io/jme_import.hpp"
+#include "model/io/json_reader.hpp"
+#include "model/io/read_file.hpp"
+#include "model/io/scheme_json.hpp"
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {

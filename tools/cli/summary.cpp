@@ -1,7 +1,7 @@
 #include "tools/cli/summary.hpp"
 
-#include "model/orbit.hpp"
-#include "model/validity.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/validity.hpp"
 
 namespace gmr::cli {
 

@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/io_json.hpp"
-#include "model/io_off.hpp"
-#include "model/read_file.hpp"
-#include "model/signature.hpp"
+#include "model/io/gmap_json.hpp"
+#include "model/io/off.hpp"
+#include "model/io/read_file.hpp"
+#include "model/core/signature.hpp"
 
 using namespace gmr;
 namespace fs = std::filesystem;
@@ -27,7 +27,7 @@ fs::path source_dir() {
   const char* s = std::getenv("GMR_SOURCE_DIR");
   return s ? s : ".";
 }
-fs::path test_data(const std::string& name) { return source_dir() / "model/tests/data" / name; }
+fs::path test_data(const std::string& name) { return source_dir() / "model/io/tests/data" / name; }
 fs::path tools_data(const std::string& name) { return source_dir() / "tools/data" / name; }
 
 struct Result {

@@ -1,0 +1,87 @@
+// Embeddings (thesis Ch. 5, Def. 5x; Jerboa): a named attribute attached to an orbit type, with one
+// value per orbit. Storage: each dart holds the index of its orbit's value slot (kNoValue when
+// unset), as Jerboa's per-dart reference `d.pi`.
+// Consistency (every dart of an <o>-orbit holds the same value; every dart holds one) is checked by
+// `check`, which reports each offending orbit.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/core/error.hpp"
+#include "model/core/gmap.hpp"
+#include "model/core/orbit.hpp"
+
+namespace gmr {
+
+struct EmbeddingIssue {
+  Dart dart;            // a dart of the offending orbit
+  std::string problem;  // "no value", "2 different values in the orbit"
+};
+
+template <class T>
+class Embedding {
+ public:
+  static constexpr uint32_t kNoValue = UINT32_MAX;
+
+  Embedding(std::string name, OrbitType orbit_type) : name_(std::move(name)), orbit_(std::move(orbit_type)) {}
+
+  const std::string& name() const { return name_; }
+  const OrbitType& orbit_type() const { return orbit_; }
+
+  // Gives value v to the whole <o>-orbit of d.
+  void set(const GMap& g, Dart d, T v) {
+    grow(g);
+    const auto slot = static_cast<uint32_t>(values_.size());
+    values_.push_back(std::move(v));
+    for (Dart e : orbit(g, orbit_, d)) slot_[e] = slot;
+  }
+  // Raw per-dart write (parsers; deliberately inconsistent data in tests).
+  void set_dart(const GMap& g, Dart d, T v) {
+    grow(g);
+    slot_[d] = static_cast<uint32_t>(values_.size());
+    values_.push_back(std::move(v));
+  }
+  bool has(Dart d) const { return d < slot_.size() && slot_[d] != kNoValue; }
+  const T& get(Dart d) const {
+    if (!has(d)) throw Error(ErrorCode::Range, "embedding '" + name_ + "' has no value", "dart " + std::to_string(d));
+    return values_[slot_[d]];
+  }
+
+  // Every orbit whose darts do not all hold one value (values compared with ==).
+  std::vector<EmbeddingIssue> check(const GMap& g) const {
+    require_orbit_type(g, orbit_);
+    std::vector<EmbeddingIssue> issues;
+    for (Dart rep : orbit_representatives(g, orbit_)) {
+      const auto darts = orbit(g, orbit_, rep);
+      if (!has(rep)) {
+        issues.push_back({rep, "no value on this " + orbit_.str() + "-orbit"});
+        continue;
+      }
+      for (Dart e : darts) {
+        if (!has(e)) {
+          issues.push_back({e, "dart has no value while its " + orbit_.str() + "-orbit has one"});
+          break;
+        }
+        if (!(values_[slot_[e]] == values_[slot_[rep]])) {
+          issues.push_back({e, "two different values in one " + orbit_.str() + "-orbit (darts " +
+                                   std::to_string(rep) + " and " + std::to_string(e) + ")"});
+          break;
+        }
+      }
+    }
+    return issues;
+  }
+
+ private:
+  void grow(const GMap& g) {
+    if (slot_.size() < g.capacity()) slot_.resize(g.capacity(), kNoValue);
+  }
+  std::string name_;
+  OrbitType orbit_;
+  std::vector<uint32_t> slot_;
+  std::vector<T> values_;
+};
+
+}  // namespace gmr

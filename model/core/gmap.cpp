@@ -1,0 +1,144 @@
+#include "model/core/gmap.hpp"
+
+#include <bit>
+
+#include "model/core/error.hpp"
+
+namespace gmr {
+
+const char* to_string(MapKind kind) { return kind == MapKind::GMap ? "gmap" : "omap"; }
+
+void Bitset::resize(size_t n) {
+  words_.resize((n + 63) / 64, 0);
+  size_ = n;
+}
+
+void Bitset::clear() { std::fill(words_.begin(), words_.end(), 0); }
+
+size_t Bitset::count() const {
+  size_t c = 0;
+  for (uint64_t w : words_) c += static_cast<size_t>(std::popcount(w));
+  return c;
+}
+
+GMap::GMap(int n, MapKind kind) : n_(n), kind_(kind) {
+  if (n < 0 || n >= kMaxDim)
+    throw Error(ErrorCode::Range, "dimension " + std::to_string(n) + " outside 0.." +
+                                      std::to_string(kMaxDim - 1));
+  if (kind == MapKind::OMap && n < 1)
+    throw Error(ErrorCode::Range, "an n-O-map needs n >= 1 (dimensions 1..n)");
+  link_.resize(static_cast<size_t>(n) + 1);
+}
+
+DimMask GMap::dims_mask() const {
+  DimMask m = 0;
+  for (int i = lowest_dim(); i <= n_; ++i) m |= DimMask(1) << i;
+  return m;
+}
+
+void GMap::reserve(size_t k) {
+  for (int i = lowest_dim(); i <= n_; ++i) link_[i].reserve(k);
+}
+
+Dart GMap::add_darts(size_t k) {
+  if (capacity_ + k >= kNoDart)
+    throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")");
+  const Dart first = capacity();
+  capacity_ += k;
+  for (int i = lowest_dim(); i <= n_; ++i) {
+    auto& l = link_[i];
+    l.resize(capacity_);
+    for (Dart d = first; d < capacity_; ++d) l[d] = d;
+  }
+  dead_.resize(capacity_);
+  for (auto& m : marks_) m.resize(capacity_);
+  return first;
+}
+
+Dart GMap::add_dart() {
+  if (!free_list_.empty()) {
+    const Dart d = free_list_.back();
+    free_list_.pop_back();
+    dead_.reset(d);
+    for (int i = lowest_dim(); i <= n_; ++i) link_[i][d] = d;
+    return d;
+  }
+  return add_darts(1);
+}
+
+void GMap::remove_dart(Dart d) {
+  if (!alive(d)) throw Error(ErrorCode::Range, "remove of a dart that does not exist", "dart " + std::to_string(d));
+  for (int i = lowest_dim(); i <= n_; ++i) {
+    auto& l = link_[i];
+    const Dart e = l[d];
+    if (is_involutive_dim(i)) {
+      if (e != d && e < capacity_ && l[e] == d) l[e] = e;
+    } else {
+      // beta_1: find the predecessor through the cycle starting at d (O(face size)).
+      Dart p = d;
+      size_t guard = 0;
+      while (l[p] != d && guard++ < capacity_) {
+        p = l[p];
+        if (p >= capacity_) break;
+      }
+      if (p < capacity_ && p != d && l[p] == d) l[p] = p;
+    }
+    l[d] = d;
+  }
+  dead_.set(d);
+  for (auto& m : marks_) m.reset(d);
+  free_list_.push_back(d);
+}
+
+std::vector<Dart> GMap::darts() const {
+  std::vector<Dart> out;
+  out.reserve(size());
+  for_each_dart([&](Dart d) { out.push_back(d); });
+  return out;
+}
+
+void GMap::link(int i, Dart a, Dart b) {
+  link_[i][a] = b;
+  if (is_involutive_dim(i)) link_[i][b] = a;
+}
+
+void GMap::unlink(int i, Dart d) {
+  const Dart e = link_[i][d];
+  link_[i][d] = d;
+  if (is_involutive_dim(i) && e != d && link_[i][e] == d) link_[i][e] = e;
+}
+
+size_t GMap::count_links(int i) const {
+  size_t loops = 0, arcs = 0;
+  const auto& l = link_[i];
+  for_each_dart([&](Dart d) {
+    if (l[d] == d) ++loops;
+    else ++arcs;
+  });
+  return is_involutive_dim(i) ? loops + arcs / 2 : loops + arcs;
+}
+
+int GMap::reserve_marker() const {
+  for (size_t m = 0; m < marker_used_.size(); ++m) {
+    if (!marker_used_[m]) {
+      marker_used_[m] = true;
+      marks_[m].resize(capacity_);
+      return static_cast<int>(m);
+    }
+  }
+  marks_.emplace_back();
+  marks_.back().resize(capacity_);
+  marker_used_.push_back(true);
+  return static_cast<int>(marks_.size() - 1);
+}
+
+void GMap::release_marker(int m) const { marker_used_[static_cast<size_t>(m)] = false; }
+
+size_t GMap::memory_bytes() const {
+  size_t b = sizeof(*this) + dead_.bytes() + free_list_.capacity() * sizeof(Dart);
+  for (const auto& l : link_) b += l.capacity() * sizeof(Dart);
+  for (const auto& m : marks_) b += m.bytes();
+  return b;
+}
+
+}  // namespace gmr

@@ -1,0 +1,89 @@
+// Dart storage: deletion with reuse, markers, memory, links.
+#include <gtest/gtest.h>
+
+#include "model/core/builders.hpp"
+#include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/validity.hpp"
+
+using namespace gmr;
+
+TEST(GMap, RemoveAndReuseDarts) {
+  GMap g = make_polygon(3, 2);
+  const Dart d = 2, p0 = g.alpha(0, d), p1 = g.alpha(1, d);
+  g.remove_dart(d);
+  EXPECT_FALSE(g.alive(d));
+  EXPECT_EQ(g.size(), 5u);
+  EXPECT_TRUE(g.is_free(0, p0));
+  EXPECT_TRUE(g.is_free(1, p1));
+  EXPECT_TRUE(is_valid(g));
+  EXPECT_EQ(g.darts().size(), 5u);
+  const Dart r = g.add_dart();
+  EXPECT_EQ(r, d);  // reused
+  EXPECT_TRUE(g.is_free(0, r));
+  EXPECT_EQ(g.capacity(), 6u);
+  EXPECT_THROW(g.remove_dart(100), Error);
+}
+
+TEST(GMap, OMapRemoveFixesPredecessor) {
+  GMap o = orient(make_cube(2));
+  const Dart d = 0;
+  Dart pred = d;
+  while (o.alpha(1, pred) != d) pred = o.alpha(1, pred);
+  o.remove_dart(d);
+  EXPECT_TRUE(o.is_free(1, pred));
+}
+
+TEST(GMap, MarkersAreReusable) {
+  GMap g = make_cube(2);
+  const int m1 = g.reserve_marker();
+  const int m2 = g.reserve_marker();
+  EXPECT_NE(m1, m2);
+  g.mark(3, m1);
+  EXPECT_TRUE(g.is_marked(3, m1));
+  EXPECT_FALSE(g.is_marked(3, m2));
+  g.unmark(3, m1);
+  g.release_marker(m1);
+  EXPECT_EQ(g.reserve_marker(), m1);
+  {
+    ScopedMarker s(g);
+    s.mark(7);
+    g.add_darts(10);  // markers grow with the map
+    s.mark(50);
+    EXPECT_TRUE(s.test(50));
+  }
+  ScopedMarker again(g);
+  EXPECT_FALSE(again.test(7));  // cleared on release
+}
+
+TEST(GMap, MemoryPerDart) {
+  for (int n : {2, 3}) {
+    GMap g = n == 2 ? make_torus(100, 100, 2) : make_polycube(menger_voxels(2));
+    const double per = double(g.memory_bytes()) / double(g.size());
+    EXPECT_LE(per, 4.0 * (n + 1) + 8) << n;
+  }
+}
+
+TEST(GMap, RejectsBadDimensions) {
+  EXPECT_THROW(GMap(-1), Error);
+  EXPECT_THROW(GMap(40), Error);
+  EXPECT_THROW(GMap(0, MapKind::OMap), Error);
+  GMap o(3, MapKind::OMap);
+  EXPECT_FALSE(o.has_dim(0));
+  EXPECT_TRUE(o.has_dim(1));
+  EXPECT_FALSE(o.is_involutive_dim(1));
+  EXPECT_TRUE(o.is_involutive_dim(2));
+}
+
+TEST(Builders, PolycubeAndMenger) {
+  GMap m = make_polycube(menger_voxels(1));
+  EXPECT_TRUE(is_valid(m));
+  EXPECT_EQ(m.size(), 20u * 48u);
+  EXPECT_EQ(count_cells(m, 3), 20u);
+  EXPECT_EQ(count_components(m), 1u);
+  // Level-1 sponge: 20 cubes, 24 shared faces... each internal face is 2 half-faces.
+  EXPECT_EQ(count_orbits(m, OrbitType{0, 1}), 120u);
+  EXPECT_EQ(count_cells(m, 2), 120u - 24u);
+  EXPECT_THROW(make_polycube({{0, 0, 0}, {0, 0, 0}}), Error);
+  EXPECT_EQ(menger_voxels(2).size(), 400u);
+}

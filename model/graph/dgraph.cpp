@@ -1,0 +1,108 @@
+#include "model/graph/dgraph.hpp"
+
+#include "model/core/error.hpp"
+
+namespace gmr {
+
+Node DGraph::add_node(std::string name) {
+  names_.push_back(std::move(name));
+  out_.emplace_back();
+  in_.emplace_back();
+  return static_cast<Node>(names_.size() - 1);
+}
+
+ArcId DGraph::add_arc(Node src, Node tgt, int label) {
+  if (src >= num_nodes() || tgt >= num_nodes())
+    throw Error(ErrorCode::Range, "arc between unknown nodes " + std::to_string(src) + " and " + std::to_string(tgt));
+  const auto id = static_cast<ArcId>(arcs_.size());
+  arcs_.push_back({src, tgt, label});
+  arc_alive_.push_back(true);
+  out_[src].push_back(id);
+  in_[tgt].push_back(id);
+  return id;
+}
+
+void DGraph::add_link(Node a, Node b, int label) {
+  add_arc(a, b, label);
+  if (a != b) add_arc(b, a, label);
+}
+
+void DGraph::remove_arc(ArcId a) {
+  if (!arc_alive_[a]) return;
+  arc_alive_[a] = false;
+  auto erase = [a](std::vector<ArcId>& v) {
+    for (size_t k = 0; k < v.size(); ++k)
+      if (v[k] == a) {
+        v.erase(v.begin() + static_cast<long>(k));
+        return;
+      }
+  };
+  erase(out_[arcs_[a].src]);
+  erase(in_[arcs_[a].tgt]);
+}
+
+size_t DGraph::num_arcs() const {
+  size_t n = 0;
+  for (bool b : arc_alive_) n += b;
+  return n;
+}
+
+std::optional<Node> DGraph::find(const std::string& name) const {
+  for (size_t v = 0; v < names_.size(); ++v)
+    if (names_[v] == name) return static_cast<Node>(v);
+  return std::nullopt;
+}
+
+std::string DGraph::node_str(Node v) const {
+  return names_[v].empty() ? "#" + std::to_string(v) : names_[v];
+}
+
+std::vector<Node> DGraph::successors(Node v, int label) const {
+  std::vector<Node> out;
+  for (ArcId a : out_[v])
+    if (arcs_[a].label == label) out.push_back(arcs_[a].tgt);
+  return out;
+}
+
+std::vector<Node> DGraph::predecessors(Node v, int label) const {
+  std::vector<Node> out;
+  for (ArcId a : in_[v])
+    if (arcs_[a].label == label) out.push_back(arcs_[a].src);
+  return out;
+}
+
+DGraph to_dgraph(const GMap& g) {
+  DGraph dg;
+  std::vector<Node> node_of(g.capacity(), 0);
+  g.for_each_dart([&](Dart d) { node_of[d] = dg.add_node(std::to_string(d)); });
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
+    g.for_each_dart([&](Dart d) {
+      const Dart e = g.alpha(i, d);
+      if (g.alive(e)) dg.add_arc(node_of[d], node_of[e], i);
+    });
+  }
+  return dg;
+}
+
+GMap to_gmap(const DGraph& dg, int n, MapKind kind) {
+  GMap g(n, kind);
+  g.add_darts(dg.num_nodes());
+  for (Node v = 0; v < dg.num_nodes(); ++v) {
+    for (int i = g.lowest_dim(); i <= n; ++i) {
+      const auto succ = dg.successors(v, i);
+      if (succ.size() != 1)
+        throw Error(ErrorCode::InvalidMap,
+                    "incident arcs I(" + std::to_string(i) + ") fails: node has " +
+                        std::to_string(succ.size()) + " outgoing " + std::to_string(i) + "-arcs",
+                    "node " + dg.node_str(v));
+      g.set_alpha(i, v, succ[0]);
+    }
+  }
+  for (ArcId a = 0; a < dg.num_arc_slots(); ++a)
+    if (dg.arc_alive(a) && !g.has_dim(dg.arc(a).label))
+      throw Error(ErrorCode::Range, "label " + std::to_string(dg.arc(a).label) + " outside the map's dimensions",
+                  "arc " + dg.node_str(dg.arc(a).src) + " -> " + dg.node_str(dg.arc(a).tgt));
+  return g;
+}
+
+}  // namespace gmr

@@ -1,0 +1,148 @@
+#include "model/graph/map_family.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <set>
+
+#include "model/core/error.hpp"
+#include "model/core/signature.hpp"
+
+namespace gmr {
+
+namespace {
+
+using Perm = std::vector<Dart>;
+
+std::vector<Perm> involutions(size_t k) {
+  std::vector<Perm> out;
+  Perm p(k, kNoDart);
+  std::function<void()> rec = [&] {
+    size_t x = 0;
+    while (x < k && p[x] != kNoDart) ++x;
+    if (x == k) {
+      out.push_back(p);
+      return;
+    }
+    p[x] = static_cast<Dart>(x);
+    rec();
+    for (size_t y = x + 1; y < k; ++y) {
+      if (p[y] != kNoDart) continue;
+      p[x] = static_cast<Dart>(y);
+      p[y] = static_cast<Dart>(x);
+      rec();
+      p[y] = kNoDart;
+    }
+    p[x] = kNoDart;
+  };
+  rec();
+  return out;
+}
+
+std::vector<Perm> permutations(size_t k) {
+  std::vector<Perm> out;
+  Perm p(k);
+  for (size_t x = 0; x < k; ++x) p[x] = static_cast<Dart>(x);
+  do out.push_back(p);
+  while (std::next_permutation(p.begin(), p.end()));
+  return out;
+}
+
+bool cycle_ok(const Perm& si, const Perm& sj) {
+  for (size_t x = 0; x < si.size(); ++x)
+    if (sj[si[sj[si[x]]]] != x) return false;
+  return true;
+}
+
+bool connected(const std::vector<const Perm*>& s, size_t k) {
+  std::vector<bool> seen(k, false);
+  std::vector<Dart> stack{0};
+  seen[0] = true;
+  size_t count = 1;
+  while (!stack.empty()) {
+    const Dart d = stack.back();
+    stack.pop_back();
+    for (const Perm* p : s) {
+      const Dart e = (*p)[d];
+      if (!seen[e]) {
+        seen[e] = true;
+        ++count;
+        stack.push_back(e);
+      }
+    }
+  }
+  return count == k;
+}
+
+}  // namespace
+
+std::vector<GMap> connected_maps(int n, MapKind kind, size_t k) {
+  if (k == 0) return {};
+  const int lo = kind == MapKind::OMap ? 1 : 0;
+  if (n < lo || n >= kMaxDim) throw Error(ErrorCode::Range, "dimension out of range", "n=" + std::to_string(n));
+  const auto inv = involutions(k);
+  const auto perm = kind == MapKind::OMap ? permutations(k) : std::vector<Perm>{};
+  std::vector<const Perm*> chosen(static_cast<size_t>(n + 1), nullptr);
+  std::set<Word> seen;
+  std::vector<GMap> out;
+  std::function<void(int)> rec = [&](int d) {
+    if (d > n) {
+      std::vector<const Perm*> s(chosen.begin() + lo, chosen.end());
+      if (!connected(s, k)) return;
+      GMap g(n, kind);
+      g.add_darts(k);
+      for (int i = lo; i <= n; ++i)
+        for (Dart x = 0; x < k; ++x) g.set_alpha(i, x, (*chosen[static_cast<size_t>(i)])[x]);
+      if (seen.insert(component_signature(g, 0)).second) out.push_back(std::move(g));
+      return;
+    }
+    const auto& pool = (kind == MapKind::OMap && d == 1) ? perm : inv;
+    for (const Perm& p : pool) {
+      bool ok = true;
+      for (int i = lo; i + 2 <= d && ok; ++i) ok = cycle_ok(*chosen[static_cast<size_t>(i)], p);
+      if (!ok) continue;
+      chosen[static_cast<size_t>(d)] = &p;
+      rec(d + 1);
+    }
+  };
+  rec(lo);
+  return out;
+}
+
+MapFamily map_family(int n, MapKind kind, size_t max_darts) {
+  MapFamily f;
+  f.n = n;
+  f.kind = kind;
+  f.max_darts = max_darts;
+  std::vector<std::vector<GMap>> conn(max_darts + 1);
+  for (size_t s = 1; s <= max_darts; ++s) conn[s] = connected_maps(n, kind, s);
+  // Multisets of components, in nondecreasing (size, index) order.
+  std::vector<std::pair<size_t, size_t>> pick;
+  std::vector<std::pair<size_t, GMap>> all;
+  std::function<void(size_t, size_t, size_t)> rec = [&](size_t total, size_t s0, size_t i0) {
+    if (!pick.empty()) {
+      GMap g(n, kind);
+      for (auto [s, idx] : pick) {
+        const GMap& c = conn[s][idx];
+        const Dart base = g.add_darts(s);
+        for (int i = g.lowest_dim(); i <= n; ++i)
+          for (Dart x = 0; x < s; ++x) g.set_alpha(i, base + x, base + c.alpha(i, x));
+      }
+      all.emplace_back(total, std::move(g));
+    }
+    for (size_t s = s0; s + total <= max_darts; ++s)
+      for (size_t idx = (s == s0 ? i0 : 0); idx < conn[s].size(); ++idx) {
+        pick.emplace_back(s, idx);
+        rec(total + s, s, idx);
+        pick.pop_back();
+      }
+  };
+  rec(0, 1, 0);
+  std::stable_sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [s, g] : all) {
+    f.graphs.push_back(to_dgraph(g));
+    f.maps.push_back(std::move(g));
+  }
+  return f;
+}
+
+}  // namespace gmr

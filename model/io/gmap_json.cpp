@@ -1,0 +1,179 @@
+#include "model/io/gmap_json.hpp"
+
+#include <charconv>
+
+#include "model/io/atomic_write.hpp"
+#include "model/io/json_writer.hpp"
+#include "model/core/orbit.hpp"
+#include "model/io/read_file.hpp"
+
+namespace gmr {
+
+namespace {
+
+// A dimension key: a decimal integer without sign or leading zeros.
+bool parse_dim_key(const std::string& key, int& dim) {
+  if (key.empty() || key.size() > 2 || (key.size() > 1 && key[0] == '0')) return false;
+  auto [p, ec] = std::from_chars(key.data(), key.data() + key.size(), dim);
+  return ec == std::errc() && p == key.data() + key.size();
+}
+
+void read_links(const JsonAt& alpha, GMap& g, Dart n_darts) {
+  alpha.require_object();
+  const int lo = g.lowest_dim(), n = g.dimension();
+  const std::string dims = std::to_string(lo) + ".." + std::to_string(n);
+  for (auto it = alpha.value().begin(); it != alpha.value().end(); ++it) {
+    int dim = -1;
+    if (!parse_dim_key(it.key(), dim) || !g.has_dim(dim))
+      alpha.fail_at(alpha.child_path(it.key()),
+                    "\"" + it.key() + "\" is not a dimension of this " + to_string(g.kind()) + " (expected " + dims + ")");
+  }
+  for (int i = lo; i <= n; ++i) {
+    const JsonAt links = alpha[std::to_string(i)];
+    const size_t count = links.array_size();
+    if (count != n_darts)
+      links.fail("expected " + std::to_string(n_darts) + " entries (one per dart), found " + std::to_string(count));
+    const nlohmann::json& arr = links.value();
+    for (Dart d = 0; d < n_darts; ++d) {
+      const nlohmann::json& t = arr[d];
+      if (!t.is_number_unsigned() || t.get<uint64_t>() >= n_darts) {
+        const std::string what = t.is_number() ? t.dump() : describe_json(t);
+        links.fail_at(links.child_path(d), "dart index " + what + " out of range: the map has " +
+                                               std::to_string(n_darts) + " darts (0.." +
+                                               std::to_string(static_cast<int64_t>(n_darts) - 1) + ")");
+      }
+      g.set_alpha(i, d, static_cast<Dart>(t.get<uint64_t>()));
+    }
+  }
+}
+
+JsonEmbedding read_embedding(const JsonAt& at, const GMap& g, Dart n_darts) {
+  at.require_object();
+  at.allow_only({"name", "orbit", "values"});
+  const JsonAt name_at = at["name"];
+  const std::string name = name_at.as_string();
+  if (name.empty()) name_at.fail("an embedding name must not be empty");
+  const JsonAt orbit_at = at["orbit"];
+  OrbitType type;
+  try {
+    type = OrbitType::parse(orbit_at.as_string());
+    require_orbit_type(g, type);
+  } catch (const Error& e) {
+    orbit_at.fail(e.message());
+  }
+  JsonEmbedding emb(name, type);
+  const JsonAt values = at["values"];
+  const size_t count = values.array_size();
+  std::vector<uint32_t> entry_of(n_darts, UINT32_MAX);  // which entry gave the value of a dart's orbit
+  for (size_t k = 0; k < count; ++k) {
+    const JsonAt entry = values[k];
+    entry.require_object();
+    entry.allow_only({"dart", "value"});
+    const JsonAt dart_at = entry["dart"];
+    const nlohmann::json& dv = dart_at.value();
+    if (!dv.is_number_unsigned() || dv.get<uint64_t>() >= n_darts)
+      dart_at.fail("dart index " + (dv.is_number() ? dv.dump() : describe_json(dv)) + " out of range: the map has " +
+                   std::to_string(n_darts) + " darts");
+    const auto d = static_cast<Dart>(dv.get<uint64_t>());
+    const JsonAt value_at = entry["value"];
+    const std::vector<Dart> darts = orbit(g, type, d);
+    for (Dart e : darts) {
+      if (entry_of[e] != UINT32_MAX)
+        entry.fail("the " + type.str() + "-orbit of dart " + std::to_string(d) + " already has a value (" +
+                   values.child_path(entry_of[e]) + ")");
+    }
+    for (Dart e : darts) entry_of[e] = static_cast<uint32_t>(k);
+    emb.set(g, d, value_at.value());
+  }
+  return emb;
+}
+
+}  // namespace
+
+GMapFile gmap_from_json(const JsonAt& doc) {
+  doc.check_header(kGMapFormat, kGMapVersion);
+  doc.allow_only({"format", "version", "kind", "dimension", "darts", "alpha", "embeddings"});
+  const JsonAt kind_at = doc["kind"];
+  const std::string kind_text = kind_at.as_string();
+  if (kind_text != "gmap" && kind_text != "omap") kind_at.fail("expected \"gmap\" or \"omap\", found \"" + kind_text + "\"");
+  const MapKind kind = kind_text == "gmap" ? MapKind::GMap : MapKind::OMap;
+  const auto n = static_cast<int>(doc["dimension"].as_int(kind == MapKind::OMap ? 1 : 0, kMaxDim - 1));
+  const auto n_darts = static_cast<Dart>(doc["darts"].as_int(0, static_cast<int64_t>(kNoDart) - 1));
+  GMapFile f;
+  f.map = GMap(n, kind);
+  f.map.add_darts(n_darts);
+  read_links(doc["alpha"], f.map, n_darts);
+  if (auto embs = doc.get("embeddings")) {
+    const size_t count = embs->array_size();
+    for (size_t k = 0; k < count; ++k) {
+      const JsonAt e = (*embs)[k];
+      JsonEmbedding emb = read_embedding(e, f.map, n_darts);
+      if (f.find(emb.name())) e["name"].fail("duplicate embedding name \"" + emb.name() + "\"");
+      f.embeddings.push_back(std::move(emb));
+    }
+  }
+  return f;
+}
+
+GMapFile read_gmap_json(std::string_view text, const std::string& source) {
+  const nlohmann::json doc = parse_json(text, source);
+  return gmap_from_json(JsonAt(doc, source));
+}
+
+GMapFile read_gmap_json_file(const std::filesystem::path& path) {
+  return read_gmap_json(read_text_file(path), path.string());
+}
+
+nlohmann::ordered_json gmap_to_json(const GMap& g, const std::vector<JsonEmbedding>& embeddings) {
+  // Dense renumbering of the live darts.
+  std::vector<Dart> index(g.capacity(), kNoDart);
+  Dart next = 0;
+  g.for_each_dart([&](Dart d) { index[d] = next++; });
+  nlohmann::ordered_json j;
+  j["format"] = kGMapFormat;
+  j["version"] = kGMapVersion;
+  j["kind"] = to_string(g.kind());
+  j["dimension"] = g.dimension();
+  j["darts"] = next;
+  nlohmann::ordered_json alpha = nlohmann::ordered_json::object();
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
+    nlohmann::ordered_json arr = nlohmann::ordered_json::array();
+    g.for_each_dart([&](Dart d) {
+      const Dart t = g.alpha(i, d);
+      if (!g.alive(t))
+        throw Error(ErrorCode::InvalidMap, "cannot write a link to a dart that does not exist (" + std::to_string(t) + ")",
+                    "dart " + std::to_string(d));
+      arr.push_back(index[t]);
+    });
+    alpha[std::to_string(i)] = std::move(arr);
+  }
+  j["alpha"] = std::move(alpha);
+  nlohmann::ordered_json embs = nlohmann::ordered_json::array();
+  for (const JsonEmbedding& e : embeddings) {
+    nlohmann::ordered_json values = nlohmann::ordered_json::array();
+    for (Dart rep : orbit_representatives(g, e.orbit_type())) {
+      if (!e.has(rep)) continue;
+      nlohmann::ordered_json v;
+      v["dart"] = index[rep];
+      v["value"] = nlohmann::ordered_json(e.get(rep));
+      values.push_back(std::move(v));
+    }
+    nlohmann::ordered_json je;
+    je["name"] = e.name();
+    je["orbit"] = e.orbit_type().str();
+    je["values"] = std::move(values);
+    embs.push_back(std::move(je));
+  }
+  j["embeddings"] = std::move(embs);
+  return j;
+}
+
+std::string write_gmap_json(const GMap& g, const std::vector<JsonEmbedding>& embeddings) {
+  return dump_json(gmap_to_json(g, embeddings));
+}
+
+void write_gmap_json_file(const std::filesystem::path& path, const GMapFile& f) {
+  write_file_atomic(path, write_gmap_json(f));
+}
+
+}  // namespace gmr

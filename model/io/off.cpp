@@ -1,0 +1,219 @@
+#include "model/io/off.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "model/io/atomic_write.hpp"
+#include "model/io/read_file.hpp"
+
+namespace gmr {
+
+namespace {
+
+struct Line {
+  size_t number;                         // 1-based
+  std::vector<std::string_view> tokens;  // comment stripped
+};
+
+// The next non-empty statement, or false at end of text.
+class OffLexer {
+ public:
+  explicit OffLexer(std::string_view text) : text_(text) {}
+  bool next(Line& line) {
+    while (pos_ < text_.size()) {
+      size_t end = text_.find('\n', pos_);
+      if (end == std::string_view::npos) end = text_.size();
+      std::string_view raw = text_.substr(pos_, end - pos_);
+      pos_ = end + 1;
+      ++number_;
+      if (auto hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
+      line.number = number_;
+      line.tokens.clear();
+      size_t p = 0;
+      auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; };
+      while (p < raw.size()) {
+        while (p < raw.size() && is_space(raw[p])) ++p;
+        const size_t q = p;
+        while (p < raw.size() && !is_space(raw[p])) ++p;
+        if (p > q) line.tokens.push_back(raw.substr(q, p - q));
+      }
+      if (!line.tokens.empty()) return true;
+    }
+    return false;
+  }
+  size_t last_line() const { return number_; }
+
+ private:
+  std::string_view text_;
+  size_t pos_ = 0;
+  size_t number_ = 0;
+};
+
+bool to_uint(std::string_view t, uint64_t& x) {
+  auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+  return ec == std::errc() && p == t.data() + t.size();
+}
+
+bool to_double(std::string_view t, double& x) {
+  auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+  return ec == std::errc() && p == t.data() + t.size() && std::isfinite(x);
+}
+
+std::string quoted(std::string_view t) { return "\"" + std::string(t) + "\""; }
+
+}  // namespace
+
+FaceList parse_off(std::string_view text, const std::string& source, std::vector<size_t>* face_lines,
+                   std::vector<size_t>* vertex_lines) {
+  auto where = [&](size_t line) { return (source.empty() ? "line " : source + ":") + std::to_string(line); };
+  auto fail = [&](size_t line, const std::string& msg) -> Error { return Error(ErrorCode::Parse, msg, where(line)); };
+  OffLexer lex(text);
+  Line line;
+  auto need = [&](const std::string& what) {
+    if (!lex.next(line)) throw fail(lex.last_line() == 0 ? 1 : lex.last_line(), "unexpected end of file: expected " + what);
+  };
+  need("the header \"OFF\"");
+  if (line.tokens[0] != "OFF")
+    throw fail(line.number, "expected the header \"OFF\", found " + quoted(line.tokens[0]));
+  std::vector<std::string_view> counts(line.tokens.begin() + 1, line.tokens.end());
+  size_t counts_line = line.number;
+  if (counts.empty()) {
+    need("the counts line \"vertices faces [edges]\"");
+    counts = line.tokens;
+    counts_line = line.number;
+  }
+  if (counts.size() < 2 || counts.size() > 3)
+    throw fail(counts_line, "expected the counts \"vertices faces [edges]\" (2 or 3 integers), found " +
+                                std::to_string(counts.size()) + " value(s)");
+  uint64_t c[3] = {0, 0, 0};
+  for (size_t k = 0; k < counts.size(); ++k)
+    if (!to_uint(counts[k], c[k]) || c[k] >= UINT32_MAX)
+      throw fail(counts_line, "expected a non-negative integer count, found " + quoted(counts[k]));
+  const uint64_t nv = c[0], nf = c[1];
+  FaceList fl;
+  const size_t cap = 1u << 20;
+  fl.vertices.reserve(std::min<uint64_t>(nv, cap));
+  fl.faces.reserve(std::min<uint64_t>(nf, cap));
+  if (vertex_lines) vertex_lines->clear();
+  if (face_lines) face_lines->clear();
+  for (uint64_t v = 0; v < nv; ++v) {
+    need("vertex " + std::to_string(v) + " of " + std::to_string(nv) + " (\"x y z\")");
+    if (line.tokens.size() != 3)
+      throw fail(line.number, "expected a vertex \"x y z\" (3 numbers), found " + std::to_string(line.tokens.size()) +
+                                  " value(s)");
+    Vec3 p{};
+    for (size_t a = 0; a < 3; ++a)
+      if (!to_double(line.tokens[a], p[a]))
+        throw fail(line.number, "expected a finite number for coordinate " + std::string(1, "xyz"[a]) + ", found " +
+                                    quoted(line.tokens[a]));
+    fl.vertices.push_back(p);
+    if (vertex_lines) vertex_lines->push_back(line.number);
+  }
+  for (uint64_t f = 0; f < nf; ++f) {
+    need("face " + std::to_string(f) + " of " + std::to_string(nf) + " (\"k v1 ... vk\")");
+    uint64_t k = 0;
+    if (!to_uint(line.tokens[0], k))
+      throw fail(line.number, "expected the number of vertices of a face, found " + quoted(line.tokens[0]));
+    if (k < 3) throw fail(line.number, "a face needs at least 3 vertices, found " + std::to_string(k));
+    if (line.tokens.size() < k + 1)
+      throw fail(line.number, "the face announces " + std::to_string(k) + " vertices but lists " +
+                                  std::to_string(line.tokens.size() - 1));
+    const size_t extra = line.tokens.size() - 1 - k;
+    if (extra != 0 && extra != 1 && extra != 3 && extra != 4)
+      throw fail(line.number, "expected " + std::to_string(k) + " vertex indices and an optional colour (1, 3 or 4 "
+                              "numbers), found " + std::to_string(extra) + " extra value(s)");
+    for (size_t e = 0; e < extra; ++e) {
+      double x;
+      if (!to_double(line.tokens[1 + k + e], x))
+        throw fail(line.number, "expected a colour component (a number), found " + quoted(line.tokens[1 + k + e]));
+    }
+    std::vector<uint32_t> face(k);
+    for (size_t p = 0; p < k; ++p) {
+      uint64_t idx = 0;
+      if (!to_uint(line.tokens[1 + p], idx))
+        throw fail(line.number, "expected a vertex index, found " + quoted(line.tokens[1 + p]));
+      if (idx >= nv)
+        throw fail(line.number, "vertex index " + std::to_string(idx) + " out of range (" + std::to_string(nv) +
+                                    " vertices, 0.." + std::to_string(static_cast<int64_t>(nv) - 1) + ")");
+      face[p] = static_cast<uint32_t>(idx);
+    }
+    for (size_t p = 0; p < k; ++p)
+      if (face[p] == face[(p + 1) % k])
+        throw fail(line.number, "degenerate face: vertex " + std::to_string(face[p]) + " repeated consecutively");
+    fl.faces.push_back(std::move(face));
+    if (face_lines) face_lines->push_back(line.number);
+  }
+  if (lex.next(line))
+    throw fail(line.number, "unexpected content after the last face (the counts announce " + std::to_string(nv) +
+                                " vertices and " + std::to_string(nf) + " faces)");
+  fl.num_edges = static_cast<size_t>(c[2]);
+  return fl;
+}
+
+PositionedMap read_off(std::string_view text, const std::string& source) {
+  std::vector<size_t> face_lines, vertex_lines;
+  const FaceList fl = parse_off(text, source, &face_lines, &vertex_lines);
+  auto where = [&](size_t line) { return (source.empty() ? "line " : source + ":") + std::to_string(line); };
+  try {
+    return map_from_face_list(fl);
+  } catch (const Error& e) {
+    // Map the builder's location ("edge (u,v)", "vertex v", "face f") to file lines.
+    unsigned long u = 0, v = 0;
+    int used = 0;
+    const std::string& loc = e.location();
+    if (std::sscanf(loc.c_str(), "edge (%lu,%lu)%n", &u, &v, &used) == 2 && used == static_cast<int>(loc.size())) {
+      std::vector<size_t> lines;
+      for (size_t f = 0; f < fl.faces.size(); ++f) {
+        const auto& face = fl.faces[f];
+        for (size_t p = 0; p < face.size(); ++p) {
+          const uint32_t a = face[p], b = face[(p + 1) % face.size()];
+          if ((a == u && b == v) || (a == v && b == u)) {
+            lines.push_back(face_lines[f]);
+            break;
+          }
+        }
+      }
+      std::string list;
+      for (size_t l : lines) list += (list.empty() ? "" : ", ") + std::to_string(l);
+      const size_t at = lines.size() > 2 ? lines[2] : (lines.empty() ? 1 : lines.back());
+      throw Error(e.code(), e.message() + " on " + loc + ", faces at lines " + list, where(at));
+    }
+    if (std::sscanf(loc.c_str(), "vertex %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
+        u < vertex_lines.size())
+      throw Error(e.code(), e.message() + " (" + loc + ")", where(vertex_lines[u]));
+    if (std::sscanf(loc.c_str(), "face %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
+        u < face_lines.size())
+      throw Error(e.code(), e.message(), where(face_lines[u]));
+    throw Error(e.code(), e.message(), source.empty() ? loc : source + ": " + loc);
+  }
+}
+
+PositionedMap read_off_file(const std::filesystem::path& path) { return read_off(read_text_file(path), path.string()); }
+
+std::string format_coordinate(double x) {
+  char buf[64];
+  auto [p, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, p);
+}
+
+std::string write_off(const FaceList& fl) {
+  std::string out = "OFF\n" + std::to_string(fl.vertices.size()) + " " + std::to_string(fl.faces.size()) + " " +
+                    std::to_string(fl.num_edges) + "\n";
+  for (const Vec3& p : fl.vertices)
+    out += format_coordinate(p[0]) + " " + format_coordinate(p[1]) + " " + format_coordinate(p[2]) + "\n";
+  for (const auto& face : fl.faces) {
+    out += std::to_string(face.size());
+    for (uint32_t v : face) out += " " + std::to_string(v);
+    out += "\n";
+  }
+  return out;
+}
+
+std::string write_off(const GMap& g, const PositionEmbedding& pos) { return write_off(face_list_from_map(g, pos)); }
+
+void write_off_file(const std::filesystem::path& path, const GMap& g, const PositionEmbedding& pos) {
+  write_file_atomic(path, write_off(g, pos));
+}
+
+}  // namespace gmr

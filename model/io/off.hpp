@@ -1,0 +1,44 @@
+// OFF (Object File Format) surface meshes in and out.
+//
+// Accepted input (one statement per line; '#' starts a comment anywhere on a line; blank lines and
+// comment-only lines are skipped):
+//   OFF                      header; the counts may follow on the same line ("OFF 8 6 12")
+//   nv nf [ne]               counts line; ne (edges) is optional and ignored
+//   x y z                    nv vertex lines, exactly 3 finite numbers
+//   k v_1 ... v_k [colour]   nf face lines: k >= 3 vertex indices in 0..nv-1, no vertex repeated
+//                            consecutively; 0, 1, 3 or 4 trailing numbers (a colour) are ignored
+// Anything after the last face is an error. Every malformed line is reported as Error(Parse)
+// located "<source>:<line>", with what was expected. The faces are turned into a 2-G-map by
+// surface_from_faces (face_list.hpp): an edge shared by more than two faces or a pinched vertex is
+// rejected with the builder's Error(NonManifold), located at the file line of the offending face
+// (or vertex) and naming the other faces' lines. Vertex positions go to the "position" embedding on
+// <1,2>; vertices used by no face are dropped (no dart carries them).
+//
+// Output: from a valid 2-G-map with positions (face_list_from_map): "OFF", the counts line with
+// the number of edges, one line per vertex (shortest round-trip decimal form) and per face.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "model/io/face_list.hpp"
+#include "model/core/position.hpp"
+
+namespace gmr {
+
+// The face list of an OFF text, without building a map (errors located "<source>:<line>").
+// `face_lines` (optional) receives the 1-based line of every face.
+FaceList parse_off(std::string_view text, const std::string& source = {}, std::vector<size_t>* face_lines = nullptr,
+                   std::vector<size_t>* vertex_lines = nullptr);
+
+PositionedMap read_off(std::string_view text, const std::string& source = {});
+PositionedMap read_off_file(const std::filesystem::path& path);
+
+std::string write_off(const FaceList& fl);
+std::string write_off(const GMap& g, const PositionEmbedding& pos);
+void write_off_file(const std::filesystem::path& path, const GMap& g, const PositionEmbedding& pos);
+
+// Shortest decimal text that reads back as the same double (std::to_chars).
+std::string format_coordinate(double x);
+
+}  // namespace gmr

@@ -1,0 +1,171 @@
+#include "model/io/scheme_json.hpp"
+
+#include <set>
+
+#include "model/io/atomic_write.hpp"
+#include "model/core/error.hpp"
+#include "model/io/json_reader.hpp"
+#include "model/io/json_writer.hpp"
+#include "model/io/read_file.hpp"
+
+namespace gmr {
+
+namespace {
+
+OrbitType read_orbit(const JsonAt& v) {
+  const std::string text = v.as_string();
+  try {
+    return OrbitType::parse(text);
+  } catch (const Error& e) {
+    v.fail(e.message(), ErrorCode::Schema);
+  }
+}
+
+GraphScheme read_side(const JsonAt& side, const RuleScheme& r) {
+  side.require_object();
+  side.allow_only({"nodes", "arcs"});
+  GraphScheme g;
+  const JsonAt nodes = side["nodes"];
+  for (size_t k = 0; k < nodes.array_size(); ++k) {
+    const JsonAt v = nodes[k];
+    v.require_object();
+    v.allow_only({"name", "orbit", "expressions"});
+    const JsonAt nm = v["name"];
+    const std::string name = nm.as_string();
+    if (name.empty()) nm.fail("node names must not be empty");
+    if (g.find(name)) nm.fail("duplicate node name \"" + name + "\"");
+    const JsonAt ov = v["orbit"];
+    OrbitType label = read_orbit(ov);
+    if (label.size() != r.orbit.size())
+      ov.fail("label " + label.str() + " has arity " + std::to_string(label.size()) + ", the scheme's orbit " +
+              r.orbit.str() + " has " + std::to_string(r.orbit.size()));
+    for (int x : label.dims())
+      if (x != OrbitType::kHole && x > r.dimension)
+        ov.fail("label " + label.str() + " uses dimension " + std::to_string(x) + " outside 0.." +
+                std::to_string(r.dimension));
+    const uint32_t id = g.add_node(name, std::move(label));
+    if (auto ex = v.get("expressions")) {
+      for (size_t e = 0; e < ex->array_size(); ++e) {
+        const JsonAt x = (*ex)[e];
+        x.require_object();
+        x.allow_only({"embedding", "code"});
+        g.nodes[id].expressions.push_back({x["embedding"].as_string(), x["code"].as_string()});
+      }
+    }
+  }
+  if (auto arcs = side.get("arcs")) {
+    for (size_t k = 0; k < arcs->array_size(); ++k) {
+      const JsonAt a = (*arcs)[k];
+      a.require_object();
+      a.allow_only({"nodes", "label"});
+      const JsonAt ends = a["nodes"];
+      if (ends.array_size() != 2) ends.fail("an arc has exactly two nodes (the same twice for a loop)");
+      uint32_t e[2];
+      for (size_t t = 0; t < 2; ++t) {
+        const std::string n = ends[t].as_string();
+        auto id = g.find(n);
+        if (!id) ends[t].fail("unknown node \"" + n + "\" (not listed in \"nodes\")");
+        e[t] = *id;
+      }
+      const int dim = static_cast<int>(a["label"].as_int(0, r.dimension));
+      g.arcs.push_back(SchemeArc{e[0], e[1], dim});
+    }
+  }
+  return g;
+}
+
+nlohmann::ordered_json side_to_json(const GraphScheme& g) {
+  nlohmann::ordered_json j;
+  j["nodes"] = nlohmann::ordered_json::array();
+  for (const auto& n : g.nodes) {
+    nlohmann::ordered_json v;
+    v["name"] = n.name;
+    v["orbit"] = n.label.str();
+    if (!n.expressions.empty()) {
+      v["expressions"] = nlohmann::ordered_json::array();
+      for (const auto& e : n.expressions) v["expressions"].push_back({{"embedding", e.embedding}, {"code", e.code}});
+    }
+    j["nodes"].push_back(std::move(v));
+  }
+  j["arcs"] = nlohmann::ordered_json::array();
+  for (const auto& e : g.arcs)
+    j["arcs"].push_back({{"nodes", {g.nodes[e.a].name, g.nodes[e.b].name}}, {"label", e.dim}});
+  return j;
+}
+
+}  // namespace
+
+std::string rule_document_kind(const nlohmann::json& doc, const std::string& source) {
+  const JsonAt root(doc, source);
+  root.check_header("gmr.rule", 1);
+  return root["kind"].as_string();
+}
+
+RuleScheme scheme_from_json(const nlohmann::json& doc, const std::string& source) {
+  const JsonAt root(doc, source);
+  root.check_header("gmr.rule", 1);
+  root.allow_only({"format", "version", "kind", "name", "description", "map", "n", "orbit", "hooks", "left",
+                   "right", "precondition"});
+  const JsonAt kind = root["kind"];
+  if (kind.as_string() != "scheme")
+    kind.fail("expected kind \"scheme\", found \"" + kind.as_string() + "\"");
+  RuleScheme r;
+  if (auto nm = root.get("name")) r.name = nm->as_string();
+  if (auto d = root.get("description")) r.description = d->as_string();
+  if (auto p = root.get("precondition")) r.precondition = p->as_string();
+  const JsonAt map = root["map"];
+  if (map.as_string() != "gmap") map.fail("rule schemes rewrite G-maps: expected \"gmap\", found \"" + map.as_string() + "\"");
+  r.dimension = static_cast<int>(root["n"].as_int(0, kMaxDim - 1));
+  const JsonAt ov = root["orbit"];
+  r.orbit = read_orbit(ov);
+  std::set<int> seen;
+  for (int x : r.orbit.dims()) {
+    if (x == OrbitType::kHole) ov.fail("the orbit of a scheme has no `_`: " + r.orbit.str());
+    if (x > r.dimension) ov.fail("dimension " + std::to_string(x) + " outside 0.." + std::to_string(r.dimension));
+    if (!seen.insert(x).second) ov.fail("dimension " + std::to_string(x) + " repeated in " + r.orbit.str());
+  }
+  r.left = read_side(root["left"], r);
+  r.right = read_side(root["right"], r);
+  const JsonAt hooks = root["hooks"];
+  for (size_t k = 0; k < hooks.array_size(); ++k) {
+    const std::string h = hooks[k].as_string();
+    if (!r.left.find(h)) hooks[k].fail("hook \"" + h + "\" is not a node of \"left\"");
+    for (const auto& prev : r.hooks)
+      if (prev == h) hooks[k].fail("hook \"" + h + "\" listed twice");
+    r.hooks.push_back(h);
+  }
+  return r;
+}
+
+RuleScheme parse_scheme(std::string_view text, const std::string& source) {
+  return scheme_from_json(parse_json(text, source), source);
+}
+
+RuleScheme read_scheme_file(const std::filesystem::path& path) {
+  return parse_scheme(read_text_file(path), path.string());
+}
+
+nlohmann::ordered_json scheme_to_json(const RuleScheme& s) {
+  nlohmann::ordered_json j;
+  j["format"] = "gmr.rule";
+  j["version"] = 1;
+  j["kind"] = "scheme";
+  if (!s.name.empty()) j["name"] = s.name;
+  if (!s.description.empty()) j["description"] = s.description;
+  j["map"] = "gmap";
+  j["n"] = s.dimension;
+  j["orbit"] = s.orbit.str();
+  j["hooks"] = s.hooks;
+  j["left"] = side_to_json(s.left);
+  j["right"] = side_to_json(s.right);
+  if (!s.precondition.empty()) j["precondition"] = s.precondition;
+  return j;
+}
+
+std::string scheme_to_json_text(const RuleScheme& s) { return dump_json(scheme_to_json(s)) + "\n"; }
+
+void write_scheme_file(const RuleScheme& s, const std::filesystem::path& path) {
+  write_file_atomic(path, scheme_to_json_text(s));
+}
+
+}  // namespace gmr

@@ -1,0 +1,60 @@
+// Path-located JSON access (model/json_reader.hpp) and the JSON layout writer (json_writer.hpp).
+#include <gtest/gtest.h>
+
+#include "model/io/json_reader.hpp"
+#include "model/io/json_writer.hpp"
+
+using namespace gmr;
+
+TEST(JsonReader, PathsAndLocations) {
+  EXPECT_EQ(json_path_key("alpha"), ".alpha");
+  EXPECT_EQ(json_path_key("1"), ".1");
+  EXPECT_EQ(json_path_key("a b"), "[\"a b\"]");
+  const nlohmann::json doc = parse_json(R"({"a": {"b c": [1, "x", 2.5]}})");
+  const JsonAt root(doc, "f.json");
+  const JsonAt arr = root["a"]["b c"];
+  EXPECT_EQ(arr.path(), "$.a[\"b c\"]");
+  EXPECT_EQ(arr[1].location(), "f.json:$.a[\"b c\"][1]");
+  EXPECT_EQ(arr[0].as_int(0, 5), 1);
+  EXPECT_DOUBLE_EQ(arr[2].as_number(), 2.5);
+  try {
+    arr[1].as_int(0, 5);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Schema);
+    EXPECT_EQ(e.location(), "f.json:$.a[\"b c\"][1]");
+    EXPECT_EQ(e.message(), "expected an integer in 0..5, found the string \"x\"");
+  }
+  EXPECT_THROW(arr[0].as_int(2, 5), Error);
+  EXPECT_THROW(root["zzz"], Error);
+  EXPECT_FALSE(root.get("zzz").has_value());
+  try {
+    root.allow_only({"b"});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.location(), "f.json:$.a");
+  }
+}
+
+TEST(JsonReader, ParseErrorsGiveLineAndColumn) {
+  try {
+    parse_json("{\n  \"a\": 1,\n  \"b\": ]\n}", "f.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Parse);
+    EXPECT_EQ(e.location(), "f.json:3:8");
+    EXPECT_EQ(e.message().find("[json.exception"), std::string::npos) << e.message();
+  }
+}
+
+TEST(JsonWriter, LayoutKeepsOrderAndInlinesScalarArrays) {
+  nlohmann::ordered_json j;
+  j["format"] = "gmr.test";
+  j["version"] = 1;
+  j["darts"] = std::vector<int>(200, 7);
+  j["small"] = {{"dart", 0}, {"value", {1, 2, 3}}};
+  const std::string text = dump_json(j);
+  EXPECT_EQ(text.rfind("{\n  \"format\": \"gmr.test\",\n  \"version\": 1,\n  \"darts\": [7,7,", 0), 0u) << text;
+  EXPECT_NE(text.find("  \"small\": {\"dart\":0,\"value\":[1,2,3]}\n}\n"), std::string::npos) << text;
+  EXPECT_EQ(nlohmann::ordered_json::parse(text), j);
+}

@@ -1,0 +1,397 @@
+#include "model/rewrite/dpo.hpp"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include "model/core/error.hpp"
+
+namespace gmr {
+
+std::string DanglingArc::describe(const Rule& r, const DGraph& G) const {
+  const Arc& e = G.arc(g_arc);
+  return "deleted node " + r.left().node_str(l_node) + " is matched to a node incident to the unmatched arc " +
+         G.node_str(e.src) + " -" + std::to_string(e.label) + "-> " + G.node_str(e.tgt) + " (dangling condition)";
+}
+
+void check_match(const Rule& r, const DGraph& G, const Match& m) {
+  const DGraph& L = r.left();
+  if (m.node.size() != L.num_nodes() || m.arc.size() != L.num_arc_slots())
+    throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");
+  std::vector<bool> used(G.num_nodes(), false);
+  for (Node v = 0; v < L.num_nodes(); ++v) {
+    const Node g = m.node[v];
+    if (g >= G.num_nodes()) throw Error(ErrorCode::Usage, "image is not a node of G", "match of " + L.node_str(v));
+    if (used[g]) throw Error(ErrorCode::Usage, "match is not injective on nodes", "match of " + L.node_str(v));
+    used[g] = true;
+  }
+  std::vector<bool> aused(G.num_arc_slots(), false);
+  for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+    if (!L.arc_alive(a)) continue;
+    const ArcId b = m.arc[a];
+    const std::string loc = "match of arc " + r.arc_str(false, a);
+    if (b >= G.num_arc_slots() || !G.arc_alive(b)) throw Error(ErrorCode::Usage, "image is not an arc of G", loc);
+    if (aused[b]) throw Error(ErrorCode::Usage, "match is not injective on arcs", loc);
+    aused[b] = true;
+    const Arc &e = L.arc(a), &f = G.arc(b);
+    if (f.label != e.label || f.src != m.node[e.src] || f.tgt != m.node[e.tgt])
+      throw Error(ErrorCode::Usage, "match does not preserve the ends or the label of the arc", loc);
+  }
+}
+
+std::vector<DanglingArc> dangling_arcs(const Rule& r, const DGraph& G, const Match& m) {
+  std::vector<bool> matched(G.num_arc_slots(), false);
+  for (ArcId b : m.arc)
+    if (b != kNoArc) matched[b] = true;
+  std::vector<DanglingArc> out;
+  for (Node v : r.deleted_nodes()) {
+    const Node g = m.node[v];
+    for (ArcId b : G.out_arcs(g))
+      if (!matched[b]) out.push_back({v, b});
+    for (ArcId b : G.in_arcs(g))
+      if (!matched[b] && G.arc(b).src != g) out.push_back({v, b});  // a loop is listed once
+  }
+  return out;
+}
+
+namespace {
+
+void require_gluing(const Rule& r, const DGraph& G, const Match& m) {
+  check_match(r, G, m);
+  auto d = dangling_arcs(r, G, m);
+  if (!d.empty())
+    throw Error(ErrorCode::Usage, "the match violates the gluing condition: " + d[0].describe(r, G),
+                "match of " + r.left().node_str(d[0].l_node));
+}
+
+// Deleted nodes and arcs of G (images of L \ L∩R).
+void deleted_images(const Rule& r, const DGraph& G, const Match& m, std::vector<bool>& dn, std::vector<bool>& da) {
+  dn.assign(G.num_nodes(), false);
+  da.assign(G.num_arc_slots(), false);
+  for (Node v : r.deleted_nodes()) dn[m.node[v]] = true;
+  const DGraph& L = r.left();
+  for (ArcId a = 0; a < L.num_arc_slots(); ++a)
+    if (L.arc_alive(a) && r.left_arc_status(a) == ElemStatus::Deleted) da[m.arc[a]] = true;
+}
+
+std::string added_name(const DGraph& R, Node v) { return R.node_str(v) + "'"; }
+
+}  // namespace
+
+Derivation derive(const Rule& r, const DGraph& G, const Match& m) {
+  require_gluing(r, G, m);
+  std::vector<bool> dn, da;
+  deleted_images(r, G, m, dn, da);
+  Derivation out;
+  // Pushout complement D with the inclusion D -> G.
+  std::vector<Node> g_to_d(G.num_nodes(), kNoNode);
+  for (Node g = 0; g < G.num_nodes(); ++g)
+    if (!dn[g]) {
+      g_to_d[g] = out.D.add_node(G.name(g));
+      out.d_to_g.push_back(g);
+    }
+  std::vector<ArcId> garc_to_d(G.num_arc_slots(), kNoArc);
+  for (ArcId b = 0; b < G.num_arc_slots(); ++b)
+    if (G.arc_alive(b) && !da[b]) garc_to_d[b] = out.D.add_arc(g_to_d[G.arc(b).src], g_to_d[G.arc(b).tgt], G.arc(b).label);
+  // Pushout of D <- L∩R -> R: the K-part of R is glued on D through m (k |-> g_to_d(m(k))).
+  out.H = out.D;
+  out.g_to_h = g_to_d;  // H starts as a copy of D, same ids
+  const DGraph& R = r.right();
+  out.comatch.assign(R.num_nodes(), kNoNode);
+  for (Node v = 0; v < R.num_nodes(); ++v) {
+    if (auto l = r.left_of(v))
+      out.comatch[v] = g_to_d[m.node[*l]];
+    else
+      out.comatch[v] = out.H.add_node(added_name(R, v));
+  }
+  out.comatch_arc.assign(R.num_arc_slots(), kNoArc);
+  for (ArcId a = 0; a < R.num_arc_slots(); ++a) {
+    if (!R.arc_alive(a)) continue;
+    if (auto l = r.left_arc_of(a))
+      out.comatch_arc[a] = garc_to_d[m.arc[*l]];
+    else
+      out.comatch_arc[a] = out.H.add_arc(out.comatch[R.arc(a).src], out.comatch[R.arc(a).tgt], R.arc(a).label);
+  }
+  return out;
+}
+
+Derivation derive_in_place(const Rule& r, const DGraph& G, const Match& m) {
+  require_gluing(r, G, m);
+  std::vector<bool> dn, da;
+  deleted_images(r, G, m, dn, da);
+  DGraph W = G;  // work copy: same node and arc ids as G
+  for (ArcId b = 0; b < G.num_arc_slots(); ++b)
+    if (da[b]) W.remove_arc(b);
+  const DGraph& R = r.right();
+  std::vector<Node> co(R.num_nodes(), kNoNode);
+  for (Node v = 0; v < R.num_nodes(); ++v) {
+    if (auto l = r.left_of(v))
+      co[v] = m.node[*l];
+    else
+      co[v] = W.add_node(added_name(R, v));
+  }
+  std::vector<ArcId> coa(R.num_arc_slots(), kNoArc);
+  for (ArcId a = 0; a < R.num_arc_slots(); ++a) {
+    if (!R.arc_alive(a)) continue;
+    if (auto l = r.left_arc_of(a))
+      coa[a] = m.arc[*l];
+    else
+      coa[a] = W.add_arc(co[R.arc(a).src], co[R.arc(a).tgt], R.arc(a).label);
+  }
+  // Compaction: fill each hole left by a deleted node with the last live node.
+  std::vector<bool> dead(W.num_nodes(), false);
+  for (Node g = 0; g < G.num_nodes(); ++g) dead[g] = dn[g];
+  std::vector<Node> newid(W.num_nodes(), kNoNode);
+  for (Node v = 0; v < W.num_nodes(); ++v) newid[v] = v;
+  size_t end = W.num_nodes();
+  auto pop_dead_tail = [&] {
+    while (end > 0 && dead[end - 1]) --end;
+  };
+  pop_dead_tail();
+  for (Node h = 0; h < end; ++h) {
+    if (!dead[h]) continue;
+    const Node last = static_cast<Node>(end - 1);
+    newid[last] = h;
+    newid[h] = kNoNode;
+    dead[h] = false;  // the hole is filled
+    dead[last] = true;
+    --end;
+    pop_dead_tail();
+  }
+  for (Node v = 0; v < W.num_nodes(); ++v)
+    if (v >= end && newid[v] >= end) newid[v] = kNoNode;
+  for (Node g = 0; g < G.num_nodes(); ++g)
+    if (dn[g]) newid[g] = kNoNode;
+  Derivation out;
+  std::vector<Node> order(end, kNoNode);
+  for (Node v = 0; v < W.num_nodes(); ++v)
+    if (newid[v] != kNoNode) order[newid[v]] = v;
+  for (Node k = 0; k < end; ++k) out.H.add_node(W.name(order[k]));
+  std::vector<ArcId> newarc(W.num_arc_slots(), kNoArc);
+  for (ArcId b = 0; b < W.num_arc_slots(); ++b)
+    if (W.arc_alive(b)) newarc[b] = out.H.add_arc(newid[W.arc(b).src], newid[W.arc(b).tgt], W.arc(b).label);
+  out.g_to_h.assign(G.num_nodes(), kNoNode);
+  for (Node g = 0; g < G.num_nodes(); ++g) out.g_to_h[g] = newid[g];
+  out.comatch.assign(R.num_nodes(), kNoNode);
+  for (Node v = 0; v < R.num_nodes(); ++v) out.comatch[v] = newid[co[v]];
+  out.comatch_arc.assign(R.num_arc_slots(), kNoArc);
+  for (ArcId a = 0; a < R.num_arc_slots(); ++a)
+    if (coa[a] != kNoArc) out.comatch_arc[a] = newarc[coa[a]];
+  return out;
+}
+
+bool same_derivation(const Derivation& a, const Derivation& b, std::string* why) {
+  auto fail = [&](const std::string& s) {
+    if (why) *why = s;
+    return false;
+  };
+  if (a.H.num_nodes() != b.H.num_nodes()) return fail("different node counts");
+  if (a.g_to_h.size() != b.g_to_h.size() || a.comatch.size() != b.comatch.size()) return fail("different tracks");
+  std::vector<Node> phi(a.H.num_nodes(), kNoNode);
+  auto set = [&](Node x, Node y) {
+    if (x == kNoNode || y == kNoNode) return x == y;
+    if (x >= phi.size() || y >= b.H.num_nodes()) return false;
+    if (phi[x] != kNoNode) return phi[x] == y;
+    phi[x] = y;
+    return true;
+  };
+  for (size_t g = 0; g < a.g_to_h.size(); ++g)
+    if (!set(a.g_to_h[g], b.g_to_h[g])) return fail("G node " + std::to_string(g) + " tracked differently");
+  for (size_t v = 0; v < a.comatch.size(); ++v)
+    if (!set(a.comatch[v], b.comatch[v])) return fail("comatch differs on R node " + std::to_string(v));
+  std::vector<bool> hit(b.H.num_nodes(), false);
+  for (Node x = 0; x < phi.size(); ++x) {
+    if (phi[x] == kNoNode) return fail("H node " + a.H.node_str(x) + " is neither tracked from G nor in the comatch");
+    if (hit[phi[x]]) return fail("two nodes sent to one");
+    hit[phi[x]] = true;
+  }
+  std::map<std::tuple<Node, Node, int>, long> arcs;
+  for (ArcId e = 0; e < a.H.num_arc_slots(); ++e)
+    if (a.H.arc_alive(e)) ++arcs[{phi[a.H.arc(e).src], phi[a.H.arc(e).tgt], a.H.arc(e).label}];
+  for (ArcId e = 0; e < b.H.num_arc_slots(); ++e)
+    if (b.H.arc_alive(e)) --arcs[{b.H.arc(e).src, b.H.arc(e).tgt, b.H.arc(e).label}];
+  for (auto& [k, c] : arcs)
+    if (c != 0) return fail("arc multisets differ");
+  if (a.comatch_arc.size() != b.comatch_arc.size()) return fail("different arc comatches");
+  for (size_t e = 0; e < a.comatch_arc.size(); ++e) {
+    if ((a.comatch_arc[e] == kNoArc) != (b.comatch_arc[e] == kNoArc)) return fail("arc comatch differs");
+    if (a.comatch_arc[e] == kNoArc) continue;
+    const Arc &x = a.H.arc(a.comatch_arc[e]), &y = b.H.arc(b.comatch_arc[e]);
+    if (phi[x.src] != y.src || phi[x.tgt] != y.tgt || x.label != y.label) return fail("arc comatch differs");
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Maps.
+
+namespace {
+
+void check_rule_fits_map(const Rule& r, const GMap& g) {
+  if (r.kind() != g.kind())
+    throw Error(ErrorCode::Usage, std::string("a ") + to_string(r.kind()) + " rule applied to a " + to_string(g.kind()), "rule");
+  if (r.dimension() > g.dimension())
+    throw Error(ErrorCode::Usage,
+                "rule of dimension " + std::to_string(r.dimension()) + " applied to a map of dimension " +
+                    std::to_string(g.dimension()),
+                "rule");
+}
+
+}  // namespace
+
+std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const GMap& g, size_t limit) {
+  check_rule_fits_map(r, g);
+  const DGraph dg = to_dgraph(g);
+  const auto darts = g.darts();
+  std::vector<std::vector<Dart>> out;
+  if (limit == 0) return out;
+  for_each_match(r.left(), dg, [&](const Match& m) {
+    std::vector<Dart> mm;
+    for (Node v : m.node) mm.push_back(darts[v]);
+    out.push_back(std::move(mm));
+    return out.size() < limit;
+  });
+  return out;
+}
+
+MapDerivation apply_to_map(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+  check_rule_fits_map(r, g);
+  const DGraph dg = to_dgraph(g);
+  const auto darts = g.darts();
+  std::vector<Node> node_of(g.capacity(), kNoNode);
+  for (size_t k = 0; k < darts.size(); ++k) node_of[darts[k]] = static_cast<Node>(k);
+  std::vector<Node> nm;
+  for (Dart d : match) {
+    if (!g.alive(d)) throw Error(ErrorCode::Usage, "match on a dart that does not exist", "dart " + std::to_string(d));
+    nm.push_back(node_of[d]);
+  }
+  auto m = match_from_nodes(r.left(), dg, nm);
+  if (!m) throw Error(ErrorCode::Usage, "the node map is not a match of the left-hand side (injective, label-preserving)", "match");
+  Derivation der = derive(r, dg, *m);
+  // H must be combinatorial to be stored as a map (I_H on every label).
+  for (Node v = 0; v < der.H.num_nodes(); ++v)
+    for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
+      if (der.H.predecessors(v, i).size() != 1 || der.H.successors(v, i).size() != 1)
+        throw Error(ErrorCode::InvalidMap,
+                    "the result is not combinatorial: incident arcs I(" + std::to_string(i) + ") fails",
+                    "node " + der.H.node_str(v));
+  MapDerivation out;
+  out.H = to_gmap(der.H, g.dimension(), g.kind());
+  out.g_to_h.assign(g.capacity(), kNoDart);
+  for (size_t k = 0; k < darts.size(); ++k) out.g_to_h[darts[k]] = der.g_to_h[k] == kNoNode ? kNoDart : der.g_to_h[k];
+  out.comatch.assign(der.comatch.begin(), der.comatch.end());
+  return out;
+}
+
+MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+  check_rule_fits_map(r, g);
+  const DGraph &L = r.left(), &R = r.right();
+  if (match.size() != L.num_nodes()) throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");
+  const int lo = g.lowest_dim(), n = g.dimension();
+  auto pred = [&](int i, Dart d) -> Dart {  // the unique x with alpha_i(x) == d in a valid map
+    if (g.is_involutive_dim(i)) {
+      const Dart x = g.alpha(i, d);
+      if (g.alpha(i, x) != d) throw Error(ErrorCode::InvalidMap, "input map: alpha_" + std::to_string(i) + " is not an involution", "dart " + std::to_string(d));
+      return x;
+    }
+    Dart p = d;
+    for (size_t k = 0; k <= g.capacity(); ++k) {
+      if (g.alpha(i, p) == d) return p;
+      p = g.alpha(i, p);
+    }
+    throw Error(ErrorCode::InvalidMap, "input map: beta_" + std::to_string(i) + " is not a permutation", "dart " + std::to_string(d));
+  };
+  // Match: injective, arcs present.
+  std::vector<Node> lnode_of(g.capacity(), kNoNode);
+  for (Node v = 0; v < L.num_nodes(); ++v) {
+    const Dart d = match[v];
+    if (!g.alive(d)) throw Error(ErrorCode::Usage, "match on a dart that does not exist", "match of " + L.node_str(v));
+    if (lnode_of[d] != kNoNode) throw Error(ErrorCode::Usage, "match is not injective", "match of " + L.node_str(v));
+    lnode_of[d] = v;
+  }
+  for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+    if (!L.arc_alive(a)) continue;
+    const Arc& e = L.arc(a);
+    if (g.alpha(e.label, match[e.src]) != match[e.tgt])
+      throw Error(ErrorCode::Usage, "the arc has no image in the map", "match of arc " + r.arc_str(false, a));
+  }
+  // In a map each dart has one i-arc out; two arcs of L from one node with one label cannot both
+  // be matched (injective on arcs): reject parallel duplicates.
+  std::string where;
+  if (!at_most_one_arc_per_label(L, &where))
+    throw Error(ErrorCode::Usage, "left-hand side not combinatorial: no injective match into a map", "left " + where);
+  // Gluing: every i-arc at the image of a deleted node is the image of an L arc.
+  for (Node v : r.deleted_nodes()) {
+    const Dart d = match[v];
+    for (int i = lo; i <= n; ++i) {
+      const auto out_l = L.successors(v, i), in_l = L.predecessors(v, i);
+      const Dart t = g.alpha(i, d), s = pred(i, d);
+      if (out_l.empty() || match[out_l[0]] != t || in_l.empty() || match[in_l[0]] != s)
+        throw Error(ErrorCode::Usage,
+                    "the match violates the gluing condition: the " + std::to_string(i) + "-arcs of dart " +
+                        std::to_string(d) + " are not all matched (dangling condition)",
+                    "match of " + L.node_str(v));
+    }
+  }
+  MapDerivation out;
+  out.H = g;
+  GMap& H = out.H;
+  // Fresh darts for added nodes (before removals, so that no index is reused within this step).
+  out.comatch.assign(R.num_nodes(), kNoDart);
+  for (Node v = 0; v < R.num_nodes(); ++v)
+    out.comatch[v] = r.left_of(v) ? match[*r.left_of(v)] : H.add_dart();
+  // Slot state per (dim, dart) among touched darts: 0 = unchanged, 1 = unset, 2 = rewritten.
+  std::map<std::pair<int, Dart>, int> slot;
+  std::map<std::pair<int, Dart>, int> indeg_delta;
+  for (Node v : r.added_nodes())
+    for (int i = lo; i <= n; ++i) {
+      slot[{i, out.comatch[v]}] = 1;
+      indeg_delta[{i, out.comatch[v]}] = -1;  // a fresh dart starts with no in-arc (its loop is not an arc)
+    }
+  for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+    if (!L.arc_alive(a) || r.left_arc_status(a) != ElemStatus::Deleted) continue;
+    const Arc& e = L.arc(a);
+    slot[{e.label, match[e.src]}] = 1;
+    --indeg_delta[{e.label, match[e.tgt]}];
+  }
+  for (ArcId a = 0; a < R.num_arc_slots(); ++a) {
+    if (!R.arc_alive(a) || r.right_arc_status(a) != ElemStatus::Added) continue;
+    const Arc& e = R.arc(a);
+    const Dart s = out.comatch[e.src], t = out.comatch[e.tgt];
+    int& st = slot[{e.label, s}];
+    if (st != 1)
+      throw Error(ErrorCode::InvalidMap,
+                  "the result is not combinatorial: two outgoing " + std::to_string(e.label) + "-arcs",
+                  "R node " + R.node_str(e.src));
+    st = 2;
+    H.set_alpha(e.label, s, t);
+    ++indeg_delta[{e.label, t}];
+  }
+  for (auto& [k, st] : slot) {
+    const Dart d = k.second;
+    const bool deleted_dart = lnode_of.size() > d && lnode_of[d] != kNoNode && !r.right_of(lnode_of[d]);
+    if (st == 1 && !deleted_dart)
+      throw Error(ErrorCode::InvalidMap, "the result is not combinatorial: no outgoing " + std::to_string(k.first) + "-arc",
+                  "dart " + std::to_string(d));
+  }
+  for (auto& [k, delta] : indeg_delta) {
+    const Dart d = k.second;
+    const bool deleted_dart = lnode_of.size() > d && lnode_of[d] != kNoNode && !r.right_of(lnode_of[d]);
+    if (delta != 0 && !deleted_dart)
+      throw Error(ErrorCode::InvalidMap,
+                  "the result is not combinatorial: " + std::to_string(1 + delta) + " incoming " +
+                      std::to_string(k.first) + "-arcs",
+                  "dart " + std::to_string(d));
+  }
+  out.g_to_h.assign(g.capacity(), kNoDart);
+  g.for_each_dart([&](Dart d) { out.g_to_h[d] = d; });
+  for (Node v : r.deleted_nodes()) {
+    const Dart d = match[v];
+    for (int i = lo; i <= n; ++i) H.set_alpha(i, d, d);  // detach first: remove_dart must not touch live darts
+    H.remove_dart(d);
+    out.g_to_h[d] = kNoDart;
+  }
+  return out;
+}
+
+}  // namespace gmr

@@ -1,0 +1,69 @@
+// Direct derivations G =(r,m)=> H for concrete rules (thesis Defs. 24–25, digest §2).
+//
+// The match must be a monomorphism (Assumption 1); the gluing condition then reduces to the
+// dangling condition: no arc of G outside m(L) may be incident to the image of a deleted node.
+// `dangling_arcs` names every such arc; the derivations throw Error(Usage) naming the first one.
+//
+// Two independent constructions are kept and tested against each other:
+//  * `derive` — the categorical one: the pushout complement D (G minus the images of the deleted
+//    nodes and arcs, as a new graph with the inclusion D -> G), then the pushout H of
+//    D <- L∩R -> R (D ⊔ (R \ L∩R) glued along L∩R), with the comatch m': R -> H;
+//  * `derive_in_place` — rewriting a copy of G: remove the matched deleted arcs, append the added
+//    nodes and arcs, then compact the deleted nodes away by moving the last node into each hole.
+// Both give isomorphic H with the same comatch (`same_derivation` checks the bijection induced by
+// the two tracks G -> H and R -> H). H node names: G nodes keep theirs; added nodes are named
+// "<R name>'" (a prime per application).
+//
+// On maps: `apply_to_map` goes through to_dgraph/to_gmap; `apply_in_map` rewrites the links of a
+// copy of the map directly (Jerboa style: overwrite links, fresh darts for added nodes, remove
+// deleted darts). Both throw Error(InvalidMap) when H is not combinatorial (the dart and dimension
+// are named) — other constraints of H (O, C) are left to validity.hpp.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "model/core/gmap.hpp"
+#include "model/rewrite/match.hpp"
+#include "model/rewrite/rule.hpp"
+
+namespace gmr {
+
+struct DanglingArc {
+  Node l_node;   // the deleted node of L
+  ArcId g_arc;   // the arc of G incident to its image and not in m(L)
+  std::string describe(const Rule& r, const DGraph& G) const;
+};
+std::vector<DanglingArc> dangling_arcs(const Rule& r, const DGraph& G, const Match& m);
+inline bool satisfies_gluing(const Rule& r, const DGraph& G, const Match& m) { return dangling_arcs(r, G, m).empty(); }
+
+// Throws Error(Usage) when m is not an injective label-preserving morphism L -> G.
+void check_match(const Rule& r, const DGraph& G, const Match& m);
+
+struct Derivation {
+  DGraph D;                       // pushout complement (categorical construction only)
+  std::vector<Node> d_to_g;       // D node -> G node (categorical construction only)
+  DGraph H;
+  std::vector<Node> g_to_h;       // G node -> H node; kNoNode for deleted nodes
+  std::vector<Node> comatch;      // R node -> H node
+  std::vector<ArcId> comatch_arc; // R arc slot -> H arc (kNoArc for dead slots)
+};
+
+Derivation derive(const Rule& r, const DGraph& G, const Match& m);
+Derivation derive_in_place(const Rule& r, const DGraph& G, const Match& m);
+
+// True iff the map  H1 -> H2  defined by  g_to_h1[g] |-> g_to_h2[g]  and  comatch1[v] |-> comatch2[v]
+// is a well-defined label-preserving graph isomorphism (arc multiplicities included) that also
+// sends comatch_arc1 to arcs with the same ends as comatch_arc2. `why` gets the first difference.
+bool same_derivation(const Derivation& a, const Derivation& b, std::string* why = nullptr);
+
+struct MapDerivation {
+  GMap H{0};
+  std::vector<Dart> g_to_h;   // dart of G -> dart of H (kNoDart for deleted darts)
+  std::vector<Dart> comatch;  // R node -> dart of H
+};
+// Matches are node maps L node -> dart.
+std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const GMap& g, size_t limit = SIZE_MAX);
+MapDerivation apply_to_map(const Rule& r, const GMap& g, const std::vector<Dart>& match);
+MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>& match);
+
+}  // namespace gmr

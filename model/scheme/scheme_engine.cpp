@@ -1,0 +1,307 @@
+#include "model/scheme/scheme_engine.hpp"
+
+#include <unordered_map>
+
+#include "model/core/error.hpp"
+#include "model/scheme/scheme_instantiation.hpp"
+
+namespace gmr {
+
+namespace {
+constexpr uint32_t kAdded = UINT32_MAX;
+}
+
+const char* to_string(NotApplicableReason r) {
+  switch (r) {
+    case NotApplicableReason::None: return "none";
+    case NotApplicableReason::NotCombinatorial: return "not-combinatorial";
+    case NotApplicableReason::HookOrbitsNotIsomorphic: return "hook-orbits-not-isomorphic";
+    case NotApplicableReason::NotInjective: return "not-injective";
+    case NotApplicableReason::MissingExplicitArc: return "missing-explicit-arc";
+    case NotApplicableReason::MissingImplicitArc: return "missing-implicit-arc";
+  }
+  return "?";
+}
+
+std::string incident_arcs_problem(const RuleScheme& s) {
+  for (int d = 0; d <= s.dimension; ++d) {
+    for (uint32_t v = 0; v < s.left.size(); ++v) {
+      const size_t cl = s.left.count_arcs(v, d);
+      const std::string nm = s.left.nodes[v].name;
+      if (cl > 1)
+        return "L node " + nm + " has " + std::to_string(cl) + " " + std::to_string(d) + "-arcs";
+      if (auto r = s.right_of(v)) {
+        const size_t cr = s.right.count_arcs(*r, d);
+        if (cr != cl)
+          return "preserved node " + nm + " has " + std::to_string(cl) + " " + std::to_string(d) +
+                 "-arc(s) in L and " + std::to_string(cr) + " in R";
+      } else if (cl != 1) {
+        return "deleted node " + nm + " has no " + std::to_string(d) + "-arc in L (gluing condition)";
+      }
+    }
+    for (uint32_t v = 0; v < s.right.size(); ++v) {
+      if (s.left_of(v)) continue;
+      const size_t cr = s.right.count_arcs(v, d);
+      if (cr != 1)
+        return "added node " + s.right.nodes[v].name + " has " + std::to_string(cr) + " " +
+               std::to_string(d) + "-arcs in R (exactly one needed)";
+    }
+  }
+  return {};
+}
+
+SchemeEngine::SchemeEngine(RuleScheme scheme) : s_(std::move(scheme)) {
+  s_.validate_structure();
+  hooks_ = s_.hook_nodes();
+  for (uint32_t h : hooks_)
+    if (s_.left.nodes[h].label.has_hole())
+      throw Error(ErrorCode::Schema, "hook label " + s_.left.nodes[h].label.str() + " has `_`",
+                  "L node " + s_.left.nodes[h].name);
+  const size_t nl = s_.left.size();
+  // Propagation order: BFS over explicit L arcs from the hooks.
+  std::vector<bool> seen(nl, false);
+  std::vector<uint32_t> queue;
+  for (uint32_t h : hooks_) {
+    if (seen[h])
+      throw Error(ErrorCode::Schema, "two hooks in one connected component of L",
+                  "L node " + s_.left.nodes[h].name);
+    seen[h] = true;
+    queue.push_back(h);
+    for (size_t k = queue.size() - 1; k < queue.size(); ++k) {
+      const uint32_t v = queue[k];
+      for (const auto& e : s_.left.arcs) {
+        if (e.a != v && e.b != v) continue;
+        const uint32_t w = e.a == v ? e.b : e.a;
+        if (seen[w]) {
+          continue;
+        }
+        seen[w] = true;
+        queue.push_back(w);
+        steps_.push_back(Step{w, v, e.dim});
+      }
+    }
+  }
+  for (uint32_t v = 0; v < nl; ++v)
+    if (!seen[v])
+      throw Error(ErrorCode::Schema, "L node is in a connected component without hook",
+                  "L node " + s_.left.nodes[v].name);
+  auto implicit = [](const SchemeNode& n) {
+    std::vector<Implicit> out;
+    for (uint32_t p = 0; p < n.label.size(); ++p)
+      if (n.label[p] != OrbitType::kHole) out.push_back(Implicit{p, n.label[p]});
+    return out;
+  };
+  for (const auto& n : s_.left.nodes) impl_l_.push_back(implicit(n));
+  for (const auto& n : s_.right.nodes) impl_r_.push_back(implicit(n));
+  r_source_.assign(s_.right.size(), kAdded);
+  added_rank_.assign(s_.right.size(), kAdded);
+  for (uint32_t v = 0; v < s_.right.size(); ++v) {
+    if (auto l = s_.left_of(v))
+      r_source_[v] = *l;
+    else
+      added_rank_[v] = static_cast<uint32_t>(num_added_++);
+  }
+  for (uint32_t v = 0; v < nl; ++v)
+    if (!s_.right_of(v)) deleted_.push_back(v);
+  not_combinatorial_ = incident_arcs_problem(s_);
+}
+
+SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_darts) const {
+  if (g.kind() != MapKind::GMap)
+    throw Error(ErrorCode::Usage, "rule schemes apply to G-maps only", "scheme " + s_.name);
+  if (g.dimension() != s_.dimension)
+    throw Error(ErrorCode::Usage,
+                "the scheme rewrites " + std::to_string(s_.dimension) + "-G-maps, the map is a " +
+                    std::to_string(g.dimension()) + "-G-map",
+                "scheme " + s_.name);
+  if (hook_darts.size() != hooks_.size())
+    throw Error(ErrorCode::Usage,
+                "the scheme has " + std::to_string(hooks_.size()) + " hook(s), " +
+                    std::to_string(hook_darts.size()) + " dart(s) given",
+                "scheme " + s_.name);
+  for (size_t k = 0; k < hook_darts.size(); ++k)
+    if (!g.alive(hook_darts[k]))
+      throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(hook_darts[k]));
+
+  SchemeApplication res;
+  auto fail = [&](NotApplicableReason r, std::string why) {
+    res.applied = false;
+    res.reason = r;
+    res.why = "not applicable, because " + std::move(why);
+    res.match.clear();
+    return res;
+  };
+  if (!not_combinatorial_.empty())
+    return fail(NotApplicableReason::NotCombinatorial,
+                "the scheme breaks incident arcs (Alg. 1): " + not_combinatorial_);
+
+  // 1. hook orbit
+  OrbitGraph O = hooks_.empty() ? single_dart_orbit(s_.orbit.size())
+                                : orbit_graph(g, s_.left.nodes[hooks_[0]].label, hook_darts[0]);
+  const size_t s = O.size();
+  const size_t nl = s_.left.size();
+  res.orbit = O.darts;
+  std::vector<Dart>& M = res.match;
+  M.assign(nl * s, kNoDart);
+  if (!hooks_.empty())
+    for (uint32_t b = 0; b < s; ++b) M[hooks_[0] * s + b] = O.darts[b];
+
+  // 2. other hooks: Algorithm 5 (joint BFS), injectivity of the reverse map with a marker.
+  for (size_t c = 1; c < hooks_.size(); ++c) {
+    const uint32_t h = hooks_[c];
+    const OrbitType& lc = s_.left.nodes[h].label;
+    Dart* Mh = &M[h * s];
+    ScopedMarker mk(g);
+    std::vector<uint32_t> q{0};
+    Mh[0] = hook_darts[c];
+    mk.mark(hook_darts[c]);
+    std::string err;
+    for (size_t k = 0; k < q.size() && err.empty(); ++k) {
+      const uint32_t b = q[k];
+      for (size_t p = 0; p < O.arity; ++p) {
+        const uint32_t nb = O.neighbor(b, p);
+        const Dart x = g.alpha(lc[p], Mh[b]);
+        if (Mh[nb] == kNoDart) {
+          if (mk.test(x)) {
+            err = "dart " + std::to_string(x) + " would correspond to two darts of the reference orbit";
+            break;
+          }
+          Mh[nb] = x;
+          mk.mark(x);
+          q.push_back(nb);
+        } else if (Mh[nb] != x) {
+          err = "dart " + std::to_string(O.darts[nb]) + " would correspond to both " +
+                std::to_string(Mh[nb]) + " and " + std::to_string(x);
+          break;
+        }
+      }
+    }
+    if (err.empty() && q.size() != s) err = "the orbits have different sizes";
+    for (uint32_t b = 0; b < s; ++b)
+      if (Mh[b] != kNoDart) mk.unmark(Mh[b]);
+    mk.set_clean();
+    if (!err.empty())
+      return fail(NotApplicableReason::HookOrbitsNotIsomorphic,
+                  "the " + lc.str() + "-orbit of hook " + s_.hooks[c] + " at dart " +
+                      std::to_string(hook_darts[c]) + " is not isomorphic to the " +
+                      s_.left.nodes[hooks_[0]].label.str() + "-orbit of hook " + s_.hooks[0] +
+                      " at dart " + std::to_string(hook_darts[0]) + ": " + err);
+  }
+
+  // 3. propagation along explicit L arcs
+  for (const Step& st : steps_)
+    for (uint32_t b = 0; b < s; ++b) M[st.v * s + b] = g.alpha(st.dim, M[st.from * s + b]);
+
+  // 4a. injectivity
+  {
+    ScopedMarker mk(g);
+    bool dup = false;
+    for (Dart x : M) {
+      if (mk.test(x)) {
+        dup = true;
+        break;
+      }
+      mk.mark(x);
+    }
+    for (Dart x : M) mk.unmark(x);
+    mk.set_clean();
+    if (dup) {
+      std::unordered_map<Dart, size_t> first;
+      std::string why;
+      for (size_t k = 0; k < M.size(); ++k) {
+        auto [it, fresh] = first.emplace(M[k], k);
+        if (!fresh) {
+          auto name = [&](size_t idx) {
+            return instance_name(O, static_cast<uint32_t>(idx % s), s_.left.nodes[idx / s].name);
+          };
+          why = "the match is not injective: " + name(it->second) + " and " + name(k) +
+                " both map to dart " + std::to_string(M[k]);
+          break;
+        }
+      }
+      return fail(NotApplicableReason::NotInjective, why);
+    }
+  }
+  // 4b. explicit arcs of L
+  for (const auto& e : s_.left.arcs)
+    for (uint32_t b = 0; b < s; ++b) {
+      const Dart x = M[e.a * s + b], y = M[e.b * s + b];
+      if (g.alpha(e.dim, x) != y)
+        return fail(NotApplicableReason::MissingExplicitArc,
+                    "the L arc " + s_.left.nodes[e.a].name + " -" + std::to_string(e.dim) + "- " +
+                        s_.left.nodes[e.b].name + " is not in G at orbit dart " +
+                        std::to_string(O.darts[b]) + ": dart " + std::to_string(x) + " has " +
+                        std::to_string(e.dim) + "-neighbour " + std::to_string(g.alpha(e.dim, x)) +
+                        ", not " + std::to_string(y));
+    }
+  // 4c. implicit arcs of L
+  for (uint32_t v = 0; v < nl; ++v)
+    for (const Implicit& im : impl_l_[v])
+      for (uint32_t b = 0; b < s; ++b) {
+        const Dart x = M[v * s + b], y = M[v * s + O.neighbor(b, im.p)];
+        if (g.alpha(im.dim, x) != y)
+          return fail(NotApplicableReason::MissingImplicitArc,
+                      "the implicit " + std::to_string(im.dim) + "-arcs of L node " +
+                          s_.left.nodes[v].name + " " + s_.left.nodes[v].label.str() +
+                          " are not in G: dart " + std::to_string(x) + " has " +
+                          std::to_string(im.dim) + "-neighbour " + std::to_string(g.alpha(im.dim, x)) +
+                          ", not " + std::to_string(y));
+      }
+
+  // 5. darts of R
+  const size_t nr = s_.right.size();
+  std::vector<Dart>& T = res.comatch;
+  T.assign(nr * s, kNoDart);
+  const Dart base = num_added_ > 0 ? g.add_darts(num_added_ * s) : 0;
+  for (uint32_t v = 0; v < nr; ++v) {
+    Dart* Tv = &T[v * s];
+    if (r_source_[v] != kAdded) {
+      const Dart* Mv = &M[r_source_[v] * s];
+      for (uint32_t b = 0; b < s; ++b) Tv[b] = Mv[b];
+    } else {
+      const Dart first = base + static_cast<Dart>(added_rank_[v] * s);
+      for (uint32_t b = 0; b < s; ++b) Tv[b] = first + b;
+    }
+  }
+  // 6. overwrite links
+  for (uint32_t v = 0; v < nr; ++v) {
+    const Dart* Tv = &T[v * s];
+    for (const Implicit& im : impl_r_[v]) {
+      for (uint32_t b = 0; b < s; ++b) g.set_alpha(im.dim, Tv[b], Tv[O.neighbor(b, im.p)]);
+    }
+  }
+  for (const auto& e : s_.right.arcs) {
+    const Dart* Ta = &T[e.a * s];
+    const Dart* Tb = &T[e.b * s];
+    for (uint32_t b = 0; b < s; ++b) {
+      g.set_alpha(e.dim, Ta[b], Tb[b]);
+      g.set_alpha(e.dim, Tb[b], Ta[b]);
+    }
+  }
+  // 7. deletion: the deleted darts' own links become loops first, so that remove_dart touches no
+  // surviving dart (their links were all overwritten in step 6, by I_S).
+  for (uint32_t v : deleted_)
+    for (uint32_t b = 0; b < s; ++b) {
+      const Dart x = M[v * s + b];
+      for (int i = 0; i <= g.dimension(); ++i) g.set_alpha(i, x, x);
+      g.remove_dart(x);
+    }
+  res.applied = true;
+  res.darts_added = num_added_ * s;
+  res.darts_deleted = deleted_.size() * s;
+  return res;
+}
+
+SchemeApplication apply_scheme_in_place(GMap& g, const RuleScheme& s, const std::vector<Dart>& hook_darts) {
+  return SchemeEngine(s).apply(g, hook_darts);
+}
+
+std::pair<GMap, SchemeApplication> apply_scheme(const GMap& g, const RuleScheme& s,
+                                               const std::vector<Dart>& hook_darts) {
+  SchemeEngine e(s);
+  GMap h = g;
+  SchemeApplication a = e.apply(h, hook_darts);
+  return {std::move(h), std::move(a)};
+}
+
+}  // namespace gmr

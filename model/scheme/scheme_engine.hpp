@@ -1,0 +1,118 @@
+// The Jerboa rule-scheme application engine (thesis §4.3.4, §6.3.4; digest ch6-7 §3).
+//
+// Given a scheme S of parameter <o> and one dart per hook (hooks[0] = reference hook):
+//  1. hook orbit: O = G<t>(d_ref), t = label of the reference hook (Alg. 4), darts indexed b = 0..s-1,
+//     nb(b,p) = index of O[b]@t[p];
+//  2. other hooks: orbit isomorphism (Alg. 5) of G<t>(d_ref) with G<t_c>(d_c) up to the positional
+//     relabeling t -> t_c, giving M[b][h_c];
+//  3. match table M[b][v] for every L node, propagated along explicit L arcs from the hooks;
+//  4. match checks (the instantiated L must be a subgraph of G under M, injectively): (a) all M[b][v]
+//     pairwise distinct; (b) explicit arcs v –i– v': M[b][v]@i = M[b][v']; (c) implicit arcs
+//     (label position p with t^v[p] = j): M[b][v]@j = M[nb(b,p)][v];
+//  5. darts: a preserved R node reuses M[b][v], an added node gets s fresh darts;
+//  6. links of R are written over the old ones (implicit: T[b][v]@j := T[nb(b,p)][v]; explicit:
+//     T[b][v]@i := T[b][v'] both ways); a dimension a preserved node has neither in L nor in R keeps
+//     its outside link;
+//  7. the darts of deleted nodes are freed.
+// Cost O(s·(|V_L| + |V_R|)·(n+1)): linear in the size of the instantiated rule (plus O(capacity/64)
+// only when the orbit covers more than 1/8 of the map, for the dense dart index).
+//
+// Scope and decisions (named in the docs):
+//  * G-maps only (Jerboa schemes are G-map schemes); the map's dimension must equal the scheme's.
+//  * The engine requires the scheme to satisfy incident arcs I_S(0..n) (thesis Alg. 1): otherwise no
+//    result of an application is a G-map (a dart would get 0 or 2 links of some dimension) and the
+//    overwrite semantics would differ from DPO. Such a scheme is reported as not applicable
+//    (reason NotCombinatorial) with the first failing node. Under I_S, the gluing (dangling)
+//    condition holds for every match (Fact 1), and the engine's result equals the DPO direct
+//    derivation of the instantiated rule (tested in model/tests/scheme_engine_test.cpp).
+//  * The cycle condition is not required: a scheme breaking it yields a map that check_validity
+//    rejects, exactly as DPO would.
+//  * Embedding expressions are not evaluated (separate issue); Jerboa preconditions neither.
+//  * A scheme whose L is empty is applied on one abstract dart free at every position (it creates
+//    |V_R| darts); it takes no hook dart.
+// Inapplicability is a result (SchemeApplication::applied == false, with a reason), never an
+// exception; misuse (wrong number of hook darts, dead dart, wrong map kind or dimension, malformed
+// scheme) throws gmr::Error. When not applicable, the map is unchanged.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/core/gmap.hpp"
+#include "model/scheme/rule_scheme.hpp"
+
+namespace gmr {
+
+enum class NotApplicableReason {
+  None,
+  NotCombinatorial,         // the scheme breaks I_S(0..n) (Alg. 1)
+  HookOrbitsNotIsomorphic,  // Alg. 5 fails for another hook
+  NotInjective,             // two instantiated L nodes matched to one dart
+  MissingExplicitArc,       // an explicit arc of L is not in G at the match
+  MissingImplicitArc,       // an implicit arc of L is not in G at the match
+};
+const char* to_string(NotApplicableReason r);
+
+struct SchemeApplication {
+  bool applied = false;
+  NotApplicableReason reason = NotApplicableReason::None;
+  std::string why;  // "not applicable, because ..." text when !applied
+
+  // Orbit darts of the reference hook, orbit[b] (before the application).
+  std::vector<Dart> orbit;
+  size_t orbit_size() const { return orbit.size(); }
+  // Match: match[v * s + b] = dart of G for L node v and orbit dart b.
+  std::vector<Dart> match;
+  // Comatch: comatch[v * s + b] = dart of the result for R node v and orbit dart b.
+  std::vector<Dart> comatch;
+  Dart match_at(uint32_t v, uint32_t b) const { return match[v * orbit.size() + b]; }
+  Dart comatch_at(uint32_t v, uint32_t b) const { return comatch[v * orbit.size() + b]; }
+  size_t darts_added = 0, darts_deleted = 0;
+
+  explicit operator bool() const { return applied; }
+};
+
+// A scheme prepared for repeated application.
+class SchemeEngine {
+ public:
+  // Throws Error(Schema) when the scheme is malformed (validate_structure), when a hook has `_`,
+  // or when an L node is not reachable from a hook through explicit arcs.
+  explicit SchemeEngine(RuleScheme scheme);
+
+  const RuleScheme& scheme() const { return s_; }
+  // Empty when the scheme satisfies I_S(0..n); else the reason it is never applicable.
+  const std::string& not_combinatorial() const { return not_combinatorial_; }
+
+  // Applies in place. `hook_darts[k]` is the dart for hooks[k].
+  SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts) const;
+
+ private:
+  struct Step {
+    uint32_t v, from;
+    int dim;
+  };
+  struct Implicit {
+    uint32_t p;
+    int dim;
+  };
+  RuleScheme s_;
+  std::vector<uint32_t> hooks_;
+  std::vector<Step> steps_;                     // match propagation order over L
+  std::vector<std::vector<Implicit>> impl_l_;   // per L node
+  std::vector<std::vector<Implicit>> impl_r_;   // per R node
+  std::vector<uint32_t> r_source_;              // per R node: L node index, or kAdded
+  std::vector<uint32_t> added_rank_;            // per R node: rank among added nodes
+  std::vector<uint32_t> deleted_;               // L nodes not in R
+  size_t num_added_ = 0;
+  std::string not_combinatorial_;
+};
+
+SchemeApplication apply_scheme_in_place(GMap& g, const RuleScheme& s, const std::vector<Dart>& hook_darts);
+// Copy-based wrapper: the result map (a copy of g, unchanged when not applicable) and the report.
+std::pair<GMap, SchemeApplication> apply_scheme(const GMap& g, const RuleScheme& s,
+                                               const std::vector<Dart>& hook_darts);
+
+// Incident arcs I_S(d) for d in 0..n (thesis Alg. 1 on the core): the first failure as text, or "".
+std::string incident_arcs_problem(const RuleScheme& s);
+
+}  // namespace gmr

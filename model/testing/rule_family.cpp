@@ -1,0 +1,196 @@
+#include "model/testing/rule_family.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <string>
+
+#include "model/core/error.hpp"
+#include "model/rewrite/match.hpp"
+#include "model/testing/random_maps.hpp"
+
+namespace gmr {
+
+namespace {
+
+using PInj = std::vector<std::pair<Node, Node>>;
+
+std::vector<PInj> partial_injections(size_t m) {
+  std::vector<PInj> out;
+  PInj cur;
+  std::vector<bool> used_t(m, false);
+  std::function<void(size_t)> rec = [&](size_t s) {
+    if (s == m) {
+      out.push_back(cur);
+      return;
+    }
+    rec(s + 1);  // s has no arc
+    for (size_t t = 0; t < m; ++t) {
+      if (used_t[t]) continue;
+      used_t[t] = true;
+      cur.emplace_back(static_cast<Node>(s), static_cast<Node>(t));
+      rec(s + 1);
+      cur.pop_back();
+      used_t[t] = false;
+    }
+  };
+  rec(0);
+  return out;
+}
+
+}  // namespace
+
+size_t for_each_small_rule(int n, MapKind kind, int max_nodes, const std::vector<int>& arc_labels,
+                           const std::function<bool(const Rule&)>& f) {
+  size_t count = 0;
+  bool stop = false;
+  const std::string names = "abcdefgh";
+  std::vector<std::vector<PInj>> pinj(static_cast<size_t>(max_nodes) + 1);
+  for (size_t m = 0; m <= static_cast<size_t>(max_nodes); ++m) pinj[m] = partial_injections(m);
+  for (int count_nodes = 1; count_nodes <= max_nodes && !stop; ++count_nodes) {
+    std::vector<int> st(static_cast<size_t>(count_nodes), 0);  // 0 preserved, 1 deleted, 2 added
+    std::function<void(size_t, int)> statuses = [&](size_t k, int min) {
+      if (stop) return;
+      if (k < st.size()) {
+        for (int s = min; s < 3; ++s) {
+          st[k] = s;
+          statuses(k + 1, s);
+        }
+        return;
+      }
+      std::vector<size_t> lnodes, rnodes;  // indices into st
+      for (size_t x = 0; x < st.size(); ++x) {
+        if (st[x] != 2) lnodes.push_back(x);
+        if (st[x] != 1) rnodes.push_back(x);
+      }
+      const auto& pl = pinj[lnodes.size()];
+      const auto& pr = pinj[rnodes.size()];
+      const size_t per_label = pl.size() * pr.size();
+      std::vector<size_t> choice(arc_labels.size(), 0);
+      while (!stop) {
+        DGraph L, R;
+        for (size_t x : lnodes) L.add_node(std::string(1, names[x]));
+        for (size_t x : rnodes) R.add_node(std::string(1, names[x]));
+        for (size_t li = 0; li < arc_labels.size(); ++li) {
+          for (auto [s, t] : pl[choice[li] / pr.size()]) L.add_arc(s, t, arc_labels[li]);
+          for (auto [s, t] : pr[choice[li] % pr.size()]) R.add_arc(s, t, arc_labels[li]);
+        }
+        ++count;
+        if (!f(Rule(std::move(L), std::move(R), n, kind))) stop = true;
+        size_t li = 0;
+        while (li < choice.size() && ++choice[li] == per_label) choice[li++] = 0;
+        if (li == choice.size()) break;
+      }
+    };
+    statuses(0, 0);
+  }
+  return count;
+}
+
+Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t max_left_nodes) {
+  if (fam.maps.empty()) throw Error(ErrorCode::Usage, "empty map family", "random_rule_from_maps");
+  auto pick = [&](size_t k) { return std::uniform_int_distribution<size_t>(0, k - 1)(rng); };
+  auto coin = [&](double p) { return std::uniform_real_distribution<double>(0, 1)(rng) < p; };
+  const DGraph& G = fam.graphs[pick(fam.graphs.size())];
+  std::vector<Node> nodes(G.num_nodes());
+  for (Node v = 0; v < nodes.size(); ++v) nodes[v] = v;
+  std::shuffle(nodes.begin(), nodes.end(), rng);
+  nodes.resize(1 + pick(std::min(max_left_nodes, nodes.size())));
+  const std::string lnames = "abcdefgh", anames = "uvwxyz";
+  std::vector<Node> lpos(G.num_nodes(), kNoNode);
+  DGraph L;
+  for (size_t k = 0; k < nodes.size(); ++k) lpos[nodes[k]] = L.add_node(std::string(1, lnames[k]));
+  const double drop = coin(0.5) ? 0.0 : 0.15;
+  for (ArcId a = 0; a < G.num_arc_slots(); ++a) {
+    const Arc& e = G.arc(a);
+    if (lpos[e.src] != kNoNode && lpos[e.tgt] != kNoNode && !coin(drop)) L.add_arc(lpos[e.src], lpos[e.tgt], e.label);
+  }
+  std::vector<bool> deleted(nodes.size());
+  for (size_t k = 0; k < nodes.size(); ++k) deleted[k] = coin(0.25);
+  std::vector<size_t> kept;
+  for (size_t k = 0; k < nodes.size(); ++k)
+    if (!deleted[k]) kept.push_back(k);
+  const size_t added = pick(3);
+  // R: around the preserved nodes, an induced subgraph of another map big enough.
+  std::vector<size_t> big;
+  for (size_t m = 0; m < fam.graphs.size(); ++m)
+    if (fam.graphs[m].num_nodes() >= kept.size() + added) big.push_back(m);
+  DGraph R;
+  if (big.empty() || coin(0.2)) {
+    // Fallback: R = the preserved part of L with a few toggled arcs, plus added nodes with loops.
+    std::vector<Node> rpos(L.num_nodes(), kNoNode);
+    for (size_t k : kept) rpos[k] = R.add_node(L.name(static_cast<Node>(k)));
+    for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+      const Arc& e = L.arc(a);
+      if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(0.2)) R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
+    }
+    for (size_t k = 0; k < added; ++k) {
+      const Node v = R.add_node(std::string(1, anames[k]));
+      for (int i = fam.kind == MapKind::OMap ? 1 : 0; i <= fam.n; ++i)
+        if (!coin(0.1)) R.add_arc(v, v, i);
+    }
+  } else {
+    const DGraph& G2 = fam.graphs[big[pick(big.size())]];
+    std::vector<Node> pool(G2.num_nodes());
+    for (Node v = 0; v < pool.size(); ++v) pool[v] = v;
+    std::shuffle(pool.begin(), pool.end(), rng);
+    std::vector<Node> rpos(G2.num_nodes(), kNoNode);
+    size_t next = 0;
+    for (size_t k : kept) rpos[pool[next++]] = R.add_node(L.name(static_cast<Node>(k)));
+    for (size_t k = 0; k < added; ++k) rpos[pool[next++]] = R.add_node(std::string(1, anames[k]));
+    for (ArcId a = 0; a < G2.num_arc_slots(); ++a) {
+      const Arc& e = G2.arc(a);
+      if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(drop)) R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
+    }
+  }
+  // Remove deleted nodes' names from R side: build L with all nodes (deleted ones stay in L only).
+  return Rule(std::move(L), std::move(R), fam.n, fam.kind, "random");
+}
+
+Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes) {
+  if (max_nodes < 1 || max_nodes > 8) throw Error(ErrorCode::Range, "random_small_rule: 1..8 nodes");
+  const size_t count = static_cast<size_t>(uniform(rng, 1, static_cast<uint64_t>(max_nodes)));
+  const std::string names = "abcdefgh";
+  DGraph L, R;
+  std::vector<Node> lpos(count, kNoNode), rpos(count, kNoNode);
+  for (size_t x = 0; x < count; ++x) {
+    const uint64_t status = uniform(rng, 0, 2);  // 0 preserved, 1 deleted, 2 added
+    if (status != 2) lpos[x] = L.add_node(std::string(1, names[x]));
+    if (status != 1) rpos[x] = R.add_node(std::string(1, names[x]));
+  }
+  // A random partial injection on the nodes of one side, as i-arcs.
+  auto arcs = [&](DGraph& side, int i) {
+    const size_t m = side.num_nodes();
+    std::vector<bool> used(m, false);
+    for (Node s = 0; s < m; ++s) {
+      if (chance(rng, 30)) continue;
+      const Node t = static_cast<Node>(uniform(rng, 0, m - 1));
+      if (used[t]) continue;
+      used[t] = true;
+      side.add_arc(s, t, i);
+    }
+  };
+  for (int i = kind == MapKind::OMap ? 1 : 0; i <= n; ++i) {
+    if (L.num_nodes()) arcs(L, i);
+    if (R.num_nodes()) arcs(R, i);
+  }
+  return Rule(std::move(L), std::move(R), n, kind, "random-small");
+}
+
+Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& fam) {
+  if (fam.graphs.empty()) throw Error(ErrorCode::Usage, "empty map family", "component_replacement_rule");
+  const DGraph& GL = fam.graphs[uniform(rng, 0, fam.graphs.size() - 1)];
+  const DGraph& GR = fam.graphs[uniform(rng, 0, fam.graphs.size() - 1)];
+  const size_t p = uniform(rng, 0, std::min(GL.num_nodes(), GR.num_nodes()));
+  auto copy = [](const DGraph& G, const std::function<std::string(Node)>& name) {
+    DGraph out;
+    for (Node v = 0; v < G.num_nodes(); ++v) out.add_node(name(v));
+    for (ArcId a = 0; a < G.num_arc_slots(); ++a)
+      if (G.arc_alive(a)) out.add_arc(G.arc(a).src, G.arc(a).tgt, G.arc(a).label);
+    return out;
+  };
+  DGraph L = copy(GL, [](Node v) { return "l" + std::to_string(v); });
+  DGraph R = copy(GR, [p](Node v) { return (v < p ? "l" : "r") + std::to_string(v); });
+  return Rule(std::move(L), std::move(R), fam.n, fam.kind, "component-replacement");
+}
+
+}  // namespace gmr
