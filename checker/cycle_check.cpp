@@ -7,7 +7,9 @@
 #include "model/core/error.hpp"
 #include "model/rewrite/match.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 namespace {
 
@@ -288,4 +290,4 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
   return ok;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

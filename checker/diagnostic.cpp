@@ -1,6 +1,6 @@
 #include "checker/diagnostic.hpp"
 
-namespace gmr {
+namespace gmr::checker {
 
 std::string Diagnostic::condition_str() const {
   if (i < 0) return condition;
@@ -83,4 +83,4 @@ nlohmann::ordered_json to_json(const CheckReport& r) {
   return j;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

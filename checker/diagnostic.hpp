@@ -42,7 +42,7 @@
 
 #include "model/core/gmap.hpp"
 
-namespace gmr {
+namespace gmr::checker {
 
 enum class Severity { Error, Note };
 
@@ -75,4 +75,4 @@ std::string to_text(const CheckReport& r);
 nlohmann::ordered_json to_json(const Diagnostic& d);
 nlohmann::ordered_json to_json(const CheckReport& r);
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
-namespace gmr {
+namespace gmr::checker {
+using namespace gmr::rewrite;
+using namespace gmr::draw;
 
 namespace {
 
@@ -38,4 +40,4 @@ std::vector<DotHighlight> dot_highlights(const SchemeCheckReport& r) {
   return out;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -9,9 +9,10 @@
 #include "checker/scheme_checker.hpp"
 #include "model/draw/rule_dot.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using draw::DotHighlight;
 
 std::vector<DotHighlight> dot_highlights(const CheckReport& r);
 std::vector<DotHighlight> dot_highlights(const SchemeCheckReport& r);
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -4,7 +4,9 @@
 
 #include "checker/rule_check.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 namespace {
 
@@ -107,4 +109,4 @@ bool check_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) {
   return ok;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -2,7 +2,9 @@
 // i-arc that is also deleted (resp. added). A loop is its own reverse.
 #include "checker/rule_check.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 bool check_non_orientation(const Rule& r, int i, std::vector<Diagnostic>& out) {
   bool ok = true;
@@ -40,4 +42,4 @@ bool check_non_orientation(const Rule& r, int i, std::vector<Diagnostic>& out) {
   return ok;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -1,6 +1,8 @@
 #include "checker/rule_check.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 CheckReport check_rule(const Rule& r, bool model_completion) {
   CheckReport rep;
@@ -26,4 +28,4 @@ CheckReport check_rule(const Rule& r, bool model_completion) {
   return rep;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -40,8 +40,13 @@
 
 #include "checker/diagnostic.hpp"
 #include "model/rewrite/rule.hpp"
+#include "model/graph/dgraph.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using graph::ArcId;
+using graph::DGraph;
+using graph::Node;
+using rewrite::Rule;
 
 bool check_combinatorial(const Rule& r, std::vector<Diagnostic>& out);
 bool check_weak_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out);
@@ -79,4 +84,4 @@ bool check_cycle(const Rule& r, int i, int j, std::vector<Diagnostic>& out);
 // reading); kept for the equivalence test that documents the gap.
 CheckReport check_rule(const Rule& r, bool model_completion = true);
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -5,7 +5,8 @@
 #include <map>
 #include <set>
 
-namespace gmr {
+namespace gmr::checker {
+ using namespace gmr::scheme;
 
 const char* to_string(SchemeSeverity s) {
   switch (s) {
@@ -578,4 +579,4 @@ nlohmann::ordered_json to_json(const SchemeCheckReport& r) {
   return j;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -59,7 +59,8 @@
 
 #include "model/scheme/rule_scheme.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using scheme::RuleScheme;
 
 enum class SchemeSeverity { Error, Warning, Note };
 const char* to_string(SchemeSeverity s);
@@ -100,4 +101,4 @@ std::string to_text(const SchemeCheckReport& r);
 nlohmann::ordered_json to_json(const SchemeDiagnostic& d);
 nlohmann::ordered_json to_json(const SchemeCheckReport& r);
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -3,7 +3,9 @@
 #include "model/rewrite/dpo.hpp"
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 std::string SemanticWitness::describe(const Rule& r, const MapFamily& f) const {
   const GMap& g = f.maps[map_index];
@@ -46,4 +48,4 @@ SemanticVerdict semantic_verdict(const Rule& r, const MapFamily& f, bool stop_at
   return v;
 }
 
-}  // namespace gmr
+}  // namespace gmr::checker

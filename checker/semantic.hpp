@@ -21,7 +21,12 @@
 #include "model/rewrite/match.hpp"
 #include "model/rewrite/rule.hpp"
 
-namespace gmr {
+namespace gmr::checker {
+using graph::ConstraintViolation;
+using graph::DGraph;
+using graph::MapFamily;
+using rewrite::Match;
+using rewrite::Rule;
 
 struct SemanticWitness {
   size_t map_index = 0;
@@ -42,4 +47,4 @@ struct SemanticVerdict {
 // stop_at_first: return at the first breaking application (the default).
 SemanticVerdict semantic_verdict(const Rule& r, const MapFamily& f, bool stop_at_first = true);
 
-}  // namespace gmr
+}  // namespace gmr::checker

@@ -25,6 +25,9 @@
 #include "proptests/rule_cases.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::checker;
 using namespace gmr::prop;
 
 namespace {

@@ -9,6 +9,11 @@
 #include "proptests/library.hpp"
 
 namespace gmr::prop {
+using namespace gmr::graph;
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::draw;
+using namespace gmr::testing;
 
 namespace {
 

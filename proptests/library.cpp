@@ -11,6 +11,9 @@
 #include "model/io/scheme_json.hpp"
 
 namespace gmr::prop {
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::checker;
 
 const std::vector<LibraryScheme>& scheme_library() {
   static const std::vector<LibraryScheme> lib = [] {

@@ -10,6 +10,8 @@
 #include "model/scheme/scheme_engine.hpp"
 
 namespace gmr::prop {
+using scheme::RuleScheme;
+using scheme::SchemeEngine;
 
 struct LibraryScheme {
   RuleScheme scheme;

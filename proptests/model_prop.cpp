@@ -19,6 +19,9 @@
 #include "proptests/harness.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::io;
+using namespace gmr::testing;
 using namespace gmr::prop;
 
 TEST(ModelProps, GeneratedMapsAreValid) {

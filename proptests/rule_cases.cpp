@@ -11,6 +11,12 @@
 #include "proptests/library.hpp"
 
 namespace gmr::prop {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::draw;
+using namespace gmr::testing;
 
 namespace {
 

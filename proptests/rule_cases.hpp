@@ -21,8 +21,11 @@
 
 #include "checker/semantic.hpp"
 #include "model/rewrite/rule.hpp"
+#include "model/graph/map_family.hpp"
 
 namespace gmr::prop {
+using graph::MapFamily;
+using rewrite::Rule;
 
 enum class RuleFamily { Small, SmallOMap, FromMaps, FromMapsOMap, Component, ComponentOMap, SchemeInstance };
 const char* to_string(RuleFamily f);

@@ -9,6 +9,10 @@
 #include "proptests/library.hpp"
 
 namespace gmr::prop {
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::draw;
+using namespace gmr::testing;
 
 const char* to_string(SchemeFamily f) {
   switch (f) {

@@ -18,6 +18,7 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::prop {
+using scheme::RuleScheme;
 
 enum class SchemeFamily { Random, LibraryMutant, Library, Copies };
 const char* to_string(SchemeFamily f);

@@ -18,6 +18,8 @@
 #include "proptests/scheme_cases.hpp"
 
 using namespace gmr;
+using namespace gmr::scheme;
+using namespace gmr::checker;
 using namespace gmr::prop;
 
 namespace {

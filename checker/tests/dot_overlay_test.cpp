@@ -8,6 +8,11 @@
 #include "model/io/scheme_json.hpp"
 
 using namespace gmr;
+using namespace gmr::rewrite;
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::draw;
+using namespace gmr::checker;
 
 namespace {
 std::string source(const std::string& rel) {

@@ -13,6 +13,9 @@
 #include "model/core/signature.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::testing;
 
 TEST(DpoConstructions, CategoricalEqualsInPlaceOnEveryApplication) {
   std::mt19937_64 rng(7);

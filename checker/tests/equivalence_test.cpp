@@ -23,6 +23,11 @@
 #include "model/io/rule_json.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::io;
+using namespace gmr::testing;
+using namespace gmr::checker;
 
 namespace {
 

@@ -18,6 +18,10 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::io;
+using namespace gmr::checker;
 
 namespace {
 

@@ -9,6 +9,9 @@
 #include "model/scheme/tests/scheme_fixtures.hpp"
 
 using namespace gmr;
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::checker;
 using namespace gmr::fixtures;
 
 namespace {

@@ -17,6 +17,9 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::checker;
 
 namespace {
 

@@ -11,6 +11,8 @@
 #include "model/words/word_rewriting.hpp"
 
 using namespace gmr;
+using namespace gmr::words;
+using namespace gmr::checker;
 
 namespace gmr {
 // Readable gtest messages for words.

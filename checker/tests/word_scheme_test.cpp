@@ -18,6 +18,12 @@
 #include "model/words/word_scheme.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::scheme;
+using namespace gmr::words;
+using namespace gmr::io;
+using namespace gmr::checker;
 
 namespace {
 

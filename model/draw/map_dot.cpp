@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace gmr {
+namespace gmr::draw {
 
 std::string dimension_colour(int i) {
   static const char* const kColours[] = {"black", "red", "blue", "green", "orange", "purple", "brown", "cyan"};
@@ -40,4 +40,4 @@ std::string to_dot(const GMap& g, const DotOptions& opt) {
   return out;
 }
 
-}  // namespace gmr
+}  // namespace gmr::draw

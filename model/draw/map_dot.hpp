@@ -10,7 +10,7 @@
 
 #include "model/core/gmap.hpp"
 
-namespace gmr {
+namespace gmr::draw {
 
 struct DotOptions {
   bool loops = false;          // draw i-loops of free darts
@@ -22,4 +22,4 @@ std::string dimension_colour(int i);
 
 std::string to_dot(const GMap& g, const DotOptions& opt = {});
 
-}  // namespace gmr
+}  // namespace gmr::draw

@@ -2,11 +2,11 @@
 
 #include <graphviz/gvc.h>
 
-
 #include "model/io/atomic_write.hpp"
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::draw {
+using namespace gmr::io;
 
 const char* to_string(ImageFormat f) { return f == ImageFormat::Svg ? "svg" : "png"; }
 
@@ -83,4 +83,4 @@ void render_dot_file(std::string_view dot, ImageFormat format, const std::filesy
   write_file_atomic(out, render_dot(dot, format, engine));
 }
 
-}  // namespace gmr
+}  // namespace gmr::draw

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace gmr {
+namespace gmr::draw {
 
 enum class ImageFormat { Svg, Png };
 const char* to_string(ImageFormat f);  // "svg", "png"
@@ -19,4 +19,4 @@ std::string render_dot(std::string_view dot, ImageFormat format, const std::stri
 void render_dot_file(std::string_view dot, ImageFormat format, const std::filesystem::path& out,
                      const std::string& engine = "dot");
 
-}  // namespace gmr
+}  // namespace gmr::draw

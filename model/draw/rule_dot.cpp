@@ -6,7 +6,10 @@
 
 #include "model/draw/map_dot.hpp"
 
-namespace gmr {
+namespace gmr::draw {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::scheme;
 
 namespace {
 
@@ -152,4 +155,4 @@ std::string to_dot(const RuleScheme& s, const RuleDotOptions& opt) {
   return out;
 }
 
-}  // namespace gmr
+}  // namespace gmr::draw

@@ -24,7 +24,9 @@
 #include "model/rewrite/rule.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
-namespace gmr {
+namespace gmr::draw {
+using rewrite::Rule;
+using scheme::RuleScheme;
 
 struct DotHighlight {
   std::string side;     // "L", "R", or "" for a node of that name on either side
@@ -48,4 +50,4 @@ inline constexpr const char* kDotKappaColour = "pink";
 std::string to_dot(const Rule& r, const RuleDotOptions& opt = {});
 std::string to_dot(const RuleScheme& s, const RuleDotOptions& opt = {});
 
-}  // namespace gmr
+}  // namespace gmr::draw

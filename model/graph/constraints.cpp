@@ -2,7 +2,7 @@
 
 #include <functional>
 
-namespace gmr {
+namespace gmr::graph {
 
 const char* to_string(ConstraintKind k) {
   switch (k) {
@@ -110,4 +110,4 @@ std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, 
   return out;
 }
 
-}  // namespace gmr
+}  // namespace gmr::graph

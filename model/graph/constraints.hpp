@@ -11,7 +11,7 @@
 
 #include "model/graph/dgraph.hpp"
 
-namespace gmr {
+namespace gmr::graph {
 
 enum class ConstraintKind { IncidentArcs, NonOrientation, Cycle };
 const char* to_string(ConstraintKind k);
@@ -33,4 +33,4 @@ std::vector<ConstraintViolation> check_cycle(const DGraph& g, Node v, int i, int
 // 1..n, I on all, O on 2..n, C on (1..n)_{+2}). Also reports arcs whose label is outside the set.
 std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, MapKind kind);
 
-}  // namespace gmr
+}  // namespace gmr::graph

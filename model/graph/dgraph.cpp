@@ -2,7 +2,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::graph {
 
 Node DGraph::add_node(std::string name) {
   names_.push_back(std::move(name));
@@ -105,4 +105,4 @@ GMap to_gmap(const DGraph& dg, int n, MapKind kind) {
   return g;
 }
 
-}  // namespace gmr
+}  // namespace gmr::graph

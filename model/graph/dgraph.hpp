@@ -10,7 +10,7 @@
 
 #include "model/core/gmap.hpp"
 
-namespace gmr {
+namespace gmr::graph {
 
 using Node = uint32_t;
 using ArcId = uint32_t;
@@ -61,4 +61,4 @@ DGraph to_dgraph(const GMap& g);
 // Error(InvalidMap) naming the node and label otherwise. Other constraints are not required.
 GMap to_gmap(const DGraph& dg, int n, MapKind kind = MapKind::GMap);
 
-}  // namespace gmr
+}  // namespace gmr::graph

@@ -5,7 +5,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::graph {
 
 namespace {
 
@@ -116,4 +116,4 @@ DGraph relabel(const DGraph& P, const Alphabet& sigma, const Relabeling& rel) {
   });
 }
 
-}  // namespace gmr
+}  // namespace gmr::graph

@@ -17,7 +17,7 @@
 
 #include "model/graph/dgraph.hpp"
 
-namespace gmr {
+namespace gmr::graph {
 
 using Alphabet = std::vector<int>;                  // Σ, distinct labels
 using Relabeling = std::vector<std::pair<int, int>>;  // ℜ ⊆ Σ²
@@ -50,4 +50,4 @@ DGraph relabel_literal(const DGraph& P, const Alphabet& sigma, const Relabeling&
 // The same directly: same nodes and names as P, arc i kept as ℜ(i) or dropped.
 DGraph relabel(const DGraph& P, const Alphabet& sigma, const Relabeling& rel);
 
-}  // namespace gmr
+}  // namespace gmr::graph

@@ -7,7 +7,7 @@
 #include "model/core/error.hpp"
 #include "model/core/signature.hpp"
 
-namespace gmr {
+namespace gmr::graph {
 
 namespace {
 
@@ -145,4 +145,4 @@ MapFamily map_family(int n, MapKind kind, size_t max_darts) {
   return f;
 }
 
-}  // namespace gmr
+}  // namespace gmr::graph

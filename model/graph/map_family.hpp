@@ -15,7 +15,7 @@
 #include "model/core/gmap.hpp"
 #include "model/graph/dgraph.hpp"
 
-namespace gmr {
+namespace gmr::graph {
 
 std::vector<GMap> connected_maps(int n, MapKind kind, size_t darts);
 
@@ -28,4 +28,4 @@ struct MapFamily {
 };
 MapFamily map_family(int n, MapKind kind, size_t max_darts);
 
-}  // namespace gmr
+}  // namespace gmr::graph

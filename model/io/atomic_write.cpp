@@ -11,7 +11,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 namespace {
 
@@ -70,4 +70,4 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
   }
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

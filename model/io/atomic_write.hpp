@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <string_view>
 
-namespace gmr {
+namespace gmr::io {
 
 void write_file_atomic(const std::filesystem::path& path, std::string_view content);
 
-}  // namespace gmr
+}  // namespace gmr::io

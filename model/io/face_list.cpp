@@ -6,7 +6,7 @@
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 FaceList face_list_from_map(const GMap& g, const PositionEmbedding& pos) {
   if (g.is_omap() || g.dimension() != 2)
@@ -97,4 +97,4 @@ PositionedMap map_from_face_list(const FaceList& fl, const SurfaceOptions& opt) 
   return m;
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -19,7 +19,7 @@
 #include "model/core/position.hpp"
 #include "model/core/vec3.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 struct FaceList {
   std::vector<Vec3> vertices;
@@ -40,4 +40,4 @@ FaceList face_list_from_map(const GMap& g, const PositionEmbedding& pos);
 // the face).
 PositionedMap map_from_face_list(const FaceList& fl, const SurfaceOptions& opt = {});
 
-}  // namespace gmr
+}  // namespace gmr::io

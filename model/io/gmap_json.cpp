@@ -7,7 +7,7 @@
 #include "model/core/orbit.hpp"
 #include "model/io/read_file.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 namespace {
 
@@ -176,4 +176,4 @@ void write_gmap_json_file(const std::filesystem::path& path, const GMapFile& f) 
   write_file_atomic(path, write_gmap_json(f));
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

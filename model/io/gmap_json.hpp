@@ -39,7 +39,7 @@
 #include "model/core/gmap_file.hpp"
 #include "model/io/json_reader.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 inline constexpr const char* kGMapFormat = "gmr.gmap";
 inline constexpr int kGMapVersion = 1;
@@ -54,4 +54,4 @@ std::string write_gmap_json(const GMap& g, const std::vector<JsonEmbedding>& emb
 inline std::string write_gmap_json(const GMapFile& f) { return write_gmap_json(f.map, f.embeddings); }
 void write_gmap_json_file(const std::filesystem::path& path, const GMapFile& f);
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -8,7 +8,8 @@
 #include "model/io/read_file.hpp"
 #include "model/io/xml.hpp"
 
-namespace gmr {
+namespace gmr::io {
+ using namespace gmr::scheme;
 
 OrbitType parse_jme_orbit(std::string_view text) {
   std::vector<int> dims;
@@ -169,4 +170,4 @@ JmeModeler read_jme_file(const std::filesystem::path& path) {
   return parse_jme(read_text_file(path), path.string());
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -24,7 +24,8 @@
 
 #include "model/scheme/rule_scheme.hpp"
 
-namespace gmr {
+namespace gmr::io {
+using scheme::RuleScheme;
 
 struct JmeEmbedding {
   std::string name, type;
@@ -45,4 +46,4 @@ JmeModeler read_jme_file(const std::filesystem::path& path);
 // "-1,2,3" -> <_,2,3>; "" -> <>. Throws Error(Parse) for anything else.
 OrbitType parse_jme_orbit(std::string_view text);
 
-}  // namespace gmr
+}  // namespace gmr::io

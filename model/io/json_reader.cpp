@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cmath>
 
-namespace gmr {
+namespace gmr::io {
 
 nlohmann::json parse_json(std::string_view text, const std::string& source) {
   try {
@@ -150,4 +150,4 @@ int JsonAt::check_header(std::string_view format, int max_version) const {
   return static_cast<int>(v.value().get<int64_t>());
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -18,7 +18,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 nlohmann::json parse_json(std::string_view text, const std::string& source = {});
 
@@ -75,4 +75,4 @@ class JsonAt {
 // "an object", "a string", "the number 1.5", ... for messages.
 std::string describe_json(const nlohmann::json& v);
 
-}  // namespace gmr
+}  // namespace gmr::io

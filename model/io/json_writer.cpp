@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace gmr {
+namespace gmr::io {
 
 namespace {
 
@@ -44,4 +44,4 @@ std::string dump_json(const nlohmann::ordered_json& value) {
   return out;
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

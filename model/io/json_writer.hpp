@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-namespace gmr {
+namespace gmr::io {
 
 std::string dump_json(const nlohmann::ordered_json& value);
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -3,7 +3,7 @@
 #include "model/io/atomic_write.hpp"
 #include "model/io/off.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 std::string write_obj(const FaceList& fl) {
   std::string out = "# written by gmr: " + std::to_string(fl.vertices.size()) + " vertices, " +
@@ -24,4 +24,4 @@ void write_obj_file(const std::filesystem::path& path, const GMap& g, const Posi
   write_file_atomic(path, write_obj(g, pos));
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

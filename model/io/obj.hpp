@@ -7,10 +7,10 @@
 
 #include "model/io/face_list.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 std::string write_obj(const FaceList& fl);
 std::string write_obj(const GMap& g, const PositionEmbedding& pos);
 void write_obj_file(const std::filesystem::path& path, const GMap& g, const PositionEmbedding& pos);
 
-}  // namespace gmr
+}  // namespace gmr::io

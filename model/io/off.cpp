@@ -7,7 +7,7 @@
 #include "model/io/atomic_write.hpp"
 #include "model/io/read_file.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 namespace {
 
@@ -216,4 +216,4 @@ void write_off_file(const std::filesystem::path& path, const GMap& g, const Posi
   write_file_atomic(path, write_off(g, pos));
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

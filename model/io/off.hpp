@@ -24,7 +24,7 @@
 #include "model/io/face_list.hpp"
 #include "model/core/position.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 // The face list of an OFF text, without building a map (errors located "<source>:<line>").
 // `face_lines` (optional) receives the 1-based line of every face.
@@ -41,4 +41,4 @@ void write_off_file(const std::filesystem::path& path, const GMap& g, const Posi
 // Shortest decimal text that reads back as the same double (std::to_chars).
 std::string format_coordinate(double x);
 
-}  // namespace gmr
+}  // namespace gmr::io

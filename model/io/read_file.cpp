@@ -9,7 +9,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 std::string read_text_file(const std::filesystem::path& path) {
   if (path == "-") {
@@ -27,4 +27,4 @@ std::string read_text_file(const std::filesystem::path& path) {
   return text;
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <string>
 
-namespace gmr {
+namespace gmr::io {
 
 std::string read_text_file(const std::filesystem::path& path);
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -7,7 +7,9 @@
 #include "model/io/json_reader.hpp"
 #include "model/io/read_file.hpp"
 
-namespace gmr {
+namespace gmr::io {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 namespace {
 
@@ -131,4 +133,4 @@ void write_rule_file(const Rule& r, const std::filesystem::path& path) {
   write_file_atomic(path, rule_to_json(r).dump(2) + "\n");
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

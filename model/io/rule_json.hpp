@@ -27,7 +27,8 @@
 
 #include "model/rewrite/rule.hpp"
 
-namespace gmr {
+namespace gmr::io {
+using rewrite::Rule;
 
 Rule rule_from_json(const nlohmann::json& doc, const std::string& source = {});
 Rule parse_rule(std::string_view text, const std::string& source = {});
@@ -36,4 +37,4 @@ Rule read_rule_file(const std::filesystem::path& path);
 nlohmann::ordered_json rule_to_json(const Rule& r);
 void write_rule_file(const Rule& r, const std::filesystem::path& path);
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -8,7 +8,8 @@
 #include "model/io/json_writer.hpp"
 #include "model/io/read_file.hpp"
 
-namespace gmr {
+namespace gmr::io {
+ using namespace gmr::scheme;
 
 namespace {
 
@@ -168,4 +169,4 @@ void write_scheme_file(const RuleScheme& s, const std::filesystem::path& path) {
   write_file_atomic(path, scheme_to_json_text(s));
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

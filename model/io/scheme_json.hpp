@@ -35,7 +35,8 @@
 
 #include "model/scheme/rule_scheme.hpp"
 
-namespace gmr {
+namespace gmr::io {
+using scheme::RuleScheme;
 
 // The "kind" member of a gmr.rule document ("concrete", "scheme", ...), after checking the header;
 // throws like the readers.
@@ -49,4 +50,4 @@ nlohmann::ordered_json scheme_to_json(const RuleScheme& s);
 std::string scheme_to_json_text(const RuleScheme& s);
 void write_scheme_file(const RuleScheme& s, const std::filesystem::path& path);
 
-}  // namespace gmr
+}  // namespace gmr::io

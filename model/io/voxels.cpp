@@ -5,7 +5,7 @@
 #include "model/io/json_reader.hpp"
 #include "model/io/read_file.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 std::vector<Voxel> read_voxels_json(std::string_view text, const std::string& source) {
   const nlohmann::json doc = parse_json(text, source);
@@ -34,4 +34,4 @@ std::vector<Voxel> read_voxels_json_file(const std::filesystem::path& path) {
   return read_voxels_json(read_text_file(path), path.string());
 }
 
-}  // namespace gmr
+}  // namespace gmr::io

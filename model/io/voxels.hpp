@@ -9,9 +9,9 @@
 
 #include "model/core/builders.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 std::vector<Voxel> read_voxels_json(std::string_view text, const std::string& source = {});
 std::vector<Voxel> read_voxels_json_file(const std::filesystem::path& path);
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -4,7 +4,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::io {
 
 const std::string* XmlElement::attribute(std::string_view key) const {
   for (const auto& [k, v] : attributes)
@@ -229,4 +229,4 @@ class Parser {
 
 XmlElement parse_xml(std::string_view text, const std::string& source) { return Parser(text, source).document(); }
 
-}  // namespace gmr
+}  // namespace gmr::io

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-namespace gmr {
+namespace gmr::io {
 
 struct XmlElement {
   std::string name;
@@ -32,4 +32,4 @@ struct XmlElement {
 
 XmlElement parse_xml(std::string_view text, const std::string& source = {});
 
-}  // namespace gmr
+}  // namespace gmr::io

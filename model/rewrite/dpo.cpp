@@ -6,7 +6,8 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::rewrite {
+using namespace gmr::graph;
 
 std::string DanglingArc::describe(const Rule& r, const DGraph& G) const {
   const Arc& e = G.arc(g_arc);
@@ -394,4 +395,4 @@ MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>
   return out;
 }
 
-}  // namespace gmr
+}  // namespace gmr::rewrite

@@ -26,7 +26,7 @@
 #include "model/rewrite/match.hpp"
 #include "model/rewrite/rule.hpp"
 
-namespace gmr {
+namespace gmr::rewrite {
 
 struct DanglingArc {
   Node l_node;   // the deleted node of L
@@ -66,4 +66,4 @@ std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const GMap& g, si
 MapDerivation apply_to_map(const Rule& r, const GMap& g, const std::vector<Dart>& match);
 MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>& match);
 
-}  // namespace gmr
+}  // namespace gmr::rewrite

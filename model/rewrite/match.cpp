@@ -8,7 +8,8 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::rewrite {
+using namespace gmr::graph;
 
 namespace {
 
@@ -226,4 +227,4 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
   return match_from_nodes(L, G, m);
 }
 
-}  // namespace gmr
+}  // namespace gmr::rewrite

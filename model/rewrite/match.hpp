@@ -18,7 +18,10 @@
 
 #include "model/graph/dgraph.hpp"
 
-namespace gmr {
+namespace gmr::rewrite {
+using graph::ArcId;
+using graph::DGraph;
+using graph::Node;
 
 inline constexpr ArcId kNoArc = UINT32_MAX;
 inline constexpr Node kNoNode = UINT32_MAX;
@@ -45,4 +48,4 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
 // at every node)? On failure, `where` receives "node a: 2 outgoing 0-arcs".
 bool at_most_one_arc_per_label(const DGraph& g, std::string* where = nullptr);
 
-}  // namespace gmr
+}  // namespace gmr::rewrite

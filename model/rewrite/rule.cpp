@@ -6,7 +6,8 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::rewrite {
+using namespace gmr::graph;
 
 const char* to_string(ElemStatus s) {
   switch (s) {
@@ -183,4 +184,4 @@ Rule from_joint(const JointRepresentation& j) {
   return Rule(std::move(L), std::move(R), j.n, j.kind, j.name);
 }
 
-}  // namespace gmr
+}  // namespace gmr::rewrite

@@ -22,7 +22,10 @@
 #include "model/graph/dgraph.hpp"
 #include "model/core/gmap.hpp"
 
-namespace gmr {
+namespace gmr::rewrite {
+using graph::ArcId;
+using graph::DGraph;
+using graph::Node;
 
 enum class ElemStatus : uint8_t { Preserved, Deleted, Added };
 const char* to_string(ElemStatus s);
@@ -89,4 +92,4 @@ JointRepresentation to_joint(const Rule& r);
 // crosses sides, a κ-arc goes from R to L, or a node has two κ-arcs.
 Rule from_joint(const JointRepresentation& j);
 
-}  // namespace gmr
+}  // namespace gmr::rewrite

@@ -5,7 +5,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::scheme {
 
 std::optional<uint32_t> GraphScheme::find(const std::string& name) const {
   for (uint32_t v = 0; v < nodes.size(); ++v)
@@ -156,4 +156,4 @@ void RuleScheme::validate_structure() const {
 
 std::string node_label_text(const SchemeNode& n) { return n.name + " " + n.label.str(); }
 
-}  // namespace gmr
+}  // namespace gmr::scheme

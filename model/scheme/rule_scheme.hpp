@@ -23,7 +23,7 @@
 
 #include "model/core/orbit_type.hpp"
 
-namespace gmr {
+namespace gmr::scheme {
 
 struct EmbeddingExpression {
   std::string embedding;  // e.g. "pos"
@@ -103,4 +103,4 @@ class RuleScheme {
 // "n0 <_,1,2>" (the papers' node label).
 std::string node_label_text(const SchemeNode& n);
 
-}  // namespace gmr
+}  // namespace gmr::scheme

@@ -5,7 +5,7 @@
 #include "model/core/error.hpp"
 #include "model/scheme/scheme_instantiation.hpp"
 
-namespace gmr {
+namespace gmr::scheme {
 
 namespace {
 constexpr uint32_t kAdded = UINT32_MAX;
@@ -304,4 +304,4 @@ std::pair<GMap, SchemeApplication> apply_scheme(const GMap& g, const RuleScheme&
   return {std::move(h), std::move(a)};
 }
 
-}  // namespace gmr
+}  // namespace gmr::scheme

@@ -41,7 +41,7 @@
 #include "model/core/gmap.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
-namespace gmr {
+namespace gmr::scheme {
 
 enum class NotApplicableReason {
   None,
@@ -115,4 +115,4 @@ std::pair<GMap, SchemeApplication> apply_scheme(const GMap& g, const RuleScheme&
 // Incident arcs I_S(d) for d in 0..n (thesis Alg. 1 on the core): the first failure as text, or "".
 std::string incident_arcs_problem(const RuleScheme& s);
 
-}  // namespace gmr
+}  // namespace gmr::scheme

@@ -4,7 +4,8 @@
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
 
-namespace gmr {
+namespace gmr::scheme {
+using namespace gmr::rewrite;
 
 OrbitGraph orbit_graph(const GMap& g, const OrbitType& t, Dart d) {
   require_orbit_type(g, t);
@@ -115,4 +116,4 @@ OrbitGraph hook_orbit_graph(const GMap& g, const RuleScheme& r, Dart hook_dart) 
   return orbit_graph(g, t, hook_dart);
 }
 
-}  // namespace gmr
+}  // namespace gmr::scheme

@@ -20,7 +20,10 @@
 #include "model/rewrite/rule.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
-namespace gmr {
+namespace gmr::scheme {
+using graph::DGraph;
+using graph::Node;
+using rewrite::Rule;
 
 struct OrbitGraph {
   size_t arity = 0;            // |<o>|
@@ -70,4 +73,4 @@ Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O);
 // stands for o[p]). For a scheme with no hook, single_dart_orbit.
 OrbitGraph hook_orbit_graph(const GMap& g, const RuleScheme& r, Dart hook_dart);
 
-}  // namespace gmr
+}  // namespace gmr::scheme

@@ -7,7 +7,7 @@
 #include "model/core/orbit.hpp"
 #include "model/core/sew.hpp"
 
-namespace gmr {
+namespace gmr::testing {
 
 uint64_t uniform(Rng& rng, uint64_t lo, uint64_t hi) {
   if (lo > hi) throw Error(ErrorCode::Usage, "uniform: empty range");
@@ -354,4 +354,4 @@ Mutation resew_one_link(GMap& g, Rng& rng, size_t tries) {
   return {};
 }
 
-}  // namespace gmr
+}  // namespace gmr::testing

@@ -28,7 +28,7 @@
 #include "model/core/builders.hpp"
 #include "model/core/gmap.hpp"
 
-namespace gmr {
+namespace gmr::testing {
 
 using Rng = std::mt19937_64;
 
@@ -139,4 +139,4 @@ Mutation mutate_one_link(GMap& g, Rng& rng);
 // input — it keeps most cheap invariants, which makes it a hard case for isomorphism tests.
 Mutation resew_one_link(GMap& g, Rng& rng, size_t tries = 64);
 
-}  // namespace gmr
+}  // namespace gmr::testing

@@ -4,7 +4,8 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::testing {
+using namespace gmr::scheme;
 
 namespace {
 
@@ -166,4 +167,4 @@ std::string mutate_scheme(Rng& rng, RuleScheme& s) {
   return "none";
 }
 
-}  // namespace gmr
+}  // namespace gmr::testing

@@ -16,7 +16,8 @@
 #include "model/testing/random_maps.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
-namespace gmr {
+namespace gmr::testing {
+using scheme::RuleScheme;
 
 struct RandomSchemeOptions {
   int n = 2;
@@ -36,4 +37,4 @@ RuleScheme random_copies_scheme(Rng& rng, int n, size_t max_nodes);
 // The kind of edit made, for messages ("relabel R n1 position 0 -> _").
 std::string mutate_scheme(Rng& rng, RuleScheme& s);
 
-}  // namespace gmr
+}  // namespace gmr::testing

@@ -8,7 +8,9 @@
 #include "model/rewrite/match.hpp"
 #include "model/testing/random_maps.hpp"
 
-namespace gmr {
+namespace gmr::testing {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 namespace {
 
@@ -193,4 +195,4 @@ Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& fam) {
   return Rule(std::move(L), std::move(R), fam.n, fam.kind, "component-replacement");
 }
 
-}  // namespace gmr
+}  // namespace gmr::testing

@@ -20,7 +20,9 @@
 #include "model/graph/map_family.hpp"
 #include "model/rewrite/rule.hpp"
 
-namespace gmr {
+namespace gmr::testing {
+using graph::MapFamily;
+using rewrite::Rule;
 
 size_t for_each_small_rule(int n, MapKind kind, int max_nodes, const std::vector<int>& arc_labels,
                            const std::function<bool(const Rule&)>& f);
@@ -39,4 +41,4 @@ Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes 
 // preserves the model and the checker must accept it (property concrete_valid_accepted).
 Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& family);
 
-}  // namespace gmr
+}  // namespace gmr::testing

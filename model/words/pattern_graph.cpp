@@ -6,7 +6,8 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::words {
+using namespace gmr::graph;
 
 int PatternGraph::label_of(const PathWord& w) const {
   for (size_t k = 0; k < words.size(); ++k)
@@ -99,4 +100,4 @@ std::vector<std::vector<Node>> components(const PatternGraph& P) {
   return out;
 }
 
-}  // namespace gmr
+}  // namespace gmr::words

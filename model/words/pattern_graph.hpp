@@ -21,7 +21,9 @@
 #include "model/core/gmap.hpp"
 #include "model/words/word_rewriting.hpp"
 
-namespace gmr {
+namespace gmr::words {
+using graph::DGraph;
+using graph::Node;
 
 struct PatternGraph {
   DGraph graph;              // label k = words[k]
@@ -50,4 +52,4 @@ PatternGraph component(const PatternGraph& P, Node v);
 // The components of P as node sets (each sorted), ordered by smallest node.
 std::vector<std::vector<Node>> components(const PatternGraph& P);
 
-}  // namespace gmr
+}  // namespace gmr::words

@@ -6,7 +6,7 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::words {
 
 PathWord conj(const PathWord& w) {
   PathWord out;
@@ -179,4 +179,4 @@ std::vector<PathWord> RewritingSystem::leftmost_derivation(const PathWord& w0) c
   }
 }
 
-}  // namespace gmr
+}  // namespace gmr::words

@@ -23,7 +23,7 @@
 #include <utility>
 #include <vector>
 
-namespace gmr {
+namespace gmr::words {
 
 struct Letter {
   int dim = 0;
@@ -97,4 +97,4 @@ class RewritingSystem {
   std::vector<RewriteRule> rules_;
 };
 
-}  // namespace gmr
+}  // namespace gmr::words

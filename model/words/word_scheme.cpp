@@ -5,7 +5,9 @@
 
 #include "model/core/error.hpp"
 
-namespace gmr {
+namespace gmr::words {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 uint32_t WordGraphScheme::add_node(std::string name) {
   if (name.empty()) throw Error(ErrorCode::Schema, "empty node name", "scheme node");
@@ -137,4 +139,4 @@ WordSchemeApplication apply_word_scheme(const GMap& g, const WordRuleScheme& S, 
   return WordSchemeApplication{std::move(Pv), std::move(rule), std::move(match), std::move(res)};
 }
 
-}  // namespace gmr
+}  // namespace gmr::words

@@ -28,7 +28,11 @@
 #include "model/rewrite/rule.hpp"
 #include "model/words/word_rewriting.hpp"
 
-namespace gmr {
+namespace gmr::words {
+using graph::DGraph;
+using graph::Node;
+using rewrite::MapDerivation;
+using rewrite::Rule;
 
 struct WordArc {
   uint32_t src = 0, tgt = 0;
@@ -89,4 +93,4 @@ struct WordSchemeApplication {
 // Applies S at dart d of g with the word set W. Throws Error(Usage) when the propagated match fails.
 WordSchemeApplication apply_word_scheme(const GMap& g, const WordRuleScheme& S, const std::vector<PathWord>& W, Dart d);
 
-}  // namespace gmr
+}  // namespace gmr::words

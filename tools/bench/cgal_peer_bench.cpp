@@ -43,6 +43,10 @@
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
 
+using namespace gmr;
+using namespace gmr::rewrite;
+using namespace gmr::checker;
+
 using gmr::Dart;
 using gmr::GMap;
 

@@ -39,6 +39,9 @@
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 
+using namespace gmr;
+using namespace gmr::rewrite;
+
 using gmr::Dart;
 using gmr::GMap;
 

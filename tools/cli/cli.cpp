@@ -14,6 +14,8 @@
 #include "model/draw/render.hpp"
 
 namespace gmr::cli {
+using namespace gmr::io;
+using namespace gmr::draw;
 
 namespace {
 int g_exit = kExitOk;

@@ -19,6 +19,7 @@
 #include "model/draw/map_dot.hpp"
 
 namespace gmr::cli {
+using draw::DotOptions;
 
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitNegative = 1;

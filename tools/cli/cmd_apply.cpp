@@ -20,6 +20,8 @@
 #include "tools/cli/scheme_apply.hpp"
 
 namespace gmr::cli {
+using namespace gmr::graph;
+using namespace gmr::rewrite;
 
 namespace {
 

@@ -13,6 +13,9 @@
 #include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files (issue 4)
 
 namespace gmr::cli {
+using namespace gmr::rewrite;
+using namespace gmr::io;
+using namespace gmr::checker;
 
 namespace {
 

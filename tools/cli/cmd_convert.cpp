@@ -6,6 +6,7 @@
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {
+using namespace gmr::draw;
 
 namespace {
 

@@ -26,6 +26,8 @@
 #include "model/draw/render.hpp"
 
 namespace gmr::cli {
+using namespace gmr::io;
+using namespace gmr::draw;
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include "tools/cli/rule_dot.hpp"
 
 namespace gmr::cli {
+using namespace gmr::draw;
 
 namespace {
 

@@ -27,6 +27,7 @@
 // ========================================================================================
 
 namespace gmr::cli {
+
 #define GMR_DECLARE_SUBCOMMAND(name) void register_##name(CLI::App& app);
 GMR_SUBCOMMANDS(GMR_DECLARE_SUBCOMMAND)
 #undef GMR_DECLARE_SUBCOMMAND

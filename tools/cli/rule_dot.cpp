@@ -10,6 +10,8 @@
 #include "model/draw/render.hpp"
 
 namespace gmr::cli {
+using namespace gmr::draw;
+using namespace gmr::checker;
 
 std::optional<int> dot_rule_input(const RuleDotArgs& a) {
   if (!is_rule_file(a.input)) {

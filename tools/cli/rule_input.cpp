@@ -10,6 +10,7 @@
 #include "model/io/scheme_json.hpp"
 
 namespace gmr::cli {
+using namespace gmr::io;
 
 namespace {
 

@@ -9,6 +9,8 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::cli {
+using rewrite::Rule;
+using scheme::RuleScheme;
 
 struct RuleInput {
   std::optional<Rule> concrete;

@@ -13,6 +13,7 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::cli {
+using scheme::RuleScheme;
 
 struct SchemeApplyArgs {
   std::string rule, input, from, output, to, hooks;

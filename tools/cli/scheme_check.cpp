@@ -12,6 +12,9 @@
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::checker;
 
 namespace {
 

@@ -17,6 +17,7 @@
 #include "model/core/signature.hpp"
 
 using namespace gmr;
+ using namespace gmr::io;
 namespace fs = std::filesystem;
 
 namespace {

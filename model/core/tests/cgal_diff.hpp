@@ -127,13 +127,13 @@ inline std::vector<size_t> gmr_cells(const GMap& g) {
 // Breaks the involution of alpha_i at one dart: d -> x one way only, x != alpha_i(d) (then
 // alpha_i(alpha_i(d)) = alpha_i(x) != d since the map was valid). Returns false when no such
 // (i, d, x) was found (fewer than 3 darts may leave none).
-inline bool break_involution(GMap& g, gmr::Rng& rng) {
+inline bool break_involution(GMap& g, gmr::testing::Rng& rng) {
   if (g.size() < 2) return false;
   const auto ds = g.darts();
   for (int t = 0; t < 100; ++t) {
-    const Dart d = ds[gmr::uniform(rng, 0, ds.size() - 1)];
-    const Dart x = ds[gmr::uniform(rng, 0, ds.size() - 1)];
-    const int i = static_cast<int>(gmr::uniform(rng, 0, static_cast<uint64_t>(g.dimension())));
+    const Dart d = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)];
+    const Dart x = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)];
+    const int i = static_cast<int>(gmr::testing::uniform(rng, 0, static_cast<uint64_t>(g.dimension())));
     if (x == d || x == g.alpha(i, d)) continue;
     g.set_alpha(i, d, x);
     return true;
@@ -145,7 +145,7 @@ inline bool break_involution(GMap& g, gmr::Rng& rng) {
 // e = alpha_j(d) != d and d' = alpha_i(d) not in {d, e}, d' not j-free, and makes d' j-free
 // (with its partner). Then alpha_j alpha_i alpha_j alpha_i (d) = e != d. Returns false when the map
 // has no such dart.
-inline bool break_cycle(GMap& g, gmr::Rng& rng) {
+inline bool break_cycle(GMap& g, gmr::testing::Rng& rng) {
   struct C {
     int i, j;
     Dart d;
@@ -159,7 +159,7 @@ inline bool break_cycle(GMap& g, gmr::Rng& rng) {
         if (e != d && dp != d && dp != e && !g.is_free(j, dp)) cands.push_back({i, j, d});
       });
   if (cands.empty()) return false;
-  const C c = cands[gmr::uniform(rng, 0, cands.size() - 1)];
+  const C c = cands[gmr::testing::uniform(rng, 0, cands.size() - 1)];
   g.unlink(c.j, g.alpha(c.i, c.d));
   return true;
 }
@@ -185,8 +185,8 @@ struct Stats {
 // Compares gmr and CGAL on one valid map g and on variants of it (see the file comment of
 // cgal_diff_cgal_test.cpp). `rng` drives the variants.
 template <unsigned N>
-void compare_one(const GMap& g, gmr::Rng& rng, Stats& st) {
-  using gmr::Mutation;
+void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
+  using gmr::testing::Mutation;
   ++st.maps;
   st.darts += g.size();
   st.max_darts = std::max(st.max_darts, g.size());
@@ -201,7 +201,7 @@ void compare_one(const GMap& g, gmr::Rng& rng, Stats& st) {
 
   // Isomorphic pair: a random relabeling.
   {
-    GMap h = gmr::relabel(g, gmr::random_permutation(rng, g.capacity()));
+    GMap h = gmr::testing::relabel(g, gmr::testing::random_permutation(rng, g.capacity()));
     to_cgal<N>(h, ch);
     const bool gi = gmr::is_isomorphic(g, h), ci = cgal_isomorphic<N>(cg, ch);
     EXPECT_TRUE(gi) << "gmr: relabeled copy not isomorphic";
@@ -213,10 +213,10 @@ void compare_one(const GMap& g, gmr::Rng& rng, Stats& st) {
   // Non-isomorphic pair: one orbit unsewn (or sewn), then relabeled.
   {
     GMap m = g;
-    const Mutation mu = gmr::mutate_one_link(m, rng);
+    const Mutation mu = gmr::testing::mutate_one_link(m, rng);
     if (mu.kind != Mutation::Kind::None) {
       SCOPED_TRACE(mu.str());
-      GMap h = gmr::relabel(m, gmr::random_permutation(rng, m.capacity()));
+      GMap h = gmr::testing::relabel(m, gmr::testing::random_permutation(rng, m.capacity()));
       to_cgal<N>(h, ch);
       EXPECT_TRUE(gmr::is_valid(h));
       EXPECT_TRUE(cgal_is_valid(ch));
@@ -231,12 +231,12 @@ void compare_one(const GMap& g, gmr::Rng& rng, Stats& st) {
   // Hard pair: one orbit re-glued elsewhere; no expected verdict, gmr must agree with CGAL.
   {
     GMap m = g;
-    const Mutation mu = gmr::resew_one_link(m, rng);
+    const Mutation mu = gmr::testing::resew_one_link(m, rng);
     if (mu.kind == Mutation::Kind::None) {
       ++st.resew_none;
     } else {
       SCOPED_TRACE(mu.str());
-      GMap h = gmr::relabel(m, gmr::random_permutation(rng, m.capacity()));
+      GMap h = gmr::testing::relabel(m, gmr::testing::random_permutation(rng, m.capacity()));
       to_cgal<N>(h, ch);
       EXPECT_TRUE(gmr::is_valid(h));
       EXPECT_TRUE(cgal_is_valid(ch));

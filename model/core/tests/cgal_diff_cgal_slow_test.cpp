@@ -5,8 +5,11 @@
 
 #include "model/core/tests/cgal_diff.hpp"
 
+using namespace gmr;
+using namespace gmr::testing;
+
 using namespace cgal_diff;
-using gmr::Rng;
+using gmr::testing::Rng;
 
 namespace {
 
@@ -33,49 +36,49 @@ void sweep(const char* what, uint64_t salt, Make&& make) {
 
 TEST(CgalDiffSlow, GluedPolygons) {
   sweep<2>("glued polygons n=2", 1, [](Rng& rng) {
-    gmr::GluedPolygonsOptions o;
+    gmr::testing::GluedPolygonsOptions o;
     o.max_faces = 40;
     o.max_sides = 8;
     o.max_extra_sews = 40;
-    o.connected = gmr::chance(rng, 80);
-    return gmr::random_glued_polygons(rng, o);
+    o.connected = gmr::testing::chance(rng, 80);
+    return gmr::testing::random_glued_polygons(rng, o);
   });
   sweep<3>("glued polygons n=3", 2, [](Rng& rng) {
-    gmr::GluedPolygonsOptions o;
+    gmr::testing::GluedPolygonsOptions o;
     o.n = 3;
     o.max_faces = 30;
     o.max_extra_sews = 30;
-    return gmr::random_glued_polygons(rng, o);
+    return gmr::testing::random_glued_polygons(rng, o);
   });
 }
 
 TEST(CgalDiffSlow, Polycubes) {
   sweep<3>("polycubes n=3", 3, [](Rng& rng) {
-    gmr::PolycubeOptions o;
+    gmr::testing::PolycubeOptions o;
     o.max_voxels = 24;
-    return gmr::random_polycube(rng, o);
+    return gmr::testing::random_polycube(rng, o);
   });
 }
 
 TEST(CgalDiffSlow, SewSequences) {
   sweep<2>("sew sequences n=2", 4, [](Rng& rng) {
-    gmr::SewSequenceOptions o;
+    gmr::testing::SewSequenceOptions o;
     o.max_cells = 16;
     o.steps = 80;
-    return gmr::random_sewn_cells(rng, o);
+    return gmr::testing::random_sewn_cells(rng, o);
   });
   sweep<3>("sew sequences n=3", 5, [](Rng& rng) {
-    gmr::SewSequenceOptions o;
+    gmr::testing::SewSequenceOptions o;
     o.n = 3;
     o.max_cells = 16;
     o.steps = 80;
-    return gmr::random_sewn_cells(rng, o);
+    return gmr::testing::random_sewn_cells(rng, o);
   });
   sweep<4>("sew sequences n=4", 6, [](Rng& rng) {
-    gmr::SewSequenceOptions o;
+    gmr::testing::SewSequenceOptions o;
     o.n = 4;
     o.max_cells = 10;
     o.steps = 60;
-    return gmr::random_sewn_cells(rng, o);
+    return gmr::testing::random_sewn_cells(rng, o);
   });
 }

@@ -14,9 +14,12 @@
 #include "model/core/sew.hpp"
 #include "model/core/tests/cgal_diff.hpp"
 
+using namespace gmr;
+using namespace gmr::testing;
+
 using namespace cgal_diff;
-using gmr::Generator;
-using gmr::Rng;
+using gmr::testing::Generator;
+using gmr::testing::Rng;
 
 namespace {
 
@@ -25,8 +28,8 @@ Stats sweep(Generator gen, uint64_t seeds) {
   Stats st;
   for (uint64_t s = 0; s < seeds; ++s) {
     Rng rng(s * 7919 + N * 101 + static_cast<uint64_t>(gen));
-    const GMap g = gmr::random_gmap(rng, gen, static_cast<int>(N));
-    SCOPED_TRACE(std::string(gmr::to_string(gen)) + " n=" + std::to_string(N) +
+    const GMap g = gmr::testing::random_gmap(rng, gen, static_cast<int>(N));
+    SCOPED_TRACE(std::string(gmr::testing::to_string(gen)) + " n=" + std::to_string(N) +
                  " seed=" + std::to_string(s));
     compare_one<N>(g, rng, st);
     if (::testing::Test::HasFatalFailure()) break;
@@ -80,7 +83,7 @@ TEST(CgalDiff, ResewnRandomMaps) {
   for (uint64_t s = 0; s < 60; ++s) {
     Rng rng(s + 424242);
     compare_one<2>(
-        gmr::random_gmap(rng, s % 2 ? Generator::GluedPolygons : Generator::SewSequence, 2), rng,
+        gmr::testing::random_gmap(rng, s % 2 ? Generator::GluedPolygons : Generator::SewSequence, 2), rng,
         st);
   }
   report("resewn random maps n=2", st);
@@ -117,10 +120,10 @@ std::pair<size_t, size_t> twisted_pairs(const GMap& base, int i, int k, uint64_t
   const auto ds = base.darts();
   for (size_t p = 0; p < pairs; ++p) {
     GMap a = base, b = base;
-    const Dart da = ds[gmr::uniform(rng, 0, ds.size() - 1)],
-               db = ds[gmr::uniform(rng, 0, ds.size() - 1)];
+    const Dart da = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)],
+               db = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)];
     if (!twist(a, i, k, da) || !twist(b, i, k, db)) continue;
-    b = gmr::relabel(b, gmr::random_permutation(rng, b.capacity()));
+    b = gmr::testing::relabel(b, gmr::testing::random_permutation(rng, b.capacity()));
     CMap<N> ca, cb;
     to_cgal<N>(a, ca);
     to_cgal<N>(b, cb);

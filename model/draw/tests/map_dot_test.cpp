@@ -6,6 +6,7 @@
 #include "model/draw/map_dot.hpp"
 
 using namespace gmr;
+using namespace gmr::draw;
 
 namespace {
 

@@ -11,6 +11,8 @@
 #include "model/draw/render.hpp"
 
 using namespace gmr;
+using namespace gmr::io;
+using namespace gmr::draw;
 namespace fs = std::filesystem;
 
 TEST(Render, SvgAndPng) {

@@ -7,6 +7,11 @@
 #include "model/io/scheme_json.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::scheme;
+using namespace gmr::io;
+using namespace gmr::draw;
 
 namespace {
 

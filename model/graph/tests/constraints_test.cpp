@@ -7,6 +7,7 @@
 #include "model/core/error.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
 
 static bool has(const std::vector<ConstraintViolation>& vs, ConstraintKind k, Node v, int i, int j = -1) {
   for (const auto& c : vs)

@@ -9,6 +9,7 @@
 #include "model/graph/graph_product.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
 
 namespace {
 

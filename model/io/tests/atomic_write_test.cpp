@@ -11,6 +11,7 @@
 #include "model/io/read_file.hpp"
 
 using namespace gmr;
+using namespace gmr::io;
 namespace fs = std::filesystem;
 
 namespace {

@@ -12,6 +12,7 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
+ using namespace gmr::io;
 
 namespace {
 

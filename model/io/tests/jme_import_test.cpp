@@ -9,6 +9,7 @@
 #include "model/scheme/scheme_engine.hpp"
 
 using namespace gmr;
+ using namespace gmr::scheme; using namespace gmr::io;
 
 namespace {
 std::string fixture() {

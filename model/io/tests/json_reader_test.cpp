@@ -5,6 +5,7 @@
 #include "model/io/json_writer.hpp"
 
 using namespace gmr;
+using namespace gmr::io;
 
 TEST(JsonReader, PathsAndLocations) {
   EXPECT_EQ(json_path_key("alpha"), ".alpha");

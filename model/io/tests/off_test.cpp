@@ -17,6 +17,7 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
+using namespace gmr::io;
 
 namespace {
 

@@ -8,6 +8,9 @@
 #include "model/io/rule_json.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::io;
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include "model/scheme/tests/scheme_fixtures.hpp"
 
 using namespace gmr;
+ using namespace gmr::scheme; using namespace gmr::io;
 using namespace gmr::fixtures;
 
 namespace {

@@ -5,6 +5,7 @@
 #include "model/io/xml.hpp"
 
 using namespace gmr;
+using namespace gmr::io;
 
 TEST(Xml, ElementsAttributesTextEntitiesCdata) {
   const char* t =

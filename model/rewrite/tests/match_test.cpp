@@ -9,6 +9,9 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::io;
 
 namespace {
 // The 2-sewing of two free edges (thesis Fig. 3.19a).

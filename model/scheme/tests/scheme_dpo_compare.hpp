@@ -16,6 +16,16 @@
 #include "model/scheme/scheme_instantiation.hpp"
 
 namespace gmr::testing {
+using graph::DGraph;
+using graph::Node;
+using graph::to_dgraph;
+using rewrite::anchored_match;
+using rewrite::MapDerivation;
+using rewrite::Match;
+using rewrite::Rule;
+using rewrite::kNoNode;
+using scheme::OrbitGraph;
+using scheme::RuleScheme;
 
 struct EngineVsDpo {
   bool engine_applied = false;

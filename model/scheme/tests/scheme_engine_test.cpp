@@ -10,6 +10,9 @@
 #include "model/scheme/tests/scheme_fixtures.hpp"
 
 using namespace gmr;
+using namespace gmr::graph;
+using namespace gmr::rewrite;
+using namespace gmr::scheme;
 using namespace gmr::fixtures;
 
 TEST(RuleScheme, RolesAndStructure) {

@@ -5,6 +5,7 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::fixtures {
+using scheme::RuleScheme;
 
 inline OrbitType ot(const char* s) { return OrbitType::parse(s); }
 

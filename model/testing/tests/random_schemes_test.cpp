@@ -7,6 +7,8 @@
 #include "model/core/error.hpp"
 
 using namespace gmr;
+using namespace gmr::scheme;
+using namespace gmr::testing;
 
 TEST(RandomSchemes, StructurallyValidAndDeterministic) {
   size_t with_added = 0, two_left = 0;
