@@ -97,26 +97,25 @@ void check_raw(const XmlDocument& where, const tinyxml2::XMLDocument& raw) {
     }
   }
   if (!root) fail(1, "no root element");
-  std::vector<const XMLElement*> todo{root};
+  // Nodes in document order (pre-order).
+  std::vector<const XMLNode*> todo{root};
   while (!todo.empty()) {
-    const XMLElement* e = todo.back();
+    const XMLNode* n = todo.back();
     todo.pop_back();
-    for (const XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
-      const std::string_view v = a->Value();
-      if (const size_t lt = v.find('<'); lt != std::string_view::npos)
-        fail(a->GetLineNum() + newlines(v, 0, lt), "'<' in the value of attribute " + std::string(a->Name()));
-      if (auto bad = bad_reference(v))
-        fail(a->GetLineNum() + newlines(v, 0, bad->first), bad->second + " in attribute " + a->Name());
-    }
-    for (const XMLNode* n = e->FirstChild(); n; n = n->NextSibling()) {
-      if (const XMLElement* c = n->ToElement()) {
-        todo.push_back(c);
-      } else if (const XMLText* t = n->ToText(); t && !t->CData()) {
-        // The node's line is that of its first non-whitespace character.
-        const std::string_view v = t->Value();
+    if (const XMLElement* e = n->ToElement()) {
+      for (const XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
+        const std::string_view v = a->Value();
+        if (const size_t lt = v.find('<'); lt != std::string_view::npos)
+          fail(a->GetLineNum() + newlines(v, 0, lt), "'<' in the value of attribute " + std::string(a->Name()));
         if (auto bad = bad_reference(v))
-          fail(t->GetLineNum() + newlines(v, v.find_first_not_of(" \t\r\n"), bad->first), bad->second);
+          fail(a->GetLineNum() + newlines(v, 0, bad->first), bad->second + " in attribute " + a->Name());
       }
+      for (const XMLNode* c = e->LastChild(); c; c = c->PreviousSibling()) todo.push_back(c);
+    } else if (const XMLText* t = n->ToText(); t && !t->CData()) {
+      // The node's line is that of its first non-whitespace character.
+      const std::string_view v = t->Value();
+      if (auto bad = bad_reference(v))
+        fail(t->GetLineNum() + newlines(v, v.find_first_not_of(" \t\r\n"), bad->first), bad->second);
     }
   }
 }

@@ -4,7 +4,8 @@
 // tinyxml2 reads the XML declaration, processing instructions, comments, elements, attributes in
 // single or double quotes, character data, CDATA sections, the five predefined entities (&lt; &gt;
 // &amp; &quot; &apos;) and character references (&#65; &#x41;). Namespaces are not interpreted (a
-// prefixed name is just a name); a DOCTYPE is kept as an unknown node.
+// prefixed name is just a name); a DOCTYPE is kept as an unknown node (one with an internal subset
+// ends at its first '>', leaving text outside the root element).
 //
 // Rejected, as Error(Parse) "malformed XML: ..." located "<source>:<line>" (or "line <n>"):
 //  * by tinyxml2: end tags that do not match (located at the start tag left open), elements not

@@ -70,6 +70,9 @@ TEST(Xml, ErrorsWithLines) {
   EXPECT_NE(loc("<a>&#xD800;</a>").find("bad character reference"), std::string::npos);
   EXPECT_NE(loc("<a>&#xZ;</a>").find("bad character reference"), std::string::npos);
   EXPECT_NE(loc("<a>a & b</a>").find("'&' that does not start a reference"), std::string::npos);
+  // Of these checks, the first failing one in document order.
+  EXPECT_EQ(loc("<a>\n<b>\n<c x='&p;'/>\n</b>\n&q;</a>"), "f.xml:3 malformed XML: unknown entity &p; in attribute x");
+  EXPECT_NE(loc("<!DOCTYPE a [ <!ENTITY e 'x'> ]><a/>").find("text outside the root"), std::string::npos);
   // A CDATA section is not decoded, so '&' in it is no reference.
   EXPECT_EQ(loc("<a><![CDATA[&nbsp; &]]></a>"), "no error");
 }
