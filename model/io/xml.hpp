@@ -12,11 +12,12 @@
 //    closed, duplicate attributes, unquoted attribute values, unterminated comments and CDATA
 //    sections, an empty document, and elements nested about TINYXML2_MAX_ELEMENT_DEPTH deep (100
 //    levels in tinyxml2 9, 500 from 10; the limit keeps the recursive parser within the stack);
-//  * by the checks below, which tinyxml2 leaves out (XML 1.0, §2.1 one root element, §2.3
-//    AttValue without '<', §4.1 and §4.6 references): a second root element, non-whitespace text
-//    outside the root, '<' in an attribute value, an entity reference other than the five
-//    predefined ones (tinyxml2 would keep it verbatim), a character reference that is not a code
-//    point of Unicode.
+//  * by XmlDocument on top of tinyxml2, which leaves these out (XML 1.0: §2.1 one root element,
+//    §2.3 AttValue without '<', §4.1 references): a second root element, non-whitespace text
+//    outside the root, '<' in an attribute value, '&' that does not start a reference, an entity
+//    reference other than the five predefined ones (§4.6; tinyxml2 would keep it verbatim), a
+//    character reference to 0, a surrogate or beyond U+10FFFF. The references are checked on a
+//    second parse that keeps them verbatim, so the text is parsed twice.
 // Not rejected (tinyxml2 accepts them): "--" inside a comment, attributes without whitespace
 // between them (<a x='1'y='2'/>).
 #pragma once
