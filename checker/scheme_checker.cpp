@@ -6,7 +6,7 @@
 #include <set>
 
 namespace gmr::checker {
- using namespace gmr::scheme;
+using namespace gmr::scheme;
 
 const char* to_string(SchemeSeverity s) {
   switch (s) {

@@ -9,7 +9,7 @@
 #include "proptests/harness.hpp"
 
 using namespace gmr;
- using namespace gmr::testing;
+using namespace gmr::testing;
 using namespace gmr::prop;
 
 namespace {

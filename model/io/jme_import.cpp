@@ -1,6 +1,7 @@
 #include "model/io/jme_import.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <map>
 
@@ -9,7 +10,7 @@
 #include "model/io/xml.hpp"
 
 namespace gmr::io {
- using namespace gmr::scheme;
+using namespace gmr::scheme;
 
 OrbitType parse_jme_orbit(std::string_view text) {
   std::vector<int> dims;
@@ -36,18 +37,18 @@ OrbitType parse_jme_orbit(std::string_view text) {
 
 namespace {
 
+using tinyxml2::XMLElement;
+
 struct Ctx {
-  const std::string& source;
-  std::string at(const XmlElement& e) const {
-    return source.empty() ? "line " + std::to_string(e.line) : source + ":" + std::to_string(e.line);
+  const XmlDocument& doc;
+  std::string at(const XMLElement& e) const { return doc.at(e); }
+  std::string attr(const XMLElement& e, const char* key) const {
+    const char* v = e.Attribute(key);
+    if (!v) throw Error(ErrorCode::Schema, "<" + std::string(e.Name()) + "> has no attribute " + key, at(e));
+    return v;
   }
-  const std::string& attr(const XmlElement& e, const char* key) const {
-    const std::string* v = e.attribute(key);
-    if (!v) throw Error(ErrorCode::Schema, "<" + e.name + "> has no attribute " + key, at(e));
-    return *v;
-  }
-  int integer(const XmlElement& e, const char* key, int lo, int hi) const {
-    const std::string& s = attr(e, key);
+  int integer(const XMLElement& e, const char* key, int lo, int hi) const {
+    const std::string s = attr(e, key);
     int v = 0;
     auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || v < lo || v > hi)
@@ -57,50 +58,50 @@ struct Ctx {
                   at(e));
     return v;
   }
-  const XmlElement& child(const XmlElement& e, const char* name) const {
-    const XmlElement* c = e.child(name);
-    if (!c) throw Error(ErrorCode::Schema, "<" + e.name + "> has no <" + name + ">", at(e));
+  const XMLElement& child(const XMLElement& e, const char* name) const {
+    const XMLElement* c = e.FirstChildElement(name);
+    if (!c) throw Error(ErrorCode::Schema, "<" + std::string(e.Name()) + "> has no <" + name + ">", at(e));
     return *c;
   }
 };
 
-void read_side(const Ctx& cx, const XmlElement& side, GraphScheme& g, std::vector<std::string>* hooks) {
-  for (const XmlElement* nodes : side.children_named("nodes"))
-    for (const XmlElement* n : nodes->children_named("node")) {
+void read_side(const Ctx& cx, const XMLElement& side, GraphScheme& g, std::vector<std::string>* hooks) {
+  for (const XMLElement* nodes : xml_children(side, "nodes"))
+    for (const XMLElement* n : xml_children(*nodes, "node")) {
       OrbitType label;
       try {
         label = parse_jme_orbit(cx.attr(*n, "orbit"));
       } catch (const Error& e) {
         throw Error(ErrorCode::Schema, e.message(), cx.at(*n));
       }
-      const std::string& name = cx.attr(*n, "name");
+      const std::string name = cx.attr(*n, "name");
       // Duplicate names are kept (the checker reports them): add_node does not refuse them.
       const uint32_t id = g.add_node(name, std::move(label));
-      for (const XmlElement* ex : n->children_named("expr"))
-        g.nodes[id].expressions.push_back({cx.attr(*ex, "ebd"), ex->text});
-      const std::string* kind = n->attribute("kind");
-      if (kind && *kind == "HOOK") {
+      for (const XMLElement* ex : xml_children(*n, "expr"))
+        g.nodes[id].expressions.push_back({cx.attr(*ex, "ebd"), xml_text(*ex)});
+      if (n->Attribute("kind", "HOOK")) {
         if (!hooks) throw Error(ErrorCode::Schema, "a hook in the right-hand side", cx.at(*n));
         hooks->push_back(name);
       }
     }
-  auto node = [&](const XmlElement& e, const char* key) {
-    const std::string& nm = cx.attr(e, key);
+  auto node = [&](const XMLElement& e, const char* key) {
+    const std::string nm = cx.attr(e, key);
     auto id = g.find(nm);
     if (!id) throw Error(ErrorCode::Schema, "arc names unknown node \"" + nm + "\"", cx.at(e));
     return *id;
   };
-  for (const XmlElement* arcs : side.children_named("arcs"))
-    for (const auto& a : arcs->children) {
-      if (a->name == "arc") {
+  for (const XMLElement* arcs : xml_children(side, "arcs"))
+    for (const XMLElement* a : xml_children(*arcs)) {
+      const std::string_view kind = a->Name();
+      if (kind == "arc") {
         const int d = cx.integer(*a, "dim", 0, kMaxDim - 1);
         g.arcs.push_back(SchemeArc{node(*a, "a"), node(*a, "b"), d});
-      } else if (a->name == "arcloop") {
+      } else if (kind == "arcloop") {
         const int d = cx.integer(*a, "dim", 0, kMaxDim - 1);
         const uint32_t v = node(*a, "node");
         g.arcs.push_back(SchemeArc{v, v, d});
       } else {
-        throw Error(ErrorCode::Schema, "unexpected <" + a->name + "> in <arcs>", cx.at(*a));
+        throw Error(ErrorCode::Schema, "unexpected <" + std::string(kind) + "> in <arcs>", cx.at(*a));
       }
     }
 }
@@ -115,18 +116,19 @@ std::string trimmed(const std::string& s) {
 }  // namespace
 
 JmeModeler parse_jme(std::string_view text, const std::string& source) {
-  const XmlElement doc = parse_xml(text, source);
-  const Ctx cx{source};
-  const XmlElement* modeler = doc.name == "modeler" ? &doc : doc.child("modeler");
-  if (!modeler) throw Error(ErrorCode::Schema, "no <modeler> element (not a Jerboa .jme file)", cx.at(doc));
+  const XmlDocument doc(text, source);
+  const Ctx cx{doc};
+  const XMLElement& root = doc.root();
+  const XMLElement* modeler = std::string_view(root.Name()) == "modeler" ? &root : root.FirstChildElement("modeler");
+  if (!modeler) throw Error(ErrorCode::Schema, "no <modeler> element (not a Jerboa .jme file)", cx.at(root));
   JmeModeler m;
-  if (const std::string* nm = modeler->attribute("name")) m.name = *nm;
+  if (const char* nm = modeler->Attribute("name")) m.name = nm;
   m.dimension = cx.integer(*modeler, "dimension", 0, kMaxDim - 1);
-  if (const XmlElement* ebds = modeler->child("embeddings"))
-    for (const XmlElement* e : ebds->children_named("embedding")) {
+  if (const XMLElement* ebds = modeler->FirstChildElement("embeddings"))
+    for (const XMLElement* e : xml_children(*ebds, "embedding")) {
       JmeEmbedding je;
       je.name = cx.attr(*e, "name");
-      if (const std::string* t = e->attribute("type")) je.type = *t;
+      if (const char* t = e->Attribute("type")) je.type = t;
       try {
         je.orbit = parse_jme_orbit(cx.attr(*e, "orbit"));
       } catch (const Error& err) {
@@ -134,20 +136,20 @@ JmeModeler parse_jme(std::string_view text, const std::string& source) {
       }
       m.embeddings.push_back(std::move(je));
     }
-  const XmlElement& rules = cx.child(*modeler, "rules");
-  for (const XmlElement* r : rules.children_named("rule")) {
+  const XMLElement& rules = cx.child(*modeler, "rules");
+  for (const XMLElement* r : xml_children(rules, "rule")) {
     RuleScheme s;
     s.name = cx.attr(*r, "name");
     s.dimension = m.dimension;
-    if (const XmlElement* c = r->child("comment")) s.description = trimmed(c->text);
-    if (const XmlElement* p = r->child("precondition")) s.precondition = trimmed(p->text);
+    if (const XMLElement* c = r->FirstChildElement("comment")) s.description = trimmed(xml_text(*c));
+    if (const XMLElement* p = r->FirstChildElement("precondition")) s.precondition = trimmed(xml_text(*p));
     std::vector<std::string> hooks;
     read_side(cx, cx.child(*r, "left"), s.left, &hooks);
     read_side(cx, cx.child(*r, "right"), s.right, nullptr);
     // Hook order: <paramtopo order=..>.
     std::map<std::string, int> order;
-    if (const XmlElement* pt = r->child("paramstopo"))
-      for (const XmlElement* p : pt->children_named("paramtopo"))
+    if (const XMLElement* pt = r->FirstChildElement("paramstopo"))
+      for (const XMLElement* p : xml_children(*pt, "paramtopo"))
         order[cx.attr(*p, "name")] = cx.integer(*p, "order", 0, 1 << 20);
     std::stable_sort(hooks.begin(), hooks.end(), [&](const std::string& a, const std::string& b) {
       const int oa = order.count(a) ? order[a] : 1 << 21, ob = order.count(b) ? order[b] : 1 << 21;
@@ -161,7 +163,7 @@ JmeModeler parse_jme(std::string_view text, const std::string& source) {
       if (side.size() && !side.nodes[0].label.has_hole()) s.orbit = side.nodes[0].label;
     }
     m.rules.push_back(std::move(s));
-    m.rule_lines.push_back(r->line);
+    m.rule_lines.push_back(static_cast<size_t>(r->GetLineNum()));
   }
   return m;
 }

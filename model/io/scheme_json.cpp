@@ -9,7 +9,7 @@
 #include "model/io/read_file.hpp"
 
 namespace gmr::io {
- using namespace gmr::scheme;
+using namespace gmr::scheme;
 
 namespace {
 

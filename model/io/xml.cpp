@@ -1,232 +1,151 @@
 #include "model/io/xml.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <optional>
+#include <utility>
 
 #include "model/core/error.hpp"
 
 namespace gmr::io {
 
-const std::string* XmlElement::attribute(std::string_view key) const {
-  for (const auto& [k, v] : attributes)
-    if (k == key) return &v;
-  return nullptr;
-}
-
-const XmlElement* XmlElement::child(std::string_view n) const {
-  for (const auto& c : children)
-    if (c->name == n) return c.get();
-  return nullptr;
-}
-
-std::vector<const XmlElement*> XmlElement::children_named(std::string_view n) const {
-  std::vector<const XmlElement*> out;
-  for (const auto& c : children)
-    if (c->name == n) out.push_back(c.get());
-  return out;
-}
-
 namespace {
 
-class Parser {
- public:
-  Parser(std::string_view t, const std::string& source) : t_(t), source_(source) {}
+using tinyxml2::XMLAttribute;
+using tinyxml2::XMLElement;
+using tinyxml2::XMLNode;
+using tinyxml2::XMLText;
 
-  XmlElement document() {
-    XmlElement root;
-    bool have_root = false;
-    for (;;) {
-      skip_space();
-      if (p_ >= t_.size()) break;
-      if (starts("<?")) {
-        skip_until("?>", "processing instruction");
-      } else if (starts("<!--")) {
-        comment();
-      } else if (starts("<!DOCTYPE")) {
-        doctype();
-      } else if (starts("<")) {
-        if (have_root) fail("a second root element");
-        root = element();
-        have_root = true;
-      } else {
-        fail("text outside the root element");
-      }
-    }
-    if (!have_root) fail("no root element");
-    return root;
+// What went wrong, in words, for tinyxml2's error codes.
+std::string describe(const tinyxml2::XMLDocument& d) {
+  std::string what;
+  switch (d.ErrorID()) {
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT: what = "bad element tag"; break;
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+      what = "bad attribute (unquoted value, duplicate name or missing '=')";
+      break;
+    case tinyxml2::XML_ERROR_PARSING_TEXT: what = "text not followed by a tag (after the root element?)"; break;
+    case tinyxml2::XML_ERROR_PARSING_CDATA: what = "unterminated CDATA section"; break;
+    case tinyxml2::XML_ERROR_PARSING_COMMENT: what = "unterminated comment"; break;
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION: what = "bad XML declaration"; break;
+    case tinyxml2::XML_ERROR_PARSING_UNKNOWN: what = "bad <!...> declaration"; break;
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: what = "no root element"; break;
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT: what = "element closed by a different end tag"; break;
+    case tinyxml2::XML_ERROR_PARSING: what = "element not closed, or a tag that cannot be read"; break;
+    case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
+      what = "elements nested too deeply (tinyxml2's limit: " + std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) +
+             " levels)";
+      break;
+    default: what = d.ErrorName(); break;
   }
+  // ErrorStr() is "Error=... ErrorID=... Line number=<n>[: <detail>]"; keep the detail.
+  const std::string_view s = d.ErrorStr();
+  const size_t ln = s.find("Line number=");
+  const size_t colon = ln == std::string_view::npos ? ln : s.find(": ", ln);
+  if (colon != std::string_view::npos) what += " (" + std::string(s.substr(colon + 2)) + ")";
+  return what;
+}
 
- private:
-  [[noreturn]] void fail(const std::string& what) const {
-    throw Error(ErrorCode::Parse, "malformed XML: " + what,
-                source_.empty() ? "line " + std::to_string(line_) : source_ + ":" + std::to_string(line_));
-  }
-  bool starts(std::string_view s) const { return t_.substr(p_, s.size()) == s; }
-  void advance(size_t k) {
-    for (size_t i = 0; i < k && p_ < t_.size(); ++i, ++p_)
-      if (t_[p_] == '\n') ++line_;
-  }
-  void skip_space() {
-    while (p_ < t_.size() && std::isspace(static_cast<unsigned char>(t_[p_]))) advance(1);
-  }
-  void skip_until(std::string_view end, const char* what) {
-    const size_t e = t_.find(end, p_);
-    if (e == std::string_view::npos) fail(std::string("unterminated ") + what);
-    advance(e + end.size() - p_);
-  }
-  void comment() {
-    advance(4);
-    const size_t e = t_.find("--", p_);
-    if (e == std::string_view::npos) fail("unterminated comment");
-    advance(e - p_);
-    if (!starts("-->")) fail("\"--\" inside a comment");
-    advance(3);
-  }
-  void doctype() {
-    const size_t e = t_.find('>', p_);
-    if (e == std::string_view::npos) fail("unterminated DOCTYPE");
-    if (t_.substr(p_, e - p_).find('[') != std::string_view::npos) fail("DOCTYPE internal subsets are not supported");
-    advance(e + 1 - p_);
-  }
-  static bool name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == ':'; }
-  static bool name_char(char c) {
-    return name_start(c) || std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '.';
-  }
-  std::string name() {
-    if (p_ >= t_.size() || !name_start(t_[p_])) fail("expected a name");
-    const size_t b = p_;
-    while (p_ < t_.size() && name_char(t_[p_])) advance(1);
-    return std::string(t_.substr(b, p_ - b));
-  }
-  // Decodes an entity at p_ ('&'), appends it.
-  void entity(std::string& out) {
-    const size_t e = t_.find(';', p_);
-    if (e == std::string_view::npos || e - p_ > 12) fail("unterminated entity reference");
-    const std::string_view ent = t_.substr(p_ + 1, e - p_ - 1);
-    if (ent == "lt") out += '<';
-    else if (ent == "gt") out += '>';
-    else if (ent == "amp") out += '&';
-    else if (ent == "quot") out += '"';
-    else if (ent == "apos") out += '\'';
-    else if (!ent.empty() && ent[0] == '#') {
-      unsigned long cp = 0;
-      const bool hex = ent.size() > 1 && (ent[1] == 'x' || ent[1] == 'X');
-      const std::string_view digits = ent.substr(hex ? 2 : 1);
-      if (digits.empty()) fail("empty character reference");
-      for (char c : digits) {
-        int d;
-        if (std::isdigit(static_cast<unsigned char>(c))) d = c - '0';
-        else if (hex && std::isxdigit(static_cast<unsigned char>(c))) d = std::tolower(c) - 'a' + 10;
-        else fail("bad character reference &" + std::string(ent) + ";");
-        cp = cp * (hex ? 16 : 10) + static_cast<unsigned long>(d);
-        if (cp > 0x10FFFF) fail("character reference out of range");
-      }
-      // UTF-8 encoding
-      if (cp < 0x80) out += static_cast<char>(cp);
-      else if (cp < 0x800) {
-        out += static_cast<char>(0xC0 | (cp >> 6));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-      } else if (cp < 0x10000) {
-        out += static_cast<char>(0xE0 | (cp >> 12));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-      } else {
-        out += static_cast<char>(0xF0 | (cp >> 18));
-        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-      }
-    } else {
-      fail("unknown entity &" + std::string(ent) + ";");
-    }
-    advance(e + 1 - p_);
-  }
-  XmlElement element() {
-    XmlElement el;
-    el.line = line_;
-    advance(1);  // '<'
-    el.name = name();
-    for (;;) {
-      const size_t before = p_;
-      skip_space();
-      if (p_ >= t_.size()) fail("unterminated start tag <" + el.name + ">");
-      if (starts("/>")) {
-        advance(2);
-        return el;
-      }
-      if (t_[p_] == '>') {
-        advance(1);
-        break;
-      }
-      if (p_ == before) fail("expected whitespace before an attribute in <" + el.name + ">");
-      std::string key = name();
-      skip_space();
-      if (p_ >= t_.size() || t_[p_] != '=') fail("expected '=' after attribute " + key);
-      advance(1);
-      skip_space();
-      if (p_ >= t_.size() || (t_[p_] != '"' && t_[p_] != '\'')) fail("attribute " + key + " value must be quoted");
-      const char q = t_[p_];
-      advance(1);
-      std::string value;
-      for (;;) {
-        if (p_ >= t_.size()) fail("unterminated value of attribute " + key);
-        const char c = t_[p_];
-        if (c == q) break;
-        if (c == '<') fail("'<' in the value of attribute " + key);
-        if (c == '&') {
-          entity(value);
-        } else {
-          value += c;
-          advance(1);
-        }
-      }
-      advance(1);
-      if (el.attribute(key)) fail("duplicate attribute " + key + " in <" + el.name + ">");
-      el.attributes.emplace_back(std::move(key), std::move(value));
-    }
-    // content
-    for (;;) {
-      if (p_ >= t_.size()) fail("element <" + el.name + "> (line " + std::to_string(el.line) + ") is not closed");
-      if (starts("</")) {
-        advance(2);
-        const std::string close = name();
-        skip_space();
-        if (p_ >= t_.size() || t_[p_] != '>') fail("expected '>' in end tag </" + close + ">");
-        advance(1);
-        if (close != el.name)
-          fail("end tag </" + close + "> does not match <" + el.name + "> of line " + std::to_string(el.line));
-        return el;
-      }
-      if (starts("<!--")) {
-        comment();
-      } else if (starts("<![CDATA[")) {
-        advance(9);
-        const size_t e = t_.find("]]>", p_);
-        if (e == std::string_view::npos) fail("unterminated CDATA section");
-        const size_t b = p_;
-        advance(e - p_);
-        el.text += std::string(t_.substr(b, e - b));
-        advance(3);
-      } else if (starts("<?")) {
-        skip_until("?>", "processing instruction");
-      } else if (starts("<")) {
-        el.children.push_back(std::make_unique<XmlElement>(element()));
-      } else if (t_[p_] == '&') {
-        entity(el.text);
-      } else {
-        el.text += t_[p_];
-        advance(1);
-      }
-    }
-  }
+bool predefined_entity(std::string_view name) {
+  return name == "lt" || name == "gt" || name == "amp" || name == "quot" || name == "apos";
+}
 
-  std::string_view t_;
-  const std::string& source_;
-  size_t p_ = 0;
-  size_t line_ = 1;
-};
+// The first reference in the undecoded character data `raw` that is not one of XML 1.0's (§4.1
+// character references to a Unicode scalar value other than 0, §4.6 the predefined entities):
+// its offset and a message.
+std::optional<std::pair<size_t, std::string>> bad_reference(std::string_view raw) {
+  for (size_t p = raw.find('&'); p != std::string_view::npos; p = raw.find('&', p + 1)) {
+    const size_t e = raw.find(';', p);
+    const std::string_view ref = raw.substr(p + 1, e == std::string_view::npos ? 0 : e - p - 1);
+    const bool word = !ref.empty() && std::all_of(ref.begin(), ref.end(), [](char c) {
+      return c == '#' || std::isalnum(static_cast<unsigned char>(c));
+    });
+    if (e == std::string_view::npos || !word) return std::pair{p, std::string("'&' that does not start a reference")};
+    if (predefined_entity(ref)) continue;
+    if (ref[0] != '#') return std::pair{p, "unknown entity &" + std::string(ref) + ";"};
+    const bool hex = ref.size() > 1 && (ref[1] == 'x' || ref[1] == 'X');
+    const std::string_view digits = ref.substr(hex ? 2 : 1);
+    unsigned long cp = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), cp, hex ? 16 : 10);
+    if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size() || cp == 0 || cp > 0x10FFFF ||
+        (cp >= 0xD800 && cp <= 0xDFFF))
+      return std::pair{p, "bad character reference &" + std::string(ref) + ";"};
+  }
+  return std::nullopt;
+}
+
+// Line breaks in s[from, to).
+int newlines(std::string_view s, size_t from, size_t to) {
+  return static_cast<int>(std::count(s.begin() + static_cast<std::ptrdiff_t>(from),
+                                     s.begin() + static_cast<std::ptrdiff_t>(to), '\n'));
+}
+
+// The checks of the header that tinyxml2 leaves out, on the document parsed with references kept
+// verbatim (`raw`). Iterative: the depth is bounded by tinyxml2's limit, but a stack costs nothing.
+void check_raw(const XmlDocument& where, const tinyxml2::XMLDocument& raw) {
+  auto fail = [&](int line, const std::string& what) {
+    throw Error(ErrorCode::Parse, "malformed XML: " + what, where.at_line(line));
+  };
+  const XMLElement* root = nullptr;
+  for (const XMLNode* n = raw.FirstChild(); n; n = n->NextSibling()) {
+    if (const XMLElement* e = n->ToElement()) {
+      if (root) fail(e->GetLineNum(), "a second root element <" + std::string(e->Name()) + ">");
+      root = e;
+    } else if (n->ToText()) {
+      fail(n->GetLineNum(), "text outside the root element");
+    }
+  }
+  if (!root) fail(1, "no root element");
+  // Nodes in document order (pre-order).
+  std::vector<const XMLNode*> todo{root};
+  while (!todo.empty()) {
+    const XMLNode* n = todo.back();
+    todo.pop_back();
+    if (const XMLElement* e = n->ToElement()) {
+      for (const XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
+        const std::string_view v = a->Value();
+        if (const size_t lt = v.find('<'); lt != std::string_view::npos)
+          fail(a->GetLineNum() + newlines(v, 0, lt), "'<' in the value of attribute " + std::string(a->Name()));
+        if (auto bad = bad_reference(v))
+          fail(a->GetLineNum() + newlines(v, 0, bad->first), bad->second + " in attribute " + a->Name());
+      }
+      for (const XMLNode* c = e->LastChild(); c; c = c->PreviousSibling()) todo.push_back(c);
+    } else if (const XMLText* t = n->ToText(); t && !t->CData()) {
+      // The node's line is that of its first non-whitespace character.
+      const std::string_view v = t->Value();
+      if (auto bad = bad_reference(v))
+        fail(t->GetLineNum() + newlines(v, v.find_first_not_of(" \t\r\n"), bad->first), bad->second);
+    }
+  }
+}
 
 }  // namespace
 
-XmlElement parse_xml(std::string_view text, const std::string& source) { return Parser(text, source).document(); }
+XmlDocument::XmlDocument(std::string_view text, std::string source)
+    : doc_(true, tinyxml2::PRESERVE_WHITESPACE), source_(std::move(source)) {
+  doc_.Parse(text.data(), text.size());
+  if (doc_.Error()) throw Error(ErrorCode::Parse, "malformed XML: " + describe(doc_), at_line(std::max(doc_.ErrorLineNum(), 1)));
+  tinyxml2::XMLDocument raw(false, tinyxml2::PRESERVE_WHITESPACE);
+  raw.Parse(text.data(), text.size());
+  check_raw(*this, raw);
+}
+
+std::string XmlDocument::at_line(int line) const {
+  return source_.empty() ? "line " + std::to_string(line) : source_ + ":" + std::to_string(line);
+}
+
+std::vector<const XMLElement*> xml_children(const XMLElement& e, const char* name) {
+  std::vector<const XMLElement*> out;
+  for (const XMLElement* c = e.FirstChildElement(name); c; c = c->NextSiblingElement(name)) out.push_back(c);
+  return out;
+}
+
+std::string xml_text(const XMLElement& e) {
+  std::string out;
+  for (const XMLNode* n = e.FirstChild(); n; n = n->NextSibling())
+    if (const XMLText* t = n->ToText()) out += t->Value();
+  return out;
+}
 
 }  // namespace gmr::io

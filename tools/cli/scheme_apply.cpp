@@ -9,7 +9,7 @@
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {
- using namespace gmr::scheme;
+using namespace gmr::scheme;
 
 namespace {
 

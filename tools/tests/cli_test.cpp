@@ -17,7 +17,7 @@
 #include "model/core/signature.hpp"
 
 using namespace gmr;
- using namespace gmr::io;
+using namespace gmr::io;
 namespace fs = std::filesystem;
 
 namespace {
@@ -267,6 +267,20 @@ TEST_F(Cli, DotOfJerboaRule) {
   r = run("dot --check " + q(test_data("JerboaTrackingOrbit.jme")) + " --rule " + q(name));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("subgraph cluster_L"), std::string::npos) << r.out;
+}
+
+// A .jme file nesting 20,000 elements: a located error (tinyxml2's depth limit), not a crash.
+TEST_F(Cli, DeeplyNestedJmeIsALocatedError) {
+  const fs::path deep = dir / "deep.jme";
+  {
+    std::ofstream f(deep);
+    f << "<jerboamodelereditor>\n<modeler name='M' dimension='2'>\n<rules>\n<rule name='r'>\n";
+    for (int i = 0; i < 20000; ++i) f << "<x>";
+    for (int i = 0; i < 20000; ++i) f << "</x>";
+    f << "\n</rule>\n</rules>\n</modeler>\n</jerboamodelereditor>\n";
+  }
+  expect_bad_input("check " + q(deep), "deep.jme:5: malformed XML", "nested too deeply");
+  expect_bad_input("check --json " + q(deep), "deep.jme:5: malformed XML", "nested too deeply");
 }
 
 TEST_F(Cli, CheckAndApplyConcreteRule) {

@@ -12,7 +12,7 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
- using namespace gmr::io;
+using namespace gmr::io;
 
 namespace {
 

@@ -9,7 +9,8 @@
 #include "model/scheme/scheme_engine.hpp"
 
 using namespace gmr;
- using namespace gmr::scheme; using namespace gmr::io;
+using namespace gmr::scheme;
+using namespace gmr::io;
 
 namespace {
 std::string fixture() {
@@ -93,4 +94,22 @@ TEST(Jme, LocatedSchemaErrors) {
   EXPECT_NE(loc("<jerboamodelereditor><modeler dimension='2'><rules>\n<rule name='r'><left></rule>").find("m.jme:2"),
             std::string::npos);
   EXPECT_NE(loc("<x/>").find("not a Jerboa"), std::string::npos);
+  // Malformed XML is located too (model/io/xml.hpp lists the cases).
+  EXPECT_EQ(loc(head + left + "<right><nodes/><arcs>\n<arc dim='0' a='n0' b='&zz;'/></arcs></right>\n" + tail),
+            "m.jme:7 malformed XML: unknown entity &zz; in attribute b");
+}
+
+TEST(Jme, DeepNestingIsALocatedError) {
+  std::string t = "<jerboamodelereditor>\n<modeler name='M' dimension='2'>\n<rules>\n<rule name='r'>\n<comment>";
+  for (int i = 0; i < 20000; ++i) t += "<x>";
+  for (int i = 0; i < 20000; ++i) t += "</x>";
+  t += "</comment>\n</rule>\n</rules>\n</modeler>\n</jerboamodelereditor>\n";
+  try {
+    parse_jme(t, "deep.jme");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Parse);
+    EXPECT_EQ(e.location(), "deep.jme:5");
+    EXPECT_NE(e.message().find("nested too deeply"), std::string::npos) << e.message();
+  }
 }

@@ -9,7 +9,8 @@
 #include "model/scheme/tests/scheme_fixtures.hpp"
 
 using namespace gmr;
- using namespace gmr::scheme; using namespace gmr::io;
+using namespace gmr::scheme;
+using namespace gmr::io;
 using namespace gmr::fixtures;
 
 namespace {

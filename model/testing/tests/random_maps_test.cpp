@@ -9,7 +9,7 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
- using namespace gmr::testing;
+using namespace gmr::testing;
 
 namespace {
 
