@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "model/core/map_spec.hpp"
 #include "model/core/orbit_type.hpp"
 
 namespace gmr {
@@ -24,8 +25,6 @@ namespace gmr {
 using Dart = uint32_t;
 inline constexpr Dart kNoDart = UINT32_MAX;
 
-enum class MapKind : uint8_t { GMap, OMap };
-const char* to_string(MapKind kind);
 
 // A bitset over dart indices; grows with the map.
 class Bitset {
@@ -55,11 +54,12 @@ class GMap {
 
   int dimension() const { return n_; }
   MapKind kind() const { return kind_; }
+  MapSpec spec() const { return {n_, kind_}; }
   bool is_omap() const { return kind_ == MapKind::OMap; }
-  int lowest_dim() const { return is_omap() ? 1 : 0; }
-  bool has_dim(int i) const { return i >= lowest_dim() && i <= n_; }
+  int lowest_dim() const { return spec().lowest_dim(); }
+  bool has_dim(int i) const { return spec().has_dim(i); }
   // Dimensions whose links must be involutions: all for a G-map, 2..n for an O-map.
-  bool is_involutive_dim(int i) const { return has_dim(i) && !(is_omap() && i == 1); }
+  bool is_involutive_dim(int i) const { return spec().is_involutive_dim(i); }
   DimMask dims_mask() const;
 
   // --- darts -------------------------------------------------------------------------------

@@ -92,8 +92,8 @@ ValidityReport check_validity(const GMap& g, size_t limit) {
       });
     }
   }
-  for (int i = lo; i <= n; ++i) {
-    for (int j = i + 2; j <= n; ++j) {
+  for (auto [i, j] : g.spec().cycle_pairs()) {
+    {
       if (!dim_ok[i] || !dim_ok[j]) continue;
       const Dart* const li = g.links(i).data();
       const Dart* const lj = g.links(j).data();

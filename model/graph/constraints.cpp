@@ -88,7 +88,8 @@ std::vector<ConstraintViolation> check_cycle(const DGraph& g, Node v, int i, int
 
 std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, MapKind kind) {
   std::vector<ConstraintViolation> out;
-  const int lo = kind == MapKind::OMap ? 1 : 0;
+  const MapSpec spec{n, kind};
+  const int lo = spec.lowest_dim();
   auto append = [&](std::vector<ConstraintViolation> v) {
     for (auto& c : v) out.push_back(std::move(c));
   };
@@ -101,11 +102,10 @@ std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, 
                      {e.src, e.tgt}});
   }
   for (Node v = 0; v < g.num_nodes(); ++v) {
-    for (int i = lo; i <= n; ++i) append(check_incident_arcs(g, v, i));
-    for (int i = lo; i <= n; ++i)
-      if (!(kind == MapKind::OMap && i == 1)) append(check_non_orientation(g, v, i));
-    for (int i = lo; i <= n; ++i)
-      for (int j = i + 2; j <= n; ++j) append(check_cycle(g, v, i, j));
+    for (int i : spec.labels()) append(check_incident_arcs(g, v, i));
+    for (int i : spec.labels())
+      if (spec.is_involutive_dim(i)) append(check_non_orientation(g, v, i));
+    for (auto [i, j] : spec.cycle_pairs()) append(check_cycle(g, v, i, j));
   }
   return out;
 }

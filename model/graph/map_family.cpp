@@ -77,7 +77,8 @@ bool connected(const std::vector<const Perm*>& s, size_t k) {
 
 std::vector<GMap> connected_maps(int n, MapKind kind, size_t k) {
   if (k == 0) return {};
-  const int lo = kind == MapKind::OMap ? 1 : 0;
+  const MapSpec spec{n, kind};
+  const int lo = spec.lowest_dim();
   if (n < lo || n >= kMaxDim) throw Error(ErrorCode::Range, "dimension out of range", "n=" + std::to_string(n));
   const auto inv = involutions(k);
   const auto perm = kind == MapKind::OMap ? permutations(k) : std::vector<Perm>{};
@@ -95,10 +96,11 @@ std::vector<GMap> connected_maps(int n, MapKind kind, size_t k) {
       if (seen.insert(component_signature(g, 0)).second) out.push_back(std::move(g));
       return;
     }
-    const auto& pool = (kind == MapKind::OMap && d == 1) ? perm : inv;
+    const auto& pool = spec.is_involutive_dim(d) ? inv : perm;
     for (const Perm& p : pool) {
       bool ok = true;
-      for (int i = lo; i + 2 <= d && ok; ++i) ok = cycle_ok(*chosen[static_cast<size_t>(i)], p);
+      for (auto [i, j] : spec.cycle_pairs())
+        if (j == d && ok) ok = cycle_ok(*chosen[static_cast<size_t>(i)], p);
       if (!ok) continue;
       chosen[static_cast<size_t>(d)] = &p;
       rec(d + 1);

@@ -97,7 +97,7 @@ GMapFile gmap_from_json(const JsonAt& doc) {
   const std::string kind_text = kind_at.as_string();
   if (kind_text != "gmap" && kind_text != "omap") kind_at.fail("expected \"gmap\" or \"omap\", found \"" + kind_text + "\"");
   const MapKind kind = kind_text == "gmap" ? MapKind::GMap : MapKind::OMap;
-  const auto n = static_cast<int>(doc["dimension"].as_int(kind == MapKind::OMap ? 1 : 0, kMaxDim - 1));
+  const auto n = static_cast<int>(doc["dimension"].as_int(MapSpec{0, kind}.lowest_dim(), kMaxDim - 1));
   const auto n_darts = static_cast<Dart>(doc["darts"].as_int(0, static_cast<int64_t>(kNoDart) - 1));
   GMapFile f;
   f.map = GMap(n, kind);

@@ -96,8 +96,8 @@ Rule rule_from_json(const nlohmann::json& doc, const std::string& source) {
     mk = MapKind::OMap;
   else
     map.fail("expected \"gmap\" or \"omap\", found \"" + ms + "\"");
-  const int n = static_cast<int>(root["n"].as_int(mk == MapKind::OMap ? 1 : 0, kMaxDim - 1));
-  const int lo = mk == MapKind::OMap ? 1 : 0;
+  const int lo = MapSpec{0, mk}.lowest_dim();
+  const int n = static_cast<int>(root["n"].as_int(lo, kMaxDim - 1));
   DGraph L = read_side(root["left"], lo, n);
   DGraph R = read_side(root["right"], lo, n);
   try {

@@ -39,8 +39,9 @@ class Rule {
   const std::string& name() const { return name_; }
   int dimension() const { return n_; }
   MapKind kind() const { return kind_; }
-  int lowest_dim() const { return kind_ == MapKind::OMap ? 1 : 0; }
-  bool has_label(int i) const { return i >= lowest_dim() && i <= n_; }
+  MapSpec spec() const { return {n_, kind_}; }
+  int lowest_dim() const { return spec().lowest_dim(); }
+  bool has_label(int i) const { return spec().has_dim(i); }
   std::vector<int> labels() const;
 
   const DGraph& left() const { return L_; }

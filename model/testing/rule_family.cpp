@@ -127,7 +127,7 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
     }
     for (size_t k = 0; k < added; ++k) {
       const Node v = R.add_node(std::string(1, anames[k]));
-      for (int i = fam.kind == MapKind::OMap ? 1 : 0; i <= fam.n; ++i)
+      for (int i : MapSpec{fam.n, fam.kind}.labels())
         if (!coin(0.1)) R.add_arc(v, v, i);
     }
   } else {
@@ -171,7 +171,7 @@ Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes)
       side.add_arc(s, t, i);
     }
   };
-  for (int i = kind == MapKind::OMap ? 1 : 0; i <= n; ++i) {
+  for (int i : MapSpec{n, kind}.labels()) {
     if (L.num_nodes()) arcs(L, i);
     if (R.num_nodes()) arcs(R, i);
   }

@@ -92,24 +92,16 @@ RewritingSystem::RewritingSystem(std::set<int> N, std::set<int> O, std::vector<s
   rules_.assign(rules.begin(), rules.end());
 }
 
-RewritingSystem RewritingSystem::gmap(int n) {
-  std::set<int> N;
-  std::vector<std::pair<int, int>> E;
-  for (int i = 0; i <= n; ++i) {
-    N.insert(i);
-    for (int j = i + 2; j <= n; ++j) E.emplace_back(i, j);
-  }
-  return RewritingSystem(N, {}, E);
+// N: the involutive (non-oriented) labels, O: the oriented ones, E: the cycle pairs of the kind.
+RewritingSystem RewritingSystem::of(const MapSpec& spec) {
+  std::set<int> N, O;
+  for (int i : spec.labels()) (spec.is_involutive_dim(i) ? N : O).insert(i);
+  return RewritingSystem(N, O, spec.cycle_pairs());
 }
 
-RewritingSystem RewritingSystem::omap(int n) {
-  std::set<int> N;
-  std::vector<std::pair<int, int>> E;
-  for (int i = 2; i <= n; ++i) N.insert(i);
-  for (int i = 1; i <= n; ++i)
-    for (int j = i + 2; j <= n; ++j) E.emplace_back(i, j);
-  return RewritingSystem(N, {1}, E);
-}
+RewritingSystem RewritingSystem::gmap(int n) { return of({n, MapKind::GMap}); }
+
+RewritingSystem RewritingSystem::omap(int n) { return of({n, MapKind::OMap}); }
 
 Letter RewritingSystem::normalize(Letter l) const {
   if (N_.count(l.dim)) return {l.dim, false};

@@ -16,6 +16,7 @@
 // Text form: letters are digits, "~" conjugates the next digit, spaces are ignored, "" or "eps"
 // is the empty word: "~2 3130201". Dimensions are single digits (0..9), as in the thesis.
 #pragma once
+#include "model/core/map_spec.hpp"
 #include <compare>
 #include <set>
 #include <string>
@@ -58,6 +59,8 @@ class RewritingSystem {
 
   // Throws Error(Schema) when N and O intersect or a pair of E is not (i < j) over N ∪ O.
   RewritingSystem(std::set<int> N, std::set<int> O, std::vector<std::pair<int, int>> E);
+  // The system of a map kind: N its involutive labels, O its oriented ones, E its cycle pairs.
+  static RewritingSystem of(const MapSpec& spec);
   // n-G-maps: N = 0..n, O = ∅, E = (0..n)_{+2}.
   static RewritingSystem gmap(int n);
   // n-O-maps: N = 2..n, O = {1}, E = (1..n)_{+2}.
