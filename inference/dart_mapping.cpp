@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
-#include "model/error.hpp"
-#include "model/json_reader.hpp"
-#include "model/json_writer.hpp"
-#include "model/orbit.hpp"
-#include "model/read_file.hpp"
+#include "model/core/error.hpp"
+#include "model/io/json_reader.hpp"
+#include "model/io/json_writer.hpp"
+#include "model/core/orbit.hpp"
+#include "model/io/read_file.hpp"
 
 namespace gmr::inference {
 

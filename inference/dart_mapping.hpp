@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "inference/joint_graph.hpp"
-#include "model/gmap.hpp"
-#include "model/orbit_type.hpp"
+#include "model/core/gmap.hpp"
+#include "model/core/orbit_type.hpp"
 
 namespace gmr::inference {
 

@@ -3,7 +3,7 @@
 #include <deque>
 #include <sstream>
 
-#include "model/error.hpp"
+#include "model/core/error.hpp"
 
 namespace gmr::inference {
 

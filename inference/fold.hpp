@@ -32,9 +32,9 @@
 
 #include "inference/joint_graph.hpp"
 #include "inference/relabeling.hpp"
-#include "model/orbit_type.hpp"
-#include "model/rule_scheme.hpp"
-#include "model/scheme_instantiation.hpp"
+#include "model/core/orbit_type.hpp"
+#include "model/scheme/rule_scheme.hpp"
+#include "model/scheme/scheme_instantiation.hpp"
 
 namespace gmr::inference {
 

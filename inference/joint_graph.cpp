@@ -1,6 +1,6 @@
 #include "inference/joint_graph.hpp"
 
-#include "model/error.hpp"
+#include "model/core/error.hpp"
 
 namespace gmr::inference {
 

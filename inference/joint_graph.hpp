@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "model/gmap.hpp"
+#include "model/core/gmap.hpp"
 
 namespace gmr::inference {
 

@@ -22,7 +22,7 @@
 #include <optional>
 #include <vector>
 
-#include "model/orbit_type.hpp"
+#include "model/core/orbit_type.hpp"
 
 namespace gmr::inference {
 

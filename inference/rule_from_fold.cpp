@@ -1,7 +1,7 @@
 #include "inference/rule_from_fold.hpp"
 
 
-#include "model/error.hpp"
+#include "model/core/error.hpp"
 
 namespace gmr::inference {
 

@@ -17,7 +17,7 @@
 
 #include "checker/scheme_checker.hpp"
 #include "inference/fold.hpp"
-#include "model/rule_scheme.hpp"
+#include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::inference {
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <numeric>
 
-#include "model/error.hpp"
+#include "model/core/error.hpp"
 
 namespace gmr::inference {
 

@@ -23,7 +23,7 @@
 #include <optional>
 #include <vector>
 
-#include "model/rule_scheme.hpp"
+#include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::inference {
 

@@ -4,12 +4,12 @@
 #include "inference/fold.hpp"
 #include "inference/infer.hpp"
 #include "inference/tests/inference_support.hpp"
-#include "model/builders.hpp"
-#include "model/dgraph.hpp"
-#include "model/io_off.hpp"
-#include "model/orbit.hpp"
-#include "model/scheme_instantiation.hpp"
-#include "model/signature.hpp"
+#include "model/core/builders.hpp"
+#include "model/graph/dgraph.hpp"
+#include "model/io/off.hpp"
+#include "model/core/orbit.hpp"
+#include "model/scheme/scheme_instantiation.hpp"
+#include "model/core/signature.hpp"
 
 using namespace gmr;
 using namespace gmr::inference;

@@ -8,7 +8,7 @@
 
 #include "inference/fold.hpp"
 #include "inference/joint_graph.hpp"
-#include "model/scheme_instantiation.hpp"
+#include "model/scheme/scheme_instantiation.hpp"
 
 namespace gmr::inference::test {
 

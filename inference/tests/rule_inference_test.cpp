@@ -7,13 +7,13 @@
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
 #include "inference/tests/inference_support.hpp"
-#include "model/builders.hpp"
-#include "model/error.hpp"
-#include "model/io_off.hpp"
-#include "model/scheme_engine.hpp"
-#include "model/scheme_json.hpp"
-#include "model/signature.hpp"
-#include "model/validity.hpp"
+#include "model/core/builders.hpp"
+#include "model/core/error.hpp"
+#include "model/io/off.hpp"
+#include "model/scheme/scheme_engine.hpp"
+#include "model/io/scheme_json.hpp"
+#include "model/core/signature.hpp"
+#include "model/core/validity.hpp"
 
 using namespace gmr;
 using namespace gmr::inference;
