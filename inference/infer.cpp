@@ -69,7 +69,7 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
         if (n.side == Side::L && !n.label.has_hole() && n.label.mask() == o.mask())
           for (uint32_t x : n.darts) marked[x] = 1;
       }
-      InferredRule r = rule_from_fold(f, j, "inferred_" + std::to_string(res.rules.size()));
+      InferredRule r = rule_from_fold(f, j, "inferred_" + std::to_string(res.rules.size()), opt.rule);
       if (!r.accepted()) {
         at.outcome = r.verdict == RuleVerdict::NoHook ? AttemptOutcome::NoHook : AttemptOutcome::Inconsistent;
         at.reason = r.reason;

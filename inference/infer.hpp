@@ -28,6 +28,7 @@ namespace gmr::inference {
 struct InferOptions {
   std::optional<OrbitType> orbit;  // none: every orbit type
   FoldOptions fold;
+  RuleOptions rule;  // posterior-cut loops
   // Called after each orbit type (index, count, the orbit type) — for progress on a terminal.
   std::function<void(size_t, size_t, const OrbitType&)> progress;
 };

@@ -14,7 +14,33 @@ const char* to_string(RuleVerdict v) {
   return "?";
 }
 
-InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std::string& name) {
+namespace {
+
+// Removes the explicit d-loops (d in mask) present on both copies of a preserved node.
+void cut_preserved_loops(RuleScheme& s, DimMask mask) {
+  auto is_loop_at = [](const SchemeArc& e, uint32_t v, DimMask m) {
+    return e.a == v && e.b == v && ((m >> e.dim) & 1u);
+  };
+  for (uint32_t v = 0; v < s.left.size(); ++v) {
+    const auto w = s.right_of(v);
+    if (!w) continue;
+    for (int d = 0; d <= s.dimension; ++d) {
+      if (!((mask >> d) & 1u)) continue;
+      const DimMask one = DimMask(1) << d;
+      bool in_l = false, in_r = false;
+      for (const auto& e : s.left.arcs) in_l = in_l || is_loop_at(e, v, one);
+      for (const auto& e : s.right.arcs) in_r = in_r || is_loop_at(e, *w, one);
+      if (!in_l || !in_r) continue;
+      std::erase_if(s.left.arcs, [&](const SchemeArc& e) { return is_loop_at(e, v, one); });
+      std::erase_if(s.right.arcs, [&](const SchemeArc& e) { return is_loop_at(e, *w, one); });
+    }
+  }
+}
+
+}  // namespace
+
+InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std::string& name,
+                            const RuleOptions& opt) {
   if (!f.ok()) throw Error(ErrorCode::Usage, "the fold failed: " + f.failure.message);
   InferredRule out;
   out.orbit = f.orbit;
@@ -57,6 +83,7 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
     GraphScheme& g = f.nodes[e.a].side == Side::L ? s.left : s.right;
     g.arcs.push_back({local[e.a], local[e.b], e.dim});
   }
+  if (opt.cut_loops) cut_preserved_loops(s, opt.cut_loops);
   // Hooks: one per L component.
   std::vector<uint32_t> comp;
   const size_t nc = s.left.components(comp);

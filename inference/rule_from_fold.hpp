@@ -8,6 +8,12 @@
 //  5. the scheme checker (checker/scheme_checker.hpp) runs; an inconsistent scheme is rejected with
 //  its diagnostics (thesis §7.2.4: a foldable scheme can be topologically invalid).
 //
+// Posterior-cut loops (thesis §7.3, Jerboa's parameter; digest ambiguity 9): for the dimensions of
+// `cut_loops`, an explicit d-loop on a PRESERVED node that is present on both sides is removed from
+// both sides (the only safe reading: the rule then neither requires nor touches the d-links of that
+// node, instead of demanding free cells). A loop only in L or only in R is kept (removing it would
+// change what the rule does).
+//
 // Names (deterministic): L nodes n0, n1, ... in fold creation order (n0 is the hook); an R node
 // κ-paired with an L node takes its name; the other R nodes continue the numbering in creation
 // order. Each node keeps the darts it stands for (the thesis' node -> darts association).
@@ -38,6 +44,11 @@ struct InferredRule {
 };
 
 // `f` must be a successful fold of `j`. `name` becomes the scheme's name.
-InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std::string& name = "inferred");
+struct RuleOptions {
+  DimMask cut_loops = 0;
+};
+
+InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std::string& name = "inferred",
+                            const RuleOptions& opt = {});
 
 }  // namespace gmr::inference
