@@ -1,6 +1,9 @@
 #include "inference/joint_graph.hpp"
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
 
 namespace gmr::inference {
 
@@ -40,6 +43,23 @@ JointGraph joint_from_map(const GMap& g, JointIndex* index) {
       j.set_nbr(idx[d], i, e < idx.size() ? idx[e] : kUndefined);
     }
   });
+  if (index) index->before = std::move(idx);
+  return j;
+}
+
+JointGraph joint_from_component(const GMap& g, Dart d, JointIndex* index) {
+  if (g.is_omap()) throw Error(ErrorCode::Usage, "topological folding works on G-maps, not O-maps");
+  if (!g.alive(d)) throw Error(ErrorCode::Range, "no dart " + std::to_string(d));
+  std::vector<Dart> comp = orbit(g, OrbitType::range(0, g.dimension()), d);
+  std::sort(comp.begin(), comp.end());
+  JointGraph j(g.dimension());
+  std::vector<uint32_t> idx(g.capacity(), kUndefined);
+  for (Dart e : comp) idx[e] = j.add_dart(Side::L, e);
+  for (Dart e : comp)
+    for (int i = 0; i <= g.dimension(); ++i) {
+      const Dart f = g.alpha(i, e);
+      j.set_nbr(idx[e], i, f < idx.size() ? idx[f] : kUndefined);
+    }
   if (index) index->before = std::move(idx);
   return j;
 }

@@ -71,4 +71,8 @@ struct JointIndex {
 // G-maps only (throws Error(Usage) for an O-map).
 JointGraph joint_from_map(const GMap& g, JointIndex* index = nullptr);
 
+// The connected component of dart d in g (its <0..n>-orbit), as joint_from_map does for the whole
+// map; index->before[e] = kUndefined for darts of other components.
+JointGraph joint_from_component(const GMap& g, Dart d, JointIndex* index = nullptr);
+
 }  // namespace gmr::inference
