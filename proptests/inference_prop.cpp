@@ -7,15 +7,20 @@
 //    a random connected map G gives H; inferring from (G, H) with the identity mapping (the engine
 //    keeps the ids of preserved darts) on S's orbit type from h, the inferred rule, when the checker
 //    accepts it, applied to G at its own hooks gives H up to isomorphism. It may legitimately differ
-//    from S: its L is the whole of G folded on <o> (G is the example, thesis §7.6), so it is S only
-//    when G is a single <o>-orbit; and where loops make several relabelings consistent it takes
-//    the documented first choice (inference/relabeling.hpp), which may differ from S's labels.
+//    from S: (1) its L is the whole of G folded on <o> (G is the example, thesis §7.6), so L is one
+//    node only when G is a single <o>-orbit; (2) free darts (loops) of G on preserved darts become
+//    explicit loops the rule demands (thesis §7.2.5; posterior-cut loops remove them); (3) where
+//    loops make several relabelings consistent, the documented first choice is taken
+//    (inference/relabeling.hpp). Tested statement: when G is a single <o>-orbit and neither G nor H
+//    has a free dart, the inferred rule is S up to rule-scheme isomorphism.
 #include <gtest/gtest.h>
 
 #include "inference/dart_mapping.hpp"
 #include "inference/fold.hpp"
 #include "inference/fold_check.hpp"
 #include "inference/rule_from_fold.hpp"
+#include "inference/scheme_isomorphism.hpp"
+#include "model/io/scheme_json.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
 #include "model/scheme/scheme_engine.hpp"
@@ -40,6 +45,13 @@ GMap component_map(const GMap& g, Dart d) {
   for (size_t k = 0; k < comp.size(); ++k)
     for (int i = 0; i <= g.dimension(); ++i) c.set_alpha(i, static_cast<Dart>(k), idx[g.alpha(i, comp[k])]);
   return c;
+}
+
+bool has_loop(const GMap& g) {
+  for (Dart d : g.darts())
+    for (int i = 0; i <= g.dimension(); ++i)
+      if (g.is_free(i, d)) return true;
+  return false;
 }
 
 }  // namespace
@@ -109,5 +121,13 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
     auto [again, app2] = apply_scheme(g, r.scheme, hooks);
     RC_ASSERT(app2.applied);
     RC_ASSERT(is_isomorphic(again, after));
+    // G is a single <o>-orbit and neither G nor H has a free dart: L is one node, no loop makes
+    // the relabeling ambiguous or adds an explicit loop, and the inferred rule is S itself up to
+    // isomorphism.
+    if (orbit(g, ls.scheme.orbit, h).size() == g.size() && !has_loop(g) && !has_loop(after)) {
+      RC_TAG("one orbit");
+      RC_LOG() << scheme_to_json_text(r.scheme);
+      RC_ASSERT(schemes_isomorphic(r.scheme, ls.scheme));
+    }
   }));
 }

@@ -243,6 +243,8 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
   const std::vector<Case> cases = {
       {"quad_subdivision", make_cube(), 0, make_torus(4, 3)},
       {"loop_subdivision", make_tetrahedron(), 0, make_cube()},
+      {"loop_subdivision", make_polygon(3), 0, make_tetrahedron()},  // Loop topology: triangle -> 4
+      {"quad_subdivision", make_polygon(4), 0, make_cube()},
       {"edge_triangulation", make_tetrahedron(), 0, make_prism(5)},
       {"face_triangulation", make_polygon(5), 1u << 2, make_polygon(7)},
       {"face_extrusion", make_polygon(4), 1u << 2, make_polygon(3)},
