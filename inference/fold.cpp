@@ -196,6 +196,7 @@ class Folder {
       for (int jd = 0; jd <= n_; ++jd)
         if (j_.nbr(dart(v, 0), jd) == dart(v, cb)) dims.push_back(jd);
       c.candidates.push_back(order_candidates(std::move(dims), o_[p], cb == 0, opt_.loops));
+      c.loop.push_back(cb == 0 ? 1 : 0);
     }
     uint32_t bad_b = 0;
     auto passes = [&](size_t p, int jd) {

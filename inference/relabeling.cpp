@@ -10,8 +10,11 @@ std::vector<int> order_candidates(std::vector<int> dims, int o_p, bool loop, con
   if (std::find(dims.begin(), dims.end(), o_p) != dims.end() && (!loop || policy.implicit(o_p))) out.push_back(o_p);
   for (int j : dims)
     if (j != o_p && (!loop || policy.implicit(j))) out.push_back(j);
-  // A position without candidate is a deletion; a loop position may always be read as explicit.
-  if (out.empty() || loop) out.push_back(OrbitType::kHole);
+  // `_` comes last at every position: a position without candidate is a deletion; a loop position
+  // may be read as an explicit loop; and a candidate already taken by another position (the thesis
+  // removes used dimensions from C before choosing, Alg. 6 buildOrbType) leaves a deletion.
+  (void)loop;
+  out.push_back(OrbitType::kHole);
   return out;
 }
 
@@ -32,9 +35,19 @@ struct Search {
   }
 
   // Calls f(label) for each consistent assignment; stops when f returns false.
+  // Rule 3: a deleted non-loop position needs all its candidates used elsewhere.
+  bool admissible() const {
+    for (size_t p = 0; p < label.size(); ++p) {
+      if (label[p] != OrbitType::kHole || (p < c.loop.size() && c.loop[p])) continue;
+      for (int j : c.candidates[p])
+        if (j != OrbitType::kHole && !((used >> j) & 1u)) return false;
+    }
+    return true;
+  }
+
   template <class F>
   bool run(size_t p, F& f) {
-    if (p == c.candidates.size()) return f(label);
+    if (p == c.candidates.size()) return admissible() ? f(label) : true;
     for (size_t k = 0; k < c.candidates[p].size(); ++k) {
       const int j = c.candidates[p][k];
       if (j != OrbitType::kHole && ((used >> j) & 1u)) continue;
@@ -61,13 +74,18 @@ RelabelingChoice choose_relabeling(const RelabelingCandidates& c, const std::fun
   };
   s.run(0, take);
   if (out.label) return out;
-  // Explain: the first position none of whose candidates passes on its own.
+  // Explain: the first non-loop position that has candidates, all failing the check.
   for (size_t p = 0; p < c.candidates.size(); ++p) {
-    bool any = false;
-    for (size_t k = 0; k < c.candidates[p].size(); ++k) any = any || s.test(p, k);
-    if (!any) {
+    if (p < c.loop.size() && c.loop[p]) continue;
+    bool any_candidate = false, any_pass = false;
+    for (size_t k = 0; k < c.candidates[p].size(); ++k) {
+      if (c.candidates[p][k] == OrbitType::kHole) continue;
+      any_candidate = true;
+      any_pass = any_pass || s.test(p, k);
+    }
+    if (any_candidate && !any_pass) {
       out.failed_position = static_cast<int>(p);
-      out.failed_dim = c.candidates[p].back();
+      out.failed_dim = c.candidates[p].front();
       return out;
     }
   }

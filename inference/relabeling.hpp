@@ -11,13 +11,22 @@
 //     j-loop then becoming an explicit loop of step 2.1. Implicit is tried first ("aggressive", the
 //     thesis' default); for the dimensions of LoopPolicy::explicit_loops (Jerboa's "excluded loops")
 //     the implicit reading is not offered at all ("conservative");
-//  3. the first assignment, in the lexicographic order of positions and candidates, that is
+//  3. `_` (deletion, no check needed, thesis §7.2.3) is the last option of every position, but at
+//     a non-loop position it is admissible only when each of the position's candidates is taken by
+//     another position (the thesis removes the dimensions used by earlier positions from C and
+//     deletes the position when none is left). A non-loop position deleted while one of its
+//     candidates j stays unused would meet an arc failure on j in step 2.1 ((a,v) –j– (c,v) with
+//     c != a), so such assignments are never useful: the node is then a relabeling failure, as in
+//     the thesis;
+//  4. the first assignment, in the lexicographic order of positions and candidates, that is
 //     injective and passes the full relabeling check of every position is taken (backtracking over
-//     positions; |o| <= n+1 is tiny). A position with no candidate gets `_` (deletion, no check
-//     needed, thesis §7.2.3).
+//     positions; |o| <= n+1 is tiny).
+// Found by the exhaustive completeness test (inference/tests/completeness_test.cpp): offering `_`
+// only to positions without candidates missed schemes on maps where a@o_p = a@o_q.
 // When no assignment exists the node is a relabeling failure. `enumerate` lists every consistent
 // assignment in the same order (the plurality of answers, thesis §7.6).
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -34,6 +43,7 @@ struct LoopPolicy {
 struct RelabelingCandidates {
   // candidates[p]: ordered dimensions (OrbitType::kHole = `_`), already following rules 1–2.
   std::vector<std::vector<int>> candidates;
+  std::vector<uint8_t> loop;  // loop[p]: c == a (the start dart has an o_p-loop)
 };
 
 // Orders the raw candidate set of a position (rule 1 and 2). `dims` are the j with (a,v)–j–(c,v);

@@ -1,5 +1,5 @@
 // `gmr fold MAP --orbit "<0,1,2>" --dart D [--json] [--explicit-loops 2,3]`:
-// topological folding of a connected G-map (thesis Alg. 6, inference/fold.hpp). Prints the graph
+// topological folding of the connected component of dart D (thesis Alg. 6, inference/fold.hpp). Prints the graph
 // scheme (nodes "n3 <2,1>", their darts, explicit arcs) or the named failure (arc failure,
 // instantiation failure, relabeling failure, partial neighbourhood, instantiation not spanning all
 // links, ...) with the darts and dimension involved. Exit 0 when the map folds, 1 when it does not,
@@ -29,7 +29,7 @@ int run_fold(const FoldArgs& a) {
   if (a.dart < 0 || a.dart > UINT32_MAX || !f.map.alive(static_cast<Dart>(a.dart)))
     throw Error(ErrorCode::Usage, std::to_string(a.dart) + " is not a dart of the map", "--dart");
   JointIndex index;
-  const JointGraph j = joint_from_map(f.map, &index);
+  const JointGraph j = joint_from_component(f.map, static_cast<Dart>(a.dart), &index);
   FoldOptions opt;
   opt.loops.explicit_loops = parse_dimension_list(a.explicit_loops, f.map.dimension(), "--explicit-loops");
   const FoldResult r = fold(j, o, index.before[static_cast<Dart>(a.dart)], opt);
