@@ -11,8 +11,10 @@
 //    node only when G is a single <o>-orbit; (2) free darts (loops) of G on preserved darts become
 //    explicit loops the rule demands (thesis §7.2.5; posterior-cut loops remove them); (3) where
 //    loops make several relabelings consistent, the documented first choice is taken
-//    (inference/relabeling.hpp). Tested statement: when G is a single <o>-orbit and neither G nor H
-//    has a free dart, the inferred rule is S up to rule-scheme isomorphism.
+//    (inference/relabeling.hpp), also when two dimensions link the same darts (degenerate maps).
+//    Tested statement: when G is a single <o>-orbit and G and H have no free dart and no two
+//    dimensions linking a dart to the same neighbour, the inferred rule is S up to rule-scheme
+//    isomorphism.
 #include <gtest/gtest.h>
 
 #include "inference/dart_mapping.hpp"
@@ -47,11 +49,16 @@ GMap component_map(const GMap& g, Dart d) {
   return c;
 }
 
-bool has_loop(const GMap& g) {
+// No free dart and no two dimensions linking a dart to the same neighbour: every candidate set of
+// a relabeling (inference/relabeling.hpp) then has at most one dimension.
+bool is_simple(const GMap& g) {
   for (Dart d : g.darts())
-    for (int i = 0; i <= g.dimension(); ++i)
-      if (g.is_free(i, d)) return true;
-  return false;
+    for (int i = 0; i <= g.dimension(); ++i) {
+      if (g.is_free(i, d)) return false;
+      for (int k = 0; k < i; ++k)
+        if (g.alpha(k, d) == g.alpha(i, d)) return false;
+    }
+  return true;
 }
 
 }  // namespace
@@ -121,10 +128,10 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
     auto [again, app2] = apply_scheme(g, r.scheme, hooks);
     RC_ASSERT(app2.applied);
     RC_ASSERT(is_isomorphic(again, after));
-    // G is a single <o>-orbit and neither G nor H has a free dart: L is one node, no loop makes
-    // the relabeling ambiguous or adds an explicit loop, and the inferred rule is S itself up to
-    // isomorphism.
-    if (orbit(g, ls.scheme.orbit, h).size() == g.size() && !has_loop(g) && !has_loop(after)) {
+    // G is a single <o>-orbit and G and H are simple (no free dart, no parallel links): L is one
+    // node, no loop adds an explicit arc, every relabeling is forced, and the inferred rule is S
+    // itself up to isomorphism.
+    if (orbit(g, ls.scheme.orbit, h).size() == g.size() && is_simple(g) && is_simple(after)) {
       RC_TAG("one orbit");
       RC_LOG() << scheme_to_json_text(r.scheme);
       RC_ASSERT(schemes_isomorphic(r.scheme, ls.scheme));
