@@ -282,3 +282,35 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
     }
   }
 }
+
+// Powell–Sabin 6-split (thesis §7.4, a Jerboa rule inferred from an example): the after object is
+// built by applying library operations in sequence — vertex insertion on each edge of a triangle,
+// then face triangulation of the resulting hexagon (6 -> 36 darts). Inferred on <0,1,2>, the rule
+// has 6 R nodes; it is the library's barycentric "edge triangulation" up to rule-scheme isomorphism,
+// and applied to a unit square, a quad grid and a tetrahedron it agrees with it (signatures).
+TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
+  const RuleScheme vi = read_scheme_file(rule_file("vertex_insertion"));
+  const RuleScheme ft = read_scheme_file(rule_file("face_triangulation"));
+  const RuleScheme et = read_scheme_file(rule_file("edge_triangulation"));
+  const GMap tri = make_polygon(3);
+  GMap after = tri;
+  for (Dart e : {Dart{0}, Dart{2}, Dart{4}}) ASSERT_TRUE(apply_scheme_in_place(after, vi, {e}).applied);
+  ASSERT_TRUE(apply_scheme_in_place(after, ft, {0}).applied);
+  ASSERT_EQ(after.size(), 36u);
+  const JointGraph j = joint_from_pair(tri, after, identity_mapping(tri, after));
+  InferOptions opt;
+  opt.orbit = ot("<0,1,2>");
+  const InferenceResult res = infer_rules(j, opt);
+  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  const RuleScheme& ps = res.rules[0].scheme;
+  EXPECT_EQ(ps.left.size(), 1u);
+  EXPECT_EQ(ps.right.size(), 6u);
+  EXPECT_TRUE(schemes_isomorphic(ps, et)) << scheme_to_json_text(ps);
+  for (const GMap& g : {make_grid(1, 1), make_grid(3, 2), make_tetrahedron()}) {
+    auto [mine, a1] = apply_scheme(g, ps, {0});
+    auto [theirs, a2] = apply_scheme(g, et, {0});
+    ASSERT_TRUE(a1.applied && a2.applied);
+    EXPECT_EQ(mine.size(), 6 * g.size());
+    EXPECT_EQ(signature(mine), signature(theirs));
+  }
+}
