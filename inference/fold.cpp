@@ -207,11 +207,22 @@ class Folder {
         }
       return true;
     };
+    if (opt_.record_alternatives) {
+      const auto all = enumerate_relabelings(c, passes);
+      r_.alternatives.push_back(static_cast<uint32_t>(all.size()));
+      const size_t k = v - 1;
+      const size_t pick = k < opt_.choices.size() ? opt_.choices[k] : 0;
+      if (pick < all.size()) {
+        r_.nodes[v].label = OrbitType(all[pick]);
+        return true;
+      }
+    }
     const RelabelingChoice ch = choose_relabeling(c, passes);
-    if (ch.label) {
+    if (ch.label && !opt_.record_alternatives) {
       r_.nodes[v].label = OrbitType(*ch.label);
       return true;
     }
+    if (ch.label) throw Error(ErrorCode::Usage, "relabeling choice out of range at node " + node_name(v));
     const auto p = static_cast<size_t>(ch.failed_position);
     const int jd = ch.failed_dim;
     std::string why;
@@ -319,6 +330,40 @@ FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const F
   FoldResult r;
   Folder(j, o, start, opt, r).run();
   return r;
+}
+
+FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, size_t limit) {
+  FoldAll out;
+  FoldOptions o2 = opt;
+  o2.record_alternatives = true;
+  // Depth-first over choice vectors: each run fixes a prefix; the nodes after it take choice 0,
+  // and each of their other alternatives becomes a new prefix.
+  std::vector<std::vector<uint32_t>> todo{opt.choices};
+  while (!todo.empty()) {
+    if (out.runs == limit) {
+      out.truncated = true;
+      break;
+    }
+    std::vector<uint32_t> prefix = std::move(todo.back());
+    todo.pop_back();
+    o2.choices = prefix;
+    FoldResult r = fold(j, o, start, o2);
+    ++out.runs;
+    for (size_t k = r.alternatives.size(); k-- > prefix.size();)
+      for (uint32_t c = r.alternatives[k]; c-- > 1;) {
+        std::vector<uint32_t> next = prefix;
+        next.resize(k, 0);
+        next.push_back(c);
+        todo.push_back(std::move(next));
+      }
+    if (r.ok()) {
+      std::vector<uint32_t> full = prefix;
+      full.resize(r.alternatives.size(), 0);
+      out.choices.push_back(std::move(full));
+      out.folds.push_back(std::move(r));
+    }
+  }
+  return out;
 }
 
 GraphScheme to_graph_scheme(const FoldResult& f) {

@@ -76,6 +76,12 @@ struct FoldArc {
 
 struct FoldOptions {
   LoopPolicy loops;
+  // Plurality of answers (thesis §7.6): when set, every node built after the hook records how many
+  // consistent relabelings it has (FoldResult::alternatives, in the order of
+  // enumerate_relabelings), and node k takes the choices[k-1]-th of them (0, the documented default
+  // choice, for nodes beyond the vector). fold_all walks every combination.
+  bool record_alternatives = false;
+  std::vector<uint32_t> choices;
 };
 
 struct FoldResult {
@@ -88,11 +94,25 @@ struct FoldResult {
   bool ok() const { return failure.kind == FoldFailureKind::None; }
   // The node of J-dart x and its orbit index (valid on success).
   std::vector<uint32_t> node_of, index_of;
+  // With FoldOptions::record_alternatives: alternatives[k-1] = number of consistent relabelings of
+  // node k (k >= 1, nodes built before the end or the failure).
+  std::vector<uint32_t> alternatives;
 };
 
 // Algorithm 6. Throws Error(Usage) when <o> has `_`, repeats a dimension or exceeds n, when the
 // start dart is out of range or on side R. Failure is a result, never an exception.
 FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt = {});
+
+// Every successful fold over all combinations of consistent relabelings (the default choice first),
+// at most `limit` folds run. Each result carries its choices in FoldResult::alternatives' order.
+struct FoldAll {
+  std::vector<FoldResult> folds;
+  std::vector<std::vector<uint32_t>> choices;  // choices[i]: the choice vector of folds[i]
+  size_t runs = 0;
+  bool truncated = false;  // the limit was reached
+};
+FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt = {},
+                 size_t limit = 1000);
 
 // "n<k>".
 std::string node_name(uint32_t k);

@@ -42,55 +42,64 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
   InferenceResult res;
   const std::vector<OrbitType> types = opt.orbit ? std::vector<OrbitType>{*opt.orbit} : all_orbit_types(j.dimension());
   std::vector<uint8_t> marked(j.size());
+  auto process = [&](const FoldResult& f, const OrbitType& o, uint32_t a) {
+    InferAttempt at;
+    at.orbit = o;
+    at.start = a;
+    at.start_text = j.describe(a);
+    marked[a] = 1;
+    if (!f.nodes.empty())
+      for (uint32_t x : f.nodes[0].darts)
+        if (x != kUndefined) marked[x] = 1;
+    if (!f.ok()) {
+      at.outcome = AttemptOutcome::FoldFailed;
+      at.failure = f.failure;
+      at.reason = f.failure.message;
+      for (const auto& n : f.nodes) (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
+      res.attempts.push_back(std::move(at));
+      return;
+    }
+    for (const auto& n : f.nodes) {
+      (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
+      if (n.side == Side::L && !n.label.has_hole() && n.label.mask() == o.mask())
+        for (uint32_t x : n.darts) marked[x] = 1;
+    }
+    InferredRule r = rule_from_fold(f, j, "inferred_" + std::to_string(res.rules.size()), opt.rule);
+    if (!r.accepted()) {
+      at.outcome = r.verdict == RuleVerdict::NoHook ? AttemptOutcome::NoHook : AttemptOutcome::Inconsistent;
+      at.reason = r.reason;
+      at.rejected = std::move(r);
+      res.attempts.push_back(std::move(at));
+      return;
+    }
+    int dup = -1;
+    for (size_t k = 0; k < res.rules.size() && dup < 0; ++k)
+      if (schemes_isomorphic(r.scheme, res.rules[k].scheme)) dup = static_cast<int>(k);
+    if (dup >= 0) {
+      at.outcome = AttemptOutcome::Duplicate;
+      at.rule = dup;
+      ++res.duplicates[static_cast<size_t>(dup)];
+    } else {
+      at.outcome = AttemptOutcome::Accepted;
+      at.rule = static_cast<int>(res.rules.size());
+      res.rules.push_back(std::move(r));
+      res.duplicates.push_back(0);
+    }
+    res.attempts.push_back(std::move(at));
+  };
   for (size_t t = 0; t < types.size(); ++t) {
     const OrbitType& o = types[t];
     std::fill(marked.begin(), marked.end(), 0);
     for (uint32_t a = 0; a < j.size(); ++a) {
       if (j.side(a) != Side::L || marked[a]) continue;
-      const FoldResult f = fold(j, o, a, opt.fold);
-      InferAttempt at;
-      at.orbit = o;
-      at.start = a;
-      at.start_text = j.describe(a);
-      marked[a] = 1;
-      if (!f.nodes.empty())
-        for (uint32_t x : f.nodes[0].darts)
-          if (x != kUndefined) marked[x] = 1;
-      if (!f.ok()) {
-        at.outcome = AttemptOutcome::FoldFailed;
-        at.failure = f.failure;
-        at.reason = f.failure.message;
-        for (const auto& n : f.nodes) (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
-        res.attempts.push_back(std::move(at));
-        continue;
+      std::vector<FoldResult> folds;
+      if (opt.all_relabelings) {
+        FoldAll all = fold_all(j, o, a, opt.fold, opt.relabeling_limit);
+        folds = std::move(all.folds);
+        res.truncated = res.truncated || all.truncated;
       }
-      for (const auto& n : f.nodes) {
-        (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
-        if (n.side == Side::L && !n.label.has_hole() && n.label.mask() == o.mask())
-          for (uint32_t x : n.darts) marked[x] = 1;
-      }
-      InferredRule r = rule_from_fold(f, j, "inferred_" + std::to_string(res.rules.size()), opt.rule);
-      if (!r.accepted()) {
-        at.outcome = r.verdict == RuleVerdict::NoHook ? AttemptOutcome::NoHook : AttemptOutcome::Inconsistent;
-        at.reason = r.reason;
-        at.rejected = std::move(r);
-        res.attempts.push_back(std::move(at));
-        continue;
-      }
-      int dup = -1;
-      for (size_t k = 0; k < res.rules.size() && dup < 0; ++k)
-        if (schemes_isomorphic(r.scheme, res.rules[k].scheme)) dup = static_cast<int>(k);
-      if (dup >= 0) {
-        at.outcome = AttemptOutcome::Duplicate;
-        at.rule = dup;
-        ++res.duplicates[static_cast<size_t>(dup)];
-      } else {
-        at.outcome = AttemptOutcome::Accepted;
-        at.rule = static_cast<int>(res.rules.size());
-        res.rules.push_back(std::move(r));
-        res.duplicates.push_back(0);
-      }
-      res.attempts.push_back(std::move(at));
+      if (folds.empty()) folds.push_back(fold(j, o, a, opt.fold));
+      for (const FoldResult& f : folds) process(f, o, a);
     }
     if (opt.progress) opt.progress(t + 1, types.size(), o);
   }
@@ -113,7 +122,9 @@ std::string summary_text(const InferenceResult& r) {
   os << r.rules.size() << " rule(s) inferred";
   size_t dups = 0;
   for (size_t d : r.duplicates) dups += d;
-  os << ", " << dups << " duplicate(s) merged\n";
+  os << ", " << dups << " duplicate(s) merged";
+  if (r.truncated) os << " (relabeling enumeration truncated at its limit)";
+  os << "\n";
   return os.str();
 }
 

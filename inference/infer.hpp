@@ -4,7 +4,8 @@
 // For each orbit type <o> (the given one, or all 2^(n+1) subsets of 0..n, by increasing size, then
 // lexicographically: <>, <0>, <1>, ..., <0,1,...,n>), for each L dart a of the joint graph in
 // increasing index order that is not marked for <o>:
-//   fold(J, <o>, a) (fold.hpp); then mark (the digest's [D] rule, the thesis leaving it open):
+//   fold(J, <o>, a) (fold.hpp) — or, with all_relabelings, every fold over the combinations of
+//   consistent relabelings (fold_all), each processed as below; then mark (the digest's [D] rule, the thesis leaving it open):
 //    * the whole hook orbit J<o>(a), after a success or a failure: instantiation does not depend on
 //      which dart of O is the start, so every dart of O would give the same answer;
 //    * after a success, also the darts of every L node whose decoration has no `_` and whose set is
@@ -29,6 +30,10 @@ struct InferOptions {
   std::optional<OrbitType> orbit;  // none: every orbit type
   FoldOptions fold;
   RuleOptions rule;  // posterior-cut loops
+  // Plurality of answers (thesis §7.6): fold every combination of consistent relabelings
+  // (fold_all, at most relabeling_limit folds per start dart) instead of the default choice only.
+  bool all_relabelings = false;
+  size_t relabeling_limit = 1000;
   // Called after each orbit type (index, count, the orbit type) — for progress on a terminal.
   std::function<void(size_t, size_t, const OrbitType&)> progress;
 };
@@ -52,6 +57,7 @@ struct InferenceResult {
   std::vector<InferredRule> rules;        // accepted, pairwise non-isomorphic
   std::vector<size_t> duplicates;         // duplicates[k]: attempts merged into rules[k]
   std::vector<InferAttempt> attempts;
+  bool truncated = false;  // all_relabelings: some start dart reached relabeling_limit
 };
 
 // Orbit types tried when none is given.

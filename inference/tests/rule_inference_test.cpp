@@ -314,3 +314,29 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
     EXPECT_EQ(signature(mine), signature(theirs));
   }
 }
+
+// Plurality of answers (thesis §7.2.5 and §7.6): on a free edge, dual-vertex insertion needs an
+// explicit loop at n0 and an implicit one at n1, which no loop policy gives (see above). Folding
+// every combination of consistent relabelings (fold_all) finds it: one of the inferred rules, with
+// the 1-loops of preserved nodes cut, is the library scheme.
+TEST(RuleInference, EnumeratingRelabelingsFindsMixedLoopReadings) {
+  const RuleScheme lib = read_scheme_file(rule_file("dual_vertex_insertion"));
+  const GMap edge = make_free_edge();
+  const GMap after = applied(edge, lib, 0);
+  const JointGraph j = joint_from_pair(edge, after, identity_mapping(edge, after));
+  const FoldAll all = fold_all(j, lib.orbit, 0);
+  EXPECT_FALSE(all.truncated);
+  ASSERT_GE(all.folds.size(), 2u);
+  for (const auto& f : all.folds) EXPECT_TRUE(instantiates_back(f, j));
+  EXPECT_EQ(all.choices[0], std::vector<uint32_t>(all.choices[0].size(), 0));  // the default first
+  InferOptions opt;
+  opt.orbit = lib.orbit;
+  opt.rule.cut_loops = 1u << 1;
+  EXPECT_FALSE(schemes_isomorphic(infer_rules(j, opt).rules.at(0).scheme, lib));
+  opt.all_relabelings = true;
+  const InferenceResult res = infer_rules(j, opt);
+  size_t found = 0;
+  for (const auto& r : res.rules) found += schemes_isomorphic(r.scheme, lib);
+  EXPECT_EQ(found, 1u) << summary_text(res);
+  EXPECT_GE(res.rules.size(), 2u);
+}

@@ -1,5 +1,5 @@
 // `gmr infer BEFORE AFTER [--orbit O | --all-orbits] [--map PAIRS.json] [-o DIR] [--json]
-//  [--explicit-loops 2] [--cut-loops 1,2]`: rule inference by topological folding (thesis Ch. 7, inference/infer.hpp).
+//  [--explicit-loops 2] [--cut-loops 1,2] [--all-relabelings]`: rule inference by topological folding (thesis Ch. 7, inference/infer.hpp).
 // The preserved darts are given by a gmr.mapping file (--map: dart pairs and orbit pairs,
 // inference/dart_mapping.hpp) or, by default, by identity on dart ids (darts alive in both maps).
 // Without --orbit every orbit type is tried (progress on standard error when it is a terminal).
@@ -31,7 +31,7 @@ namespace {
 
 struct InferArgs {
   std::string before, after, from, orbit, map, output, explicit_loops, cut_loops;
-  bool all_orbits = false, json = false;
+  bool all_orbits = false, json = false, all_relabelings = false;
 };
 
 int run_infer(const InferArgs& a) {
@@ -49,6 +49,7 @@ int run_infer(const InferArgs& a) {
   InferOptions opt;
   if (!a.orbit.empty()) opt.orbit = parse_orbit_option(a.orbit, "--orbit");
   opt.fold.loops.explicit_loops = parse_dimension_list(a.explicit_loops, g.map.dimension(), "--explicit-loops");
+  opt.all_relabelings = a.all_relabelings;
   opt.rule.cut_loops = parse_dimension_list(a.cut_loops, g.map.dimension(), "--cut-loops");
   const bool tty = isatty(STDERR_FILENO) != 0;
   if (tty && !opt.orbit)
@@ -125,6 +126,8 @@ void register_infer(CLI::App& app) {
   sub->add_option("--map", args->map, "Preserved darts: gmr.mapping file (dart pairs, orbit pairs); default identity on dart ids");
   sub->add_option("--explicit-loops", args->explicit_loops,
                   "Dimensions whose loops are always explicit arcs (conservative), e.g. 2 or 0,2 (default: implicit first)");
+  sub->add_flag("--all-relabelings", args->all_relabelings,
+                "Fold every combination of consistent relabelings (thesis §7.6), not only the documented default choice");
   sub->add_option("--cut-loops", args->cut_loops,
                   "Posterior-cut loops: remove explicit loops of these dimensions present on both copies of a preserved node, e.g. 2");
   sub->add_option("-o,--output", args->output, "Directory for rule_k.json/.dot, rejected_k.json/.dot and summary.txt");
