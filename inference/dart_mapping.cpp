@@ -38,7 +38,7 @@ DartMapping parse_mapping(std::string_view text, const std::string& source) {
   const nlohmann::json doc = parse_json(text, source);
   const JsonAt root(doc, source);
   root.check_header(kFormat, kVersion);
-  root.allow_only({"format", "version", "pairs", "orbits"});
+  root.allow_only({"format", "version", "pairs", "orbits", "before_selection", "after_selection"});
   DartMapping m;
   if (auto pairs = root.get("pairs")) {
     for (size_t k = 0; k < pairs->array_size(); ++k) {
@@ -64,6 +64,12 @@ DartMapping parse_mapping(std::string_view text, const std::string& source) {
       m.orbits.push_back(op);
     }
   }
+  for (const char* key : {"before_selection", "after_selection"})
+    if (auto sel = root.get(key)) {
+      std::vector<Dart> darts;
+      for (size_t k = 0; k < sel->array_size(); ++k) darts.push_back(read_dart((*sel)[k]));
+      (std::string(key) == "before_selection" ? m.before_selection : m.after_selection) = std::move(darts);
+    }
   return m;
 }
 
@@ -85,6 +91,8 @@ std::string mapping_to_json_text(const DartMapping& m) {
                         {"after_orbit", o.after_orbit.str()}});
     j["orbits"] = orbits;
   }
+  if (m.before_selection) j["before_selection"] = *m.before_selection;
+  if (m.after_selection) j["after_selection"] = *m.after_selection;
   return dump_json(j);
 }
 
@@ -149,12 +157,39 @@ JointGraph joint_from_pair(const GMap& before, const GMap& after, const DartMapp
                                       " and the after map " + std::to_string(after.dimension()));
   const auto pairs = expand_mapping(before, after, m);
   const int n = before.dimension();
+  // Selected darts (all live darts without a selection).
+  auto selected = [](const GMap& g, const std::optional<std::vector<Dart>>& sel, const char* key) {
+    std::vector<uint8_t> in(g.capacity(), 0);
+    if (!sel) {
+      g.for_each_dart([&](Dart d) { in[d] = 1; });
+      return in;
+    }
+    for (size_t k = 0; k < sel->size(); ++k) {
+      const Dart d = (*sel)[k];
+      if (!g.alive(d))
+        throw Error(ErrorCode::Schema, "no dart " + std::to_string(d) + " in the map",
+                    std::string(key) + "[" + std::to_string(k) + "]");
+      in[d] = 1;
+    }
+    return in;
+  };
+  const auto sb = selected(before, m.before_selection, "before_selection");
+  const auto sa = selected(after, m.after_selection, "after_selection");
+  for (auto [g, h] : pairs) {
+    if (!sb[g]) throw Error(ErrorCode::Schema, "before dart " + std::to_string(g) + " is mapped but not selected", "before_selection");
+    if (!sa[h]) throw Error(ErrorCode::Schema, "after dart " + std::to_string(h) + " is mapped but not selected", "after_selection");
+  }
   JointGraph j(n);
   std::vector<uint32_t> ib(before.capacity(), kUndefined), ia(after.capacity(), kUndefined);
-  before.for_each_dart([&](Dart d) { ib[d] = j.add_dart(Side::L, d); });
-  after.for_each_dart([&](Dart d) { ia[d] = j.add_dart(Side::R, d); });
+  before.for_each_dart([&](Dart d) {
+    if (sb[d]) ib[d] = j.add_dart(Side::L, d);
+  });
+  after.for_each_dart([&](Dart d) {
+    if (sa[d]) ia[d] = j.add_dart(Side::R, d);
+  });
   auto copy = [&](const GMap& g, const std::vector<uint32_t>& idx) {
     g.for_each_dart([&](Dart d) {
+      if (idx[d] == kUndefined) return;
       for (int i = 0; i <= n; ++i) {
         const Dart e = g.alpha(i, d);
         j.set_nbr(idx[d], i, e < idx.size() ? idx[e] : kUndefined);

@@ -13,12 +13,18 @@
 //     "format": "gmr.mapping", "version": 1,
 //     "pairs":  [[0, 0], [5, 11]],                            optional: dart pairs [before, after]
 //     "orbits": [{"before": 3, "after": 7, "orbit": "<0,1>",   optional: orbit pairs; "after_orbit"
-//                 "after_orbit": "<0,1>"}]                     defaults to "orbit"
+//                 "after_orbit": "<0,1>"}],                    defaults to "orbit"
+//     "before_selection": [0, 1],                              optional: the darts in scope
+//     "after_selection": [0, 1, 8, 9]
 //   }
+// Selections (thesis §7.1.2, local operations): when a side has one, only its selected darts enter
+// the joint graph, and a link to an unselected dart becomes an undefined neighbour (folding then
+// leaves that dimension out of the rule at that node, all or none). Mapped darts must be selected.
 // Readers report the first problem by JSON path (Error(Schema)); pairs are validated against the
 // two maps (live darts, injectivity both ways, isomorphic orbits).
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -38,6 +44,7 @@ struct OrbitPair {
 struct DartMapping {
   std::vector<std::pair<Dart, Dart>> pairs;
   std::vector<OrbitPair> orbits;
+  std::optional<std::vector<Dart>> before_selection, after_selection;
 };
 
 // Every dart id alive in both maps, paired with itself.
@@ -53,8 +60,10 @@ std::string mapping_to_json_text(const DartMapping& m);
 std::vector<std::pair<Dart, Dart>> expand_mapping(const GMap& before, const GMap& after,
                                                    const DartMapping& m);
 
-// κ(G, H) (thesis Def. 36 on maps): the darts of G on side L, then those of H on side R, links
-// copied, one κ-link per mapped pair. Both maps must be G-maps of the same dimension.
+// κ(G, H) (thesis Def. 36 on maps): the (selected) darts of G on side L, then those of H on side R,
+// links copied (undefined towards unselected darts), one κ-link per mapped pair. Both maps must be
+// G-maps of the same dimension. Throws Error(Schema) for a selected dart that does not exist or a
+// mapped dart that is not selected ("before_selection[k]", "pairs[k]").
 JointGraph joint_from_pair(const GMap& before, const GMap& after, const DartMapping& m,
                            JointIndex* index = nullptr);
 

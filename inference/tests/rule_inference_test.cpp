@@ -207,7 +207,7 @@ TEST(DartMapping, FileErrorsAreLocated) {
     EXPECT_EQ(e.location(), "pairs[1]");
     EXPECT_NE(e.message().find("image of two darts"), std::string::npos);
   }
-  EXPECT_THROW(joint_from_pair(tri, hex, DartMapping{{{6, 0}}, {}}), Error);
+  EXPECT_THROW(joint_from_pair(tri, hex, DartMapping{{{6, 0}}, {}, {}, {}}), Error);
 }
 
 // Orbit pairs are expanded with Alg. 5: the hexagon's face paired with the triangle's... is not
@@ -339,4 +339,30 @@ TEST(RuleInference, EnumeratingRelabelingsFindsMixedLoopReadings) {
   for (const auto& r : res.rules) found += schemes_isomorphic(r.scheme, lib);
   EXPECT_EQ(found, 1u) << summary_text(res);
   EXPECT_GE(res.rules.size(), 2u);
+}
+
+// Selections (thesis §7.1.2, local operations): vertex insertion applied to ONE edge of a square.
+// Without a selection the example is the whole square (L = 4 nodes); with the edge's 2 darts
+// selected before and its 4 darts after (tests/data/square_one_edge_selection.json), the 1-links
+// to the rest of the square become undefined neighbours and the library scheme comes back.
+TEST(RuleInference, SelectionInfersALocalOperation) {
+  const RuleScheme vi = read_scheme_file(rule_file("vertex_insertion"));
+  const GMap sq = make_polygon(4);
+  const GMap after = applied(sq, vi, 0);
+  ASSERT_EQ(after.size(), 10u);
+  InferOptions opt;
+  opt.orbit = ot("<0,2>");
+  const InferenceResult whole = infer_rules(joint_from_pair(sq, after, identity_mapping(sq, after)), opt);
+  ASSERT_EQ(whole.rules.size(), 1u);
+  EXPECT_EQ(whole.rules[0].scheme.left.size(), 4u);
+  const DartMapping m = read_mapping_file(data("square_one_edge_selection.json"));
+  const JointGraph j = joint_from_pair(sq, after, m);
+  EXPECT_EQ(j.size(), 6u);
+  const InferenceResult local = infer_rules(j, opt);
+  ASSERT_EQ(local.rules.size(), 1u) << summary_text(local);
+  EXPECT_TRUE(schemes_isomorphic(local.rules[0].scheme, vi)) << scheme_to_json_text(local.rules[0].scheme);
+  // A mapped dart outside the selection is refused.
+  DartMapping bad = m;
+  bad.pairs.emplace_back(2, 2);
+  EXPECT_THROW(joint_from_pair(sq, after, bad), Error);
 }
