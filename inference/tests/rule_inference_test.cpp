@@ -2,6 +2,7 @@
 // hooks, the scheme checker; the thesis' triangle -> hexagon cases and the quad subdivision.
 #include <gtest/gtest.h>
 
+#include "checker/scheme_checker.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
 #include "inference/rule_from_fold.hpp"
@@ -365,4 +366,35 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
   DartMapping bad = m;
   bad.pairs.emplace_back(2, 2);
   EXPECT_THROW(joint_from_pair(sq, after, bad), Error);
+}
+
+// Doo–Sabin iterations 1, 2, 3, each inferred directly from iteration 0 (thesis §7.4.3): the after
+// object is the cube subdivided k times by a Doo–Sabin scheme (tests/data/doo_sabin.json, accepted
+// by the checker); the engine keeps the ids of preserved darts, so the identity mapping relates
+// iteration 0 and iteration k. R has 4, 16, 64 nodes on the closed cube; iteration 1 is the scheme
+// itself; applied to a tetrahedron, the inferred iteration-k rule equals k Doo–Sabin steps.
+TEST(RuleInference, DooSabinIterationsFromIterationZero) {
+  const RuleScheme ds = read_scheme_file(data("doo_sabin.json"));
+  ASSERT_TRUE(check_scheme(ds).ok());
+  const GMap cube = make_cube();
+  GMap after = cube, tetra_k = make_tetrahedron();
+  size_t nodes = 1;
+  for (int k = 1; k <= 3; ++k) {
+    SCOPED_TRACE(k);
+    ASSERT_TRUE(apply_scheme_in_place(after, ds, {0}).applied);
+    ASSERT_TRUE(apply_scheme_in_place(tetra_k, ds, {0}).applied);
+    nodes *= 4;
+    const JointGraph j = joint_from_pair(cube, after, identity_mapping(cube, after));
+    InferOptions opt;
+    opt.orbit = ot("<0,1,2>");
+    const InferenceResult res = infer_rules(j, opt);
+    ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+    const RuleScheme& r = res.rules[0].scheme;
+    EXPECT_EQ(r.left.size(), 1u);
+    EXPECT_EQ(r.right.size(), nodes);
+    EXPECT_EQ(schemes_isomorphic(r, ds), k == 1);
+    auto [got, app] = apply_scheme(make_tetrahedron(), r, {0});
+    ASSERT_TRUE(app.applied);
+    EXPECT_EQ(signature(got), signature(tetra_k));
+  }
 }
