@@ -13,6 +13,7 @@
 #include "model/io/off.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/io/scheme_json.hpp"
+#include "model/core/orbit.hpp"
 #include "model/core/sew.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
@@ -397,4 +398,35 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
     ASSERT_TRUE(app.applied);
     EXPECT_EQ(signature(got), signature(tetra_k));
   }
+}
+
+// Kobbelt √3 (thesis §7.4.2, a single-step rule with edge flips): inferred from a tetrahedron
+// (24 -> 72 darts) subdivided by a √3 scheme (tests/data/sqrt3.json, accepted by the checker):
+// L1 + R3, the scheme itself; applied to a closed triangle mesh (the cube with every face
+// triangulated by the library's face triangulation) it triples the face count, and agrees with the
+// scheme (signatures).
+TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
+  const RuleScheme s3 = read_scheme_file(data("sqrt3.json"));
+  ASSERT_TRUE(check_scheme(s3).ok());
+  const GMap tet = make_tetrahedron();
+  const GMap after = applied(tet, s3, 0);
+  ASSERT_EQ(after.size(), 72u);
+  const JointGraph j = joint_from_pair(tet, after, identity_mapping(tet, after));
+  InferOptions opt;
+  opt.orbit = ot("<0,1,2>");
+  const InferenceResult res = infer_rules(j, opt);
+  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  const RuleScheme& r = res.rules[0].scheme;
+  EXPECT_EQ(r.right.size(), 3u);
+  EXPECT_TRUE(schemes_isomorphic(r, s3)) << scheme_to_json_text(r);
+  const RuleScheme ft = read_scheme_file(rule_file("face_triangulation"));
+  GMap mesh = make_cube();
+  for (Dart f : orbit_representatives(mesh, ot("<0,1>"))) ASSERT_TRUE(apply_scheme_in_place(mesh, ft, {f}).applied);
+  ASSERT_EQ(count_cells(mesh, 2), 24u);
+  auto [mine, a1] = apply_scheme(mesh, r, {0});
+  auto [theirs, a2] = apply_scheme(mesh, s3, {0});
+  ASSERT_TRUE(a1.applied && a2.applied);
+  EXPECT_TRUE(check_validity(mine).ok());
+  EXPECT_EQ(count_cells(mine, 2), 72u);
+  EXPECT_EQ(signature(mine), signature(theirs));
 }
