@@ -1,6 +1,7 @@
 #include "inference/fold.hpp"
 
 #include <deque>
+#include <optional>
 #include <sstream>
 
 #include "model/core/error.hpp"
@@ -27,12 +28,20 @@ namespace {
 
 class Folder {
  public:
-  Folder(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, FoldResult& r)
-      : j_(j), o_(o), opt_(opt), r_(r), n_(j.dimension()) {
-    r_.node_of.assign(j.size(), kNoNode);
-    r_.index_of.assign(j.size(), kUndefined);
+  Folder(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, FoldResult& r,
+         FoldWorkspace& ws)
+      : j_(j), o_(o), opt_(opt), r_(r), n_(j.dimension()), node_of_(ws.node_of), index_of_(ws.index_of),
+        touched_(ws.touched) {
     r_.orbit = o;
     r_.start = start;
+  }
+  // Leaves the workspace clean for the next fold.
+  ~Folder() {
+    for (uint32_t x : touched_) {
+      node_of_[x] = kNoNode;
+      index_of_[x] = kUndefined;
+    }
+    touched_.clear();
   }
 
   void run() {
@@ -59,6 +68,10 @@ class Folder {
   const FoldOptions& opt_;
   FoldResult& r_;
   int n_;
+  std::vector<uint32_t>& node_of_;
+  std::vector<uint32_t>& index_of_;
+  std::vector<uint32_t>& touched_;
+  size_t bound_ = 0;
   size_t s_ = 0;
   std::vector<uint32_t> nb_;  // nb_[b * |o| + p]
 
@@ -76,12 +89,15 @@ class Folder {
   }
 
   void bind(uint32_t x, uint32_t m, uint32_t b) {
-    r_.node_of[x] = m;
-    r_.index_of[x] = b;
+    if (index_of_[x] == kUndefined) touched_.push_back(x);
+    ++bound_;
+    node_of_[x] = m;
+    index_of_[x] = b;
     r_.nodes[m].darts[b] = x;
   }
 
   uint32_t new_node(Side side) {
+    arc_to_.resize(arc_to_.size() + static_cast<size_t>(n_) + 2, kNoNode);
     r_.nodes.push_back({OrbitType(std::vector<int>(o_.size(), OrbitType::kHole)), side,
                         std::vector<uint32_t>(s_, kUndefined)});
     return static_cast<uint32_t>(r_.nodes.size() - 1);
@@ -91,21 +107,23 @@ class Folder {
   bool create_hook() {
     const uint32_t a = r_.start;
     std::vector<uint32_t> order{a};
-    r_.index_of[a] = 0;
+    index_of_[a] = 0;
+    touched_.push_back(a);
     for (size_t q = 0; q < order.size(); ++q) {
       const uint32_t x = order[q];
       for (size_t p = 0; p < o_.size(); ++p) {
         const uint32_t y = j_.nbr(x, o_[p]);
         if (y == kUndefined) {
-          for (uint32_t z : order) r_.index_of[z] = kUndefined;
+          for (uint32_t z : order) index_of_[z] = kUndefined;
           fail(FoldFailureKind::PartialHookOrbit, kNoNode, o_[p], {x},
                "partial hook orbit: dart " + d(x) + " of the " + o_.str() + "-orbit of the start dart has no " +
                    std::to_string(o_[p]) + "-neighbour (cut by the selection); the hook orbit must be complete",
                static_cast<int>(p));
           return false;
         }
-        if (r_.index_of[y] == kUndefined) {
-          r_.index_of[y] = static_cast<uint32_t>(order.size());
+        if (index_of_[y] == kUndefined) {
+          touched_.push_back(y);
+          index_of_[y] = static_cast<uint32_t>(order.size());
           order.push_back(y);
         }
       }
@@ -113,7 +131,7 @@ class Folder {
     s_ = order.size();
     nb_.resize(s_ * o_.size());
     for (uint32_t b = 0; b < s_; ++b)
-      for (size_t p = 0; p < o_.size(); ++p) nb_[b * o_.size() + p] = r_.index_of[j_.nbr(order[b], o_[p])];
+      for (size_t p = 0; p < o_.size(); ++p) nb_[b * o_.size() + p] = index_of_[j_.nbr(order[b], o_[p])];
     r_.hook_orbit.arity = o_.size();
     r_.hook_orbit.nb = nb_;
     for (uint32_t x : order) r_.hook_orbit.darts.push_back(j_.origin(x));
@@ -123,10 +141,14 @@ class Folder {
     return true;
   }
 
-  bool has_arc(uint32_t m, int dim, uint32_t m2) const {
-    for (const auto& e : r_.arcs)
-      if (e.dim == dim && ((e.a == m && e.b == m2) || (e.a == m2 && e.b == m))) return true;
-    return false;
+  // Explicit arcs by (node, dimension slot): O(1) "arc already present" (the fold stays linear).
+  std::vector<uint32_t> arc_to_;
+  size_t slot(int dim) const { return dim == kKappa ? static_cast<size_t>(n_) + 1 : static_cast<size_t>(dim); }
+  bool has_arc(uint32_t m, int dim, uint32_t m2) const { return arc_to_[m * (n_ + 2) + slot(dim)] == m2; }
+  void add_arc(uint32_t m, int dim, uint32_t m2) {
+    r_.arcs.push_back({std::min(m, m2), std::max(m, m2), dim});
+    arc_to_[m * (n_ + 2) + slot(dim)] = m2;
+    arc_to_[m2 * (n_ + 2) + slot(dim)] = m;
   }
 
   // Step 2.1 for node m and dimension dim; returns a new node to enqueue, or kNoNode.
@@ -145,9 +167,9 @@ class Folder {
       }
     }
     if (x == kUndefined) return kNoNode;
-    const uint32_t m2 = r_.node_of[x];
-    if (m2 != kNoNode && r_.index_of[x] == 0) {  // arc addition
-      if (!has_arc(m, dim, m2)) r_.arcs.push_back({std::min(m, m2), std::max(m, m2), dim});
+    const uint32_t m2 = node_of_[x];
+    if (m2 != kNoNode && index_of_[x] == 0) {  // arc addition
+      if (!has_arc(m, dim, m2)) add_arc(m, dim, m2);
       for (uint32_t b = 1; b < s_; ++b) {
         const uint32_t y = j_.nbr(dart(m, b), dim);
         if (y != dart(m2, b)) {
@@ -163,21 +185,21 @@ class Folder {
     if (m2 != kNoNode) {  // arc failure
       fail(FoldFailureKind::ArcFailure, m, dim, {dart(m, 0), x},
            "arc failure at node " + node_name(m) + ", dimension " + dimension_text(dim) + ": " + at(m, 0) + " is " +
-               dimension_text(dim) + "-linked to (" + std::to_string(r_.index_of[x]) + "," + node_name(m2) +
+               dimension_text(dim) + "-linked to (" + std::to_string(index_of_[x]) + "," + node_name(m2) +
                ") = dart " + d(x) + "; neither an explicit arc nor an implicit arc produces a link between " +
                "different orbit indices (thesis Alg. 6 step 2.1)");
       return kNoNode;
     }
     // Arc extension.
     const uint32_t v = new_node(j_.side(x));
-    r_.arcs.push_back({m, v, dim});
+    add_arc(m, dim, v);
     for (uint32_t b = 0; b < s_; ++b) {
       const uint32_t y = j_.nbr(dart(m, b), dim);
-      if (r_.node_of[y] != kNoNode) {
+      if (node_of_[y] != kNoNode) {
         fail(FoldFailureKind::InstantiationFailure, m, dim, {dart(m, b), y},
              "instantiation failure at arc " + node_name(m) + " -" + dimension_text(dim) + "- " + node_name(v) +
                  ": " + at(m, b) + " is " + dimension_text(dim) + "-linked to dart " + d(y) + ", which already " +
-                 "stands for (" + std::to_string(r_.index_of[y]) + "," + node_name(r_.node_of[y]) +
+                 "stands for (" + std::to_string(index_of_[y]) + "," + node_name(node_of_[y]) +
                  ") (thesis Alg. 6 step 2.1)");
         return kNoNode;
       }
@@ -248,8 +270,9 @@ class Folder {
   }
 
   bool check_connected() {
+    if (bound_ == j_.size()) return true;  // every dart is bound exactly once
     for (uint32_t x = 0; x < j_.size(); ++x)
-      if (r_.node_of[x] == kNoNode) {
+      if (node_of_[x] == kNoNode) {
         fail(FoldFailureKind::NotConnected, kNoNode, kNoDimension, {x},
              "not connected: dart " + d(x) + " is not reachable from the start dart " + d(r_.start) +
                  " (folding needs a connected map or joint representation)");
@@ -314,7 +337,7 @@ class Folder {
 
 }  // namespace
 
-FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt) {
+FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, FoldWorkspace* ws) {
   DimMask seen = 0;
   for (int dim : o.dims()) {
     if (dim == OrbitType::kHole) throw Error(ErrorCode::Usage, "the folding orbit type " + o.str() + " has `_`");
@@ -328,12 +351,18 @@ FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const F
   if (j.side(start) != Side::L)
     throw Error(ErrorCode::Usage, "the start dart " + j.describe(start) + " is on the after side; folding starts in L");
   FoldResult r;
-  Folder(j, o, start, opt, r).run();
+  std::optional<FoldWorkspace> local;
+  if (!ws) ws = &local.emplace(j.size());
+  if (ws->node_of.size() != j.size()) throw Error(ErrorCode::Usage, "fold workspace made for another joint graph");
+  Folder(j, o, start, opt, r, *ws).run();
   return r;
 }
 
-FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, size_t limit) {
+FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, size_t limit,
+                 FoldWorkspace* ws) {
   FoldAll out;
+  std::optional<FoldWorkspace> local;
+  if (!ws) ws = &local.emplace(j.size());
   FoldOptions o2 = opt;
   o2.record_alternatives = true;
   // Depth-first over choice vectors: each run fixes a prefix; the nodes after it take choice 0,
@@ -347,7 +376,7 @@ FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const 
     std::vector<uint32_t> prefix = std::move(todo.back());
     todo.pop_back();
     o2.choices = prefix;
-    FoldResult r = fold(j, o, start, o2);
+    FoldResult r = fold(j, o, start, o2, ws);
     ++out.runs;
     for (size_t k = r.alternatives.size(); k-- > prefix.size();)
       for (uint32_t c = r.alternatives[k]; c-- > 1;) {

@@ -92,16 +92,25 @@ struct FoldResult {
   std::vector<FoldArc> arcs;
   FoldFailure failure;
   bool ok() const { return failure.kind == FoldFailureKind::None; }
-  // The node of J-dart x and its orbit index (valid on success).
-  std::vector<uint32_t> node_of, index_of;
   // With FoldOptions::record_alternatives: alternatives[k-1] = number of consistent relabelings of
   // node k (k >= 1, nodes built before the end or the failure).
   std::vector<uint32_t> alternatives;
 };
 
+// Scratch space of folds on one joint graph: the (node, index) owner of every dart, reset after each
+// fold through the list of darts it touched, so that a fold that fails early costs what it visited
+// and not |J| (the driver runs up to |J|/|O| folds per orbit type).
+class FoldWorkspace {
+ public:
+  explicit FoldWorkspace(size_t darts) : node_of(darts, UINT32_MAX), index_of(darts, UINT32_MAX) {}
+  std::vector<uint32_t> node_of, index_of, touched;
+};
+
 // Algorithm 6. Throws Error(Usage) when <o> has `_`, repeats a dimension or exceeds n, when the
-// start dart is out of range or on side R. Failure is a result, never an exception.
-FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt = {});
+// start dart is out of range or on side R. Failure is a result, never an exception. `ws` (optional)
+// must have been made for j.
+FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt = {},
+                FoldWorkspace* ws = nullptr);
 
 // Every successful fold over all combinations of consistent relabelings (the default choice first),
 // at most `limit` folds run. Each result carries its choices in FoldResult::alternatives' order.
@@ -112,7 +121,7 @@ struct FoldAll {
   bool truncated = false;  // the limit was reached
 };
 FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt = {},
-                 size_t limit = 1000);
+                 size_t limit = 1000, FoldWorkspace* ws = nullptr);
 
 // "n<k>".
 std::string node_name(uint32_t k);

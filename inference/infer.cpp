@@ -42,6 +42,7 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
   InferenceResult res;
   const std::vector<OrbitType> types = opt.orbit ? std::vector<OrbitType>{*opt.orbit} : all_orbit_types(j.dimension());
   std::vector<uint8_t> marked(j.size());
+  FoldWorkspace ws(j.size());
   auto process = [&](const FoldResult& f, const OrbitType& o, uint32_t a) {
     InferAttempt at;
     at.orbit = o;
@@ -94,11 +95,11 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
       if (j.side(a) != Side::L || marked[a]) continue;
       std::vector<FoldResult> folds;
       if (opt.all_relabelings) {
-        FoldAll all = fold_all(j, o, a, opt.fold, opt.relabeling_limit);
+        FoldAll all = fold_all(j, o, a, opt.fold, opt.relabeling_limit, &ws);
         folds = std::move(all.folds);
         res.truncated = res.truncated || all.truncated;
       }
-      if (folds.empty()) folds.push_back(fold(j, o, a, opt.fold));
+      if (folds.empty()) folds.push_back(fold(j, o, a, opt.fold, &ws));
       for (const FoldResult& f : folds) process(f, o, a);
     }
     if (opt.progress) opt.progress(t + 1, types.size(), o);

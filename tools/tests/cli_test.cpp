@@ -400,6 +400,11 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   EXPECT_EQ(run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit)).code, 0);
   // Bad input: both orbit options, a mapping pairing one after dart twice.
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --orbit '<0>' --all-orbits", "--all-orbits");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --cut-loops 3", "--cut-loops", "not a dimension");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --explicit-loops x", "--explicit-loops");
+  // Every relabeling combination, with the loops of preserved nodes cut: still exactly one rule.
+  r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit) + " --all-relabelings --cut-loops 2");
+  EXPECT_EQ(r.code, 0) << r.err;
   const fs::path bad = dir / "bad_map.json";
   std::ofstream(bad) << R"({"format":"gmr.mapping","version":1,"pairs":[[0,0],[1,0]]})";
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --map " + q(bad), "pairs[1]", "image of two darts");
