@@ -10,6 +10,8 @@
 
 namespace gmr::inference {
 
+using namespace gmr::io;
+
 namespace {
 constexpr const char* kFormat = "gmr.mapping";
 constexpr int kVersion = 1;

@@ -8,6 +8,8 @@
 
 namespace gmr::inference {
 
+using namespace gmr::scheme;
+
 const char* to_string(FoldFailureKind k) {
   switch (k) {
     case FoldFailureKind::None: return "none";

@@ -37,6 +37,8 @@
 #include "model/scheme/scheme_instantiation.hpp"
 
 namespace gmr::inference {
+using scheme::GraphScheme;
+using scheme::OrbitGraph;
 
 enum class FoldFailureKind {
   None,

@@ -4,6 +4,9 @@
 
 namespace gmr::inference {
 
+using namespace gmr::graph;
+using namespace gmr::scheme;
+
 std::string instantiation_mismatch(const FoldResult& f, const JointGraph& j) {
   if (!f.ok()) return "the fold failed: " + f.failure.message;
   const int n = j.dimension();

@@ -5,6 +5,9 @@
 
 namespace gmr::inference {
 
+using namespace gmr::checker;
+using namespace gmr::scheme;
+
 const char* to_string(RuleVerdict v) {
   switch (v) {
     case RuleVerdict::Accepted: return "accepted";

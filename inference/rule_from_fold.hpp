@@ -26,6 +26,8 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::inference {
+using checker::SchemeCheckReport;
+using scheme::RuleScheme;
 
 enum class RuleVerdict { Accepted, NoHook, Inconsistent };
 const char* to_string(RuleVerdict v);  // "accepted", "no hook", "rejected by the checker"

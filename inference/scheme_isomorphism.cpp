@@ -9,6 +9,8 @@
 
 namespace gmr::inference {
 
+using namespace gmr::scheme;
+
 namespace {
 
 constexpr uint32_t kNone = UINT32_MAX;

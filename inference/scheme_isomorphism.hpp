@@ -26,6 +26,7 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::inference {
+using scheme::RuleScheme;
 
 struct SchemeIsomorphismOptions {
   bool exact_positions = false;

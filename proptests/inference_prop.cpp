@@ -33,6 +33,10 @@
 using namespace gmr;
 using namespace gmr::prop;
 using namespace gmr::inference;
+using namespace gmr::checker;
+using namespace gmr::graph;
+using namespace gmr::io;
+using namespace gmr::scheme;
 
 namespace {
 

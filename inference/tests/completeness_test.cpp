@@ -21,6 +21,8 @@
 
 using namespace gmr;
 using namespace gmr::inference;
+using namespace gmr::graph;
+using namespace gmr::scheme;
 
 namespace {
 

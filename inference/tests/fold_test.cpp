@@ -13,6 +13,10 @@
 
 using namespace gmr;
 using namespace gmr::inference;
+using namespace gmr::checker;
+using namespace gmr::graph;
+using namespace gmr::io;
+using namespace gmr::scheme;
 using namespace gmr::inference::test;
 
 namespace {

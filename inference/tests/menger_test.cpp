@@ -19,6 +19,8 @@
 
 using namespace gmr;
 using namespace gmr::inference;
+using namespace gmr::graph;
+using namespace gmr::scheme;
 using namespace gmr::inference::test;
 
 namespace {

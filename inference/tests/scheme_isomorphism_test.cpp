@@ -9,6 +9,8 @@
 
 using namespace gmr;
 using namespace gmr::inference;
+using namespace gmr::io;
+using namespace gmr::scheme;
 using namespace gmr::inference::test;
 
 namespace {

@@ -14,6 +14,7 @@
 
 namespace gmr::cli {
 
+
 namespace {
 
 struct FoldArgs {

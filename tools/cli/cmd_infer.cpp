@@ -27,6 +27,11 @@
 
 namespace gmr::cli {
 
+using namespace gmr::checker;
+using namespace gmr::draw;
+using namespace gmr::io;
+using namespace gmr::scheme;
+
 namespace {
 
 struct InferArgs {

@@ -6,6 +6,7 @@
 
 namespace gmr::cli {
 
+
 using namespace gmr::inference;
 
 OrbitType parse_orbit_option(const std::string& text, const std::string& option) {
