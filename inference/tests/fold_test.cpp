@@ -56,7 +56,9 @@ TEST(FoldTrace, CubeOnVertexOrbitGivesEightNodesOppositeVertexSwapped) {
 // lying in a side triangle (the trace of the thesis), node n2 = n1@1 sees (a,n2) –0– (c,n2) in the
 // triangle and proposes 1 -> 0, which the quad base contradicts: a relabeling failure. Every base
 // corner fails (the apex, of degree 4, differs from the corners, of degree 3); from the apex the
-// pyramid is a cone over a square and folds into 4 nodes.
+// pyramid is a cone over a square and folds into 4 nodes. (The text says the failure occurs "with
+// <0,1>" while its figures fold on <1,2>, digest ambiguity 4: the figures' <1,2> is the consistent
+// reading.)
 TEST(FoldTrace, SquarePyramidFromBaseCornerIsRelabelingFailure) {
   const GMap g = make_square_pyramid();
   const JointGraph j = joint_from_map(g);

@@ -2,7 +2,8 @@
 // represent a volume, two 3-sewn cubes do), on <0,1,2,3>: R has 20 nodes (1920 / 96 darts). The
 // objects are polycubes (model/core/builders.hpp); the preserved darts are the before darts seen in
 // the corner sub-cube at their own corner, with the same local dart (make_polycube lays every voxel
-// out identically, 48 darts each). The inferred rule, applied to another polycube, gives the
+// out identically, 48 darts each). Each node stands for 96 darts, the hook orbit being both cubes
+// (the thesis' "48 darts per node" is digest ambiguity 6: it holds for one cube). The inferred rule, applied to another polycube, gives the
 // polycube of its Menger voxels (signatures).
 #include <map>
 
