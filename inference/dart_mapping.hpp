@@ -1,5 +1,4 @@
-// Mappings of preserved darts from a before map G to an after map H (thesis §7.1.2 and §7.3; digest
-// ch6-7 §5). A mapping is a set of dart pairs (g, h): dart g of G is preserved as dart h of H. It
+// Mappings of preserved darts from a before map G to an after map H (thesis §7.1.2 and §7.3). A mapping is a set of dart pairs (g, h): dart g of G is preserved as dart h of H. It
 // must be injective both ways. Three ways to give one:
 //  * identity on dart ids: every dart id alive in both maps is paired with itself (the snapshot
 //    mode of Jerboa Studio: one object edited in place, e.g. by the scheme engine, which keeps the

@@ -1,4 +1,4 @@
-// Topological folding (thesis §7.2, Algorithm 6, App. C; digest ch6-7 §4.1–4.5).
+// Topological folding (thesis §7.2, Algorithm 6, App. C).
 //
 // Input: a joint graph J (joint_graph.hpp: a connected G-map, or the joint representation κ(G,H) of a
 // before/after pair), an orbit type <o> (no `_`) and a start dart a on side L.
@@ -21,7 +21,7 @@
 // node and dimension (PARTIAL NEIGHBOURHOOD), and the instantiation must span every link of J
 // (NOT SPANNING, checked at the end over every dart, dimension and κ). Two checks this
 // implementation adds, named as such: PARTIAL HOOK ORBIT (a dart of J<o>(a) with an undefined
-// o_p-neighbour: the digest's proposal for a case the thesis does not discuss) and NOT CONNECTED
+// o_p-neighbour: a case the thesis does not discuss; docs/inference.md) and NOT CONNECTED
 // (darts of J the traversal never reached: the thesis assumes J connected).
 //
 // Cost O(|J|·(n+2)) plus the relabeling choices: linear in the size of J (thesis §7.5).

@@ -1,11 +1,11 @@
-// The inference driver (thesis §7.3.2; digest ch6-7 §4.8): every orbit type (or one), every start
+// The inference driver (thesis §7.3.2): every orbit type (or one), every start
 // dart, marking of equivalent starts, de-duplication by rule-scheme isomorphism.
 //
 // For each orbit type <o> (the given one, or all 2^(n+1) subsets of 0..n, by increasing size, then
 // lexicographically: <>, <0>, <1>, ..., <0,1,...,n>), for each L dart a of the joint graph in
 // increasing index order that is not marked for <o>:
 //   fold(J, <o>, a) (fold.hpp) — or, with all_relabelings, every fold over the combinations of
-//   consistent relabelings (fold_all), each processed as below; then mark (the digest's [D] rule, the thesis leaving it open):
+//   consistent relabelings (fold_all), each processed as below; then mark (a documented choice, the thesis leaving it open):
 //    * the whole hook orbit J<o>(a), after a success or a failure: instantiation does not depend on
 //      which dart of O is the start, so every dart of O would give the same answer;
 //    * after a success, also the darts of every L node whose decoration has no `_` and whose set is

@@ -1,4 +1,4 @@
-// The graph that topological folding works on (thesis §7.2, Alg. 6; digest ch6-7 §4.2, §4.7).
+// The graph that topological folding works on (thesis §7.2, Alg. 6, §7.3.1).
 //
 // A joint graph J has darts 0..N-1, each on side L (before) or R (after), with one neighbour slot
 // per dimension 0..n and one κ slot. A slot may be *undefined* (kUndefined):

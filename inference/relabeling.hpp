@@ -1,5 +1,5 @@
 // The choice of a node's relabeling in topological folding (thesis Alg. 6 step 2.2, §7.2.3 and
-// §7.2.5; digest ch6-7 §4.3 buildOrbType and §4.5).
+// §7.2.5; docs/inference.md).
 //
 // For a new node v and each position p of the orbit type <o>, the candidates are the dimensions j
 // such that (a,v) –j– (c,v), where c is the o_p-neighbour of the start dart a in the hook orbit.

@@ -1,4 +1,4 @@
-// From a folded joint representation to a rule scheme (thesis §7.3.1; digest ch6-7 §4.7).
+// From a folded joint representation to a rule scheme (thesis §7.3.1).
 //
 //  1. nodes are split by side; 2. κ-arcs become preserved-node pairs (both ends share one name);
 //  3. κ-arcs are deleted, leaving the graph schemes L and R; 4. hooks: the fold's hook h for its L
@@ -8,7 +8,7 @@
 //  5. the scheme checker (checker/scheme_checker.hpp) runs; an inconsistent scheme is rejected with
 //  its diagnostics (thesis §7.2.4: a foldable scheme can be topologically invalid).
 //
-// Posterior-cut loops (thesis §7.3, Jerboa's parameter; digest ambiguity 9): for the dimensions of
+// Posterior-cut loops (thesis §7.3, Jerboa's parameter; the side it applies to is a documented choice): for the dimensions of
 // `cut_loops`, an explicit d-loop on a PRESERVED node that is present on both sides is removed from
 // both sides (the only safe reading: the rule then neither requires nor touches the d-links of that
 // node, instead of demanding free cells). A loop only in L or only in R is kept (removing it would

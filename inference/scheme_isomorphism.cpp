@@ -180,7 +180,7 @@ std::optional<SchemeIsomorphism> try_permutation(const RuleScheme& s1, const Rul
   iso.positions = perm;
   const auto nl = static_cast<uint32_t>(a.left);
   for (uint32_t v = 0; v < a.size(); ++v) {
-    if (m.mapd[v] == kNone) return std::nullopt;  // full cover ([D])
+    if (m.mapd[v] == kNone) return std::nullopt;  // full cover (Alg. 7 as printed returns mapd unchecked)
     if (v < nl) iso.left.push_back(m.mapd[v]);
     else iso.right.push_back(m.mapd[v] - nl);
   }

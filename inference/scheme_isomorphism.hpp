@@ -1,10 +1,10 @@
-// Rule-scheme isomorphism (thesis Def. 90, Algorithm 7; digest ch6-7 §4.9).
+// Rule-scheme isomorphism (thesis Def. 90, Algorithm 7).
 //
 // Two Jerboa rule schemes are compared on their joint representations κ(L,R): nodes of L and R
 // (each flagged L or R), explicit arcs labelled 0..n, and one κ-arc between the two copies of every
 // preserved node. Every node has at most one neighbour per label in 0..n ∪ {κ}.
 // Node signature = (side, decoration, δ_0 … δ_n, δ_κ), δ_i = 0 without i-neighbour, 1 for an
-// i-neighbour other than itself, 2 for an i-loop. The side flag is the digest's [D] addition
+// i-neighbour other than itself, 2 for an i-loop. The side flag is added here
 // (otherwise an L and an R node could be swapped).
 // Algorithm 7: compare the signature histograms, then root a joint BFS at a node of the rarest
 // signature and try every candidate image; the BFS follows the non-loop arcs and requires equal
@@ -12,7 +12,7 @@
 // Disconnected joint representations: components are matched one by one with backtracking
 // (exponential in the number of components, as the thesis notes; folding never produces one).
 //
-// Decisions where the text is silent (ambiguity 8 of the digest):
+// Decisions where the text is silent (docs/inference.md):
 //  * hooks are not compared ("all rules on <> are isomorphic up to hook choice"), nor names,
 //    embedding expressions or preconditions: this is the topology of the rule;
 //  * by default decorations are compared up to ONE global permutation of positions, applied to

@@ -57,7 +57,7 @@ TEST(FoldTrace, CubeOnVertexOrbitGivesEightNodesOppositeVertexSwapped) {
 // triangle and proposes 1 -> 0, which the quad base contradicts: a relabeling failure. Every base
 // corner fails (the apex, of degree 4, differs from the corners, of degree 3); from the apex the
 // pyramid is a cone over a square and folds into 4 nodes. (The text says the failure occurs "with
-// <0,1>" while its figures fold on <1,2>, digest ambiguity 4: the figures' <1,2> is the consistent
+// <0,1>" while its figures fold on <1,2>, the figures' <1,2> is the consistent
 // reading.)
 TEST(FoldTrace, SquarePyramidFromBaseCornerIsRelabelingFailure) {
   const GMap g = make_square_pyramid();

@@ -3,7 +3,7 @@
 // objects are polycubes (model/core/builders.hpp); the preserved darts are the before darts seen in
 // the corner sub-cube at their own corner, with the same local dart (make_polycube lays every voxel
 // out identically, 48 darts each). Each node stands for 96 darts, the hook orbit being both cubes
-// (the thesis' "48 darts per node" is digest ambiguity 6: it holds for one cube). The inferred rule, applied to another polycube, gives the
+// (the thesis' "48 darts per node" holds for one cube only). The inferred rule, applied to another polycube, gives the
 // polycube of its Menger voxels (signatures).
 #include <map>
 

@@ -63,7 +63,7 @@ TEST(SchemeIsomorphism, AnyChangeBreaksIt) {
 }
 
 // The same rule with its positions permuted (rooted at a hook read in another order) is
-// isomorphic by default, not with exact positions (digest ambiguity 8).
+// isomorphic by default, not with exact positions (docs/inference.md).
 TEST(SchemeIsomorphism, UpToOneGlobalPermutationOfPositions) {
   const RuleScheme q = read_scheme_file(rule_file("quad_subdivision"));
   RuleScheme p = q;
