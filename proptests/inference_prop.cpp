@@ -22,6 +22,7 @@
 #include "inference/fold_check.hpp"
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
+#include "model/draw/rule_dot.hpp"
 #include "model/io/scheme_json.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
@@ -126,6 +127,7 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
     RC_ASSERT(instantiation_mismatch(f, j) == "");
     const InferredRule r = rule_from_fold(f, j);
     RC_TAG(to_string(r.verdict));
+    RC_LOG() << "inferred scheme:\n" << scheme_to_json_text(r.scheme) << "DOT:\n" << draw::to_dot(r.scheme);
     if (!r.accepted()) return;
     std::vector<Dart> hooks;
     for (uint32_t k : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[k][0]);
@@ -137,7 +139,6 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
     // itself up to isomorphism.
     if (orbit(g, ls.scheme.orbit, h).size() == g.size() && is_simple(g) && is_simple(after)) {
       RC_TAG("one orbit");
-      RC_LOG() << scheme_to_json_text(r.scheme);
       RC_ASSERT(schemes_isomorphic(r.scheme, ls.scheme));
     }
   }));
