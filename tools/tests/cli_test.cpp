@@ -71,7 +71,7 @@ class Cli : public ::testing::Test {
 TEST_F(Cli, HelpForEverySubcommand) {
   Result r = run("--help");
   EXPECT_EQ(r.code, 0);
-  for (const char* sub : {"info", "validate", "convert", "dot", "signature", "demo"}) {
+  for (const char* sub : {"info", "validate", "convert", "dot", "signature", "demo", "fold", "infer"}) {
     EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
     const Result h = run(std::string(sub) + " --help");
     EXPECT_EQ(h.code, 0) << sub;
@@ -336,4 +336,76 @@ TEST_F(Cli, CheckAndApplyScheme) {
   expect_bad_input("apply " + quad, "--hook", "--all");
   expect_bad_input("apply " + quad + " --hook 0 --match n0=0", "--match");
   EXPECT_EQ(outputs(), 2u);
+}
+
+// `gmr fold` (thesis Alg. 6): the cube on <1,2> folds into 8 nodes with the opposite vertex <2,1>;
+// the open box on <0,2> is an instantiation failure (exit 1, named in text and JSON); bad orbit
+// types and darts are bad input.
+TEST_F(Cli, FoldPrintsTheSchemeOrTheNamedFailure) {
+  Result r = run("fold " + q(tools_data("cube.off")) + " --orbit '<1,2>' --dart 0");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("8 nodes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("n7 <2,1>"), std::string::npos) << r.out;
+  const fs::path box = source_dir() / "inference/tests/data/open_box.off";
+  r = run("fold --json " + q(box) + " --orbit '<0,2>' --dart 1");
+  EXPECT_EQ(r.code, 1) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["folded"], false);
+  EXPECT_EQ(j["failure"]["kind"], "instantiation failure");
+  EXPECT_EQ(j["failure"]["dimension"], 2);
+  r = run("fold " + q(tools_data("cube.off")) + " --orbit '<>' --dart 47");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("48 nodes"), std::string::npos) << r.out;
+  expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,_>' --dart 0", "--orbit", "`_`");
+  expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,1>' --dart 48", "--dart", "not a dart");
+  expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,1' --dart 0", "--orbit");
+}
+
+// `gmr infer`: the quad subdivision from the cube and its subdivision (identity mapping), written
+// as gmr.rule + DOT + summary and accepted by `gmr check`; the triangle -> hexagon vertex split
+// (explicit --map) infers nothing (exit 1) and writes the rejected scheme with its diagnostics.
+TEST_F(Cli, InferWritesCheckedSchemes) {
+  const fs::path cube = dir / "cube.json", sub = dir / "sub.json";
+  ASSERT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(cube)).code, 0);
+  ASSERT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(cube) + " --hook 0 -o " + q(sub)).code, 0);
+  Result r = run("infer " + q(cube) + " " + q(sub) + " --orbit '<0,1,2>' -o " + q(dir / "out/q"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 rule(s) inferred"), std::string::npos) << r.out;
+  for (const char* f : {"rule_0.json", "rule_0.dot", "summary.txt"}) EXPECT_TRUE(fs::exists(dir / "out/q" / f)) << f;
+  const auto rule = nlohmann::json::parse(read_text_file(dir / "out/q/rule_0.json"));
+  EXPECT_EQ(rule["format"], "gmr.rule");
+  EXPECT_EQ(rule["left"]["nodes"].size(), 1u);
+  EXPECT_EQ(rule["right"]["nodes"].size(), 4u);
+  EXPECT_EQ(run("check " + q(dir / "out/q/rule_0.json")).code, 0);
+  // Every orbit type, JSON: the <0,1,2> rule is among them; duplicates are counted.
+  r = run("infer --json --all-orbits " + q(cube) + " " + q(sub));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto all = nlohmann::json::parse(r.out);
+  EXPECT_EQ(all["mapping"], "identity");
+  EXPECT_GE(all["rules"].size(), 2u);
+  EXPECT_EQ(all["attempts"][0]["orbit"], "<>");
+  // Triangle -> hexagon, vertex split: folded, rejected by the checker, nothing inferred.
+  const fs::path tri = dir / "tri.json", hex = dir / "hex.json";
+  std::ofstream(tri) << R"({"format":"gmr.gmap","version":1,"kind":"gmap","dimension":2,"darts":6,
+    "alpha":{"0":[1,0,3,2,5,4],"1":[5,2,1,4,3,0],"2":[0,1,2,3,4,5]}})";
+  std::ofstream(hex) << R"({"format":"gmr.gmap","version":1,"kind":"gmap","dimension":2,"darts":12,
+    "alpha":{"0":[1,0,3,2,5,4,7,6,9,8,11,10],"1":[11,2,1,4,3,6,5,8,7,10,9,0],"2":[0,1,2,3,4,5,6,7,8,9,10,11]}})";
+  const fs::path vsplit = source_dir() / "inference/tests/data/triangle_hexagon_vertex_split.json";
+  r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(vsplit) + " -o " + q(dir / "out/v"));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.out.find("rejected by the checker"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "out/v/rejected_0.json"));
+  EXPECT_FALSE(fs::exists(dir / "out/v/rule_0.json"));
+  const fs::path esplit = source_dir() / "inference/tests/data/triangle_hexagon_edge_split.json";
+  EXPECT_EQ(run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit)).code, 0);
+  // Bad input: both orbit options, a mapping pairing one after dart twice.
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --orbit '<0>' --all-orbits", "--all-orbits");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --cut-loops 3", "--cut-loops", "not a dimension");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --explicit-loops x", "--explicit-loops");
+  // Every relabeling combination, with the loops of preserved nodes cut: still exactly one rule.
+  r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit) + " --all-relabelings --cut-loops 2");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const fs::path bad = dir / "bad_map.json";
+  std::ofstream(bad) << R"({"format":"gmr.mapping","version":1,"pairs":[[0,0],[1,0]]})";
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --map " + q(bad), "pairs[1]", "image of two darts");
 }

@@ -1,0 +1,132 @@
+#include "inference/infer.hpp"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+#include "inference/scheme_isomorphism.hpp"
+
+namespace gmr::inference {
+
+const char* to_string(AttemptOutcome o) {
+  switch (o) {
+    case AttemptOutcome::FoldFailed: return "fold failed";
+    case AttemptOutcome::NoHook: return "no hook";
+    case AttemptOutcome::Inconsistent: return "rejected by the checker";
+    case AttemptOutcome::Accepted: return "accepted";
+    case AttemptOutcome::Duplicate: return "duplicate";
+  }
+  return "?";
+}
+
+std::vector<OrbitType> all_orbit_types(int n) {
+  std::vector<DimMask> masks;
+  for (DimMask m = 0; m < (DimMask(1) << (n + 1)); ++m) masks.push_back(m);
+  auto dims = [](DimMask m) {
+    std::vector<int> d;
+    for (int i = 0; m >> i; ++i)
+      if ((m >> i) & 1u) d.push_back(i);
+    return d;
+  };
+  std::stable_sort(masks.begin(), masks.end(), [&](DimMask x, DimMask y) {
+    const auto dx = dims(x), dy = dims(y);
+    if (dx.size() != dy.size()) return dx.size() < dy.size();
+    return dx < dy;
+  });
+  std::vector<OrbitType> out;
+  for (DimMask m : masks) out.emplace_back(dims(m));
+  return out;
+}
+
+InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
+  InferenceResult res;
+  const std::vector<OrbitType> types = opt.orbit ? std::vector<OrbitType>{*opt.orbit} : all_orbit_types(j.dimension());
+  std::vector<uint8_t> marked(j.size());
+  FoldWorkspace ws(j.size());
+  auto process = [&](const FoldResult& f, const OrbitType& o, uint32_t a) {
+    InferAttempt at;
+    at.orbit = o;
+    at.start = a;
+    at.start_text = j.describe(a);
+    marked[a] = 1;
+    if (!f.nodes.empty())
+      for (uint32_t x : f.nodes[0].darts)
+        if (x != kUndefined) marked[x] = 1;
+    if (!f.ok()) {
+      at.outcome = AttemptOutcome::FoldFailed;
+      at.failure = f.failure;
+      at.reason = f.failure.message;
+      for (const auto& n : f.nodes) (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
+      res.attempts.push_back(std::move(at));
+      return;
+    }
+    for (const auto& n : f.nodes) {
+      (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
+      if (n.side == Side::L && !n.label.has_hole() && n.label.mask() == o.mask())
+        for (uint32_t x : n.darts) marked[x] = 1;
+    }
+    InferredRule r = rule_from_fold(f, j, "inferred_" + std::to_string(res.rules.size()), opt.rule);
+    if (!r.accepted()) {
+      at.outcome = r.verdict == RuleVerdict::NoHook ? AttemptOutcome::NoHook : AttemptOutcome::Inconsistent;
+      at.reason = r.reason;
+      at.rejected = std::move(r);
+      res.attempts.push_back(std::move(at));
+      return;
+    }
+    int dup = -1;
+    for (size_t k = 0; k < res.rules.size() && dup < 0; ++k)
+      if (schemes_isomorphic(r.scheme, res.rules[k].scheme)) dup = static_cast<int>(k);
+    if (dup >= 0) {
+      at.outcome = AttemptOutcome::Duplicate;
+      at.rule = dup;
+      ++res.duplicates[static_cast<size_t>(dup)];
+    } else {
+      at.outcome = AttemptOutcome::Accepted;
+      at.rule = static_cast<int>(res.rules.size());
+      res.rules.push_back(std::move(r));
+      res.duplicates.push_back(0);
+    }
+    res.attempts.push_back(std::move(at));
+  };
+  for (size_t t = 0; t < types.size(); ++t) {
+    const OrbitType& o = types[t];
+    std::fill(marked.begin(), marked.end(), 0);
+    for (uint32_t a = 0; a < j.size(); ++a) {
+      if (j.side(a) != Side::L || marked[a]) continue;
+      std::vector<FoldResult> folds;
+      if (opt.all_relabelings) {
+        FoldAll all = fold_all(j, o, a, opt.fold, opt.relabeling_limit, &ws);
+        folds = std::move(all.folds);
+        res.truncated = res.truncated || all.truncated;
+      }
+      if (folds.empty()) folds.push_back(fold(j, o, a, opt.fold, &ws));
+      for (const FoldResult& f : folds) process(f, o, a);
+    }
+    if (opt.progress) opt.progress(t + 1, types.size(), o);
+  }
+  return res;
+}
+
+std::string summary_text(const InferenceResult& r) {
+  std::ostringstream os;
+  os << std::left << std::setw(12) << "orbit" << std::setw(14) << "start" << std::setw(5) << "L" << std::setw(5)
+     << "R" << "outcome\n";
+  for (const auto& a : r.attempts) {
+    os << std::setw(12) << a.orbit.str() << std::setw(14) << a.start_text << std::setw(5) << a.left_nodes
+       << std::setw(5) << a.right_nodes << to_string(a.outcome);
+    if (a.outcome == AttemptOutcome::FoldFailed) os << ": " << to_string(a.failure.kind);
+    if (a.outcome == AttemptOutcome::Accepted) os << " as rule " << a.rule;
+    if (a.outcome == AttemptOutcome::Duplicate) os << " of rule " << a.rule;
+    if (a.outcome == AttemptOutcome::Inconsistent || a.outcome == AttemptOutcome::NoHook) os << ": " << a.reason;
+    os << "\n";
+  }
+  os << r.rules.size() << " rule(s) inferred";
+  size_t dups = 0;
+  for (size_t d : r.duplicates) dups += d;
+  os << ", " << dups << " duplicate(s) merged";
+  if (r.truncated) os << " (relabeling enumeration truncated at its limit)";
+  os << "\n";
+  return os.str();
+}
+
+}  // namespace gmr::inference

@@ -1,0 +1,29 @@
+// Shared helpers of the inference tests: data paths, and the exact check that a fold instantiates
+// back to its joint graph (thesis App. C soundness: ι(P, J<o>(a)) = J with (b,v) ↦ darts[v][b]).
+#pragma once
+#include <cstdlib>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "inference/fold.hpp"
+#include "inference/fold_check.hpp"
+#include "inference/joint_graph.hpp"
+
+namespace gmr::inference::test {
+
+inline std::string source_dir() {
+  const char* s = std::getenv("GMR_SOURCE_DIR");
+  return s ? s : ".";
+}
+inline std::string data(const std::string& name) { return source_dir() + "/inference/tests/data/" + name; }
+inline std::string rule_file(const std::string& name) { return source_dir() + "/tools/data/rules/" + name + ".json"; }
+
+// The fold instantiates back to J exactly (fold_check.hpp).
+inline ::testing::AssertionResult instantiates_back(const FoldResult& f, const JointGraph& j) {
+  const std::string why = instantiation_mismatch(f, j);
+  if (why.empty()) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << why;
+}
+
+}  // namespace gmr::inference::test

@@ -1,0 +1,89 @@
+// Menger sponge level 1 inferred from two glued cubes (thesis §7.4.4: a lone cube does not
+// represent a volume, two 3-sewn cubes do), on <0,1,2,3>: R has 20 nodes (1920 / 96 darts). The
+// objects are polycubes (model/core/builders.hpp); the preserved darts are the before darts seen in
+// the corner sub-cube at their own corner, with the same local dart (make_polycube lays every voxel
+// out identically, 48 darts each). Each node stands for 96 darts, the hook orbit being both cubes
+// (the thesis' "48 darts per node" holds for one cube only). The inferred rule, applied to another polycube, gives the
+// polycube of its Menger voxels (signatures).
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "inference/dart_mapping.hpp"
+#include "inference/infer.hpp"
+#include "inference/tests/inference_support.hpp"
+#include "model/core/builders.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/signature.hpp"
+#include "model/core/validity.hpp"
+#include "model/scheme/scheme_engine.hpp"
+
+using namespace gmr;
+using namespace gmr::inference;
+using namespace gmr::graph;
+using namespace gmr::scheme;
+using namespace gmr::inference::test;
+
+namespace {
+
+constexpr Dart kVoxelDarts = 48;
+
+// Corner (x, y, z in {0,1}) of every local dart of a voxel, found topologically: in the polycube
+// {(0,0,0), e_a}, the darts of voxel 0 whose vertex (<1,2>-orbit in the volume) touches the glued
+// face x_a = 1 are the ones with coordinate a = 1.
+std::vector<std::array<int, 3>> local_corners() {
+  std::vector<std::array<int, 3>> corner(kVoxelDarts, {0, 0, 0});
+  for (int a = 0; a < 3; ++a) {
+    Voxel other{0, 0, 0};
+    other[static_cast<size_t>(a)] = 1;
+    const GMap two = make_polycube({{0, 0, 0}, other});
+    for (Dart d = 0; d < kVoxelDarts; ++d)
+      for (Dart e : orbit(two, OrbitType{1, 2}, d))
+        if (!two.is_free(3, e)) corner[d][static_cast<size_t>(a)] = 1;
+  }
+  return corner;
+}
+
+// The level-1 Menger voxels of every voxel of `cubes`, and the index of each in that list.
+std::vector<Voxel> menger_of(const std::vector<Voxel>& cubes) {
+  std::vector<Voxel> out;
+  for (const Voxel& c : cubes)
+    for (const Voxel& m : menger_voxels(1)) out.push_back({3 * c[0] + m[0], 3 * c[1] + m[1], 3 * c[2] + m[2]});
+  return out;
+}
+
+}  // namespace
+
+TEST(RuleInference, MengerLevelOneFromTwoGluedCubes) {
+  const std::vector<Voxel> cubes{{0, 0, 0}, {0, 0, 1}};
+  const GMap before = make_polycube(cubes);
+  const std::vector<Voxel> sub = menger_of(cubes);
+  const GMap after = make_polycube(sub);
+  ASSERT_EQ(before.size(), 96u);
+  ASSERT_EQ(after.size(), 1920u);
+  std::map<Voxel, Dart> voxel_index;
+  for (size_t k = 0; k < sub.size(); ++k) voxel_index[sub[k]] = static_cast<Dart>(k);
+  const auto corner = local_corners();
+  DartMapping m;
+  for (size_t k = 0; k < cubes.size(); ++k)
+    for (Dart i = 0; i < kVoxelDarts; ++i) {
+      const Voxel s{3 * cubes[k][0] + 2 * corner[i][0], 3 * cubes[k][1] + 2 * corner[i][1],
+                    3 * cubes[k][2] + 2 * corner[i][2]};
+      m.pairs.emplace_back(static_cast<Dart>(k) * kVoxelDarts + i, voxel_index.at(s) * kVoxelDarts + i);
+    }
+  const JointGraph j = joint_from_pair(before, after, m);
+  InferOptions opt;
+  opt.orbit = OrbitType::range(0, 3);
+  const InferenceResult res = infer_rules(j, opt);
+  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  const RuleScheme& menger = res.rules[0].scheme;
+  EXPECT_EQ(menger.left.size(), 1u);
+  EXPECT_EQ(menger.right.size(), 20u);
+  // Applied to an L-shaped tricube: the polycube of its Menger voxels.
+  const std::vector<Voxel> tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  auto [got, app] = apply_scheme(make_polycube(tri), menger, {0});
+  ASSERT_TRUE(app.applied) << app.why;
+  EXPECT_TRUE(check_validity(got).ok());
+  EXPECT_EQ(got.size(), 20 * 3 * 48u);
+  EXPECT_EQ(signature(got), signature(make_polycube(menger_of(tri))));
+}
