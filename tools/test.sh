@@ -7,6 +7,9 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/tools/setup.sh"
 # ccache keys on paths relative to the checkout, so a fresh clone reuses the cache.
 export CCACHE_BASEDIR="$root"
+# The test code uses precompiled headers (CMakeLists.txt, gmr_pch); ccache caches their users only
+# with this sloppiness.
+export CCACHE_SLOPPINESS="pch_defines,time_macros${CCACHE_SLOPPINESS:+,$CCACHE_SLOPPINESS}"
 jobs="$(nproc)"
 run() {  # run <build dir> <ctest exclude regex or ""> <extra cmake args...>
   local build="$1" exclude="$2"; shift 2
