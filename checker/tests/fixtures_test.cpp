@@ -93,8 +93,8 @@ TEST(Fixtures, F3_Ex37_NonOrientation) {
   EXPECT_FALSE(check_non_orientation(r, 2, d));
   ASSERT_EQ(d.size(), 2u);  // the deleted a->c and the added c->a
   EXPECT_EQ(d[0].code, "O-no-reverse");
-  EXPECT_EQ(d[0].side, "L");
-  EXPECT_EQ(d[1].side, "R");
+  EXPECT_EQ(d[0].side, Side::L);
+  EXPECT_EQ(d[1].side, Side::R);
 }
 
 TEST(Fixtures, F4_Fig318_CycleCondition) {
@@ -291,6 +291,8 @@ TEST(Fixtures, ReportsAsTextAndJson) {
   EXPECT_NE(to_text(rep).find("[I-added-node]"), std::string::npos);
   const auto j = to_json(rep);
   EXPECT_EQ(j["format"], "gmr.check");
+  EXPECT_EQ(j["version"], 1);
+  EXPECT_EQ(j["subject"], "rule");
   EXPECT_EQ(j["ok"], false);
   EXPECT_EQ(j["conditions"]["I(1)"], false);
   EXPECT_EQ(j["diagnostics"][0]["code"], "I-added-node");
