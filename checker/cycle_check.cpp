@@ -215,22 +215,13 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, bool right, int i, int j) 
   return out;
 }
 
-bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
-  std::vector<Diagnostic> notes;
-  const Rule r = ij_complete(r0, i, j, &notes);
-  for (auto& n : notes) out.push_back(std::move(n));
-  if (!combinatorial_on(r.left(), i, j) || !combinatorial_on(r.right(), i, j)) {
-    out.push_back({.code = "C-skipped",
-                   .severity = Severity::Note,
-                   .condition = "C",
-                   .i = i,
-                   .j = j,
-                   .message = "not evaluated: a node has two " + lbl(i) + "- or " + lbl(j) +
-                       "-arcs on one side (the rule fails Def. 35 or I_r)"});
-    return true;
-  }
+namespace {
+
+// Def. 40.1 (with Def. 39): every (i,j)-optimal path of one side has exactly one coherent optimal
+// path (same source, target and label word) on the other side.
+bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, const std::vector<OptimalPath>& PR,
+                             int i, int j, std::vector<Diagnostic>& out) {
   bool ok = true;
-  const auto PL = optimal_paths(r, false, i, j), PR = optimal_paths(r, true, i, j);
   const DGraph &L = r.left(), &R = r.right();
   for (bool right : {false, true}) {
     const auto& mine = right ? PR : PL;
@@ -257,6 +248,15 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
       out.push_back(std::move(d));
     }
   }
+  return ok;
+}
+
+// Def. 40.2 and 40.3: a preserved node losing an i-arc (j-arc) and an added node have their
+// i-arc (j-arc) of R on an ijij-cycle or on an (i,j)-optimal path of R.
+bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& PR, int i, int j,
+                                 std::vector<Diagnostic>& out) {
+  bool ok = true;
+  const DGraph &L = r.left(), &R = r.right();
   std::set<ArcId> on_opt;
   for (const auto& p : PR) on_opt.insert(p.arcs.begin(), p.arcs.end());
   auto covered = [&](Node w, int d) {
@@ -294,6 +294,28 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
     }
   }
   return ok;
+}
+
+}  // namespace
+
+bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
+  std::vector<Diagnostic> notes;
+  const Rule r = ij_complete(r0, i, j, &notes);
+  for (auto& n : notes) out.push_back(std::move(n));
+  if (!combinatorial_on(r.left(), i, j) || !combinatorial_on(r.right(), i, j)) {
+    out.push_back({.code = "C-skipped",
+                   .severity = Severity::Note,
+                   .condition = "C",
+                   .i = i,
+                   .j = j,
+                   .message = "not evaluated: a node has two " + lbl(i) + "- or " + lbl(j) +
+                       "-arcs on one side (the rule fails Def. 35 or I_r)"});
+    return true;
+  }
+  const auto PL = optimal_paths(r, false, i, j), PR = optimal_paths(r, true, i, j);
+  const bool coherent = check_coherent_partners(r, PL, PR, i, j, out);
+  const bool covered = check_rewired_nodes_covered(r, PR, i, j, out);
+  return coherent && covered;
 }
 
 }  // namespace gmr::checker

@@ -1,5 +1,7 @@
 // Static checker for Jerboa rule schemes (thesis §4.4–4.7 and Ch. 6).
 //
+// Diagnostics are the checker's one Diagnostic/Severity (diagnostic.hpp); JSON in docs/check-format.md.
+//
 // A scheme is read as a (W×D)-rule scheme (thesis Fig. 6.15 translation): an explicit arc a –d– b is
 // an (ε,d)-arc in both directions (one loop arc when a == b), and label position p with o^v[p] = d
 // is an (o[p], d)-loop on v. Arcs are preserved iff they have the same ends and the same full
