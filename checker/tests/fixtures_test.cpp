@@ -1,8 +1,8 @@
-// The worked examples of the digest (notes/thesis-ch3-4-conditions.md §6) that are concrete rules,
-// loaded from checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is
-// applicable to small maps — against the semantics. F8, F10, F14, F15 are rule-scheme / rewriting-
-// system / product fixtures (digest §4-5): model/tests/word_scheme_test.cpp (F8, F9, F10),
-// word_rewriting_test.cpp (F14), graph_product_test.cpp (F15).
+// Worked examples of the thesis (Ch. 3 examples and figures) that are concrete rules, loaded from
+// checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is applicable to
+// small maps — against the semantics. The rule-scheme, rewriting-system and product fixtures are in
+// checker/tests/word_scheme_test.cpp (F8, F9, F10), checker/tests/word_rewriting_test.cpp (F14)
+// and model/graph/tests/graph_product_test.cpp (F15).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
