@@ -37,20 +37,15 @@ std::vector<std::string> path_names(const DGraph& g, const OptimalPath& p) {
   return s;
 }
 
-std::string word_str(const std::vector<int>& w) {
-  std::string s;
-  for (int l : w) s += (s.empty() ? "" : ".") + std::to_string(l);
-  return s;
-}
-
 }  // namespace
 
 Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
   DGraph L = r.left(), R = r.right();
   std::set<std::string> seen;
-  auto note = [&](const std::string& code, const std::string& msg, std::vector<std::string> path, const char* side) {
+  auto note = [&](const std::string& code, const std::string& msg, std::vector<std::string> path, std::optional<Side> side) {
     if (!notes || !seen.insert(code + msg).second) return;
-    notes->push_back({code, "C", i, j, Severity::Note, msg, {}, {}, std::move(path), side});
+    notes->push_back(Diagnostic{.code = code, .severity = Severity::Note, .condition = "C", .i = i, .j = j, .side = side,
+                                .path = std::move(path), .message = msg});
   };
   auto name_of_r = [&](Node l) { return R.find(L.name(l)); };
   bool changed = true;
@@ -70,7 +65,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
                    "the " + w + "-path cannot be closed by a " + lbl(b) + "-arc " + L.name(u3) + " -> " + L.name(u0) +
                        " (another " + lbl(b) + "-arc is already there): L matches no graph satisfying C_G(" + lbl(i) + "," +
                        lbl(j) + ")",
-                   path, "L");
+                   path, Side::L);
               continue;
             }
             auto r3 = name_of_r(u3), r0 = name_of_r(u0);
@@ -80,7 +75,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
             note("C-completed",
                  "ij-completion: the " + w + "-path is closed by the preserved " + lbl(b) + "-arc " + L.name(u3) + " -> " +
                      L.name(u0) + " added to L and R (Assumption 5)",
-                 path, "L");
+                 path, Side::L);
             changed = true;
             break;
           }
@@ -99,7 +94,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
           if (!has_arc(R, u3, u0, b))
             note("C-open-R",
                  "the " + lbl(a) + lbl(b) + lbl(a) + "-path of R is not closed in R (not completed, digest erratum 5)",
-                 {R.name(u0), R.name(u1), R.name(u2), R.name(u3)}, "R");
+                 {R.name(u0), R.name(u1), R.name(u2), R.name(u3)}, Side::R);
     }
   return Rule(std::move(L), std::move(R), r.dimension(), r.kind(), r.name());
 }
@@ -124,10 +119,14 @@ Rule complete_for_model(const Rule& r0, std::vector<Diagnostic>* notes) {
         if (!ru || !rv || has_out(L, v, i) || has_in(L, u, i)) continue;  // I_r / vacuity handle these
         L.add_arc(v, u, i);
         R.add_arc(*rv, *ru, i);
-        note({"C-O-completed", "C", i, -1, Severity::Note,
-              "model completion: the reverse " + lbl(i) + "-arc " + L.name(v) + " -> " + L.name(u) + " of " +
-                  L.name(u) + " -> " + L.name(v) + " was added to L and R (preserved) before checking C_r",
-              {L.name(u), L.name(v)}, {}, {}, "L"});
+        note({.code = "C-O-completed",
+              .severity = Severity::Note,
+              .condition = "C",
+              .i = i,
+              .side = Side::L,
+              .nodes = {L.name(u), L.name(v)},
+              .message = "model completion: the reverse " + lbl(i) + "-arc " + L.name(v) + " -> " + L.name(u) + " of " +
+                  L.name(u) + " -> " + L.name(v) + " was added to L and R (preserved) before checking C_r"});
         changed = true;
       }
     }
@@ -197,7 +196,7 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, bool right, int i, int j) 
     }
     make(chain);
   }
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {  // closed chains: every rotation (erratum 14)
+  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {  // closed chains: every rotation (Def. 38.4)
     if (!in[a] || done[a]) continue;
     std::vector<ArcId> cyc;
     for (ArcId b = a; !done[b]; b = succ(b)) {
@@ -216,19 +215,13 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, bool right, int i, int j) 
   return out;
 }
 
-bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
-  std::vector<Diagnostic> notes;
-  const Rule r = ij_complete(r0, i, j, &notes);
-  for (auto& n : notes) out.push_back(std::move(n));
-  if (!combinatorial_on(r.left(), i, j) || !combinatorial_on(r.right(), i, j)) {
-    out.push_back({"C-skipped", "C", i, j, Severity::Note,
-                   "not evaluated: a node has two " + lbl(i) + "- or " + lbl(j) +
-                       "-arcs on one side (the rule fails Def. 35 or I_r)",
-                   {}, {}, {}, ""});
-    return true;
-  }
+namespace {
+
+// Def. 40.1 (with Def. 39): every (i,j)-optimal path of one side has exactly one coherent optimal
+// path (same source, target and label word) on the other side.
+bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, const std::vector<OptimalPath>& PR,
+                             int i, int j, std::vector<Diagnostic>& out) {
   bool ok = true;
-  const auto PL = optimal_paths(r, false, i, j), PR = optimal_paths(r, true, i, j);
   const DGraph &L = r.left(), &R = r.right();
   for (bool right : {false, true}) {
     const auto& mine = right ? PR : PL;
@@ -241,9 +234,13 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
         if (h.name(q.source) == g.name(p.source) && h.name(q.target) == g.name(p.target) && q.word == p.word) ++partners;
       if (partners == 1) continue;
       ok = false;
-      Diagnostic d{partners == 0 ? "C-incoherent" : "C-ambiguous", "C", i, j, Severity::Error, "", {}, {}, path_names(g, p),
-                   right ? "R" : "L"};
-      d.message = "the (" + lbl(i) + "," + lbl(j) + ")-optimal path " + g.name(p.source) + " ~" + word_str(p.word) + "~> " +
+      Diagnostic d{.code = partners == 0 ? "C-incoherent" : "C-ambiguous",
+                   .condition = "C",
+                   .i = i,
+                   .j = j,
+                   .side = graph::side_of(right),
+                   .path = path_names(g, p)};
+      d.message = "the (" + lbl(i) + "," + lbl(j) + ")-optimal path " + g.name(p.source) + " ~" + word_text(p.word) + "~> " +
                   g.name(p.target) + " of " + (right ? "R" : "L") + " has " + std::to_string(partners) +
                   " coherent optimal paths in " + (right ? "L" : "R") + "; exactly one is required (Defs. 39, 40.1)";
       d.nodes = {g.name(p.source), g.name(p.target)};
@@ -251,6 +248,15 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
       out.push_back(std::move(d));
     }
   }
+  return ok;
+}
+
+// Def. 40.2 and 40.3: a preserved node losing an i-arc (j-arc) and an added node have their
+// i-arc (j-arc) of R on an ijij-cycle or on an (i,j)-optimal path of R.
+bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& PR, int i, int j,
+                                 std::vector<Diagnostic>& out) {
+  bool ok = true;
+  const DGraph &L = r.left(), &R = r.right();
   std::set<ArcId> on_opt;
   for (const auto& p : PR) on_opt.insert(p.arcs.begin(), p.arcs.end());
   auto covered = [&](Node w, int d) {
@@ -266,7 +272,7 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
         if (L.arc(a).label == d && r.left_arc_status(a) == ElemStatus::Deleted) rewired = true;
       if (!rewired || covered(w, d)) continue;
       ok = false;
-      Diagnostic dg{"C-preserved-node", "C", i, j, Severity::Error, "", {L.name(v)}, {}, {}, "R"};
+      Diagnostic dg{.code = "C-preserved-node", .condition = "C", .i = i, .j = j, .side = Side::R, .nodes = {L.name(v)}};
       dg.message = "preserved node " + L.name(v) + " loses its " + lbl(d) + "-arc but its " + lbl(d) +
                    "-arc in R is neither on an " + lbl(i) + lbl(j) + lbl(i) + lbl(j) + "-cycle nor on an (" + lbl(i) + "," +
                    lbl(j) + ")-optimal path (Def. 40.2)";
@@ -279,7 +285,7 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
     for (int d : {i, j}) {
       if (covered(w, d)) continue;
       ok = false;
-      Diagnostic dg{"C-added-node", "C", i, j, Severity::Error, "", {R.name(w)}, {}, {}, "R"};
+      Diagnostic dg{.code = "C-added-node", .condition = "C", .i = i, .j = j, .side = Side::R, .nodes = {R.name(w)}};
       dg.message = "added node " + R.name(w) + " is not the source of a " + lbl(d) + "-arc on an " + lbl(i) + lbl(j) + lbl(i) +
                    lbl(j) + "-cycle or on an (" + lbl(i) + "," + lbl(j) + ")-optimal path of R (Def. 40.3)";
       for (ArcId a : R.out_arcs(w))
@@ -288,6 +294,28 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
     }
   }
   return ok;
+}
+
+}  // namespace
+
+bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
+  std::vector<Diagnostic> notes;
+  const Rule r = ij_complete(r0, i, j, &notes);
+  for (auto& n : notes) out.push_back(std::move(n));
+  if (!combinatorial_on(r.left(), i, j) || !combinatorial_on(r.right(), i, j)) {
+    out.push_back({.code = "C-skipped",
+                   .severity = Severity::Note,
+                   .condition = "C",
+                   .i = i,
+                   .j = j,
+                   .message = "not evaluated: a node has two " + lbl(i) + "- or " + lbl(j) +
+                       "-arcs on one side (the rule fails Def. 35 or I_r)"});
+    return true;
+  }
+  const auto PL = optimal_paths(r, false, i, j), PR = optimal_paths(r, true, i, j);
+  const bool coherent = check_coherent_partners(r, PL, PR, i, j, out);
+  const bool covered = check_rewired_nodes_covered(r, PR, i, j, out);
+  return coherent && covered;
 }
 
 }  // namespace gmr::checker

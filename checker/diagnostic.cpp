@@ -2,11 +2,29 @@
 
 namespace gmr::checker {
 
+const char* to_string(Severity s) {
+  switch (s) {
+    case Severity::Error: return "error";
+    case Severity::Warning: return "warning";
+    case Severity::Note: return "note";
+  }
+  return "?";
+}
+
+std::string word_text(const std::vector<int>& w) {
+  if (w.empty()) return "ε";
+  std::string s;
+  for (int x : w) s += std::to_string(x);
+  return s;
+}
+
 std::string Diagnostic::condition_str() const {
   if (i < 0) return condition;
   if (j < 0) return condition + "(" + std::to_string(i) + ")";
   return condition + "(" + std::to_string(i) + "," + std::to_string(j) + ")";
 }
+
+std::string Diagnostic::side_str() const { return side ? to_string(*side) : ""; }
 
 bool CheckReport::ok() const {
   for (const auto& d : diagnostics)
@@ -33,11 +51,11 @@ static std::string join(const std::vector<std::string>& v, const char* sep) {
 }
 
 std::string to_text(const Diagnostic& d) {
-  std::string s = std::string(d.severity == Severity::Error ? "error" : "note") + " [" + d.code + "] " +
+  std::string s = std::string(to_string(d.severity)) + " [" + d.code + "] " +
                   d.condition_str() + ": " + d.message;
   if (!d.nodes.empty()) s += "; nodes: " + join(d.nodes, ", ");
   if (!d.arcs.empty()) s += "; arcs: " + join(d.arcs, ", ");
-  if (!d.path.empty()) s += "; path" + (d.side.empty() ? "" : " in " + d.side) + ": " + join(d.path, " ");
+  if (!d.path.empty()) s += "; path" + (d.side ? std::string(" in ") + to_string(*d.side) : "") + ": " + join(d.path, " ");
   return s;
 }
 
@@ -54,7 +72,7 @@ std::string to_text(const CheckReport& r) {
 nlohmann::ordered_json to_json(const Diagnostic& d) {
   nlohmann::ordered_json j;
   j["code"] = d.code;
-  j["severity"] = d.severity == Severity::Error ? "error" : "note";
+  j["severity"] = to_string(d.severity);
   j["condition"] = d.condition;
   if (d.i >= 0) {
     j["dims"] = nlohmann::ordered_json::array({d.i});
@@ -64,18 +82,24 @@ nlohmann::ordered_json to_json(const Diagnostic& d) {
   if (!d.nodes.empty()) j["nodes"] = d.nodes;
   if (!d.arcs.empty()) j["arcs"] = d.arcs;
   if (!d.path.empty()) j["path"] = d.path;
-  if (!d.side.empty()) j["side"] = d.side;
+  if (d.side) j["side"] = to_string(*d.side);
+  return j;
+}
+
+nlohmann::ordered_json check_document(const char* subject, bool ok) {
+  nlohmann::ordered_json j;
+  j["format"] = "gmr.check";
+  j["version"] = 1;
+  j["subject"] = subject;
+  j["ok"] = ok;
   return j;
 }
 
 nlohmann::ordered_json to_json(const CheckReport& r) {
-  nlohmann::ordered_json j;
-  j["format"] = "gmr.check";
-  j["version"] = 1;
+  nlohmann::ordered_json j = check_document("rule", r.ok());
   if (!r.rule_name.empty()) j["rule"] = r.rule_name;
   j["map"] = r.kind == MapKind::OMap ? "omap" : "gmap";
   j["n"] = r.n;
-  j["ok"] = r.ok();
   j["conditions"] = nlohmann::ordered_json::object();
   for (const auto& [c, h] : r.conditions) j["conditions"][c] = h;
   j["diagnostics"] = nlohmann::ordered_json::array();

@@ -1,4 +1,5 @@
-// Diagnostics of the static consistency checker for concrete rules (thesis §3.3, digest §3).
+// Diagnostics of the static consistency checker for concrete rules (thesis §3.3) and, with the
+// same Diagnostic and Severity, of the scheme checker (scheme_checker.hpp). JSON: docs/check-format.md.
 //
 // Every violation is a Diagnostic with a STABLE code, the condition and dimension(s) it belongs to,
 // and its witnesses (nodes, arcs, path). Codes (severity error unless marked note):
@@ -31,32 +32,46 @@
 //                        j-arc): L never matches a graph satisfying C_G(i,j) — the rule is vacuous.
 //   C-O-completed        (note) model completion: the reverse of an arc of L in an involutive
 //                        dimension was added to L∩R before checking C_r (rule_check.hpp).
-//   C-open-R             (note) an iji-path of R is not closed in R. Not completed (digest erratum 5:
-//                        completing R would change the matches); C_r judges it through optimal paths.
+//   C-open-R             (note) an iji-path of R is not closed in R. Not completed (completing R
+//                        would change the matches); C_r judges it through optimal paths.
 #pragma once
 #include <string>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "model/core/gmap.hpp"
+#include "model/graph/elem_status.hpp"
 
 namespace gmr::checker {
+using graph::Side;
 
-enum class Severity { Error, Note };
+// One severity for the concrete-rule and the scheme checker: an error makes the rule fail; a
+// warning (schemes: an unevaluated precondition, an ignored expression) and a note do not.
+enum class Severity { Error, Warning, Note };
+const char* to_string(Severity s);
 
+// A word of dimensions in the thesis' notation: the letters side by side ("021"), ε when empty.
+std::string word_text(const std::vector<int>& w);
+
+// One diagnostic of either checker. Build it with designated initializers:
+//   Diagnostic{.code = "I-added-node", .condition = "I", .i = 2, .side = Side::R, .message = ...}.
 struct Diagnostic {
-  std::string code;
-  std::string condition;  // "combinatorial", "w-I", "I", "O", "C"
-  int i = -1, j = -1;
+  std::string code{};               // stable, listed above and in scheme_checker.hpp
   Severity severity = Severity::Error;
-  std::string message;
-  std::vector<std::string> nodes;  // node names (witnesses)
-  std::vector<std::string> arcs;   // "a -0-> b (L)"
-  std::vector<std::string> path;   // node names along a path (C), with the side in `side`
-  std::string side;                // "L", "R" or ""
+  // Concrete rules: "combinatorial", "w-I", "I", "O", "C", the dimension(s) in i and j.
+  // Schemes: "structure", "hooks" or the full condition ("I(2)", "C(0,2)"), i = j = -1.
+  std::string condition{};
+  int i = -1, j = -1;
+  std::optional<Side> side{};      // the rule side the witnesses live on, when there is one
+  std::vector<std::string> nodes{};// node names (witnesses)
+  std::vector<std::string> arcs{}; // concrete "a -0-> b (L)", scheme "n0 -1- n2"
+  std::vector<std::string> path{}; // node names along a path or cycle, on `side`
+  std::string message{};
   std::string condition_str() const;  // "I(2)", "C(0,2)", "combinatorial"
+  std::string side_str() const;       // "L", "R" or ""
 };
 
 struct CheckReport {
@@ -74,5 +89,10 @@ std::string to_text(const Diagnostic& d);
 std::string to_text(const CheckReport& r);
 nlohmann::ordered_json to_json(const Diagnostic& d);
 nlohmann::ordered_json to_json(const CheckReport& r);
+
+// The header every gmr.check document starts with (docs/check-format.md):
+// {"format": "gmr.check", "version": 1, "subject": subject, "ok": ok}; subject is "rule" (a
+// concrete rule), "scheme" (a rule scheme) or "modeler" (a batch of .jme rule schemes).
+nlohmann::ordered_json check_document(const char* subject, bool ok);
 
 }  // namespace gmr::checker

@@ -20,7 +20,7 @@ std::vector<DotHighlight> dot_highlights(const CheckReport& r) {
   for (const auto& d : r.diagnostics) {
     if (d.severity != Severity::Error) continue;
     // Without a side, the arcs' tags ("a -2-> c (L)") tell it when they agree.
-    std::string side = d.side;
+    std::string side = d.side_str();
     if (side.empty() && !d.arcs.empty()) {
       auto on = [&](const char* tag) {
         return std::all_of(d.arcs.begin(), d.arcs.end(), [&](const std::string& a) { return a.ends_with(tag); });
@@ -35,8 +35,8 @@ std::vector<DotHighlight> dot_highlights(const CheckReport& r) {
 std::vector<DotHighlight> dot_highlights(const SchemeCheckReport& r) {
   std::vector<DotHighlight> out;
   for (const auto& d : r.diagnostics)
-    if (d.severity != SchemeSeverity::Note)
-      add(out, d.side, d.nodes, d.path, d.code, d.message, d.severity == SchemeSeverity::Error);
+    if (d.severity != Severity::Note)
+      add(out, d.side_str(), d.nodes, d.path, d.code, d.message, d.severity == Severity::Error);
   return out;
 }
 

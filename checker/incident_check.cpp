@@ -37,7 +37,7 @@ bool weak(const Rule& r, int i, std::vector<Diagnostic>& out, const char* cond) 
       const auto rr = arcs_with(R, dir ? R.in_arcs(w) : R.out_arcs(w), i);
       if (l.size() == rr.size()) continue;
       ok = false;
-      Diagnostic d{"I-preserved-node", cond, i, -1, Severity::Error, "", {}, {}, {}, ""};
+      Diagnostic d{.code = "I-preserved-node", .condition = cond, .i = i};
       const char* what = dir ? "incoming" : "outgoing";
       d.message = "preserved node " + L.name(v) + " has " + count_str(l.size(), what, i) + " in L but " +
                   count_str(rr.size(), what, i) + " in R (Def. 33.1)";
@@ -51,7 +51,7 @@ bool weak(const Rule& r, int i, std::vector<Diagnostic>& out, const char* cond) 
     const auto o = arcs_with(R, R.out_arcs(w), i), in = arcs_with(R, R.in_arcs(w), i);
     if (o.size() == 1 && in.size() == 1) continue;
     ok = false;
-    Diagnostic d{"I-added-node", cond, i, -1, Severity::Error, "", {}, {}, {}, ""};
+    Diagnostic d{.code = "I-added-node", .condition = cond, .i = i};
     d.message = "added node " + R.name(w) + " is the source of " + count_str(o.size(), "outgoing", i) + " and the target of " +
                 count_str(in.size(), "incoming", i) + " in R; exactly one each is required (Def. 33.2)";
     d.nodes = {R.name(w)};
@@ -75,7 +75,7 @@ bool check_combinatorial(const Rule& r, std::vector<Diagnostic>& out) {
       for (auto& [i, arcs] : by) {
         if (arcs.size() <= 1) continue;
         ok = false;
-        Diagnostic d{"comb-multiple-arcs", "combinatorial", i, -1, Severity::Error, "", {}, {}, {}, "L"};
+        Diagnostic d{.code = "comb-multiple-arcs", .condition = "combinatorial", .i = i, .side = Side::L};
         d.message = "node " + L.name(v) + " is the " + (dir ? "target" : "source") + " of " + std::to_string(arcs.size()) +
                     " " + std::to_string(i) + "-arcs in L; no injective match into a combinatorial graph exists (Def. 35)";
         d.nodes = {L.name(v)};
@@ -96,7 +96,7 @@ bool check_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) {
     const auto o = arcs_with(L, L.out_arcs(v), i), in = arcs_with(L, L.in_arcs(v), i);
     if (o.size() == 1 && in.size() == 1) continue;
     ok = false;
-    Diagnostic d{"I-deleted-node", "I", i, -1, Severity::Error, "", {}, {}, {}, "L"};
+    Diagnostic d{.code = "I-deleted-node", .condition = "I", .i = i, .side = Side::L};
     d.message = "deleted node " + L.name(v) + " is the source of " + count_str(o.size(), "outgoing", i) + " and the target of " +
                 count_str(in.size(), "incoming", i) +
                 " in L; exactly one each is required, else a match leaves dangling arcs (Def. 34, Fact 1)";

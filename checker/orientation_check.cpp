@@ -18,7 +18,11 @@ bool check_non_orientation(const Rule& r, int i, std::vector<Diagnostic>& out) {
       std::vector<ArcId> rev;
       for (ArcId b : g.out_arcs(e.tgt))
         if (g.arc(b).label == i && g.arc(b).tgt == e.src) rev.push_back(b);
-      Diagnostic d{"", "O", i, -1, Severity::Error, "", {g.name(e.src), g.name(e.tgt)}, {r.arc_str(right, a)}, {}, side};
+      Diagnostic d{.condition = "O",
+                   .i = i,
+                   .side = graph::side_of(right),
+                   .nodes = {g.name(e.src), g.name(e.tgt)},
+                   .arcs = {r.arc_str(right, a)}};
       const std::string what = std::string(to_string(changed)) + " arc " + r.arc_str(right, a);
       if (rev.empty()) {
         d.code = "O-no-reverse";

@@ -1,4 +1,4 @@
-// Static consistency checker for concrete rules (thesis Defs. 33–40, §3.4; digest §3).
+// Static consistency checker for concrete rules (thesis Defs. 33–40, §3.4).
 //
 // Per dimension (or pair), each function appends its diagnostics (codes: diagnostic.hpp) and
 // returns whether the condition holds:
@@ -23,16 +23,16 @@
 //  * Def. 33.1 "source of an i-arc in L iff in R" is read with multiplicities (|out_i^L(v)| =
 //    |out_i^R(v)|, Algorithm 1): the existential reading accepts a preserved node with one i-arc
 //    in L and two in R, and H then has two i-arcs at that node (Theorem 1 would be false).
-//  * Def. 38.4 maximality for closed walks (digest erratum 14): the deleted (added) i/j-arcs are
+//  * Def. 38.4 maximality for closed walks: the deleted (added) i/j-arcs are
 //    chained (an arc is followed by the non-preserved arc of the other label leaving its target,
 //    unique in a combinatorial rule); an open chain is one maximal path; a closed chain of k arcs
 //    gives its k rotations, each a maximal non-overlapping path. Def. 38.5 then drops every path
 //    lying on an ijij-cycle of the side (interface arcs included, Ex. 39).
-//  * ij-completion is applied to L only (digest erratum 5); unclosed iji-paths of R are notes.
+//  * ij-completion is applied to L only (completing R would change the matches); unclosed iji-paths of R are notes.
 //    A completion arc whose end is not preserved is not added (the deleted end then fails I_r);
 //    a conflicting completion (the end already has another j-arc) is a note: L can then never
 //    match a graph satisfying C_G(i,j).
-//  * Def. 40.2 concerns DELETED arcs of preserved nodes only (digest erratum 6; Algorithm 3's
+//  * Def. 40.2 concerns DELETED arcs of preserved nodes only (Algorithm 3's
 //    "any arc of v in L" would reject rules that Def. 40 and the semantics accept).
 #pragma once
 #include <string>

@@ -5,26 +5,20 @@
 #include <map>
 #include <set>
 
+#include "model/words/word_rewriting.hpp"
+
 namespace gmr::checker {
 using namespace gmr::scheme;
-
-const char* to_string(SchemeSeverity s) {
-  switch (s) {
-    case SchemeSeverity::Error: return "error";
-    case SchemeSeverity::Warning: return "warning";
-    case SchemeSeverity::Note: return "note";
-  }
-  return "?";
-}
+using words::RewritingSystem;
 
 bool SchemeCheckReport::ok() const { return errors() == 0; }
 size_t SchemeCheckReport::errors() const {
   return std::count_if(diagnostics.begin(), diagnostics.end(),
-                       [](const auto& d) { return d.severity == SchemeSeverity::Error; });
+                       [](const auto& d) { return d.severity == Severity::Error; });
 }
 size_t SchemeCheckReport::warnings() const {
   return std::count_if(diagnostics.begin(), diagnostics.end(),
-                       [](const auto& d) { return d.severity == SchemeSeverity::Warning; });
+                       [](const auto& d) { return d.severity == Severity::Warning; });
 }
 size_t SchemeCheckReport::count(const std::string& code) const {
   return std::count_if(diagnostics.begin(), diagnostics.end(), [&](const auto& d) { return d.code == code; });
@@ -35,34 +29,13 @@ bool SchemeCheckReport::holds(const std::string& c) const {
   return false;
 }
 
-std::vector<int> gmap_word_normal_form(std::vector<int> w) {
-  bool changed = true;
-  while (changed) {
-    changed = false;
-    for (size_t k = 0; k + 1 < w.size(); ++k) {
-      if (w[k] == w[k + 1]) {
-        w.erase(w.begin() + static_cast<long>(k), w.begin() + static_cast<long>(k) + 2);
-        changed = true;
-        break;
-      }
-      if (w[k] >= w[k + 1] + 2) {
-        std::swap(w[k], w[k + 1]);
-        changed = true;
-        break;
-      }
-    }
-  }
-  return w;
+std::vector<int> gmap_word_normal_form(int n, const std::vector<int>& w) {
+  std::vector<int> out;
+  for (const words::Letter& l : RewritingSystem::gmap(n).normal_form(words::word_of_dims(w))) out.push_back(l.dim);
+  return out;
 }
 
 namespace {
-
-std::string word_str(const std::vector<int>& w) {
-  if (w.empty()) return "ε";
-  std::string s;
-  for (int x : w) s += std::to_string(x);
-  return s;
-}
 
 // The (i,j)-core of one side: per node and label, the out-arc (target, W-letter or -1 for ε).
 struct CoreArc {
@@ -86,26 +59,24 @@ class Checker {
       for (int j = i + 2; j <= s_.dimension; ++j)
         rep_.conditions.emplace_back("C(" + std::to_string(i) + "," + std::to_string(j) + ")", cycle(i, j));
     if (!s_.precondition.empty())
-      add("S-precondition", SchemeSeverity::Warning, "structure", "", {},
+      add("S-precondition", Severity::Warning, "structure", std::nullopt, {},
           "the Jerboa precondition is not evaluated; the verdict is about the topology only");
     for (uint32_t v = 0; v < s_.left.size(); ++v)
       if (!s_.right_of(v) && !s_.left.nodes[v].expressions.empty())
-        add("S-left-expression", SchemeSeverity::Warning, "structure", "L", {s_.left.nodes[v].name},
+        add("S-left-expression", Severity::Warning, "structure", Side::L, {s_.left.nodes[v].name},
             "embedding expression on a deleted node (ignored)");
     return std::move(rep_);
   }
 
  private:
-  SchemeDiagnostic& add(std::string code, SchemeSeverity sev, std::string cond, std::string side,
-                        std::vector<std::string> nodes, std::string msg) {
-    SchemeDiagnostic d;
-    d.code = std::move(code);
-    d.severity = sev;
-    d.condition = std::move(cond);
-    d.side = std::move(side);
-    d.nodes = std::move(nodes);
-    d.message = std::move(msg);
-    rep_.diagnostics.push_back(std::move(d));
+  Diagnostic& add(std::string code, Severity sev, std::string cond, std::optional<Side> side,
+                  std::vector<std::string> nodes, std::string msg) {
+    rep_.diagnostics.push_back(Diagnostic{.code = std::move(code),
+                                          .severity = sev,
+                                          .condition = std::move(cond),
+                                          .side = side,
+                                          .nodes = std::move(nodes),
+                                          .message = std::move(msg)});
     return rep_.diagnostics.back();
   }
   const GraphScheme& side(bool right) const { return right ? s_.right : s_.left; }
@@ -120,7 +91,7 @@ class Checker {
     for (int x : s_.orbit.dims())
       if (x == OrbitType::kHole || x < 0 || x > n || !seen.insert(x).second) orbit_ok = false;
     if (!orbit_ok) {
-      add("S-orbit", SchemeSeverity::Error, "structure", "", {},
+      add("S-orbit", Severity::Error, "structure", std::nullopt, {},
           "the rule's orbit type " + s_.orbit.str() + " must list distinct dimensions of 0.." + std::to_string(n) +
               " without `_`");
       ok = false;
@@ -131,19 +102,19 @@ class Checker {
       for (uint32_t v = 0; v < g.size(); ++v) {
         const SchemeNode& nd = g.nodes[v];
         if (++names[nd.name] == 2) {
-          add("S-duplicate-name", SchemeSeverity::Error, "structure", tag(r), {nd.name},
+          add("S-duplicate-name", Severity::Error, "structure", graph::side_of(r), {nd.name},
               "two nodes named " + nd.name + " in " + tag(r));
           ok = false;
         }
         if (nd.label.size() != s_.orbit.size()) {
-          add("S-label-arity", SchemeSeverity::Error, "structure", tag(r), {nd.name},
+          add("S-label-arity", Severity::Error, "structure", graph::side_of(r), {nd.name},
               "label " + nd.label.str() + " has arity " + std::to_string(nd.label.size()) + ", the orbit type " +
                   s_.orbit.str() + " has " + std::to_string(s_.orbit.size()));
           ok = false;
         }
         for (int x : nd.label.dims())
           if (x != OrbitType::kHole && (x < 0 || x > n)) {
-            add("S-dim-range", SchemeSeverity::Error, "structure", tag(r), {nd.name},
+            add("S-dim-range", Severity::Error, "structure", graph::side_of(r), {nd.name},
                 "label " + nd.label.str() + " uses dimension " + std::to_string(x) + " outside 0.." +
                     std::to_string(n));
             ok = false;
@@ -151,15 +122,15 @@ class Checker {
       }
       for (const auto& e : g.arcs) {
         if (e.a >= g.size() || e.b >= g.size()) {
-          add("S-dim-range", SchemeSeverity::Error, "structure", tag(r), {}, "arc end out of range");
+          add("S-dim-range", Severity::Error, "structure", graph::side_of(r), {}, "arc end out of range");
           ok = false;
           continue;
         }
         if (e.dim < 0 || e.dim > n) {
-          auto& d = add("S-dim-range", SchemeSeverity::Error, "structure", tag(r),
+          auto& d = add("S-dim-range", Severity::Error, "structure", graph::side_of(r),
                         {g.nodes[e.a].name, g.nodes[e.b].name},
                         "arc dimension " + std::to_string(e.dim) + " outside 0.." + std::to_string(n));
-          d.arc = arc_text(g, e);
+          d.arcs = {arc_text(g, e)};
           ok = false;
         }
       }
@@ -168,7 +139,7 @@ class Checker {
         for (int d = 0; d <= n; ++d) {
           const size_t c = g.count_arcs(v, d);
           if (c > 1) {
-            add("S-dim-twice", SchemeSeverity::Error, "structure", tag(r), {g.nodes[v].name},
+            add("S-dim-twice", Severity::Error, "structure", graph::side_of(r), {g.nodes[v].name},
                 "dimension " + std::to_string(d) + " is used " + std::to_string(c) + " times at " +
                     node_label_text(g.nodes[v]) + " (label positions and explicit arcs)" +
                     (r ? "" : ": no match into a G-map exists (E1)"));
@@ -191,18 +162,18 @@ class Checker {
     for (size_t h = 0; h < s_.hooks.size(); ++h) {
       auto v = s_.left.find(s_.hooks[h]);
       if (!v) {
-        add("S-no-hook", SchemeSeverity::Error, "hooks", "L", {s_.hooks[h]}, "hook " + s_.hooks[h] + " is not an L node");
+        add("S-no-hook", Severity::Error, "hooks", Side::L, {s_.hooks[h]}, "hook " + s_.hooks[h] + " is not an L node");
         ok = false;
         continue;
       }
       hooks_of[comp[*v]].push_back(s_.hooks[h]);
       const OrbitType& lab = s_.left.nodes[*v].label;
       if (lab.has_hole()) {
-        add("S-hook-hole", SchemeSeverity::Error, "hooks", "L", {s_.hooks[h]},
+        add("S-hook-hole", Severity::Error, "hooks", Side::L, {s_.hooks[h]},
             "hook " + node_label_text(s_.left.nodes[*v]) + " has `_` in its label");
         ok = false;
       } else if (h == 0 && lab != s_.orbit) {
-        add("S-hook-orbit", SchemeSeverity::Error, "hooks", "L", {s_.hooks[h]},
+        add("S-hook-orbit", Severity::Error, "hooks", Side::L, {s_.hooks[h]},
             "the reference hook's label " + lab.str() + " differs from the rule's orbit type " + s_.orbit.str());
         ok = false;
       }
@@ -212,11 +183,11 @@ class Checker {
       for (uint32_t v = 0; v < s_.left.size(); ++v)
         if (comp[v] == c) members.push_back(s_.left.nodes[v].name);
       if (hooks_of[c].empty()) {
-        add("S-no-hook", SchemeSeverity::Error, "hooks", "L", members,
+        add("S-no-hook", Severity::Error, "hooks", Side::L, members,
             "connected component {" + join(members) + "} of L has no hook");
         ok = false;
       } else if (hooks_of[c].size() > 1) {
-        add("S-several-hooks", SchemeSeverity::Error, "hooks", "L", hooks_of[c],
+        add("S-several-hooks", Severity::Error, "hooks", Side::L, hooks_of[c],
             "connected component {" + join(members) + "} of L has " + std::to_string(hooks_of[c].size()) +
                 " hooks (" + join(hooks_of[c]) + ")");
         ok = false;
@@ -250,14 +221,14 @@ class Checker {
           continue;
         }
         if (cr != cl) {
-          add("I-preserved-node", SchemeSeverity::Error, cond, cl ? "L" : "R", {nm},
+          add("I-preserved-node", Severity::Error, cond, cl ? Side::L : Side::R, {nm},
               "preserved node " + nm + (cl ? " has a " + ds + "-arc in L but none in R"
                                            : " gains a " + ds + "-arc in R it does not have in L") +
                   " (E2): its instances would have " + (cl ? "no " : "two ") + ds + "-links");
           ok = false;
         }
       } else if (cl != 1) {
-        add("I-deleted-node", SchemeSeverity::Error, cond, "L", {nm},
+        add("I-deleted-node", Severity::Error, cond, Side::L, {nm},
             "deleted node " + nm + " has no " + ds + "-arc in L (E3, gluing condition): the links of its darts "
             "outside the match would dangle, so the rule never applies");
         ok = false;
@@ -267,7 +238,7 @@ class Checker {
       if (s_.left_of(v)) continue;
       const size_t cr = s_.right.count_arcs(v, d);
       if (cr == 0) {
-        add("I-added-node", SchemeSeverity::Error, cond, "R", {s_.right.nodes[v].name},
+        add("I-added-node", Severity::Error, cond, Side::R, {s_.right.nodes[v].name},
             "added node " + s_.right.nodes[v].name + " has no " + ds + "-arc in R (E4)");
         ok = false;
       } else if (cr > 1) {
@@ -308,27 +279,30 @@ class Checker {
 
   // Is `this_arc` (an out-arc on side this_right, towards the node named tgt_name) preserved, i.e.
   // is `other_arc` (the same node's out-arc with the same label on the other side) the same arc:
-  // same letter and a target of the same name? (The target name must be read on the OTHER side:
-  // comparing this_arc's own target with itself accepted every rewired arc as preserved — found by
-  // the random-scheme property, proptests/scheme_prop.cpp.)
+  // same letter and a target of the same name, the target name being read on the other side.
   bool same_arc(const CoreArc& other_arc, const std::string& tgt_name, const CoreArc& this_arc, bool this_right) const {
     return other_arc.exists && this_arc.exists && other_arc.letter == this_arc.letter &&
            side(!this_right).nodes[other_arc.target].name == tgt_name;
   }
 
-  bool cycle(int i, int j) {
-    const std::string cond = "C(" + std::to_string(i) + "," + std::to_string(j) + ")";
+  // C_S(i,j) is evaluated on simple (i,j)-cores only: a node with two i- or j-arcs (already an
+  // S-dim-twice error) is reported as C-skipped. Returns true when skipped.
+  bool has_branching(int i, int j, const std::string& cond) {
     for (bool r : {false, true})
       for (uint32_t v = 0; v < side(r).size(); ++v)
         if (side(r).count_arcs(v, i) > 1 || side(r).count_arcs(v, j) > 1) {
-          add("C-skipped", SchemeSeverity::Note, cond, tag(r), {side(r).nodes[v].name},
+          add("C-skipped", Severity::Note, cond, graph::side_of(r), {side(r).nodes[v].name},
               cond + " not evaluated: a node has two " + std::to_string(i) + "- or " + std::to_string(j) + "-arcs");
-          return false;
+          return true;
         }
-    const int lab[2] = {i, j};
-    SideData sd[2];
+    return false;
+  }
+
+  // The (i,j)-cores of L and R, and which of their arcs are changed (deleted in L, added in R): an
+  // arc is preserved iff the same node has an arc with the same label, letter and target name on the
+  // other side (Def. 46).
+  void cores_and_changed_arcs(SideData (&sd)[2], int i, int j) const {
     for (int r = 0; r < 2; ++r) sd[r].core = core(r == 1, i, j);
-    // Status of each out-arc.
     for (int r = 0; r < 2; ++r) {
       const GraphScheme& g = side(r == 1);
       sd[r].changed.assign(g.size(), {false, false});
@@ -344,9 +318,14 @@ class Checker {
         }
       }
     }
+  }
+
+  // Alternating (i,j)-cycles of each side (Alg. 3): length in {2,4} (E10) and a W-word whose
+  // normal form under R_{N,E} (Def. 52) is ε (E11). Marks the arcs on cycles.
+  bool check_alternating_cycles(SideData (&sd)[2], int i, int j, const std::string& cond) {
+    const int lab[2] = {i, j};
     bool ok = true;
     std::set<std::string> reported;
-    // Alternating cycles: E10, E11.
     for (int r = 0; r < 2; ++r) {
       const GraphScheme& g = side(r == 1);
       const auto& c = sd[r].core;
@@ -377,7 +356,7 @@ class Checker {
             std::vector<std::string> key = names;
             std::sort(key.begin(), key.end());
             if (reported.insert("len" + std::to_string(r) + join(key)).second) {
-              auto& d = add("C-cycle-length", SchemeSeverity::Error, cond, tag(r == 1), names,
+              auto& d = add("C-cycle-length", Severity::Error, cond, graph::side_of(r == 1), names,
                             "alternating (" + std::to_string(i) + "," + std::to_string(j) + ")-cycle of length " +
                                 std::to_string(steps) + " through " + join(names) +
                                 " (E10): its instances cannot be ijij-cycles");
@@ -396,14 +375,14 @@ class Checker {
             x = c[x][k].target;
             k = 1 - k;
           }
-          if (!gmap_word_normal_form(word).empty()) {
+          if (!gmap_word_normal_form(s_.dimension, word).empty()) {
             std::vector<std::string> key = names;
             std::sort(key.begin(), key.end());
             if (reported.insert("word" + std::to_string(r) + join(key)).second) {
-              auto& d = add("C-cycle-word", SchemeSeverity::Error, cond, tag(r == 1), names,
+              auto& d = add("C-cycle-word", Severity::Error, cond, graph::side_of(r == 1), names,
                             "the (" + std::to_string(lab[k0]) + "," + std::to_string(lab[1 - k0]) +
-                                ")-cycle through " + join(names) + " reads the word " + word_str(word) +
-                                ", whose normal form " + word_str(gmap_word_normal_form(word)) +
+                                ")-cycle through " + join(names) + " reads the word " + word_text(word) +
+                                ", whose normal form " + word_text(gmap_word_normal_form(s_.dimension, word)) +
                                 " is not ε (E11): its instances do not close");
               d.path = names;
             }
@@ -411,7 +390,13 @@ class Checker {
           }
         }
     }
-    // Optimal paths: maximal alternating chains of changed arcs, not overlapping, not on cycles.
+    return ok;
+  }
+
+  // The (i,j)-optimal paths of each side (Def. 39): maximal alternating chains of changed arcs, not
+  // overlapping, not made of cycle arcs only. Marks the arcs on optimal paths.
+  void collect_optimal_paths(SideData (&sd)[2], int i, int j) const {
+    const int lab[2] = {i, j};
     for (int r = 0; r < 2; ++r) {
       const auto& c = sd[r].core;
       const auto& ch = sd[r].changed;
@@ -447,7 +432,12 @@ class Checker {
           sd[r].paths.push_back(std::move(p));
         }
     }
-    // Strong coherence (E8, E9).
+  }
+
+  // Strong coherence (Def. 40.1, Def. 55): every optimal path has exactly one coherent optimal path
+  // on the other side (E8) and their W-words are congruent (E9).
+  bool check_strong_coherence(const SideData (&sd)[2], int i, int j, const std::string& cond) {
+    bool ok = true;
     for (int r = 0; r < 2; ++r) {
       const GraphScheme& g = side(r == 1);
       const GraphScheme& h = side(r == 0);
@@ -464,7 +454,7 @@ class Checker {
         const std::string what = "the (" + std::to_string(i) + "," + std::to_string(j) + ")-optimal path " +
                                  join(names) + " of " + tag(r == 1) + " (labels " + lw + ")";
         if (partners.size() != 1) {
-          auto& d = add(partners.empty() ? "C-incoherent" : "C-ambiguous", SchemeSeverity::Error, cond, tag(r == 1),
+          auto& d = add(partners.empty() ? "C-incoherent" : "C-ambiguous", Severity::Error, cond, graph::side_of(r == 1),
                         {g.nodes[p.src].name, g.nodes[p.tgt].name},
                         what + (partners.empty() ? " has no coherent optimal path in " + std::string(tag(r == 0))
                                                  : " has " + std::to_string(partners.size()) +
@@ -472,16 +462,24 @@ class Checker {
                             " (E8): some instance of an ijij-cycle through it is broken");
           d.path = names;
           ok = false;
-        } else if (gmap_word_normal_form(p.word) != gmap_word_normal_form(partners[0]->word)) {
-          auto& d = add("C-word", SchemeSeverity::Error, cond, tag(r == 1), {g.nodes[p.src].name, g.nodes[p.tgt].name},
-                        what + " reads the word " + word_str(p.word) + ", its partner " + word_str(partners[0]->word) +
+        } else if (gmap_word_normal_form(s_.dimension, p.word) != gmap_word_normal_form(s_.dimension, partners[0]->word)) {
+          auto& d = add("C-word", Severity::Error, cond, graph::side_of(r == 1), {g.nodes[p.src].name, g.nodes[p.tgt].name},
+                        what + " reads the word " + word_text(p.word) + ", its partner " + word_text(partners[0]->word) +
                             ": not congruent (E9), the instances end at different darts");
           d.path = names;
           ok = false;
         }
       }
     }
-    // Sub-conditions 2 and 3 of Def. 40 (E12, E13).
+    return ok;
+  }
+
+  // Def. 40.2 and 40.3 (E12, E13): a preserved node with a deleted i-arc (j-arc) — any i-arc with
+  // algorithm3_strict, Alg. 3 lines 24–27 — and an added node have their i-arc (j-arc) of R on an
+  // alternating cycle or an optimal path.
+  bool check_changed_nodes_covered(const SideData (&sd)[2], int i, int j, const std::string& cond) {
+    const int lab[2] = {i, j};
+    bool ok = true;
     for (uint32_t v = 0; v < s_.right.size(); ++v) {
       auto l = s_.left_of(v);
       for (int k = 0; k < 2; ++k) {
@@ -505,14 +503,27 @@ class Checker {
                 ") that is neither on an alternating (" + std::to_string(i) + "," + std::to_string(j) +
                 ")-cycle nor on an optimal path";
         if (l)
-          add("C-preserved-node", SchemeSeverity::Error, cond, "R", {nm},
+          add("C-preserved-node", Severity::Error, cond, Side::R, {nm},
               "preserved node " + nm + (opt_.algorithm3_strict ? " with a " : " with a deleted ") + ds +
                   "-arc in L " + msg + (opt_.algorithm3_strict ? " (E12, Algorithm 3)" : " (E12, Def. 40.2)"));
         else
-          add("C-added-node", SchemeSeverity::Error, cond, "R", {nm}, "added node " + nm + " " + msg + " (E13)");
+          add("C-added-node", Severity::Error, cond, Side::R, {nm}, "added node " + nm + " " + msg + " (E13)");
         ok = false;
       }
     }
+    return ok;
+  }
+
+  // C_S(i,j), i+2 <= j (Def. 40 with Def. 55, Alg. 3), in its phases.
+  bool cycle(int i, int j) {
+    const std::string cond = "C(" + std::to_string(i) + "," + std::to_string(j) + ")";
+    if (has_branching(i, j, cond)) return false;
+    SideData sd[2];
+    cores_and_changed_arcs(sd, i, j);
+    bool ok = check_alternating_cycles(sd, i, j, cond);
+    collect_optimal_paths(sd, i, j);
+    ok = check_strong_coherence(sd, i, j, cond) && ok;
+    ok = check_changed_nodes_covered(sd, i, j, cond) && ok;
     return ok;
   }
 
@@ -533,11 +544,12 @@ static std::string join_names(const std::vector<std::string>& v) {
   return s;
 }
 
-std::string to_text(const SchemeDiagnostic& d) {
-  std::string s = std::string(to_string(d.severity)) + " " + d.code + " [" + d.condition + "]";
-  if (!d.side.empty()) s += " " + d.side;
+// One line of the scheme report: "error C-word [C(0,2)] L a,b arc a -1- b: message".
+static std::string scheme_line(const Diagnostic& d) {
+  std::string s = std::string(to_string(d.severity)) + " " + d.code + " [" + d.condition_str() + "]";
+  if (d.side) s += std::string(" ") + to_string(*d.side);
   if (!d.nodes.empty()) s += " " + join_names(d.nodes);
-  if (!d.arc.empty()) s += " arc " + d.arc;
+  for (const auto& a : d.arcs) s += " arc " + a;
   return s + ": " + d.message;
 }
 
@@ -548,25 +560,12 @@ std::string to_text(const SchemeCheckReport& r) {
   s += "  conditions:";
   for (const auto& [c, ok] : r.conditions) s += " " + c + (ok ? "=ok" : "=FAIL");
   s += "\n";
-  for (const auto& d : r.diagnostics) s += "  " + to_text(d) + "\n";
+  for (const auto& d : r.diagnostics) s += "  " + scheme_line(d) + "\n";
   return s;
 }
 
-nlohmann::ordered_json to_json(const SchemeDiagnostic& d) {
-  nlohmann::ordered_json j;
-  j["code"] = d.code;
-  j["severity"] = to_string(d.severity);
-  j["condition"] = d.condition;
-  if (!d.side.empty()) j["side"] = d.side;
-  if (!d.nodes.empty()) j["nodes"] = d.nodes;
-  if (!d.arc.empty()) j["arc"] = d.arc;
-  if (!d.path.empty()) j["path"] = d.path;
-  j["message"] = d.message;
-  return j;
-}
-
 nlohmann::ordered_json to_json(const SchemeCheckReport& r) {
-  nlohmann::ordered_json j;
+  nlohmann::ordered_json j = check_document("scheme", r.ok());
   j["rule"] = r.rule;
   j["verdict"] = r.ok() ? "accepted" : "rejected";
   j["errors"] = r.errors();

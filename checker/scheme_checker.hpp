@@ -1,4 +1,6 @@
-// Static checker for Jerboa rule schemes (thesis §4.4–4.7 and Ch. 6; digests ch3-4 §5, ch6-7 §2.6).
+// Static checker for Jerboa rule schemes (thesis §4.4–4.7 and Ch. 6).
+//
+// Diagnostics are the checker's one Diagnostic/Severity (diagnostic.hpp); JSON in docs/check-format.md.
 //
 // A scheme is read as a (W×D)-rule scheme (thesis Fig. 6.15 translation): an explicit arc a –d– b is
 // an (ε,d)-arc in both directions (one loop arc when a == b), and label position p with o^v[p] = d
@@ -36,14 +38,14 @@
 //   C-cycle-length    error   E10: an alternating (i,j)-cycle of length not in {2,4}
 //   C-cycle-word      error   E11: the W-word of an ijij traversal does not reduce to ε (its
 //                             instances do not close). Length-2 cycles are traversed twice and
-//                             every rotation is read (digest erratum 7).
+//                             every rotation is read.
 //   C-preserved-node  error   E12 (Def. 40.2): a preserved node with a DELETED i-arc (resp. j-arc)
 //                             whose i-arc (j-arc) in R is neither on an alternating cycle nor on an
 //                             optimal path of R
 //   C-added-node      error   E13 (Def. 40.3): the same for an added node
 //   C-skipped         note    C_S(i,j) not evaluated because a node has two i- or j-arcs
 //
-// Digest erratum 6: the thesis' Algorithm 3 (lines 24–27) tests every preserved node having ANY
+// Algorithm 3 versus Def. 40: the thesis' Algorithm 3 (lines 24–27) tests every preserved node having ANY
 // i-arc in L, while Def. 40.2 concerns deleted arcs only. The default follows Def. 40;
 // `algorithm3_strict` reproduces Algorithm 3 (tests show a scheme on which they disagree).
 // ij-completion of L (Assumption 5) is not performed on schemes: Jerboa schemes match orbits whose
@@ -57,28 +59,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "checker/diagnostic.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::checker {
 using scheme::RuleScheme;
 
-enum class SchemeSeverity { Error, Warning, Note };
-const char* to_string(SchemeSeverity s);
-
-struct SchemeDiagnostic {
-  std::string code;
-  SchemeSeverity severity = SchemeSeverity::Error;
-  std::string condition;           // "structure", "hooks", "I(2)", "C(0,2)"
-  std::string side;                // "L", "R" or ""
-  std::vector<std::string> nodes;  // offending nodes (names, on `side`)
-  std::string arc;                 // "n0 -1- n2" when located on an arc
-  std::vector<std::string> path;   // node names of an offending path or cycle
-  std::string message;
-};
 
 struct SchemeCheckReport {
   std::string rule;
-  std::vector<SchemeDiagnostic> diagnostics;
+  std::vector<Diagnostic> diagnostics;  // condition "structure", "hooks", "I(d)", "C(i,j)"
   std::vector<std::pair<std::string, bool>> conditions;  // "structure", "hooks", "I(0)", "O(0)", "C(0,2)"
   bool ok() const;  // no error
   size_t errors() const;
@@ -88,17 +78,17 @@ struct SchemeCheckReport {
 };
 
 struct SchemeCheckOptions {
-  bool algorithm3_strict = false;  // see erratum 6 above
+  bool algorithm3_strict = false;  // Algorithm 3 literally (see above)
 };
 
 SchemeCheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt = {});
 
-// Normal form of a G-map word (letters = dimensions) under ii -> ε, ji -> ij (j >= i+2).
-std::vector<int> gmap_word_normal_form(std::vector<int> w);
+// Normal form of a G-map word of dimension n (letters = dimensions) under R_{N,E} for G-maps
+// (Def. 52: ii -> ε, ji -> ij for j >= i+2): RewritingSystem::gmap(n).normal_form.
+std::vector<int> gmap_word_normal_form(int n, const std::vector<int>& w);
 
-std::string to_text(const SchemeDiagnostic& d);
 std::string to_text(const SchemeCheckReport& r);
-nlohmann::ordered_json to_json(const SchemeDiagnostic& d);
+// A gmr.check document (docs/check-format.md) with subject "scheme".
 nlohmann::ordered_json to_json(const SchemeCheckReport& r);
 
 }  // namespace gmr::checker

@@ -7,8 +7,6 @@
 
 namespace gmr::inference {
 
-const char* to_string(Side s) { return s == Side::L ? "L" : "R"; }
-
 std::string dimension_text(int d) { return d == kKappa ? "κ" : std::to_string(d); }
 
 uint32_t JointGraph::add_dart(Side side, Dart origin) {

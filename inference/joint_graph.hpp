@@ -18,11 +18,12 @@
 #include <vector>
 
 #include "model/core/gmap.hpp"
+#include "model/graph/elem_status.hpp"
 
 namespace gmr::inference {
 
-enum class Side : uint8_t { L, R };
-const char* to_string(Side s);
+// Before (L) or after (R): the rule side, shared with rules and the checker.
+using graph::Side;
 
 // The κ "dimension" in loops over 0..n ∪ {κ}.
 inline constexpr int kKappa = -1;

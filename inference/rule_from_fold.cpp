@@ -117,8 +117,8 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
     out.verdict = RuleVerdict::Inconsistent;
     std::string codes;
     for (const auto& d : out.check.diagnostics)
-      if (d.severity == SchemeSeverity::Error) {
-        codes += (codes.empty() ? "" : "; ") + d.code + " " + d.side;
+      if (d.severity == Severity::Error) {
+        codes += (codes.empty() ? "" : "; ") + d.code + " " + d.side_str();
         for (const auto& nn : d.nodes) codes += " " + nn;
       }
     out.reason = "the scheme checker rejects it: " + codes;

@@ -1,8 +1,8 @@
-// The worked examples of the digest (notes/thesis-ch3-4-conditions.md §6) that are concrete rules,
-// loaded from checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is
-// applicable to small maps — against the semantics. F8, F10, F14, F15 are rule-scheme / rewriting-
-// system / product fixtures (digest §4-5): model/tests/word_scheme_test.cpp (F8, F9, F10),
-// word_rewriting_test.cpp (F14), graph_product_test.cpp (F15).
+// Worked examples of the thesis (Ch. 3 examples and figures) that are concrete rules, loaded from
+// checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is applicable to
+// small maps — against the semantics. The rule-scheme, rewriting-system and product fixtures are in
+// checker/tests/word_scheme_test.cpp (F8, F9, F10), checker/tests/word_rewriting_test.cpp (F14)
+// and model/graph/tests/graph_product_test.cpp (F15).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -93,8 +93,8 @@ TEST(Fixtures, F3_Ex37_NonOrientation) {
   EXPECT_FALSE(check_non_orientation(r, 2, d));
   ASSERT_EQ(d.size(), 2u);  // the deleted a->c and the added c->a
   EXPECT_EQ(d[0].code, "O-no-reverse");
-  EXPECT_EQ(d[0].side, "L");
-  EXPECT_EQ(d[1].side, "R");
+  EXPECT_EQ(d[0].side, Side::L);
+  EXPECT_EQ(d[1].side, Side::R);
 }
 
 TEST(Fixtures, F4_Fig318_CycleCondition) {
@@ -291,6 +291,8 @@ TEST(Fixtures, ReportsAsTextAndJson) {
   EXPECT_NE(to_text(rep).find("[I-added-node]"), std::string::npos);
   const auto j = to_json(rep);
   EXPECT_EQ(j["format"], "gmr.check");
+  EXPECT_EQ(j["version"], 1);
+  EXPECT_EQ(j["subject"], "rule");
   EXPECT_EQ(j["ok"], false);
   EXPECT_EQ(j["conditions"]["I(1)"], false);
   EXPECT_EQ(j["diagnostics"][0]["code"], "I-added-node");

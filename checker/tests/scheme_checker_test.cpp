@@ -37,11 +37,11 @@ RuleScheme erratum6_scheme() {
 }  // namespace
 
 TEST(SchemeChecker, WordNormalForm) {
-  EXPECT_TRUE(gmap_word_normal_form({2, 2}).empty());
-  EXPECT_TRUE(gmap_word_normal_form({0, 2, 0, 2}).empty());
-  EXPECT_EQ(gmap_word_normal_form({2, 0}), (std::vector<int>{0, 2}));
-  EXPECT_EQ(gmap_word_normal_form({1, 0}), (std::vector<int>{1, 0}));  // 0,1 do not commute
-  EXPECT_EQ(gmap_word_normal_form({3, 1, 3}), (std::vector<int>{1}));
+  EXPECT_TRUE(gmap_word_normal_form(3, {2, 2}).empty());
+  EXPECT_TRUE(gmap_word_normal_form(3, {0, 2, 0, 2}).empty());
+  EXPECT_EQ(gmap_word_normal_form(3, {2, 0}), (std::vector<int>{0, 2}));
+  EXPECT_EQ(gmap_word_normal_form(3, {1, 0}), (std::vector<int>{1, 0}));  // 0,1 do not commute
+  EXPECT_EQ(gmap_word_normal_form(3, {3, 1, 3}), (std::vector<int>{1}));
 }
 
 TEST(SchemeChecker, ReferenceSchemesAccepted) {
@@ -197,4 +197,18 @@ TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
   EXPECT_TRUE(verdict["InsertVertex"]);
   EXPECT_TRUE(verdict["CreateDart"]);
   EXPECT_GT(accepted, 0u);
+}
+
+// A scheme report is a gmr.check document (docs/check-format.md) with subject "scheme".
+TEST(SchemeChecker, JsonIsAGmrCheckDocument) {
+  RuleScheme r = erratum6_scheme();
+  const SchemeCheckReport rep = check_scheme(r);
+  const auto j = to_json(rep);
+  EXPECT_EQ(j["format"], "gmr.check");
+  EXPECT_EQ(j["version"], 1);
+  EXPECT_EQ(j["subject"], "scheme");
+  EXPECT_EQ(j["ok"], rep.ok());
+  EXPECT_EQ(j["rule"], "relink1");
+  EXPECT_EQ(j["verdict"], rep.ok() ? "accepted" : "rejected");
+  EXPECT_EQ(j["diagnostics"].size(), rep.diagnostics.size());
 }

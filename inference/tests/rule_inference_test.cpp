@@ -98,7 +98,7 @@ TEST(RuleInference, TriangleToHexagonVertexSplitIsRejectedByTheChecker) {
   EXPECT_FALSE(r.check.holds("C(0,2)"));
   bool on_n1 = false;
   for (const auto& d : r.check.diagnostics)
-    if (d.severity == SchemeSeverity::Error && d.side == "R")
+    if (d.severity == Severity::Error && d.side == graph::Side::R)
       for (const auto& n : d.nodes) on_n1 = on_n1 || n == "n1";
   EXPECT_TRUE(on_n1) << to_text(r.check);
   InferOptions opt;

@@ -9,15 +9,6 @@
 namespace gmr::rewrite {
 using namespace gmr::graph;
 
-const char* to_string(ElemStatus s) {
-  switch (s) {
-    case ElemStatus::Preserved: return "preserved";
-    case ElemStatus::Deleted: return "deleted";
-    case ElemStatus::Added: return "added";
-  }
-  return "?";
-}
-
 namespace {
 
 void validate_side(const DGraph& g, const char* side, int lo, int n) {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "model/graph/dgraph.hpp"
+#include "model/graph/elem_status.hpp"
 #include "model/core/gmap.hpp"
 
 namespace gmr::rewrite {
@@ -27,8 +28,7 @@ using graph::ArcId;
 using graph::DGraph;
 using graph::Node;
 
-enum class ElemStatus : uint8_t { Preserved, Deleted, Added };
-const char* to_string(ElemStatus s);
+using graph::ElemStatus;
 
 class Rule {
  public:

@@ -69,15 +69,6 @@ size_t GraphScheme::components(std::vector<uint32_t>& comp) const {
   return k;
 }
 
-const char* to_string(NodeRole r) {
-  switch (r) {
-    case NodeRole::Preserved: return "preserved";
-    case NodeRole::Deleted: return "deleted";
-    case NodeRole::Added: return "added";
-  }
-  return "?";
-}
-
 std::optional<uint32_t> RuleScheme::right_of(uint32_t l) const { return right.find(left.nodes[l].name); }
 std::optional<uint32_t> RuleScheme::left_of(uint32_t r) const { return left.find(right.nodes[r].name); }
 NodeRole RuleScheme::role_left(uint32_t v) const {

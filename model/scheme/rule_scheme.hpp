@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "model/core/orbit_type.hpp"
+#include "model/graph/elem_status.hpp"
 
 namespace gmr::scheme {
 
@@ -69,8 +70,8 @@ class GraphScheme {
   friend bool operator==(const GraphScheme&, const GraphScheme&) = default;
 };
 
-enum class NodeRole { Preserved, Deleted, Added };
-const char* to_string(NodeRole r);
+// The role of a scheme node: the node status of a concrete rule (one enum for both).
+using NodeRole = graph::ElemStatus;
 
 class RuleScheme {
  public:

@@ -10,7 +10,7 @@
 #include "model/io/rule_json.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/scheme_check.hpp"
-#include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files (issue 4)
+#include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files
 
 namespace gmr::cli {
 using namespace gmr::rewrite;
@@ -23,13 +23,13 @@ struct CheckArgs {
   std::string input;
   bool json = false;
   bool per_constraint = false;
-  bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (issue 4, erratum 6)
+  bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (scheme_checker.hpp)
 };
 
 int run_check(const CheckArgs& a) {
-  // Rule schemes (.jme files, gmr.rule files of kind "scheme") go to the scheme checker (issue 4).
+  // Rule schemes (.jme files, gmr.rule files of kind "scheme") go to the scheme checker.
   if (auto code = check_scheme_input(a.input, a.json, a.algorithm3)) return *code;
-  // Concrete rules (issue 3).
+  // Concrete rules.
   const Rule r = read_rule_file(a.input);
   const CheckReport rep = check_rule(r, !a.per_constraint);
   if (a.json) {
@@ -52,7 +52,7 @@ void register_check(CLI::App& app) {
   sub->add_flag("--json", args->json, "Print JSON (format gmr.check)");
   sub->add_flag("--per-constraint", args->per_constraint,
                 "Check C_r on the ij-completion only (the thesis' per-constraint reading), without the model completion");
-  // Rule schemes (issue 4): a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
+  // Rule schemes: a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
   sub->add_flag("--algorithm3", args->algorithm3,
                 "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones; erratum 6)");
   set_action(sub, [args] { return run_check(*args); });

@@ -23,7 +23,7 @@ std::string code_summary(const SchemeCheckReport& r) {
   std::map<std::string, size_t> n;
   std::vector<std::string> order;
   for (const auto& d : r.diagnostics) {
-    if (d.severity == SchemeSeverity::Note) continue;
+    if (d.severity == Severity::Note) continue;
     if (n[d.code]++ == 0) order.push_back(d.code);
   }
   std::string s;
@@ -60,9 +60,7 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
     accepted += reps.back().ok();
   }
   if (json) {
-    nlohmann::ordered_json j;
-    j["format"] = "gmr.check";
-    j["version"] = 1;
+    nlohmann::ordered_json j = check_document("modeler", accepted == m.rules.size());
     j["file"] = path;
     j["modeler"] = m.name;
     j["n"] = m.dimension;
@@ -70,7 +68,12 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
     j["accepted"] = accepted;
     j["rejected"] = m.rules.size() - accepted;
     j["reports"] = nlohmann::ordered_json::array();
-    for (const auto& r : reps) j["reports"].push_back(to_json(r));
+    for (const auto& r : reps) {
+      // Each report is the body of a "scheme" document, without the document header.
+      nlohmann::ordered_json body = to_json(r);
+      for (const char* k : {"format", "version", "subject"}) body.erase(k);
+      j["reports"].push_back(std::move(body));
+    }
     print_json(j);
   } else {
     size_t w = 4;

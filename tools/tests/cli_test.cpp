@@ -259,6 +259,47 @@ TEST_F(Cli, DotOfRulesAndSchemes) {
   EXPECT_EQ(outputs(), 2u);
 }
 
+// `gmr check --json` prints one gmr.check document (docs/check-format.md) for a concrete rule, a
+// rule scheme and a .jme batch alike: format, version, subject and ok first.
+TEST_F(Cli, CheckJsonIsOneFormat) {
+  struct Case {
+    fs::path file;
+    std::string subject;
+    int code;
+  };
+  const std::vector<Case> cases = {
+      {checker_data("F5_fig319a_unsew.json"), "rule", 0},
+      {checker_data("F1_ex34_weak_incident.json"), "rule", 1},
+      {rule_data("quad_subdivision.json"), "scheme", 0},
+      {test_data("JerboaTrackingOrbit.jme"), "modeler", -1},
+  };
+  for (const auto& c : cases) {
+    const Result r = run("check --json " + q(c.file));
+    if (c.code >= 0) {
+      EXPECT_EQ(r.code, c.code) << c.file << r.err;
+    }
+    const auto j = nlohmann::ordered_json::parse(r.out);
+    ASSERT_GE(j.size(), 4u) << c.file;
+    auto it = j.begin();
+    EXPECT_EQ(it.key(), "format");
+    EXPECT_EQ(*it, "gmr.check") << c.file;
+    EXPECT_EQ((++it).key(), "version");
+    EXPECT_EQ(*it, 1) << c.file;
+    EXPECT_EQ((++it).key(), "subject");
+    EXPECT_EQ(*it, c.subject) << c.file;
+    EXPECT_EQ((++it).key(), "ok");
+    EXPECT_EQ(it->get<bool>(), r.code == 0) << c.file;
+    EXPECT_EQ(j["file"], c.file.string());
+    if (c.subject == "modeler") {
+      ASSERT_FALSE(j["reports"].empty());
+      for (const auto& rep : j["reports"]) {
+        EXPECT_FALSE(rep.contains("format"));
+        EXPECT_TRUE(rep["ok"].is_boolean());
+      }
+    }
+  }
+}
+
 TEST_F(Cli, DotOfJerboaRule) {
   Result r = run("check --json " + q(test_data("JerboaTrackingOrbit.jme")));
   ASSERT_NE(r.out, "");
