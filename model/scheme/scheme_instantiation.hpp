@@ -63,7 +63,7 @@ struct InstantiatedRule {
   InstantiatedGraph left, right;
 };
 InstantiatedRule instantiate_sides(const RuleScheme& r, const OrbitGraph& O);
-// The instantiated rule as a concrete DPO rule (model/rule.hpp): L and R with the names "u_v",
+// The instantiated rule as a concrete DPO rule (model/rewrite/rule.hpp): L and R with the names "u_v",
 // preserved instances sharing names, arcs deduced by Assumption 4. The concrete L node of
 // (scheme node v, orbit dart b) has index v * |O| + b (same for R).
 Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O);
