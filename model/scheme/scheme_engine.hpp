@@ -14,8 +14,9 @@
 //     T[b][v]@i := T[b][v'] both ways); a dimension a preserved node has neither in L nor in R keeps
 //     its outside link;
 //  7. the darts of deleted nodes are freed.
-// Cost O(s·(|V_L| + |V_R|)·(n+1)): linear in the size of the instantiated rule (plus O(capacity/64)
-// only when the orbit covers more than 1/8 of the map, for the dense dart index).
+// Cost O(s·(|V_L| + |V_R|)·(n+1)): linear in the size of the instantiated rule (expected: step 2
+// uses hash maps; plus O(capacity/64) only when the orbit covers more than 1/8 of the map, for the
+// dense dart index).
 //
 // Scope and decisions (named in the docs):
 //  * G-maps only (Jerboa schemes are G-map schemes); the map's dimension must equal the scheme's.
