@@ -1,5 +1,5 @@
 // Signature equality <=> isomorphism, checked against CGAL's Generalized_map::is_isomorphic_to
-// (an independent implementation, test-only) on a sample of random pairs (issue 5): a random map,
+// (an independent implementation, test-only) on a sample of random pairs: a random map,
 // and a relabeled copy of it after one random re-gluing (isomorphic or not: the hard cases),
 // for G-maps of dimensions 1, 2, 3 from every generator family.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Properties of the model (issue 5): generated maps are valid; validity locates every broken
+// Properties of the model: generated maps are valid; validity locates every broken
 // constraint (checked against the independent D-graph constraint checker); orbits are closed and
 // partition the darts; signatures are invariant under relabeling and separate non-isomorphic maps;
 // JSON round trips preserve the map.
