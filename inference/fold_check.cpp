@@ -13,7 +13,7 @@ std::string instantiation_mismatch(const FoldResult& f, const JointGraph& j) {
   GraphScheme s;
   for (uint32_t k = 0; k < f.nodes.size(); ++k) s.add_node(node_name(k), f.nodes[k].label);
   for (const auto& e : f.arcs) s.arcs.push_back({e.a, e.b, e.dim == kKappa ? n + 1 : e.dim});
-  const InstantiatedGraph inst = instantiate(s, f.hook_orbit);
+  const InstantiatedGraph inst = instantiate_graph(s, f.hook_orbit);
   std::vector<uint32_t> node_to_dart(inst.graph.num_nodes(), kUndefined);
   size_t bound = 0;
   for (uint32_t v = 0; v < f.nodes.size(); ++v)

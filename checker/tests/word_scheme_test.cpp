@@ -220,7 +220,7 @@ TEST(F8, Fig419aInstantiatedOnEachComponent) {
   for (const char* hook : {"a", "e", "g"}) {
     const PatternGraph Pv = component(P, *G.find(hook));
     const size_t k = Pv.size();
-    const Rule r = instantiate(S, Pv);
+    const Rule r = instantiate_word_rule(S, Pv);
     EXPECT_EQ(r.left().num_nodes(), k) << hook;
     EXPECT_EQ(r.right().num_nodes(), 2 * k) << hook;
     EXPECT_EQ(r.left().num_arcs(), k) << hook;       // one 1-loop per (u,y)
@@ -236,7 +236,7 @@ TEST(F8, Fig419aInstantiatedOnEachComponent) {
     EXPECT_EQ(O(r, 2), k == 2) << hook;
   }
   // The other reading (21 on the L-loop) breaks O(1) on a..d: rejected.
-  const Rule r21 = instantiate(fig419a("21"), component(P, 0));
+  const Rule r21 = instantiate_word_rule(fig419a("21"), component(P, 0));
   EXPECT_TRUE(I(r21, 1));
   EXPECT_FALSE(O(r21, 1));
   EXPECT_NE(conj(w("21")), w("21"));
@@ -248,10 +248,10 @@ TEST(F8, Fig419aMatchAndDerivation) {
   const WordRuleScheme S = fig419a();
   // On a..d the (eps,1)-loops of ι(L,P) need 1-loops in G: no match (erratum 17, Ex. 49).
   const PatternGraph Pa = component(P, 0);
-  EXPECT_FALSE(propagate_match(S, Pa, instantiate(S, Pa), G).has_value());
+  EXPECT_FALSE(propagate_match(S, Pa, instantiate_word_rule(S, Pa), G).has_value());
   // On e,f (1-free darts) the match is (u,y) ↦ u, and the derivation keeps I(1), I(2).
   const PatternGraph Pe = component(P, *G.find("e"));
-  const Rule r = instantiate(S, Pe);
+  const Rule r = instantiate_word_rule(S, Pe);
   const auto m = propagate_match(S, Pe, r, G);
   ASSERT_TRUE(m.has_value());
   EXPECT_EQ(*m, Pe.origin);
@@ -275,13 +275,13 @@ TEST(WordScheme, InstantiationOperationalForm) {
   Pi.add_node("n");
   Pi.add_node("m");
   Pi.add_link("n", "m", "eps", 0);
-  const DGraph I1 = instantiate(Pi, P1);
+  const DGraph I1 = instantiate_word_graph(Pi, P1);
   EXPECT_EQ(I1.num_nodes(), 2u);
   EXPECT_EQ(I1.name(1), "u:m");
   EXPECT_EQ(I1.successors(0, 0), std::vector<Node>{1});
   // Words not in W are rejected; duplicate and empty names too.
   Pi.add_arc("n", "n", "2", 2);
-  EXPECT_THROW(instantiate(Pi, P1), Error);
+  EXPECT_THROW(instantiate_word_graph(Pi, P1), Error);
   EXPECT_THROW(Pi.add_node("n"), Error);
   EXPECT_THROW(Pi.add_arc("n", "zz", "eps", 0), Error);
   // add_link on a loop with a non-self-conjugate word adds both loops.

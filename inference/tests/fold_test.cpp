@@ -202,7 +202,7 @@ TEST(FoldProperties, FoldThenInstantiateGivesBackTheInput) {
         ++folded;
         EXPECT_TRUE(instantiates_back(f, j)) << name << " " << o.str();
         EXPECT_EQ(f.nodes.size() * f.hook_orbit.size(), g.size());
-        const InstantiatedGraph inst = instantiate(to_graph_scheme(f), f.hook_orbit);
+        const InstantiatedGraph inst = instantiate_graph(to_graph_scheme(f), f.hook_orbit);
         EXPECT_TRUE(is_isomorphic(to_gmap(inst.graph, g.dimension()), g)) << name << " " << o.str();
       }
     EXPECT_GE(folded, 2u) << name;

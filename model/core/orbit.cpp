@@ -176,7 +176,8 @@ size_t count_boundary_cells(const GMap& g) {
 std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const GMap& g,
                                                                      const OrbitType& o, Dart d,
                                                                      const GMap& g2,
-                                                                     const OrbitType& o2, Dart d2) {
+                                                                     const OrbitType& o2, Dart d2,
+                                                                     OrbitIsoConflict* conflict) {
   require_orbit_type(g, o);
   require_orbit_type(g2, o2);
   require_dart(g, d);
@@ -191,9 +192,15 @@ std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const GMap& 
       const Dart x = g.alpha(o[p], v);
       const Dart x2 = g2.alpha(o2[p], v2);
       auto it = mapd.find(x);
-      if (it != mapd.end() && it->second != x2) return std::nullopt;
+      if (it != mapd.end() && it->second != x2) {
+        if (conflict) *conflict = OrbitIsoConflict{x, x2, it->second};
+        return std::nullopt;
+      }
       auto jt = mapr.find(x2);
-      if (jt != mapr.end() && jt->second != x) return std::nullopt;
+      if (jt != mapr.end() && jt->second != x) {
+        if (conflict) *conflict = OrbitIsoConflict{x, x2, kNoDart};
+        return std::nullopt;
+      }
       if (it == mapd.end()) {
         mapd.emplace(x, x2);
         mapr.emplace(x2, x);

@@ -192,7 +192,7 @@ std::vector<Dart> orbit_representatives(const GMap& g, const OrbitType& o);
 // The orbit type of i-cells: (lowest..n)\{i} (G-maps, and O-maps for i >= 1).
 OrbitType cell_type(const GMap& g, int i);
 // Number of i-cells. For an O-map, 0-cells (vertices) are orbits of {beta_k o beta_1 | 2<=k<=n}
-// (thesis §1.4 of the digest).
+// (thesis §1.4).
 size_t count_cells(const GMap& g, int i);
 // counts[i] = number of i-cells, i = 0..n.
 std::vector<size_t> count_all_cells(const GMap& g);
@@ -213,11 +213,19 @@ size_t count_boundary_cells(const GMap& g);
 
 // Algorithm 5: isomorphism of the <o>-orbit of d in g with the <o2>-orbit of d2 in g2, where
 // dimension o[p] corresponds to o2[p] (positional relabeling). Returns the dart pairs (x, x') in BFS
-// order, or nullopt when the orbits are not isomorphic. o and o2 must have equal sizes and no `_`.
-// (Digest [D] guard: an already-mapped dart is not enqueued again.)
+// order (positions p in increasing order at each dart), or nullopt when the orbits are not
+// isomorphic. o and o2 must have equal sizes and no `_`. An already-mapped dart is not enqueued
+// again. Cost O(|orbit| · |o|) expected (hash maps).
+// When not isomorphic and `conflict` is given, it receives the first pair (x, x2) of the joint BFS
+// that cannot be added: either x already has the image `earlier` != x2, or (earlier == kNoDart) x2
+// is already the image of another dart.
+struct OrbitIsoConflict {
+  Dart x = kNoDart, x2 = kNoDart, earlier = kNoDart;
+};
 std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const GMap& g,
                                                                      const OrbitType& o, Dart d,
                                                                      const GMap& g2,
-                                                                     const OrbitType& o2, Dart d2);
+                                                                     const OrbitType& o2, Dart d2,
+                                                                     OrbitIsoConflict* conflict = nullptr);
 
 }  // namespace gmr

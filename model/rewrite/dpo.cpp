@@ -284,25 +284,27 @@ MapDerivation apply_to_map(const Rule& r, const GMap& g, const std::vector<Dart>
   return out;
 }
 
-MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
-  check_rule_fits_map(r, g);
-  const DGraph &L = r.left(), &R = r.right();
-  if (match.size() != L.num_nodes()) throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");
-  const int lo = g.lowest_dim(), n = g.dimension();
-  auto pred = [&](int i, Dart d) -> Dart {  // the unique x with alpha_i(x) == d in a valid map
-    if (g.is_involutive_dim(i)) {
-      const Dart x = g.alpha(i, d);
-      if (g.alpha(i, x) != d) throw Error(ErrorCode::InvalidMap, "input map: alpha_" + std::to_string(i) + " is not an involution", "dart " + std::to_string(d));
-      return x;
-    }
-    Dart p = d;
-    for (size_t k = 0; k <= g.capacity(); ++k) {
-      if (g.alpha(i, p) == d) return p;
-      p = g.alpha(i, p);
-    }
-    throw Error(ErrorCode::InvalidMap, "input map: beta_" + std::to_string(i) + " is not a permutation", "dart " + std::to_string(d));
-  };
-  // Match: injective, arcs present.
+namespace {
+
+// The unique x with alpha_i(x) == d in a valid map; throws Error(InvalidMap) when there is none.
+Dart predecessor(const GMap& g, int i, Dart d) {
+  if (g.is_involutive_dim(i)) {
+    const Dart x = g.alpha(i, d);
+    if (g.alpha(i, x) != d) throw Error(ErrorCode::InvalidMap, "input map: alpha_" + std::to_string(i) + " is not an involution", "dart " + std::to_string(d));
+    return x;
+  }
+  Dart p = d;
+  for (size_t k = 0; k <= g.capacity(); ++k) {
+    if (g.alpha(i, p) == d) return p;
+    p = g.alpha(i, p);
+  }
+  throw Error(ErrorCode::InvalidMap, "input map: beta_" + std::to_string(i) + " is not a permutation", "dart " + std::to_string(d));
+}
+
+// Phase 1: the match is injective and every L arc has its image; L has at most one arc per label
+// at a node. Returns the L node matched to each dart of g (kNoNode elsewhere).
+std::vector<Node> check_map_match(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+  const DGraph& L = r.left();
   std::vector<Node> lnode_of(g.capacity(), kNoNode);
   for (Node v = 0; v < L.num_nodes(); ++v) {
     const Dart d = match[v];
@@ -321,12 +323,18 @@ MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>
   std::string where;
   if (!at_most_one_arc_per_label(L, &where))
     throw Error(ErrorCode::Usage, "left-hand side not combinatorial: no injective match into a map", "left " + where);
-  // Gluing: every i-arc at the image of a deleted node is the image of an L arc.
+  return lnode_of;
+}
+
+// Phase 2, gluing (dangling condition): every i-arc at the image of a deleted node is the image of
+// an L arc.
+void check_map_gluing(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+  const DGraph& L = r.left();
   for (Node v : r.deleted_nodes()) {
     const Dart d = match[v];
-    for (int i = lo; i <= n; ++i) {
+    for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
       const auto out_l = L.successors(v, i), in_l = L.predecessors(v, i);
-      const Dart t = g.alpha(i, d), s = pred(i, d);
+      const Dart t = g.alpha(i, d), s = predecessor(g, i, d);
       if (out_l.empty() || match[out_l[0]] != t || in_l.empty() || match[in_l[0]] != s)
         throw Error(ErrorCode::Usage,
                     "the match violates the gluing condition: the " + std::to_string(i) + "-arcs of dart " +
@@ -334,64 +342,101 @@ MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>
                     "match of " + L.node_str(v));
     }
   }
-  MapDerivation out;
-  out.H = g;
-  GMap& H = out.H;
-  // Fresh darts for added nodes (before removals, so that no index is reused within this step).
-  out.comatch.assign(R.num_nodes(), kNoDart);
-  for (Node v = 0; v < R.num_nodes(); ++v)
-    out.comatch[v] = r.left_of(v) ? match[*r.left_of(v)] : H.add_dart();
-  // Slot state per (dim, dart) among touched darts: 0 = unchanged, 1 = unset, 2 = rewritten.
-  std::map<std::pair<int, Dart>, int> slot;
-  std::map<std::pair<int, Dart>, int> indeg_delta;
+}
+
+// The out-link of a touched (dimension, dart) slot of H while the links are rewritten.
+enum class SlotState {
+  Unchanged,  // the link of G is kept
+  Unset,      // the link was removed (deleted L arc, fresh dart) and not yet rewritten
+  Rewritten,  // an added R arc set it
+};
+using Slot = std::pair<int, Dart>;  // (dimension, dart)
+
+struct LinkRewrite {
+  std::map<Slot, SlotState> out;   // touched out-links
+  std::map<Slot, int> indeg_delta;  // change of the number of in-arcs
+};
+
+// Phase 4: removes the deleted L arcs and writes the added R arcs into H (at the comatch darts).
+// Throws Error(InvalidMap) when an added arc would be a second out-arc of its label.
+LinkRewrite rewrite_links(const Rule& r, GMap& H, const std::vector<Dart>& match, const std::vector<Dart>& comatch) {
+  const DGraph &L = r.left(), &R = r.right();
+  const int lo = H.lowest_dim(), n = H.dimension();
+  LinkRewrite w;
   for (Node v : r.added_nodes())
     for (int i = lo; i <= n; ++i) {
-      slot[{i, out.comatch[v]}] = 1;
-      indeg_delta[{i, out.comatch[v]}] = -1;  // a fresh dart starts with no in-arc (its loop is not an arc)
+      w.out[{i, comatch[v]}] = SlotState::Unset;
+      w.indeg_delta[{i, comatch[v]}] = -1;  // a fresh dart starts with no in-arc (its loop is not an arc)
     }
   for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
     if (!L.arc_alive(a) || r.left_arc_status(a) != ElemStatus::Deleted) continue;
     const Arc& e = L.arc(a);
-    slot[{e.label, match[e.src]}] = 1;
-    --indeg_delta[{e.label, match[e.tgt]}];
+    w.out[{e.label, match[e.src]}] = SlotState::Unset;
+    --w.indeg_delta[{e.label, match[e.tgt]}];
   }
   for (ArcId a = 0; a < R.num_arc_slots(); ++a) {
     if (!R.arc_alive(a) || r.right_arc_status(a) != ElemStatus::Added) continue;
     const Arc& e = R.arc(a);
-    const Dart s = out.comatch[e.src], t = out.comatch[e.tgt];
-    int& st = slot[{e.label, s}];
-    if (st != 1)
+    const Dart s = comatch[e.src], t = comatch[e.tgt];
+    SlotState& st = w.out[{e.label, s}];
+    if (st != SlotState::Unset)
       throw Error(ErrorCode::InvalidMap,
                   "the result is not combinatorial: two outgoing " + std::to_string(e.label) + "-arcs",
                   "R node " + R.node_str(e.src));
-    st = 2;
+    st = SlotState::Rewritten;
     H.set_alpha(e.label, s, t);
-    ++indeg_delta[{e.label, t}];
+    ++w.indeg_delta[{e.label, t}];
   }
-  for (auto& [k, st] : slot) {
-    const Dart d = k.second;
-    const bool deleted_dart = lnode_of.size() > d && lnode_of[d] != kNoNode && !r.right_of(lnode_of[d]);
-    if (st == 1 && !deleted_dart)
+  return w;
+}
+
+// Phase 5: every surviving touched dart has exactly one out-arc and one in-arc per label
+// (incident arcs on H); throws Error(InvalidMap) naming the first dart that fails.
+void check_result_combinatorial(const Rule& r, const std::vector<Node>& lnode_of, const LinkRewrite& w) {
+  auto deleted_dart = [&](Dart d) { return lnode_of.size() > d && lnode_of[d] != kNoNode && !r.right_of(lnode_of[d]); };
+  for (const auto& [k, st] : w.out)
+    if (st == SlotState::Unset && !deleted_dart(k.second))
       throw Error(ErrorCode::InvalidMap, "the result is not combinatorial: no outgoing " + std::to_string(k.first) + "-arc",
-                  "dart " + std::to_string(d));
-  }
-  for (auto& [k, delta] : indeg_delta) {
-    const Dart d = k.second;
-    const bool deleted_dart = lnode_of.size() > d && lnode_of[d] != kNoNode && !r.right_of(lnode_of[d]);
-    if (delta != 0 && !deleted_dart)
+                  "dart " + std::to_string(k.second));
+  for (const auto& [k, delta] : w.indeg_delta)
+    if (delta != 0 && !deleted_dart(k.second))
       throw Error(ErrorCode::InvalidMap,
                   "the result is not combinatorial: " + std::to_string(1 + delta) + " incoming " +
                       std::to_string(k.first) + "-arcs",
-                  "dart " + std::to_string(d));
-  }
+                  "dart " + std::to_string(k.second));
+}
+
+// Phase 6: removes the darts of the deleted nodes (detached first: remove_dart must not touch live
+// darts) and fills the dart track G -> H.
+void remove_deleted_darts(const Rule& r, const GMap& g, const std::vector<Dart>& match, MapDerivation& out) {
+  GMap& H = out.H;
   out.g_to_h.assign(g.capacity(), kNoDart);
   g.for_each_dart([&](Dart d) { out.g_to_h[d] = d; });
   for (Node v : r.deleted_nodes()) {
     const Dart d = match[v];
-    for (int i = lo; i <= n; ++i) H.set_alpha(i, d, d);  // detach first: remove_dart must not touch live darts
+    for (int i = H.lowest_dim(); i <= H.dimension(); ++i) H.set_alpha(i, d, d);
     H.remove_dart(d);
     out.g_to_h[d] = kNoDart;
   }
+}
+
+}  // namespace
+
+MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+  check_rule_fits_map(r, g);
+  const DGraph &R = r.right();
+  if (match.size() != r.left().num_nodes()) throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");
+  const std::vector<Node> lnode_of = check_map_match(r, g, match);
+  check_map_gluing(r, g, match);
+  MapDerivation out;
+  out.H = g;
+  // Phase 3: fresh darts for added nodes (before removals, so that no index is reused within this step).
+  out.comatch.assign(R.num_nodes(), kNoDart);
+  for (Node v = 0; v < R.num_nodes(); ++v)
+    out.comatch[v] = r.left_of(v) ? match[*r.left_of(v)] : out.H.add_dart();
+  const LinkRewrite w = rewrite_links(r, out.H, match, out.comatch);
+  check_result_combinatorial(r, lnode_of, w);
+  remove_deleted_darts(r, g, match, out);
   return out;
 }
 

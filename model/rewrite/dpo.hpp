@@ -1,4 +1,4 @@
-// Direct derivations G =(r,m)=> H for concrete rules (thesis Defs. 24–25, digest §2).
+// Direct derivations G =(r,m)=> H for concrete rules (thesis Defs. 24–25).
 //
 // The match must be a monomorphism (Assumption 1); the gluing condition then reduces to the
 // dangling condition: no arc of G outside m(L) may be incident to the image of a deleted node.
@@ -15,8 +15,9 @@
 // "<R name>'" (a prime per application).
 //
 // On maps: `apply_to_map` goes through to_dgraph/to_gmap; `apply_in_map` rewrites the links of a
-// copy of the map directly (Jerboa style: overwrite links, fresh darts for added nodes, remove
-// deleted darts). Both throw Error(InvalidMap) when H is not combinatorial (the dart and dimension
+// copy of the map directly (Jerboa style) in phases: check the match (injective, arcs present) and
+// the gluing condition, take fresh darts for added nodes, remove the deleted L arcs and write the
+// added R arcs, check incident arcs on every touched dart, remove the deleted darts. Both throw Error(InvalidMap) when H is not combinatorial (the dart and dimension
 // are named) — other constraints of H (O, C) are left to validity.hpp.
 #pragma once
 #include <string>

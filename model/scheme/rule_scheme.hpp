@@ -1,4 +1,4 @@
-// Jerboa rule schemes (thesis Ch. 6, Defs. 86–87; digest ch6-7 §2, ch3-4 §4.5).
+// Jerboa rule schemes (thesis Ch. 6, Defs. 86–87).
 //
 // A rule scheme L -> R of dimension n is parameterised by an orbit type <o> (no `_`). Each side is a
 // graph scheme:
@@ -7,8 +7,8 @@
 //    node's dimension o^v[p], or deletes it when o^v[p] is `_` (OrbitType::kHole). These are the
 //    node's *implicit arcs*;
 //  * explicit arcs a –i– b, undirected (G-maps), a == b being an i-loop;
-//  * an optional list of embedding expressions per node (kept as text: the expression language is a
-//    separate issue; they only matter on right nodes).
+//  * an optional list of embedding expressions per node (kept as text: the expression language is not
+//    implemented; they only matter on right nodes).
 // Nodes are preserved when their name occurs on both sides, deleted when only in L, added when only
 // in R. Hooks are L nodes (names), one per connected component of L; the first hook is the
 // reference hook and its label is normally <o> itself.

@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
 #include "model/scheme/scheme_instantiation.hpp"
 
 namespace gmr::scheme {
@@ -106,7 +107,20 @@ SchemeEngine::SchemeEngine(RuleScheme scheme) : s_(std::move(scheme)) {
   not_combinatorial_ = incident_arcs_problem(s_);
 }
 
-SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_darts) const {
+namespace {
+
+// Marks res as not applicable; always returns false (a failed phase).
+bool fail(SchemeApplication& res, NotApplicableReason r, std::string why) {
+  res.applied = false;
+  res.reason = r;
+  res.why = "not applicable, because " + std::move(why);
+  res.match.clear();
+  return false;
+}
+
+}  // namespace
+
+void SchemeEngine::check_call(const GMap& g, const std::vector<Dart>& hook_darts) const {
   if (g.kind() != MapKind::GMap)
     throw Error(ErrorCode::Usage, "rule schemes apply to G-maps only", "scheme " + s_.name);
   if (g.dimension() != s_.dimension)
@@ -122,77 +136,62 @@ SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_dar
   for (size_t k = 0; k < hook_darts.size(); ++k)
     if (!g.alive(hook_darts[k]))
       throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(hook_darts[k]));
+}
 
-  SchemeApplication res;
-  auto fail = [&](NotApplicableReason r, std::string why) {
-    res.applied = false;
-    res.reason = r;
-    res.why = "not applicable, because " + std::move(why);
-    res.match.clear();
-    return res;
-  };
-  if (!not_combinatorial_.empty())
-    return fail(NotApplicableReason::NotCombinatorial,
-                "the scheme breaks incident arcs (Alg. 1): " + not_combinatorial_);
-
-  // 1. hook orbit
+OrbitGraph SchemeEngine::hook_orbit(const GMap& g, const std::vector<Dart>& hook_darts,
+                                    SchemeApplication& res) const {
   OrbitGraph O = hooks_.empty() ? single_dart_orbit(s_.orbit.size())
                                 : orbit_graph(g, s_.left.nodes[hooks_[0]].label, hook_darts[0]);
   const size_t s = O.size();
-  const size_t nl = s_.left.size();
   res.orbit = O.darts;
-  std::vector<Dart>& M = res.match;
-  M.assign(nl * s, kNoDart);
+  res.match.assign(s_.left.size() * s, kNoDart);
   if (!hooks_.empty())
-    for (uint32_t b = 0; b < s; ++b) M[hooks_[0] * s + b] = O.darts[b];
+    for (uint32_t b = 0; b < s; ++b) res.match[hooks_[0] * s + b] = O.darts[b];
+  return O;
+}
 
-  // 2. other hooks: Algorithm 5 (joint BFS), injectivity of the reverse map with a marker.
+bool SchemeEngine::match_other_hooks(const GMap& g, const std::vector<Dart>& hook_darts,
+                                     const OrbitGraph& O, SchemeApplication& res) const {
+  if (hooks_.size() < 2) return true;
+  const size_t s = O.size();
+  const OrbitType& lref = s_.left.nodes[hooks_[0]].label;
+  std::unordered_map<Dart, uint32_t> index;  // reference orbit dart -> b
+  for (uint32_t b = 0; b < s; ++b) index.emplace(O.darts[b], b);
   for (size_t c = 1; c < hooks_.size(); ++c) {
     const uint32_t h = hooks_[c];
     const OrbitType& lc = s_.left.nodes[h].label;
-    Dart* Mh = &M[h * s];
-    ScopedMarker mk(g);
-    std::vector<uint32_t> q{0};
-    Mh[0] = hook_darts[c];
-    mk.mark(hook_darts[c]);
+    OrbitIsoConflict conflict;
+    const auto pairs = orbit_isomorphism(g, lref, hook_darts[0], g, lc, hook_darts[c], &conflict);
     std::string err;
-    for (size_t k = 0; k < q.size() && err.empty(); ++k) {
-      const uint32_t b = q[k];
-      for (size_t p = 0; p < O.arity; ++p) {
-        const uint32_t nb = O.neighbor(b, p);
-        const Dart x = g.alpha(lc[p], Mh[b]);
-        if (Mh[nb] == kNoDart) {
-          if (mk.test(x)) {
-            err = "dart " + std::to_string(x) + " would correspond to two darts of the reference orbit";
-            break;
-          }
-          Mh[nb] = x;
-          mk.mark(x);
-          q.push_back(nb);
-        } else if (Mh[nb] != x) {
-          err = "dart " + std::to_string(O.darts[nb]) + " would correspond to both " +
-                std::to_string(Mh[nb]) + " and " + std::to_string(x);
-          break;
-        }
-      }
-    }
-    if (err.empty() && q.size() != s) err = "the orbits have different sizes";
-    for (uint32_t b = 0; b < s; ++b)
-      if (Mh[b] != kNoDart) mk.unmark(Mh[b]);
-    mk.set_clean();
+    if (!pairs)
+      err = conflict.earlier == kNoDart
+                ? "dart " + std::to_string(conflict.x2) + " would correspond to two darts of the reference orbit"
+                : "dart " + std::to_string(conflict.x) + " would correspond to both " +
+                      std::to_string(conflict.earlier) + " and " + std::to_string(conflict.x2);
+    else if (pairs->size() != s)
+      err = "the orbits have different sizes";
     if (!err.empty())
-      return fail(NotApplicableReason::HookOrbitsNotIsomorphic,
+      return fail(res, NotApplicableReason::HookOrbitsNotIsomorphic,
                   "the " + lc.str() + "-orbit of hook " + s_.hooks[c] + " at dart " +
-                      std::to_string(hook_darts[c]) + " is not isomorphic to the " +
-                      s_.left.nodes[hooks_[0]].label.str() + "-orbit of hook " + s_.hooks[0] +
-                      " at dart " + std::to_string(hook_darts[0]) + ": " + err);
+                      std::to_string(hook_darts[c]) + " is not isomorphic to the " + lref.str() +
+                      "-orbit of hook " + s_.hooks[0] + " at dart " + std::to_string(hook_darts[0]) +
+                      ": " + err);
+    Dart* Mh = &res.match[h * s];
+    for (const auto& [x, x2] : *pairs) Mh[index.at(x)] = x2;
   }
+  return true;
+}
 
-  // 3. propagation along explicit L arcs
+void SchemeEngine::propagate_match(const GMap& g, size_t s, std::vector<Dart>& M) const {
   for (const Step& st : steps_)
     for (uint32_t b = 0; b < s; ++b) M[st.v * s + b] = g.alpha(st.dim, M[st.from * s + b]);
+}
 
-  // 4a. injectivity
+bool SchemeEngine::check_match(const GMap& g, const OrbitGraph& O, SchemeApplication& res) const {
+  const size_t s = O.size();
+  const size_t nl = s_.left.size();
+  const std::vector<Dart>& M = res.match;
+  // (a) injectivity
   {
     ScopedMarker mk(g);
     bool dup = false;
@@ -219,37 +218,40 @@ SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_dar
           break;
         }
       }
-      return fail(NotApplicableReason::NotInjective, why);
+      return fail(res, NotApplicableReason::NotInjective, why);
     }
   }
-  // 4b. explicit arcs of L
+  // (b) explicit arcs of L
   for (const auto& e : s_.left.arcs)
     for (uint32_t b = 0; b < s; ++b) {
       const Dart x = M[e.a * s + b], y = M[e.b * s + b];
       if (g.alpha(e.dim, x) != y)
-        return fail(NotApplicableReason::MissingExplicitArc,
+        return fail(res, NotApplicableReason::MissingExplicitArc,
                     "the L arc " + s_.left.nodes[e.a].name + " -" + std::to_string(e.dim) + "- " +
                         s_.left.nodes[e.b].name + " is not in G at orbit dart " +
                         std::to_string(O.darts[b]) + ": dart " + std::to_string(x) + " has " +
                         std::to_string(e.dim) + "-neighbour " + std::to_string(g.alpha(e.dim, x)) +
                         ", not " + std::to_string(y));
     }
-  // 4c. implicit arcs of L
+  // (c) implicit arcs of L
   for (uint32_t v = 0; v < nl; ++v)
     for (const Implicit& im : impl_l_[v])
       for (uint32_t b = 0; b < s; ++b) {
         const Dart x = M[v * s + b], y = M[v * s + O.neighbor(b, im.p)];
         if (g.alpha(im.dim, x) != y)
-          return fail(NotApplicableReason::MissingImplicitArc,
+          return fail(res, NotApplicableReason::MissingImplicitArc,
                       "the implicit " + std::to_string(im.dim) + "-arcs of L node " +
                           s_.left.nodes[v].name + " " + s_.left.nodes[v].label.str() +
                           " are not in G: dart " + std::to_string(x) + " has " +
                           std::to_string(im.dim) + "-neighbour " + std::to_string(g.alpha(im.dim, x)) +
                           ", not " + std::to_string(y));
       }
+  return true;
+}
 
-  // 5. darts of R
+void SchemeEngine::place_right_darts(GMap& g, size_t s, SchemeApplication& res) const {
   const size_t nr = s_.right.size();
+  const std::vector<Dart>& M = res.match;
   std::vector<Dart>& T = res.comatch;
   T.assign(nr * s, kNoDart);
   const Dart base = num_added_ > 0 ? g.add_darts(num_added_ * s) : 0;
@@ -263,8 +265,11 @@ SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_dar
       for (uint32_t b = 0; b < s; ++b) Tv[b] = first + b;
     }
   }
-  // 6. overwrite links
-  for (uint32_t v = 0; v < nr; ++v) {
+}
+
+void SchemeEngine::write_right_links(GMap& g, const OrbitGraph& O, const std::vector<Dart>& T) const {
+  const size_t s = O.size();
+  for (uint32_t v = 0; v < s_.right.size(); ++v) {
     const Dart* Tv = &T[v * s];
     for (const Implicit& im : impl_r_[v]) {
       for (uint32_t b = 0; b < s; ++b) g.set_alpha(im.dim, Tv[b], Tv[O.neighbor(b, im.p)]);
@@ -278,14 +283,35 @@ SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_dar
       g.set_alpha(e.dim, Tb[b], Ta[b]);
     }
   }
-  // 7. deletion: the deleted darts' own links become loops first, so that remove_dart touches no
-  // surviving dart (their links were all overwritten in step 6, by I_S).
+}
+
+void SchemeEngine::remove_deleted_darts(GMap& g, size_t s, const std::vector<Dart>& M) const {
+  // The deleted darts' own links become loops first, so that remove_dart touches no surviving dart
+  // (their links were all overwritten in step 6, by I_S).
   for (uint32_t v : deleted_)
     for (uint32_t b = 0; b < s; ++b) {
       const Dart x = M[v * s + b];
       for (int i = 0; i <= g.dimension(); ++i) g.set_alpha(i, x, x);
       g.remove_dart(x);
     }
+}
+
+SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_darts) const {
+  check_call(g, hook_darts);
+  SchemeApplication res;
+  if (!not_combinatorial_.empty()) {
+    fail(res, NotApplicableReason::NotCombinatorial,
+         "the scheme breaks incident arcs (Alg. 1): " + not_combinatorial_);
+    return res;
+  }
+  const OrbitGraph O = hook_orbit(g, hook_darts, res);   // 1
+  const size_t s = O.size();
+  if (!match_other_hooks(g, hook_darts, O, res)) return res;  // 2
+  propagate_match(g, s, res.match);                            // 3
+  if (!check_match(g, O, res)) return res;                     // 4
+  place_right_darts(g, s, res);                                // 5
+  write_right_links(g, O, res.comatch);                        // 6
+  remove_deleted_darts(g, s, res.match);                       // 7
   res.applied = true;
   res.darts_added = num_added_ * s;
   res.darts_deleted = deleted_.size() * s;

@@ -1,10 +1,10 @@
-// The Jerboa rule-scheme application engine (thesis §4.3.4, §6.3.4; digest ch6-7 §3).
+// The Jerboa rule-scheme application engine (thesis §4.3.4, §6.3.4).
 //
 // Given a scheme S of parameter <o> and one dart per hook (hooks[0] = reference hook):
 //  1. hook orbit: O = G<t>(d_ref), t = label of the reference hook (Alg. 4), darts indexed b = 0..s-1,
 //     nb(b,p) = index of O[b]@t[p];
-//  2. other hooks: orbit isomorphism (Alg. 5) of G<t>(d_ref) with G<t_c>(d_c) up to the positional
-//     relabeling t -> t_c, giving M[b][h_c];
+//  2. other hooks: orbit isomorphism (Alg. 5, orbit_isomorphism in model/core/orbit.hpp) of
+//     G<t>(d_ref) with G<t_c>(d_c) up to the positional relabeling t -> t_c, giving M[b][h_c];
 //  3. match table M[b][v] for every L node, propagated along explicit L arcs from the hooks;
 //  4. match checks (the instantiated L must be a subgraph of G under M, injectively): (a) all M[b][v]
 //     pairwise distinct; (b) explicit arcs v –i– v': M[b][v]@i = M[b][v']; (c) implicit arcs
@@ -14,8 +14,9 @@
 //     T[b][v]@i := T[b][v'] both ways); a dimension a preserved node has neither in L nor in R keeps
 //     its outside link;
 //  7. the darts of deleted nodes are freed.
-// Cost O(s·(|V_L| + |V_R|)·(n+1)): linear in the size of the instantiated rule (plus O(capacity/64)
-// only when the orbit covers more than 1/8 of the map, for the dense dart index).
+// Cost O(s·(|V_L| + |V_R|)·(n+1)): linear in the size of the instantiated rule (expected: step 2
+// uses hash maps; plus O(capacity/64) only when the orbit covers more than 1/8 of the map, for the
+// dense dart index).
 //
 // Scope and decisions (named in the docs):
 //  * G-maps only (Jerboa schemes are G-map schemes); the map's dimension must equal the scheme's.
@@ -24,10 +25,10 @@
 //    overwrite semantics would differ from DPO. Such a scheme is reported as not applicable
 //    (reason NotCombinatorial) with the first failing node. Under I_S, the gluing (dangling)
 //    condition holds for every match (Fact 1), and the engine's result equals the DPO direct
-//    derivation of the instantiated rule (tested in model/tests/scheme_engine_test.cpp).
+//    derivation of the instantiated rule (tested in model/scheme/tests/scheme_dpo_test.cpp).
 //  * The cycle condition is not required: a scheme breaking it yields a map that check_validity
 //    rejects, exactly as DPO would.
-//  * Embedding expressions are not evaluated (separate issue); Jerboa preconditions neither.
+//  * Embedding expressions are not evaluated; Jerboa preconditions neither.
 //  * A scheme whose L is empty is applied on one abstract dart free at every position (it creates
 //    |V_R| darts); it takes no hook dart.
 // Inapplicability is a result (SchemeApplication::applied == false, with a reason), never an
@@ -40,6 +41,7 @@
 
 #include "model/core/gmap.hpp"
 #include "model/scheme/rule_scheme.hpp"
+#include "model/scheme/scheme_instantiation.hpp"
 
 namespace gmr::scheme {
 
@@ -87,6 +89,18 @@ class SchemeEngine {
   SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts) const;
 
  private:
+  // The phases of apply, numbered as in the header comment. check_call throws on misuse; a check
+  // that fails marks `res` as not applicable and returns false.
+  void check_call(const GMap& g, const std::vector<Dart>& hook_darts) const;
+  OrbitGraph hook_orbit(const GMap& g, const std::vector<Dart>& hook_darts, SchemeApplication& res) const;  // 1
+  bool match_other_hooks(const GMap& g, const std::vector<Dart>& hook_darts, const OrbitGraph& O,
+                         SchemeApplication& res) const;                                // 2
+  void propagate_match(const GMap& g, size_t s, std::vector<Dart>& M) const;           // 3
+  bool check_match(const GMap& g, const OrbitGraph& O, SchemeApplication& res) const;  // 4
+  void place_right_darts(GMap& g, size_t s, SchemeApplication& res) const;             // 5
+  void write_right_links(GMap& g, const OrbitGraph& O, const std::vector<Dart>& T) const;  // 6
+  void remove_deleted_darts(GMap& g, size_t s, const std::vector<Dart>& M) const;      // 7
+
   struct Step {
     uint32_t v, from;
     int dim;

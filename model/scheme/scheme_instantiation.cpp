@@ -88,7 +88,7 @@ void instantiate_arc(const SchemeArc& e, const OrbitGraph& O, InstantiatedGraph&
   for (uint32_t b = 0; b < O.size(); ++b) into.graph.add_link(into.at(e.a, b), into.at(e.b, b), e.dim);
 }
 
-InstantiatedGraph instantiate(const GraphScheme& s, const OrbitGraph& O) {
+InstantiatedGraph instantiate_graph(const GraphScheme& s, const OrbitGraph& O) {
   InstantiatedGraph ig = instantiate_nodes(s, O);
   for (const auto& e : s.arcs) {
     if (e.a >= s.size() || e.b >= s.size()) throw Error(ErrorCode::Schema, "arc end out of range");
@@ -97,12 +97,12 @@ InstantiatedGraph instantiate(const GraphScheme& s, const OrbitGraph& O) {
   return ig;
 }
 
-InstantiatedRule instantiate(const RuleScheme& r, const OrbitGraph& O) {
-  return InstantiatedRule{instantiate(r.left, O), instantiate(r.right, O)};
+InstantiatedRule instantiate_sides(const RuleScheme& r, const OrbitGraph& O) {
+  return InstantiatedRule{instantiate_graph(r.left, O), instantiate_graph(r.right, O)};
 }
 
 Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O) {
-  InstantiatedRule ir = instantiate(r, O);
+  InstantiatedRule ir = instantiate_sides(r, O);
   return Rule(std::move(ir.left.graph), std::move(ir.right.graph), r.dimension, MapKind::GMap, r.name);
 }
 

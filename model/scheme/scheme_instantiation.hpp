@@ -1,5 +1,5 @@
 // Instantiation of Jerboa rule schemes on an orbit graph (thesis Defs. 88–89; inference paper
-// Defs. 4.3–4.6; digest ch6-7 §2.3, ch3-4 §4.5).
+// Defs. 4.3–4.6).
 //
 // The orbit graph O of a scheme of parameter <o> has darts b = 0..s-1 and, for each position p of
 // <o>, a link b –o[p]– nb(b,p) (an involution on the darts; a fixed point is a loop).
@@ -57,13 +57,13 @@ InstantiatedGraph instantiate_nodes(const GraphScheme& s, const OrbitGraph& O);
 // Def. 89: adds the instances of one explicit arc to an instantiation of the nodes.
 void instantiate_arc(const SchemeArc& e, const OrbitGraph& O, InstantiatedGraph& into);
 // Whole graph scheme.
-InstantiatedGraph instantiate(const GraphScheme& s, const OrbitGraph& O);
+InstantiatedGraph instantiate_graph(const GraphScheme& s, const OrbitGraph& O);
 
 struct InstantiatedRule {
   InstantiatedGraph left, right;
 };
-InstantiatedRule instantiate(const RuleScheme& r, const OrbitGraph& O);
-// The instantiated rule as a concrete DPO rule (model/rule.hpp): L and R with the names "u_v",
+InstantiatedRule instantiate_sides(const RuleScheme& r, const OrbitGraph& O);
+// The instantiated rule as a concrete DPO rule (model/rewrite/rule.hpp): L and R with the names "u_v",
 // preserved instances sharing names, arcs deduced by Assumption 4. The concrete L node of
 // (scheme node v, orbit dart b) has index v * |O| + b (same for R).
 Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O);

@@ -275,16 +275,16 @@ GMap oriented_components(const GMap& g) {
 
 // --- edits ---------------------------------------------------------------------------------
 
-GMap relabel(const GMap& g, const std::vector<Dart>& perm) {
+GMap permute_darts(const GMap& g, const std::vector<Dart>& perm) {
   const Dart cap = g.capacity();
   if (perm.size() != cap)
-    throw Error(ErrorCode::Usage, "relabel: permutation of size " + std::to_string(perm.size()) +
+    throw Error(ErrorCode::Usage, "permute_darts: permutation of size " + std::to_string(perm.size()) +
                                       " for a map of capacity " + std::to_string(cap));
   std::vector<bool> hit(cap, false);
   for (Dart d = 0; d < cap; ++d) {
     if (perm[d] >= cap || hit[perm[d]])
       throw Error(ErrorCode::Usage,
-                  "relabel: not a permutation of 0.." + std::to_string(cap) + "-1",
+                  "permute_darts: not a permutation of 0.." + std::to_string(cap) + "-1",
                   "index " + std::to_string(d));
     hit[perm[d]] = true;
   }

@@ -16,7 +16,7 @@
 //  * sew sequences: a pool of small cells (isolated edges, polygons, closed surfaces which are
 //    volumes when n >= 3) edited by a random sequence of i-sews for every i in 0..n, with some
 //    unsews.
-// And two edits for isomorphism tests: `relabel` (an isomorphic copy with permuted dart ids),
+// And two edits for isomorphism tests: `permute_darts` (an isomorphic copy with permuted dart ids),
 // `mutate_one_link` (a guaranteed non-isomorphic valid variant), `resew_one_link` (a valid
 // variant, one orbit re-glued elsewhere, isomorphic or not: hard cases for isomorphism tests).
 #pragma once
@@ -110,7 +110,7 @@ GMap oriented_components(const GMap& g);
 // An isomorphic copy of g with dart d renamed perm[d]. perm must be a permutation of
 // 0..capacity()-1 (else Error(Usage)); alpha'_i(perm[d]) = perm[alpha_i(d)], deleted darts of g
 // are deleted in the copy (at their new index). Kind and dimension are kept. Works for O-maps.
-GMap relabel(const GMap& g, const std::vector<Dart>& perm);
+GMap permute_darts(const GMap& g, const std::vector<Dart>& perm);
 
 struct Mutation {
   enum class Kind { None, Unsew, Sew, Resew };

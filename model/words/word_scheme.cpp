@@ -43,7 +43,7 @@ DGraph WordGraphScheme::core() const {
   return g;
 }
 
-DGraph instantiate(const WordGraphScheme& S, const PatternGraph& P) {
+DGraph instantiate_word_graph(const WordGraphScheme& S, const PatternGraph& P) {
   DGraph out;
   for (uint32_t n = 0; n < S.size(); ++n)
     for (Node u = 0; u < P.size(); ++u) out.add_node(P.graph.name(u) + ":" + S.nodes[n]);
@@ -80,8 +80,8 @@ std::vector<std::optional<uint32_t>> WordRuleScheme::preserved_arcs() const {
 
 Rule WordRuleScheme::core() const { return Rule(left.core(), right.core(), n, kind, name); }
 
-Rule instantiate(const WordRuleScheme& S, const PatternGraph& P) {
-  return Rule(instantiate(S.left, P), instantiate(S.right, P), S.n, S.kind, S.name);
+Rule instantiate_word_rule(const WordRuleScheme& S, const PatternGraph& P) {
+  return Rule(instantiate_word_graph(S.left, P), instantiate_word_graph(S.right, P), S.n, S.kind, S.name);
 }
 
 std::optional<std::vector<Node>> propagate_match(const WordRuleScheme& S, const PatternGraph& P, const Rule& inst,
@@ -130,7 +130,7 @@ WordSchemeApplication apply_word_scheme(const GMap& g, const WordRuleScheme& S, 
   const std::vector<Dart> darts = g.darts();  // node k of G is darts[k]
   const Node v = static_cast<Node>(std::lower_bound(darts.begin(), darts.end(), d) - darts.begin());
   PatternGraph Pv = component(pattern_graph(G, W), v);
-  Rule rule = instantiate(S, Pv);
+  Rule rule = instantiate_word_rule(S, Pv);
   const auto m = propagate_match(S, Pv, rule, G);
   if (!m) throw Error(ErrorCode::Usage, "the instantiated left-hand side does not match at the hook", "dart " + std::to_string(d));
   std::vector<Dart> match;

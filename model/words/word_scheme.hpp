@@ -1,5 +1,5 @@
 // Graph schemes and rule schemes with (word, dimension) arc labels, and their instantiation on a
-// pattern graph (thesis §4.3–4.4, Defs. 44–47; digest ch3-4 §4.3–4.4).
+// pattern graph (thesis §4.3–4.4, Defs. 44–47).
 //
 //  * Graph scheme (Def. 44): a (W × D)-graph; an arc n -> n' carries a word w ∈ W and a dimension d.
 //    Core π_D (Def. 45) keeps d only.
@@ -8,14 +8,14 @@
 //    n -> n' of Π, one d-arc (u,n) -> (u',n'). Node (u,n) has id n·|P| + u.
 //  * Rule scheme (Def. 46): L, R with shared node names (preserved nodes); an arc is preserved iff
 //    an arc with the same ends and the same full (w,d) label exists on the other side (k-th
-//    parallel copy paired with k-th, as in model/rule.hpp). ι(S,P) (Def. 47) instantiates L and R on
+//    parallel copy paired with k-th, as in model/rewrite/rule.hpp). ι(S,P) (Def. 47) instantiates L and R on
 //    the same P and gives a concrete gmr::Rule. Its interface is deduced by Assumption 4 on the
 //    instantiated arcs, which can pair a deleted arc (from a word w) with an added arc (from w' ≠ w)
-//    with the same ends and dimension (digest erratum 12): the DPO result is the same.
+//    with the same ends and dimension: the DPO result is the same.
 //  * Application at a hook (§4.4): P_v for the hook dart v, ι(S,P_v), match (u,hook) ↦ u propagated
-//    along the arcs of ι(L,P_v) (G satisfies I_G, so each step is forced), then DPO (model/dpo.hpp).
+//    along the arcs of ι(L,P_v) (G satisfies I_G, so each step is forced), then DPO (model/rewrite/dpo.hpp).
 //    One hook only (one connected component of L): how several hooks with different P_v are
-//    instantiated is left open by the thesis (digest erratum 11).
+//    instantiated is left open by the thesis.
 #pragma once
 #include <optional>
 #include <string>
@@ -58,7 +58,7 @@ class WordGraphScheme {
 };
 
 // ι(Π,P). Throws Error(Schema) when a word of Π is not in P.words.
-DGraph instantiate(const WordGraphScheme& S, const PatternGraph& P);
+DGraph instantiate_word_graph(const WordGraphScheme& S, const PatternGraph& P);
 inline Node instance_node(const PatternGraph& P, uint32_t n, Node u) { return static_cast<Node>(n * P.size() + u); }
 
 struct WordRuleScheme {
@@ -76,7 +76,7 @@ struct WordRuleScheme {
 };
 
 // ι(S,P) as a concrete rule on the scheme's dimension and map kind.
-Rule instantiate(const WordRuleScheme& S, const PatternGraph& P);
+Rule instantiate_word_rule(const WordRuleScheme& S, const PatternGraph& P);
 
 // The match of ι(L,P) in G with (u, hook) ↦ P.origin[u], propagated along the arcs of ι(L,P).
 // nullopt when propagation fails (a missing arc, conflicting images, non-injective, or an L node

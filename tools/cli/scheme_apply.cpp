@@ -1,9 +1,11 @@
 #include "tools/cli/scheme_apply.hpp"
 
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "model/core/error.hpp"
+#include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
@@ -43,10 +45,14 @@ nlohmann::ordered_json table(const GraphScheme& side, const std::vector<Dart>& t
   return j;
 }
 
-}  // namespace
+// The applications made and the hook darts of each (empty for a scheme without hook).
+struct Applied {
+  std::vector<SchemeApplication> apps;
+  std::vector<std::vector<Dart>> hooks_used;
+};
 
-int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
-  const SchemeEngine engine(s);
+// Usage errors of --hook / --all, before the map is read.
+void check_hook_arguments(const RuleScheme& s, const SchemeApplyArgs& a) {
   const size_t nhooks = s.hooks.size();
   if (a.all && !a.hooks.empty()) throw Error(ErrorCode::Usage, "give either --hook or --all", "--all");
   if (a.all && nhooks != 1)
@@ -58,69 +64,64 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
     throw Error(ErrorCode::Usage,
                 "the scheme has " + std::to_string(nhooks) + " hook(s): give the dart(s) with --hook D[,D...] or use --all",
                 "--hook");
-  GMapFile f = load_map(a.input, a.from);
-  GMap& g = f.map;
-  const size_t before = g.size();
-  std::vector<SchemeApplication> apps;
-  std::vector<std::vector<Dart>> hooks_used;
-  if (!a.all) {
-    const std::vector<Dart> hooks = a.hooks.empty() ? std::vector<Dart>{} : parse_hooks(a.hooks, g);
-    SchemeApplication app = engine.apply(g, hooks);  // wrong count, dead dart: Error (exit 2)
-    if (!app) {
-      if (a.json) {
-        nlohmann::ordered_json j;
-        j["rule"] = s.name;
-        j["map"] = a.input;
-        j["applied"] = false;
-        j["reason"] = to_string(app.reason);
-        j["why"] = app.why;
-        print_json(j);
-      } else {
-        std::cout << s.name << ": " << app.why << "\n";
-      }
-      return kExitNegative;
-    }
-    hooks_used.push_back(hooks);
-    apps.push_back(std::move(app));
+}
+
+// Prints why the scheme was not applied. `applications` is printed with --all only.
+void print_not_applicable(const RuleScheme& s, const SchemeApplyArgs& a, NotApplicableReason reason,
+                          const std::string& why, const std::string& text) {
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["rule"] = s.name;
+    j["map"] = a.input;
+    j["applied"] = false;
+    if (a.all) j["applications"] = 0;
+    j["reason"] = to_string(reason);
+    j["why"] = why;
+    print_json(j);
   } else {
-    const std::vector<Dart> darts = g.darts();
-    std::vector<bool> used(g.capacity(), false);
-    SchemeApplication last;
-    for (Dart d : darts) {
-      if (used[d] || !g.alive(d)) continue;
-      SchemeApplication app = engine.apply(g, {d});
-      if (!app) {
-        if (apps.empty()) last = std::move(app);
-        continue;
-      }
-      for (Dart x : app.match)
-        if (x < used.size()) used[x] = true;
-      hooks_used.push_back({d});
-      if (!a.json) {  // the tables are printed only with --json
-        app.orbit.clear();
-        app.match.clear();
-        app.comatch.clear();
-      }
-      apps.push_back(std::move(app));
-    }
-    if (apps.empty()) {
-      const std::string why = darts.empty() ? "the map has no dart" : last.why + " (at dart " + std::to_string(darts.front()) + ", and at every other dart)";
-      if (a.json) {
-        nlohmann::ordered_json j;
-        j["rule"] = s.name;
-        j["map"] = a.input;
-        j["applied"] = false;
-        j["applications"] = 0;
-        j["reason"] = to_string(last.reason);
-        j["why"] = why;
-        print_json(j);
-      } else {
-        std::cout << s.name << ": not applicable at any dart; " << why << "\n";
-      }
-      return kExitNegative;
-    }
+    std::cout << text << "\n";
   }
-  const ValidityReport rep = check_validity(g);
+}
+
+// --hook D[,D...] (or no hook): one application; nullopt when not applicable (already printed).
+std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a) {
+  const RuleScheme& s = engine.scheme();
+  const std::vector<Dart> hooks = a.hooks.empty() ? std::vector<Dart>{} : parse_hooks(a.hooks, g);
+  SchemeApplication app = engine.apply(g, hooks);  // wrong count, dead dart: Error (exit 2)
+  if (!app) {
+    print_not_applicable(s, a, app.reason, app.why, s.name + ": " + app.why);
+    return std::nullopt;
+  }
+  Applied out;
+  out.hooks_used.push_back(hooks);
+  out.apps.push_back(std::move(app));
+  return out;
+}
+
+// --all: apply_everywhere; nullopt when applicable at no dart (already printed).
+std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a) {
+  const RuleScheme& s = engine.scheme();
+  const std::vector<Dart> darts = g.darts();
+  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json);  // tables only with --json
+  if (all.applications.empty()) {
+    const SchemeApplication& last = all.last_failure;
+    const std::string why = darts.empty() ? "the map has no dart"
+                                          : last.why + " (at dart " + std::to_string(darts.front()) +
+                                                ", and at every other dart)";
+    print_not_applicable(s, a, last.reason, why, s.name + ": not applicable at any dart; " + why);
+    return std::nullopt;
+  }
+  Applied out;
+  out.apps = std::move(all.applications);
+  for (Dart d : all.hooks) out.hooks_used.push_back({d});
+  return out;
+}
+
+// Prints the applications, the dart counts and the validity of the result.
+void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, size_t before,
+                   const GMap& g, const ValidityReport& rep) {
+  const auto& apps = r.apps;
+  const auto& hooks_used = r.hooks_used;
   size_t added = 0, deleted = 0;
   for (const auto& app : apps) {
     added += app.darts_added;
@@ -161,6 +162,20 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
               << (rep.ok() ? "valid" : "INVALID") << "\n";
     for (const auto& v : rep.violations) std::cout << "  " << v.describe() << "\n";
   }
+}
+
+}  // namespace
+
+int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
+  const SchemeEngine engine(s);
+  check_hook_arguments(s, a);
+  GMapFile f = load_map(a.input, a.from);
+  GMap& g = f.map;
+  const size_t before = g.size();
+  const std::optional<Applied> r = a.all ? apply_at_every_dart(engine, g, a) : apply_at_hooks(engine, g, a);
+  if (!r) return kExitNegative;
+  const ValidityReport rep = check_validity(g);
+  print_applied(s, a, *r, before, g, rep);
   if (!rep.ok()) return kExitNegative;
   if (!a.output.empty()) save_map(GMapFile{g, {}}, a.output, output_format(a.output, a.to));
   return kExitOk;

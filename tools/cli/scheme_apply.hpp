@@ -1,12 +1,7 @@
-// `gmr apply` for rule schemes (issue 4): the application engine (model/scheme_engine.hpp) at the
-// given hook dart(s), or at every dart where the scheme applies (--all). Called by
-// tools/cli/cmd_apply.cpp when the rule file is a scheme (gmr.rule kind "scheme" or .jme).
-//
-// --all (schemes with one hook): Jerboa-style repeated application. The darts of the input map are
-// visited in increasing order; at each dart not yet used by an application (as a matched dart), the
-// scheme is applied with that dart as a fresh hook when it applies; the matched darts of every
-// application are then used. Darts created by an application are never hooks. E.g. quad subdivision
-// (orbit <0,1,2>) is applied once per connected component, vertex insertion on <0> once per edge.
+// `gmr apply` for rule schemes: the application engine (model/scheme/scheme_engine.hpp) at the
+// given hook dart(s), or at every dart where the scheme applies (--all, schemes with one hook:
+// model/scheme/apply_everywhere.hpp). Called by tools/cli/cmd_apply.cpp when the rule file is a
+// scheme (gmr.rule kind "scheme" or .jme). This file handles the arguments and the printing only.
 #pragma once
 #include <string>
 

@@ -201,7 +201,7 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
 
   // Isomorphic pair: a random relabeling.
   {
-    GMap h = gmr::testing::relabel(g, gmr::testing::random_permutation(rng, g.capacity()));
+    GMap h = gmr::testing::permute_darts(g, gmr::testing::random_permutation(rng, g.capacity()));
     to_cgal<N>(h, ch);
     const bool gi = gmr::is_isomorphic(g, h), ci = cgal_isomorphic<N>(cg, ch);
     EXPECT_TRUE(gi) << "gmr: relabeled copy not isomorphic";
@@ -216,7 +216,7 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
     const Mutation mu = gmr::testing::mutate_one_link(m, rng);
     if (mu.kind != Mutation::Kind::None) {
       SCOPED_TRACE(mu.str());
-      GMap h = gmr::testing::relabel(m, gmr::testing::random_permutation(rng, m.capacity()));
+      GMap h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
       to_cgal<N>(h, ch);
       EXPECT_TRUE(gmr::is_valid(h));
       EXPECT_TRUE(cgal_is_valid(ch));
@@ -236,7 +236,7 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
       ++st.resew_none;
     } else {
       SCOPED_TRACE(mu.str());
-      GMap h = gmr::testing::relabel(m, gmr::testing::random_permutation(rng, m.capacity()));
+      GMap h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
       to_cgal<N>(h, ch);
       EXPECT_TRUE(gmr::is_valid(h));
       EXPECT_TRUE(cgal_is_valid(ch));

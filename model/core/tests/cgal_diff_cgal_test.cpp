@@ -123,7 +123,7 @@ std::pair<size_t, size_t> twisted_pairs(const GMap& base, int i, int k, uint64_t
     const Dart da = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)],
                db = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)];
     if (!twist(a, i, k, da) || !twist(b, i, k, db)) continue;
-    b = gmr::testing::relabel(b, gmr::testing::random_permutation(rng, b.capacity()));
+    b = gmr::testing::permute_darts(b, gmr::testing::random_permutation(rng, b.capacity()));
     CMap<N> ca, cb;
     to_cgal<N>(a, ca);
     to_cgal<N>(b, cb);

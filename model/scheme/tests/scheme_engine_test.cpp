@@ -67,7 +67,7 @@ TEST(Instantiation, NodeArcAndRule) {
   EXPECT_EQ(ig.graph.successors(ig.at(0, 3), 1), std::vector<Node>{ig.at(1, 3)});
   // F9 counts: L = N nodes / 3N arcs, R = 4N nodes / 12N arcs (on a whole cube, N = 48).
   OrbitGraph whole = orbit_graph(cube, ot("<0,1,2>"), 0);
-  InstantiatedRule ir = instantiate(quad_subdivision(), whole);
+  InstantiatedRule ir = instantiate_sides(quad_subdivision(), whole);
   EXPECT_EQ(ir.left.graph.num_nodes(), 48u);
   EXPECT_EQ(ir.left.graph.num_arcs(), 3u * 48);
   EXPECT_EQ(ir.right.graph.num_nodes(), 4u * 48);

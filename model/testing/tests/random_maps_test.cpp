@@ -123,16 +123,16 @@ TEST(RandomMaps, RelabelIsAnIsomorphicCopy) {
     Rng rng(seed);
     GMap g = random_gmap(rng, Generator::SewSequence, 2 + static_cast<int>(seed % 2));
     const auto perm = random_permutation(rng, g.capacity());
-    GMap h = relabel(g, perm);
+    GMap h = permute_darts(g, perm);
     ASSERT_TRUE(is_valid(h));
     for (int i = 0; i <= g.dimension(); ++i)
       for (Dart d = 0; d < g.capacity(); ++d) EXPECT_EQ(h.alpha(i, perm[d]), perm[g.alpha(i, d)]);
     EXPECT_TRUE(is_isomorphic(g, h));
   }
   GMap g = make_cube(2);
-  EXPECT_THROW(relabel(g, {0, 1}), Error);
+  EXPECT_THROW(permute_darts(g, {0, 1}), Error);
   std::vector<Dart> bad(g.capacity(), 0);
-  EXPECT_THROW(relabel(g, bad), Error);
+  EXPECT_THROW(permute_darts(g, bad), Error);
 }
 
 TEST(RandomMaps, RelabelKeepsHoles) {
@@ -143,7 +143,7 @@ TEST(RandomMaps, RelabelKeepsHoles) {
   g.remove_dart(9);
   Rng rng(3);
   const auto perm = random_permutation(rng, g.capacity());
-  GMap h = relabel(g, perm);
+  GMap h = permute_darts(g, perm);
   EXPECT_EQ(h.size(), 8u);
   EXPECT_FALSE(h.alive(perm[8]));
   EXPECT_FALSE(h.alive(perm[9]));

@@ -1,0 +1,52 @@
+#include "model/scheme/apply_everywhere.hpp"
+
+#include <string>
+
+#include "model/core/error.hpp"
+
+namespace gmr::scheme {
+
+size_t EverywhereApplication::darts_added() const {
+  size_t n = 0;
+  for (const auto& a : applications) n += a.darts_added;
+  return n;
+}
+
+size_t EverywhereApplication::darts_deleted() const {
+  size_t n = 0;
+  for (const auto& a : applications) n += a.darts_deleted;
+  return n;
+}
+
+EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool keep_tables) {
+  const RuleScheme& s = engine.scheme();
+  if (s.hooks.size() != 1)
+    throw Error(ErrorCode::Usage,
+                "applying at every dart needs a scheme with one hook; \"" + s.name + "\" has " +
+                    std::to_string(s.hooks.size()),
+                "scheme " + s.name);
+  EverywhereApplication out;
+  const std::vector<Dart> darts = g.darts();
+  std::vector<bool> used(g.capacity(), false);
+  for (Dart d : darts) {
+    if (used[d] || !g.alive(d)) continue;
+    SchemeApplication app = engine.apply(g, {d});
+    if (!app) {
+      if (out.applications.empty()) out.last_failure = std::move(app);
+      continue;
+    }
+    for (Dart x : app.match)
+      if (x < used.size()) used[x] = true;
+    out.hooks.push_back(d);
+    if (!keep_tables) {
+      app.orbit.clear();
+      app.match.clear();
+      app.comatch.clear();
+    }
+    out.applications.push_back(std::move(app));
+  }
+  if (!out.applications.empty()) out.last_failure = SchemeApplication{};
+  return out;
+}
+
+}  // namespace gmr::scheme
