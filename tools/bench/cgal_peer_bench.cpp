@@ -31,21 +31,13 @@
 #include <string>
 #include <vector>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <CGAL/Generalized_map.h>
-#pragma GCC diagnostic pop
+#include "model/testing/cgal_generalized_map.hpp"
 
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
 
 using namespace gmr;
-using namespace gmr::rewrite;
-using namespace gmr::checker;
 
 using gmr::Dart;
 using gmr::GMap;

@@ -24,13 +24,7 @@
 #include <memory>
 #include <vector>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <CGAL/Generalized_map.h>
-#pragma GCC diagnostic pop
+#include "model/testing/cgal_generalized_map.hpp"
 
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
@@ -40,7 +34,6 @@
 #include "model/core/validity.hpp"
 
 using namespace gmr;
-using namespace gmr::rewrite;
 
 using gmr::Dart;
 using gmr::GMap;
@@ -118,7 +111,7 @@ size_t cgal_quad_subdivision(CMap& m) {
 struct Fixture {
   GMap torus{2};
   CMap ctorus;
-  std::unique_ptr<gmr::SchemeEngine> engine;
+  std::unique_ptr<gmr::scheme::SchemeEngine> engine;
 };
 
 bool same_cells(const GMap& g, CMap& c) {
@@ -132,7 +125,7 @@ Fixture& fixture() {
   static std::unique_ptr<Fixture> f;
   if (f) return *f;
   f = std::make_unique<Fixture>();
-  f->engine = std::make_unique<gmr::SchemeEngine>(gmr::read_scheme_file(GMR_RULES_DIR "/quad_subdivision.json"));
+  f->engine = std::make_unique<gmr::scheme::SchemeEngine>(gmr::io::read_scheme_file(GMR_RULES_DIR "/quad_subdivision.json"));
   // Correctness on a small torus: the CGAL result is isomorphic to the engine's.
   {
     GMap g = gmr::make_torus(5, 7);
@@ -165,7 +158,7 @@ void quadsub_gmr(benchmark::State& state) {
     state.PauseTiming();
     GMap g = f.torus;
     state.ResumeTiming();
-    const gmr::SchemeApplication a = f.engine->apply(g, {0});
+    const gmr::scheme::SchemeApplication a = f.engine->apply(g, {0});
     benchmark::DoNotOptimize(a.darts_added);
     added += a.darts_added;
     state.PauseTiming();

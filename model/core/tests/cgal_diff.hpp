@@ -14,13 +14,7 @@
 #include <string>
 #include <vector>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <CGAL/Generalized_map.h>
-#pragma GCC diagnostic pop
+#include "model/testing/cgal_generalized_map.hpp"
 
 #include "model/core/gmap.hpp"
 #include "model/core/orbit.hpp"
