@@ -1,4 +1,4 @@
-// Properties of concrete DPO rules and of the concrete-rule checker (issue 5), on random rules
+// Properties of concrete DPO rules and of the concrete-rule checker, on random rules
 // (proptests/rule_cases.hpp) and random maps (proptests/generators.hpp):
 //  * soundness, by random testing: if check_rule accepts a rule, every direct derivation through
 //    a match satisfying the gluing condition, on random maps of the rule's model, yields a map of

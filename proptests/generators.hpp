@@ -1,4 +1,4 @@
-// RapidCheck generators of maps for gmr (issue 5). A map is described by a small `MapCase`
+// RapidCheck generators of maps for gmr. A map is described by a small `MapCase`
 // (family, dimension, size, seed) built deterministically (model/random_maps.hpp, portable across
 // standard libraries): RapidCheck shrinks the size and the seed toward smaller maps, and a failing
 // case prints its description, the map as gmr.gmap JSON and its DOT diagram (showValue below), so

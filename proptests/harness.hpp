@@ -1,4 +1,4 @@
-// Running a property (issue 5): replay the corpus first, then RapidCheck's random search.
+// Running a property: replay the corpus first, then RapidCheck's random search.
 //
 // The corpus (proptests/corpus/<property>.txt, one case per line: "<family> <n> <size> <seed>")
 // holds counterexamples found by fuzzing campaigns (tools/fuzz); every later run replays them

@@ -1,4 +1,4 @@
-// RapidCheck generators of concrete rules (issue 5), described like maps by a small deterministic
+// RapidCheck generators of concrete rules, described like maps by a small deterministic
 // `RuleCase` (family, dimension, size, seed; corpus line "<family> <n> <size> <seed>"):
 //   arbitrary rules
 //     small, small-omap          random_small_rule: up to `size` (<= 3) nodes, each preserved,

@@ -1,4 +1,4 @@
-// RapidCheck generators of rule schemes (issue 5), as deterministic `SchemeCase`s (family,
+// RapidCheck generators of rule schemes, as deterministic `SchemeCase`s (family,
 // dimension, size, seed; corpus line "<family> <n> <size> <seed>"):
 //   random          random_scheme (model/random_schemes.hpp): arbitrary schemes, biased toward
 //                   incident-arc consistency, up to `size` added nodes (n = 1..3);

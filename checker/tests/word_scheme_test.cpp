@@ -1,5 +1,5 @@
 // Pattern functor, graph schemes with (w,d) labels, their instantiation and rule schemes (thesis
-// §4.2–4.4, Defs. 42–48; digest ch3-4 §4 and fixtures F8, F9, F10).
+// §4.2–4.4, Defs. 42–48).
 #include <gtest/gtest.h>
 
 #include <cstdlib>

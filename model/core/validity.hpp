@@ -6,7 +6,7 @@
 //                 on top of I_G(i)); for beta_1 of an O-map, each dart has exactly one incoming
 //                 1-arc (I_G(1), target side);
 //  * cycle:       alpha_j(alpha_i(alpha_j(alpha_i(d)))) == d for i+2 <= j (C_G(i,j)); for O-maps
-//                 over (1..n)_{+2} only (digest erratum 2: Def. 32, not the combinatorial Def. 1).
+//                 over (1..n)_{+2} only (Def. 32, not the combinatorial Def. 1).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// DOT (Graphviz) text of rules, in the conventions of the papers (SPEC "Diagrams"): the left- and
+// DOT (Graphviz) text of rules, in the conventions of the papers: the left- and
 // right-hand sides side by side as two clusters "L" and "R", arcs coloured per dimension with
 // dimension_colour (io_dot.hpp: 0 black, 1 red, 2 blue, 3 green, ...).
 //

@@ -1,5 +1,5 @@
 // Products of labelled graphs and the arc operations built from them (thesis §4.2.1–4.2.2,
-// Def. 41, Ex. 42; digest ch3-4 §4.1 and fixture F15).
+// Def. 41, Ex. 42).
 //
 // Σ-graphs are gmr::DGraph with int labels (Σ is a list of ints).
 //  * Product P ×_Σ Π (the pullback over the terminal 1_Σ): nodes V_P × V_Π — all pairs, isolated

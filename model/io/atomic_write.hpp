@@ -1,4 +1,4 @@
-// Atomic file output (SPEC "Files and formats": writers write atomically).
+// Atomic file output (writers write atomically).
 //
 // The content goes to a fresh temporary file in the destination's directory (so that the final
 // rename stays within one file system), is flushed to disk, then renamed over the destination.

@@ -1,4 +1,4 @@
-// The native G-map format "gmr.gmap" (SPEC "Files and formats"), version 1.
+// The native G-map format "gmr.gmap", version 1.
 //
 //   {
 //     "format": "gmr.gmap",

@@ -1,6 +1,6 @@
 // Path-located reading of JSON documents, shared by the gmr.* file readers.
 //
-// SPEC "Files and formats": every file starts with "format": "gmr.<kind>" and "version"; readers
+// Every file starts with "format": "gmr.<kind>" and "version"; readers
 // validate everything and report the first problem with its JSON path. Paths use the notation
 // `$` (the document), `.key` (object member; `["odd key"]` when the key is not a plain word) and
 // `[i]` (array element), e.g. `$.alpha.1[7]` or `$.embeddings[0].values[3].dart`.

@@ -1,4 +1,4 @@
-// The "gmr.rule" file format for concrete DPO rules (SPEC "Files and formats").
+// The "gmr.rule" file format for concrete DPO rules.
 //
 //   {
 //     "format": "gmr.rule", "version": 1, "kind": "concrete",

@@ -1,4 +1,4 @@
-// The "gmr.rule" file format, kind "scheme": Jerboa rule schemes (SPEC "Files and formats"). The
+// The "gmr.rule" file format, kind "scheme": Jerboa rule schemes. The
 // concrete kind (DPO rules) is read by rule_json.hpp; both share the header keys "format",
 // "version", "kind", "name", "description", "map", "n".
 //

@@ -1,4 +1,4 @@
-// Concrete DPO rules L <- L∩R -> R on D-graphs (thesis §2.2, §3.3.2; digest §2).
+// Concrete DPO rules L <- L∩R -> R on D-graphs (thesis §2.2, §3.3.2).
 //
 // A rule is written as two D-graphs L and R whose nodes are named; a node name occurring on both
 // sides is a preserved node (the node component of the partial mono L ⇀ R), a name only in L is a

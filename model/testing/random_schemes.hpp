@@ -1,4 +1,4 @@
-// Random rule schemes for property tests (issue 5), drawn deterministically from a seed with the
+// Random rule schemes for property tests, drawn deterministically from a seed with the
 // portable `uniform` of random_maps.hpp.
 //
 //  * `random_scheme`: an arbitrary Jerboa-style scheme (rule_scheme.hpp) of dimension n: a random

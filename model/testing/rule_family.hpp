@@ -1,5 +1,5 @@
 // Generated families of small concrete rules, for the empirical equivalence between the static
-// checker and the semantic verdict (issue 3), reusable by property-based tests.
+// checker and the semantic verdict, reusable by property-based tests.
 //
 //  * `for_each_small_rule`: EVERY rule over at most `max_nodes` nodes (named a, b, c) in L ∪ R,
 //    each node preserved, deleted or added (status tuples taken in nondecreasing order to skip

@@ -1,4 +1,4 @@
-// Pattern graphs and the pattern functor (thesis §4.2, Defs. 42, 48, Fact 2; digest ch3-4 §4.2).
+// Pattern graphs and the pattern functor (thesis §4.2, Defs. 42, 48, Fact 2).
 //
 // A pattern graph is a W-graph: arcs labelled by words of W ⊆ D̄*. It is stored as a DGraph whose
 // int labels index the word list `words` (label k = words[k]).
@@ -11,7 +11,7 @@
 // arcs of G (e.g. the 3-arcs of F8) are dropped, and G needs incident arcs I_G only on those.
 //
 // P_v (§4.2): the maximal subgraph containing v closed under incident arcs, i.e. the weakly
-// connected component of v (digest erratum 16: "strongly connected" in Ex. 48 agrees only when
+// connected component of v ("strongly connected" in Ex. 48 agrees only when
 // O_P(W) holds).
 #pragma once
 #include <optional>

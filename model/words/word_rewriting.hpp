@@ -1,5 +1,5 @@
 // Words over conjugated dimensions and the conjugate rewriting system R_{N,E} (thesis §4.2,
-// Def. 43; §4.6, Def. 52, Lemmas 9–11; digest ch3-4 §4.2 and §5.3).
+// Def. 43; §4.6, Def. 52, Lemmas 9–11).
 //
 //  * A letter of D̄ = D ∪ {~d | d ∈ D} is a dimension with a conjugated flag; a word is a sequence
 //    of letters, conj(w_1..w_k) = ~w_k .. ~w_1 and ~~d = d (Def. 43).

@@ -1,6 +1,6 @@
 // Shared plumbing of the `gmr` subcommands (tools/cli/cmd_*.cpp).
 //
-// Exit codes (SPEC "Command line"): 0 success, 1 negative verdict (e.g. an invalid map), 2 bad
+// Exit codes: 0 success, 1 negative verdict (e.g. an invalid map), 2 bad
 // input or usage. A subcommand's action returns 0 or 1; bad input is a thrown gmr::Error, which
 // main.cpp prints as "gmr: error: <location>: <message>" and maps to 2.
 //

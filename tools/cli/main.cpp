@@ -1,4 +1,4 @@
-// The `gmr` command line (SPEC "Command line"): one binary, one subcommand per file
+// The `gmr` command line: one binary, one subcommand per file
 // tools/cli/cmd_<name>.cpp, each exposing `void register_<name>(CLI::App&)` that adds the
 // subcommand, its options and its action (cli.hpp: set_action).
 //

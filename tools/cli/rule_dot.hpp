@@ -1,4 +1,4 @@
-// `gmr dot` on rule files (issue 4): concrete rules and rule schemes (gmr.rule JSON, .jme) drawn by
+// `gmr dot` on rule files: concrete rules and rule schemes (gmr.rule JSON, .jme) drawn by
 // model/io_rule_dot.hpp, optionally with κ arcs and the checker's diagnostics overlaid. Called by
 // tools/cli/cmd_dot.cpp before its map path.
 #pragma once

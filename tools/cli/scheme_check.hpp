@@ -1,4 +1,4 @@
-// `gmr check` for rule schemes (issue 4): .jme Jerboa files (a summary table over every rule) and
+// `gmr check` for rule schemes: .jme Jerboa files (a summary table over every rule) and
 // gmr.rule files of kind "scheme". Called by tools/cli/cmd_check.cpp before its concrete-rule path.
 #pragma once
 #include <optional>

@@ -1,5 +1,5 @@
 // Products of Σ-graphs, arc deletion Δ_i and arc relabeling ℜ (thesis §4.2.1–4.2.2, Def. 41,
-// Ex. 42 / Fig. 4.12; digest ch3-4 §4.1 and fixture F15).
+// Ex. 42 / Fig. 4.12).
 #include <gtest/gtest.h>
 
 #include <set>

@@ -1,4 +1,4 @@
-// The defining property of the scheme engine (issue 4): applying a scheme with the engine gives
+// The defining property of the scheme engine: applying a scheme with the engine gives
 // the same G-map, with the corresponding comatch, as instantiating it on the hook orbit and applying
 // the concrete rule by DPO (model/dpo.hpp, categorical construction `derive` through apply_to_map).
 // The DPO side computes its own match: the hook instances are anchored on the hook orbit (Alg. 5

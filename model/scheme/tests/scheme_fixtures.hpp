@@ -1,5 +1,5 @@
 // Small rule schemes built in code for the model's unit tests (the library of operations lives in
-// tools/data/rules/ as gmr.rule files; these are the thesis' reference schemes, digest ch6-7 §2.4
+// tools/data/rules/ as gmr.rule files; these are the thesis' reference schemes (thesis Ch. 6)
 // and ch3-4 §6).
 #pragma once
 #include "model/scheme/rule_scheme.hpp"
