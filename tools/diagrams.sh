@@ -27,3 +27,10 @@ run dot --kappa checker/tests/data/F5_fig319a_sew.json -o "$out/sew_concrete_kap
 run dot --check checker/tests/data/F1_ex34_weak_incident.json -o "$out/rejected_ex34.svg"
 # The cube as a 2-G-map (48 darts).
 run dot tools/data/cube.off -o "$out/cube.svg"
+# A rule scheme inferred by topological folding from the cube and its quad subdivision.
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+run convert tools/data/cube.off "$tmp/cube.json"
+run apply tools/data/rules/quad_subdivision.json "$tmp/cube.json" --hook 0 -o "$tmp/sub.json"
+run infer "$tmp/cube.json" "$tmp/sub.json" --orbit "<0,1,2>" -o "$tmp/inferred"
+run dot "$tmp/inferred/rule_0.json" -o "$out/inferred_quad_subdivision.svg"
