@@ -93,7 +93,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
         for (Node u3 : R.successors(u2, a))
           if (!has_arc(R, u3, u0, b))
             note("C-open-R",
-                 "the " + lbl(a) + lbl(b) + lbl(a) + "-path of R is not closed in R (not completed, digest erratum 5)",
+                 "the " + lbl(a) + lbl(b) + lbl(a) + "-path of R is not closed in R (not completed)",
                  {R.name(u0), R.name(u1), R.name(u2), R.name(u3)}, Side::R);
     }
   return Rule(std::move(L), std::move(R), r.dimension(), r.kind(), r.name());

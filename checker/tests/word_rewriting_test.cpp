@@ -1,5 +1,5 @@
 // Words, conjugates and the conjugate rewriting system R_{N,E} (thesis Defs. 43, 52; Lemmas 9–11;
-// digest ch3-4 §4.2, §5.3 and fixture F14 = Ex. 55/56/59).
+// Ex. 55/56/59).
 #include <gtest/gtest.h>
 
 #include <ostream>

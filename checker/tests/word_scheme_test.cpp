@@ -41,7 +41,7 @@ bool incident(const DGraph& g, int i) {
 }
 
 // ---- F8 (Figs. 4.16–4.22) -------------------------------------------------------------------
-// RECON of the {1,2,3}-graph (figure missing; the digest gives its components and Ex. 49 says
+// RECON of the {1,2,3}-graph (figure missing; its components are given in the text and Ex. 49 says
 // a..d carry an oriented 1111-cycle): nodes a..h,
 //   a -1-> b -1-> c -1-> d -1-> a (oriented), 2-loops on a..d;
 //   e, f: 1-loops, e –2– f;
@@ -64,7 +64,7 @@ DGraph f8_graph() {
 const std::vector<PathWord> kF8Words = {w("eps"), w("21"), conj(w("21"))};
 
 // Rule scheme of Fig. 4.19a: hook y, added x. L: y with one 1-loop whose word is not given
-// (digest erratum 17). R: y –(eps,1)– x (both directions), x with a (21,2)-loop.
+// (the reading under which Ex. 49 holds). R: y –(eps,1)– x (both directions), x with a (21,2)-loop.
 // Reading chosen: the L-loop is (eps,1). It is the only word of W = {eps, 21, conj(21)} that is
 // self-conjugate, so the only one for which the claimed O_S(1) holds (Def. 51 (2): a loop is its
 // own reverse, so its word must equal its conjugate; 21 ≠ ~1~2). The scheme then attaches a new
@@ -87,7 +87,7 @@ WordRuleScheme fig419a(const char* loop_word = "eps") {
   return s;
 }
 
-// ---- F10: S_O, 2-O-map quad subdivision (Fig. 4.27, digest version with 8 arcs in R) --------
+// ---- F10: S_O, 2-O-map quad subdivision (Fig. 4.27, the version with 8 arcs in R) --------
 WordRuleScheme quad_omap() {
   WordRuleScheme s;
   s.name = "S_O";
@@ -227,7 +227,7 @@ TEST(F8, Fig419aInstantiatedOnEachComponent) {
     EXPECT_EQ(r.right().num_arcs(), 3 * k) << hook;  // (u,y) <-> (u,x), and the 2-arc of (u,x)
     EXPECT_EQ(r.added_nodes().size(), k);
     EXPECT_TRUE(r.right().find(Pv.graph.name(0) + ":x").has_value());
-    // The claims of the digest, checked by the concrete checker on ι(S,P_v).
+    // The thesis' claims, checked by the concrete checker on ι(S,P_v).
     EXPECT_TRUE(I(r, 1)) << hook;
     EXPECT_TRUE(I(r, 2)) << hook;
     EXPECT_TRUE(O(r, 1)) << hook;

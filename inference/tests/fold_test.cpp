@@ -19,12 +19,6 @@ using namespace gmr::io;
 using namespace gmr::scheme;
 using namespace gmr::inference::test;
 
-namespace {
-
-OrbitType ot(const char* s) { return OrbitType::parse(s); }
-
-}  // namespace
-
 // Thesis §7.2.2, Fig. 7.8: the cube folded on <1,2> from a vertex dart has 8 nodes; n1 (reached by
 // the 0-arc) is <_,2>, and the opposite vertex is relabeled <2,1>.
 TEST(FoldTrace, CubeOnVertexOrbitGivesEightNodesOppositeVertexSwapped) {

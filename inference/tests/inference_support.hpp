@@ -16,6 +16,9 @@ inline std::string source_dir() {
   const char* s = std::getenv("GMR_SOURCE_DIR");
   return s ? s : ".";
 }
+// An orbit type in the papers' notation, e.g. ot("<0,_,2>").
+inline OrbitType ot(const char* s) { return OrbitType::parse(s); }
+
 inline std::string data(const std::string& name) { return source_dir() + "/inference/tests/data/" + name; }
 inline std::string rule_file(const std::string& name) { return source_dir() + "/tools/data/rules/" + name + ".json"; }
 

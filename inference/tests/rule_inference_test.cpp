@@ -28,8 +28,6 @@ using namespace gmr::inference::test;
 
 namespace {
 
-OrbitType ot(const char* s) { return OrbitType::parse(s); }
-
 // The after map of applying `s` at `hook` on a copy of g (the engine keeps preserved dart ids).
 GMap applied(const GMap& g, const RuleScheme& s, Dart hook) {
   auto [h, app] = apply_scheme(g, s, {hook});
