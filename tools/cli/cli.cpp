@@ -47,7 +47,7 @@ std::optional<Format> parse_format(const std::string& name) {
 
 namespace {
 
-Format detect(const std::string& path, const std::string& override, const char* option) {
+Format detect(const std::string& path, const std::string& override, const char* option, const char* formats) {
   if (!override.empty()) {
     if (auto f = parse_format(override)) return *f;
     throw Error(ErrorCode::Usage, "unknown format \"" + override + "\"", option);
@@ -56,23 +56,28 @@ Format detect(const std::string& path, const std::string& override, const char* 
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (!ext.empty())
     if (auto f = parse_format(ext.substr(1))) return *f;
+  if (ext == ".jme")
+    throw Error(ErrorCode::Usage, "a Jerboa rule file (.jme) holds rules, not a map: give it to check, apply or dot as the rule",
+                path);
   throw Error(ErrorCode::Usage,
               "cannot tell the format from the file name" + std::string(ext.empty() ? "" : " (extension " + ext + ")") +
-                  "; name it with " + option,
+                  "; name it with " + option + " " + formats,
               path);
 }
 
 }  // namespace
 
 Format input_format(const std::string& path, const std::string& override) {
-  const Format f = detect(path, override, "--from");
+  const Format f = detect(path, override, "--from", kInputFormats);
   if (f != Format::Json && f != Format::Off)
     throw Error(ErrorCode::Usage, std::string("cannot read ") + to_string(f) + " maps (input formats: " + kInputFormats + ")",
                 path);
   return f;
 }
 
-Format output_format(const std::string& path, const std::string& override) { return detect(path, override, "--to"); }
+Format output_format(const std::string& path, const std::string& override) {
+  return detect(path, override, "--to", kOutputFormats);
+}
 
 GMapFile load_map(const std::string& path, const std::string& from) {
   const Format f = input_format(path, from);
@@ -88,16 +93,30 @@ void write_output(const std::string& path, const std::string& text) {
   write_file_atomic(path, text);
 }
 
+namespace {
+
+// The positions a mesh format needs, or an error located at the output naming what is missing.
+PositionedMap positioned_for_output(const GMapFile& f, const std::string& path, Format format) {
+  if (!f.find(kPositionName))
+    throw Error(ErrorCode::Schema,
+                std::string("the map has no \"position\" embedding: ") + to_string(format) +
+                    " output needs vertex coordinates (write json, dot or svg instead)",
+                path);
+  return to_positioned(f);
+}
+
+}  // namespace
+
 void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot) {
   switch (format) {
     case Format::Json: write_output(path, write_gmap_json(f)); return;
     case Format::Off: {
-      const PositionedMap m = to_positioned(f);
+      const PositionedMap m = positioned_for_output(f, path, format);
       write_output(path, write_off(m.map, m.position));
       return;
     }
     case Format::Obj: {
-      const PositionedMap m = to_positioned(f);
+      const PositionedMap m = positioned_for_output(f, path, format);
       write_output(path, write_obj(m.map, m.position));
       return;
     }
@@ -109,6 +128,25 @@ void save_map(const GMapFile& f, const std::string& path, Format format, const D
       return;
     }
   }
+}
+
+const CLI::Validator& non_negative_integer() {
+  static const CLI::Validator check(
+      [](std::string& text) -> std::string {
+        const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) {
+          return std::isdigit(c) != 0;
+        });
+        return digits ? std::string() : "expected a non-negative integer, found \"" + abbreviate(text) + "\"";
+      },
+      "UINT");
+  return check;
+}
+
+std::string abbreviate(const std::string& text, size_t max_chars) {
+  if (text.size() <= max_chars) return text;
+  const size_t keep = max_chars / 2;
+  return text.substr(0, keep) + "[... " + std::to_string(text.size() - 2 * keep) + " characters ...]" +
+         text.substr(text.size() - keep);
 }
 
 void print_json(const nlohmann::ordered_json& j) { std::cout << dump_json(j) << std::flush; }

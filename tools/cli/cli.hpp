@@ -50,6 +50,14 @@ void write_output(const std::string& path, const std::string& text);
 // Pretty JSON on standard output (model/json_writer.hpp layout).
 void print_json(const nlohmann::ordered_json& j);
 
+// Option check for counts and limits: digits only (CLI11 would read "-1" into a size_t as its
+// largest value).
+const CLI::Validator& non_negative_integer();
+
+// `text` itself when short, else its first and last characters around "[... N characters ...]":
+// messages quote user input (an orbit type, a file name) without echoing megabytes of it.
+std::string abbreviate(const std::string& text, size_t max_chars = 200);
+
 // Directory of the example data files (tools/data/), from the build.
 std::string default_data_dir();
 

@@ -7,6 +7,7 @@
 // result breaks a constraint of the model (listed), 2 on bad input.
 // Rule schemes (gmr.rule kind "scheme", Jerboa .jme with --rule) go to scheme_apply.hpp
 // (--hook D[,D...] or --all).
+#include <cctype>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -42,6 +43,8 @@ std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, con
     const std::string name = item.substr(0, eq), dart = item.substr(eq + 1);
     const auto v = r.left().find(name);
     if (!v) throw Error(ErrorCode::Usage, "no node \"" + name + "\" in the left-hand side", "--match");
+    for (const auto& [node, dart_given] : out)
+      if (node == *v) throw Error(ErrorCode::Usage, "node \"" + name + "\" is given twice", "--match");
     size_t used = 0;
     unsigned long d = 0;
     try {
@@ -49,7 +52,8 @@ std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, con
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used != dart.size() || dart.empty() || !g.alive(static_cast<Dart>(d)))
+    const bool digits_only = !dart.empty() && std::isdigit(static_cast<unsigned char>(dart[0]));
+    if (!digits_only || used != dart.size() || d >= g.capacity() || !g.alive(static_cast<Dart>(d)))
       throw Error(ErrorCode::Usage, "\"" + dart + "\" is not a dart of the map", "--match " + item);
     out.emplace_back(*v, static_cast<Dart>(d));
   }

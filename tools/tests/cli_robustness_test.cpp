@@ -1,0 +1,123 @@
+// The `gmr` binary on hostile input: every case gets a located message and exit 2 (or 1 for a
+// negative verdict), never a crash, a silent success or library-internal text.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "tools/tests/cli_fixture.hpp"
+
+using namespace gmr::cli_test;
+
+namespace {
+
+// square.json (a valid 2-G-map with positions) with `edit` applied, written to `path`.
+void write_edited_square(const fs::path& path, const std::function<void(nlohmann::json&)>& edit) {
+  nlohmann::json j = nlohmann::json::parse(gmr::io::read_text_file(test_data("square.json")));
+  edit(j);
+  std::ofstream(path) << j.dump();
+}
+
+}  // namespace
+
+TEST_F(Cli, DeeplyNestedEmbeddingValueIsRefused) {
+  // 50,000 nested arrays as a position value: refused at the nesting limit by every command.
+  const fs::path in = dir / "deep.json";
+  std::string text = gmr::io::read_text_file(test_data("square.json"));
+  const std::string first = "\"value\": [0, 0, 0]";
+  const size_t at = text.find(first);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, first.size(), "\"value\": " + std::string(50000, '[') + std::string(50000, ']'));
+  std::ofstream(in) << text;
+  const std::vector<std::string> commands = {"info " + q(in), "validate " + q(in),
+                                             "convert " + q(in) + " " + q(dir / "out" / "x.json"),
+                                             "signature " + q(in) + " --flags position"};
+  for (const std::string& cmd : commands) {
+    const Result r = run(cmd);
+    EXPECT_EQ(r.code, 2) << cmd << "\n" << r.err;
+    EXPECT_NE(r.err.find("nesting deeper than 100"), std::string::npos) << cmd << "\n" << r.err;
+    EXPECT_NE(r.err.find(in.string() + ":$.embeddings[0].values[0].value"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(outputs(), 0u);
+}
+
+TEST_F(Cli, DeclaredDartCountIsCheckedBeforeAllocating) {
+  for (const std::string count : {"1000000000", "4294967294"}) {
+    const fs::path in = dir / ("darts_" + count + ".json");
+    write_edited_square(in, [&](nlohmann::json& j) { j["darts"] = std::stoull(count); });
+    const auto start = std::chrono::steady_clock::now();
+    expect_bad_input("info " + q(in), in.string() + ":$.alpha.0", "expected " + count + " entries (one per dart), found 8");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  }
+}
+
+TEST_F(Cli, MalformedNumbersAndKeysAreLocated) {
+  const fs::path overflow = dir / "overflow.json";
+  std::ofstream(overflow) << "{\"format\": \"gmr.gmap\", \"version\": 1e999}";
+  expect_bad_input("info " + q(overflow), overflow.string() + ":1:", "1e999");
+  EXPECT_EQ(run("info " + q(overflow)).err.find("json.exception"), std::string::npos);
+
+  const fs::path twice = dir / "twice.json";
+  std::ofstream(twice) << "{\"format\": \"gmr.gmap\", \"format\": \"gmr.gmap\"}";
+  expect_bad_input("info " + q(twice), twice.string() + ":$.format", "duplicate member \"format\"");
+
+  const fs::path real = dir / "real_index.json";
+  write_edited_square(real, [](nlohmann::json& j) { j["alpha"]["0"][0] = 1.0; });
+  expect_bad_input("info " + q(real), real.string() + ":$.alpha.0[0]", "expected a dart index (an integer), found the number 1.0");
+}
+
+TEST_F(Cli, PositionValuesAreValidated) {
+  for (const auto& [name, value] : std::vector<std::pair<std::string, nlohmann::json>>{{"text", "abc"}, {"pair", {1, 2}}}) {
+    const fs::path in = dir / (name + ".json");
+    write_edited_square(in, [&](nlohmann::json& j) { j["embeddings"][0]["values"][0]["value"] = value; });
+    const Result r = run("validate " + q(in));
+    EXPECT_EQ(r.code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("a position must be an array [x, y, z]"), std::string::npos) << r.out;
+  }
+  const fs::path bare = dir / "bare.json";
+  write_edited_square(bare, [](nlohmann::json& j) { j.erase("embeddings"); });
+  expect_bad_input("convert " + q(bare) + " " + q(dir / "out" / "x.off"), (dir / "out" / "x.off").string(),
+                   "no \"position\" embedding: off output needs vertex coordinates");
+  EXPECT_EQ(outputs(), 0u);
+}
+
+TEST_F(Cli, WriteErrorsOnStandardOutputFail) {
+  for (const std::string& cmd : {"info " + q(tools_data("cube.off")), "convert " + q(tools_data("cube.off")) + " - --to json",
+                                "dot " + q(tools_data("cube.off"))}) {
+    const int status = std::system((q(GMR_BIN) + " " + cmd + " >/dev/full 2>" + q(dir / "stderr")).c_str());
+    EXPECT_EQ(WEXITSTATUS(status), 2) << cmd;
+    EXPECT_NE(gmr::io::read_text_file(dir / "stderr").find("standard output: write failed"), std::string::npos) << cmd;
+  }
+}
+
+TEST_F(Cli, OutputThroughASymbolicLinkKeepsTheLink) {
+  const fs::path target = dir / "out" / "target.json";
+  fs::create_symlink("target.json", dir / "out" / "link.json");
+  const Result r = run("convert " + q(tools_data("cube.off")) + " " + q(dir / "out" / "link.json"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(dir / "out" / "link.json"));
+  EXPECT_TRUE(fs::is_regular_file(target));
+  EXPECT_EQ(outputs(), 2u);
+}
+
+TEST_F(Cli, CommandWordsAndOptionValues) {
+  expect_bad_input("foo", "usage", "unknown command 'foo' (commands: info, validate");
+  Result r = run("help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("Usage: gmr"), std::string::npos) << r.out;
+  r = run("help info");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("Usage: gmr info"), std::string::npos) << r.out;
+  expect_bad_input("validate --limit -1 " + q(test_data("square.json")), "--limit", "expected a non-negative integer");
+  expect_bad_input("apply " + q(source_dir() / "checker/tests/data/F5_fig319a_unsew.json") + " " + q(tools_data("cube.off")) +
+                       " --match a=0,a=1",
+                   "--match", "given twice");
+  expect_bad_input("info " + q(dir / "rules.jme"), "rules.jme", "Jerboa rule file (.jme) holds rules, not a map");
+  // Long user input is quoted abbreviated.
+  r = run("fold " + q(test_data("square.json")) + " --dart 0 --orbit '<0," + std::string(100000, '1') + ">'");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_LT(r.err.size(), 1000u) << r.err.size();
+  EXPECT_NE(r.err.find("characters ...]"), std::string::npos) << r.err.substr(0, 500);
+}
