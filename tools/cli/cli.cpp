@@ -6,6 +6,8 @@
 
 #include "model/io/atomic_write.hpp"
 #include "model/io/gmap_json.hpp"
+#include "model/io/json_reader.hpp"
+#include "model/io/voxels.hpp"
 #include "model/io/obj.hpp"
 #include "model/io/off.hpp"
 #include "model/io/json_writer.hpp"
@@ -82,7 +84,13 @@ Format output_format(const std::string& path, const std::string& override) {
 GMapFile load_map(const std::string& path, const std::string& from) {
   const Format f = input_format(path, from);
   if (f == Format::Off) return to_gmap_file(path == "-" ? read_off(read_text_file(path), "<stdin>") : read_off_file(path));
-  return path == "-" ? read_gmap_json(read_text_file(path), "<stdin>") : read_gmap_json_file(path);
+  // JSON: a gmr.gmap document, or a gmr.voxels set read as its polycube (builders.hpp).
+  const std::string source = path == "-" ? "<stdin>" : path;
+  const nlohmann::json doc = parse_json(read_text_file(path), source);
+  const JsonAt at(doc, source);
+  if (doc.is_object() && doc.contains("format") && doc["format"] == "gmr.voxels")
+    return GMapFile{make_polycube(voxels_from_json(at)), {}};
+  return gmap_from_json(at);
 }
 
 void write_output(const std::string& path, const std::string& text) {
@@ -147,6 +155,11 @@ std::string abbreviate(const std::string& text, size_t max_chars) {
   const size_t keep = max_chars / 2;
   return text.substr(0, keep) + "[... " + std::to_string(text.size() - 2 * keep) + " characters ...]" +
          text.substr(text.size() - keep);
+}
+
+void print_violations(const ValidityReport& r) {
+  for (const Violation& v : r.violations) std::cout << "  " << v.describe() << "\n";
+  if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
 }
 
 void print_json(const nlohmann::ordered_json& j) { std::cout << dump_json(j) << std::flush; }

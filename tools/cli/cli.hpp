@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/core/gmap_file.hpp"
+#include "model/core/validity.hpp"
 #include "model/draw/map_dot.hpp"
 
 namespace gmr::cli {
@@ -46,6 +47,9 @@ GMapFile load_map(const std::string& path, const std::string& from = {});
 void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot = {});
 // Writes text to `path` atomically, or to standard output for "-".
 void write_output(const std::string& path, const std::string& text);
+
+// The violations of a validity report, one per line, then "... and N more (--limit)".
+void print_violations(const ValidityReport& r);
 
 // Pretty JSON on standard output (model/json_writer.hpp layout).
 void print_json(const nlohmann::ordered_json& j);

@@ -3,8 +3,10 @@
 // connected component of L it is propagated along the arcs (linear); otherwise the first match
 // (in enumeration order) that agrees with the given pairs and satisfies the gluing condition is
 // used. Embeddings of the input are not carried over (the output has none).
-// Exit 0 when the result is a valid map (written to -o when given), 1 when no match applies or the
-// result breaks a constraint of the model (listed), 2 on bad input.
+// A rule the checker rejects is refused unless --force (rule_gate.hpp).
+// Exit 0 when the result is a valid map (written to -o when given), 1 when the rule is refused, no
+// match applies or the result breaks a constraint of the model (listed up to --limit), 2 on bad
+// input.
 // Rule schemes (gmr.rule kind "scheme", Jerboa .jme with --rule) go to scheme_apply.hpp
 // (--hook D[,D...] or --all).
 #include <cctype>
@@ -17,6 +19,7 @@
 #include "model/io/rule_json.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/rule_gate.hpp"
 #include "tools/cli/rule_input.hpp"
 #include "tools/cli/scheme_apply.hpp"
 
@@ -28,7 +31,8 @@ namespace {
 
 struct ApplyArgs {
   std::string rule, input, from, output, to, match;
-  bool json = false;
+  bool json = false, force = false;
+  size_t limit = 20;
   std::string hooks, rule_name;  // rule schemes
   bool all = false;
 };
@@ -62,9 +66,10 @@ std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, con
 
 int run_apply(const ApplyArgs& a) {
   const RuleInput in = load_rule_input(a.rule, a.rule_name);
+  if (auto refused = gate_rule(in, a.rule, a.force)) return *refused;
   if (in.is_scheme()) {
     if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
-    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json});
+    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.limit});
   }
   if (!a.hooks.empty() || a.all)
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
@@ -116,7 +121,7 @@ int run_apply(const ApplyArgs& a) {
     std::cout << "the result is not a map: " << e.location() << ": " << e.message() << "\n";
     return kExitNegative;
   }
-  const ValidityReport rep = check_validity(d.H);
+  const ValidityReport rep = check_validity(d.H, a.limit);
   std::string match_text;
   for (Node v = 0; v < r.left().num_nodes(); ++v)
     match_text += (v ? "," : "") + r.left().name(v) + "=" + std::to_string(md[v]);
@@ -133,10 +138,11 @@ int run_apply(const ApplyArgs& a) {
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
     for (const auto& v : rep.violations) vs.push_back(v.describe());
     j["violations"] = vs;
+    j["violations_not_listed"] = rep.truncated;
     print_json(j);
   } else {
     std::cout << "match " << match_text << ": " << d.H.size() << " darts, " << (rep.ok() ? "valid" : "INVALID") << "\n";
-    for (const auto& v : rep.violations) std::cout << "  " << v.describe() << "\n";
+    print_violations(rep);
   }
   if (!rep.ok()) return kExitNegative;
   if (!a.output.empty()) save_map(GMapFile{d.H, {}}, a.output, output_format(a.output, a.to));
@@ -159,6 +165,10 @@ void register_apply(CLI::App& app) {
   sub->add_option("--hook", args->hooks, "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
   sub->add_flag("--all", args->all, "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
+  sub->add_flag("--force", args->force, "Apply a rule the checker rejects (by default it is refused, exit 1)");
+  sub->add_option("--limit", args->limit, "Maximum number of violations of the result listed")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   set_action(sub, [args] { return run_apply(*args); });
 }
 

@@ -72,8 +72,7 @@ int run_validate(const ValidateArgs& a) {
   }
   if (!r.ok()) {
     std::cout << a.input << ": invalid " << map_name(f.map) << ": " << r.total() << " violation(s)\n";
-    for (const Violation& v : r.violations) std::cout << "  " << v.describe() << "\n";
-    if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
+    print_violations(r);
   } else {
     std::cout << a.input << ": valid " << map_name(f.map) << ", but " << issues.size() << " embedding issue(s)\n";
     for (const Issue& i : issues)

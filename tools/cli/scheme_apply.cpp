@@ -151,6 +151,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
     for (const auto& v : rep.violations) vs.push_back(v.describe());
     j["violations"] = vs;
+    j["violations_not_listed"] = rep.truncated;
     print_json(j);
   } else {
     std::cout << s.name << ": applied " << apps.size() << " time" << (apps.size() == 1 ? "" : "s");
@@ -160,7 +161,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     }
     std::cout << ": " << before << " -> " << g.size() << " darts (+" << added << " -" << deleted << "), "
               << (rep.ok() ? "valid" : "INVALID") << "\n";
-    for (const auto& v : rep.violations) std::cout << "  " << v.describe() << "\n";
+    print_violations(rep);
   }
 }
 
@@ -174,7 +175,7 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   const size_t before = g.size();
   const std::optional<Applied> r = a.all ? apply_at_every_dart(engine, g, a) : apply_at_hooks(engine, g, a);
   if (!r) return kExitNegative;
-  const ValidityReport rep = check_validity(g);
+  const ValidityReport rep = check_validity(g, a.limit);
   print_applied(s, a, *r, before, g, rep);
   if (!rep.ok()) return kExitNegative;
   if (!a.output.empty()) save_map(GMapFile{g, {}}, a.output, output_format(a.output, a.to));

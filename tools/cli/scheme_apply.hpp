@@ -13,6 +13,7 @@ using scheme::RuleScheme;
 struct SchemeApplyArgs {
   std::string rule, input, from, output, to, hooks;
   bool all = false, json = false;
+  size_t limit = 20;  // violations of the result listed
 };
 
 // Exit 0 when applied and the result is a valid map (written to -o when given), 1 when the scheme

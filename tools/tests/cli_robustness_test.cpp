@@ -121,3 +121,47 @@ TEST_F(Cli, CommandWordsAndOptionValues) {
   EXPECT_LT(r.err.size(), 1000u) << r.err.size();
   EXPECT_NE(r.err.find("characters ...]"), std::string::npos) << r.err.substr(0, 500);
 }
+
+TEST_F(Cli, RejectedRulesAreRefusedUnlessForced) {
+  const fs::path rule = source_dir() / "tools/tests/data/swap_face_links.json";
+  const std::string apply = "apply " + q(rule) + " " + q(tools_data("cube.off")) + " --hook 0";
+  Result r = run(apply + " -o " + q(dir / "out" / "x.json"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("rule \"swap_face_links\" is rejected by the checker (2 error(s))"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[C-word] C(0,2)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
+  EXPECT_EQ(outputs(), 0u);
+  // Forced: applied with a warning; the broken result is listed up to --limit with a count.
+  r = run(apply + " --force --limit 3");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("warning: applying rule \"swap_face_links\", which the checker rejects"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("INVALID"), std::string::npos) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 5) << r.out;
+  EXPECT_NE(r.out.find("  ... and 13 more (--limit)"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, JerboaRuleNamesAreUniqueAndPreconditionsReported) {
+  std::string jme = gmr::io::read_text_file(test_data("JerboaTrackingOrbit.jme"));
+  const std::string renamed = "name=\"DeleteEdge\"";
+  ASSERT_NE(jme.find(renamed), std::string::npos);
+  jme.replace(jme.find(renamed), renamed.size(), "name=\"DeleteFace\"");
+  const fs::path twice = dir / "twice.jme";
+  std::ofstream(twice) << jme;
+  expect_bad_input("check " + q(twice), twice.string() + ":", "two rules named \"DeleteFace\" (lines ");
+
+  // A rule with a precondition: the application says it is not evaluated.
+  jme = gmr::io::read_text_file(test_data("JerboaTrackingOrbit.jme"));
+  const size_t rule_at = jme.find("name=\"SubdivQuad\"");
+  ASSERT_NE(rule_at, std::string::npos);
+  const size_t pre = jme.find("<precondition>", rule_at), pre_end = jme.find("</precondition>", rule_at);
+  ASSERT_LT(pre, pre_end);
+  jme.replace(pre, pre_end - pre, "<precondition><![CDATA[return false;]]>");
+  const fs::path fake = dir / "fake.jme";
+  std::ofstream(fake) << jme;
+  const fs::path cube3 = dir / "cube3.json";
+  ASSERT_EQ(run("convert " + q(tools_data("polycube.voxels.json")) + " " + q(cube3)).code, 0);
+  Result r = run("apply " + q(fake) + " --rule SubdivQuad " + q(cube3) + " --hook 0");
+  EXPECT_NE(r.err.find("rule \"SubdivQuad\" has a Jerboa precondition; gmr does not evaluate it"), std::string::npos) << r.err;
+  r = run("check " + q(fake));
+  EXPECT_NE(r.out.find("S-precondition"), std::string::npos) << r.out;
+}
