@@ -25,7 +25,7 @@ const std::vector<LibraryScheme>& scheme_library() {
     for (const auto& e : std::filesystem::directory_iterator(root + "/tools/data/rules")) files.push_back(e.path());
     std::sort(files.begin(), files.end());  // directory order is not portable
     for (const auto& f : files) all.emplace_back(read_scheme_file(f), true);
-    for (auto& s : read_jme_file(root + "/model/io/tests/data/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
+    for (auto& s : read_jme_file(root + "/tools/data/jerboa/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
     for (auto& [s, standard] : all) {
       std::shared_ptr<const SchemeEngine> e;
       try {

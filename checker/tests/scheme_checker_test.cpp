@@ -183,7 +183,7 @@ TEST(SchemeChecker, Erratum6DefinitionVersusAlgorithm3) {
 
 TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
   const char* root = std::getenv("GMR_SOURCE_DIR");
-  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/tools/data/jerboa/JerboaTrackingOrbit.jme");
   ASSERT_EQ(m.rules.size(), 50u);
   size_t accepted = 0;
   std::map<std::string, bool> verdict;

@@ -52,7 +52,7 @@ std::optional<Witness> find_witness(const RuleScheme& s) {
 
 TEST(SchemeWitness, RejectedJerboaRules) {
   const char* root = std::getenv("GMR_SOURCE_DIR");
-  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/tools/data/jerboa/JerboaTrackingOrbit.jme");
   std::map<std::string, std::optional<Witness>> found;
   for (const RuleScheme& s : m.rules) {
     if (check_scheme(s).ok()) continue;

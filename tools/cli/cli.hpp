@@ -62,7 +62,8 @@ const CLI::Validator& non_negative_integer();
 // messages quote user input (an orbit type, a file name) without echoing megabytes of it.
 std::string abbreviate(const std::string& text, size_t max_chars = 200);
 
-// Directory of the example data files (tools/data/), from the build.
+// Directory of the example data files: tools/data of the current directory when it is a gmr
+// checkout, else the source tree's tools/data recorded at build time.
 std::string default_data_dir();
 
 }  // namespace gmr::cli

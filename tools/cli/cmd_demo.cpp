@@ -33,7 +33,7 @@ namespace {
 
 struct DemoArgs {
   std::string out = "out/demo";
-  std::string data = default_data_dir();
+  std::string data;  // empty: default_data_dir()
   bool json = false;
 };
 
@@ -61,7 +61,7 @@ struct Object {
 };
 
 int run_demo(const DemoArgs& a) {
-  const std::filesystem::path data(a.data), out(a.out);
+  const std::filesystem::path data(a.data.empty() ? default_data_dir() : a.data), out(a.out);
   constexpr size_t kTorusW = 12, kTorusH = 6;
 
   const PositionedMap cube = read_off_file(data / "cube.off");
@@ -154,7 +154,9 @@ void register_demo(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "demo", "Build the standard objects, validate them, print their cells, write drawings and meshes");
   sub->add_option("--out", args->out, "Output directory")->capture_default_str();
-  sub->add_option("--data", args->data, "Directory of the example data files")->capture_default_str();
+  sub->add_option("--data", args->data,
+                  "Directory of the example data files (default: tools/data of the current directory when present, "
+                  "else of the source tree gmr was built from)");
   sub->add_flag("--json", args->json, "Print JSON");
   set_action(sub, [args] { return run_demo(*args); });
 }

@@ -141,7 +141,7 @@ TEST_F(Cli, RejectedRulesAreRefusedUnlessForced) {
 }
 
 TEST_F(Cli, JerboaRuleNamesAreUniqueAndPreconditionsReported) {
-  std::string jme = gmr::io::read_text_file(test_data("JerboaTrackingOrbit.jme"));
+  std::string jme = gmr::io::read_text_file(tools_data("jerboa/JerboaTrackingOrbit.jme"));
   const std::string renamed = "name=\"DeleteEdge\"";
   ASSERT_NE(jme.find(renamed), std::string::npos);
   jme.replace(jme.find(renamed), renamed.size(), "name=\"DeleteFace\"");
@@ -150,7 +150,7 @@ TEST_F(Cli, JerboaRuleNamesAreUniqueAndPreconditionsReported) {
   expect_bad_input("check " + q(twice), twice.string() + ":", "two rules named \"DeleteFace\" (lines ");
 
   // A rule with a precondition: the application says it is not evaluated.
-  jme = gmr::io::read_text_file(test_data("JerboaTrackingOrbit.jme"));
+  jme = gmr::io::read_text_file(tools_data("jerboa/JerboaTrackingOrbit.jme"));
   const size_t rule_at = jme.find("name=\"SubdivQuad\"");
   ASSERT_NE(rule_at, std::string::npos);
   const size_t pre = jme.find("<precondition>", rule_at), pre_end = jme.find("</precondition>", rule_at);

@@ -204,10 +204,10 @@ TEST_F(Cli, DotOfRulesAndSchemes) {
   EXPECT_NE(read_text_file(dir / "out/sew2.svg").find("<svg"), std::string::npos);
   EXPECT_EQ(run("dot --kappa " + q(checker_data("F1_ex34_weak_incident.json")) + " -o " + q(dir / "out/f1.png")).code, 0);
   EXPECT_EQ(read_text_file(dir / "out/f1.png").substr(1, 3), "PNG");
-  r = run("dot " + q(test_data("JerboaTrackingOrbit.jme")) + " --rule " + "NOTARULE");
+  r = run("dot " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --rule " + "NOTARULE");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("rules: "), std::string::npos) << r.err;
-  expect_bad_input("dot " + q(test_data("JerboaTrackingOrbit.jme")), "JerboaTrackingOrbit.jme", "--rule NAME");
+  expect_bad_input("dot " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")), "JerboaTrackingOrbit.jme", "--rule NAME");
   expect_bad_input("dot --kappa " + q(rule_data("sew2.json")), "sew2.json", "concrete rule");
   expect_bad_input("dot --check " + q(test_data("square.json")), "square.json", "rule files");
   EXPECT_EQ(outputs(), 2u);
@@ -225,7 +225,7 @@ TEST_F(Cli, CheckJsonIsOneFormat) {
       {checker_data("F5_fig319a_unsew.json"), "rule", 0},
       {checker_data("F1_ex34_weak_incident.json"), "rule", 1},
       {rule_data("quad_subdivision.json"), "scheme", 0},
-      {test_data("JerboaTrackingOrbit.jme"), "modeler", -1},
+      {tools_data("jerboa/JerboaTrackingOrbit.jme"), "modeler", -1},
   };
   for (const auto& c : cases) {
     const Result r = run("check --json " + q(c.file));
@@ -255,11 +255,11 @@ TEST_F(Cli, CheckJsonIsOneFormat) {
 }
 
 TEST_F(Cli, DotOfJerboaRule) {
-  Result r = run("check --json " + q(test_data("JerboaTrackingOrbit.jme")));
+  Result r = run("check --json " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")));
   ASSERT_NE(r.out, "");
   const auto j = nlohmann::json::parse(r.out);
   const std::string name = j["reports"][0]["rule"];
-  r = run("dot --check " + q(test_data("JerboaTrackingOrbit.jme")) + " --rule " + q(name));
+  r = run("dot --check " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --rule " + q(name));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("subgraph cluster_L"), std::string::npos) << r.out;
 }

@@ -15,7 +15,7 @@ using namespace gmr::io;
 namespace {
 std::string fixture() {
   const char* root = std::getenv("GMR_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme";
+  return std::string(root ? root : ".") + "/tools/data/jerboa/JerboaTrackingOrbit.jme";
 }
 }  // namespace
 

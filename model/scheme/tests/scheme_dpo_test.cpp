@@ -60,7 +60,7 @@ TEST(EngineVsDpo, LibrarySchemes) {
 }
 
 TEST(EngineVsDpo, JerboaFixtureRules) {
-  JmeModeler m = read_jme_file(root() + "/model/io/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(root() + "/tools/data/jerboa/JerboaTrackingOrbit.jme");
   size_t applied = 0, compared = 0;
   for (const RuleScheme& s : m.rules) {
     std::unique_ptr<SchemeEngine> e;
