@@ -115,7 +115,8 @@ PositionedMap positioned_for_output(const GMapFile& f, const std::string& path, 
 
 }  // namespace
 
-void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot) {
+void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot,
+              size_t max_rendered_darts) {
   switch (format) {
     case Format::Json: write_output(path, write_gmap_json(f)); return;
     case Format::Off: {
@@ -132,6 +133,12 @@ void save_map(const GMapFile& f, const std::string& path, Format format, const D
     case Format::Svg:
     case Format::Png: {
       if (path == "-") throw Error(ErrorCode::Usage, "images are not written to standard output", path);
+      if (f.map.size() > max_rendered_darts)
+        throw Error(ErrorCode::Usage,
+                    "the map has " + std::to_string(f.map.size()) + " darts; Graphviz is not asked to lay out more than " +
+                        std::to_string(max_rendered_darts) +
+                        " (it would run for minutes to hours): write .dot instead, or raise the limit with gmr dot --max-darts N",
+                    path);
       render_dot_file(to_dot(f.map, dot), format == Format::Svg ? ImageFormat::Svg : ImageFormat::Png, path);
       return;
     }

@@ -19,6 +19,7 @@
 #include "model/io/rule_json.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/match_syntax.hpp"
 #include "tools/cli/rule_gate.hpp"
 #include "tools/cli/rule_input.hpp"
 #include "tools/cli/scheme_apply.hpp"
@@ -37,33 +38,6 @@ struct ApplyArgs {
   bool all = false;
 };
 
-std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, const std::string& text) {
-  std::vector<std::pair<Node, Dart>> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) throw Error(ErrorCode::Usage, "expected NODE=DART, found \"" + item + "\"", "--match");
-    const std::string name = item.substr(0, eq), dart = item.substr(eq + 1);
-    const auto v = r.left().find(name);
-    if (!v) throw Error(ErrorCode::Usage, "no node \"" + name + "\" in the left-hand side", "--match");
-    for (const auto& [node, dart_given] : out)
-      if (node == *v) throw Error(ErrorCode::Usage, "node \"" + name + "\" is given twice", "--match");
-    size_t used = 0;
-    unsigned long d = 0;
-    try {
-      d = std::stoul(dart, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    const bool digits_only = !dart.empty() && std::isdigit(static_cast<unsigned char>(dart[0]));
-    if (!digits_only || used != dart.size() || d >= g.capacity() || !g.alive(static_cast<Dart>(d)))
-      throw Error(ErrorCode::Usage, "\"" + dart + "\" is not a dart of the map", "--match " + item);
-    out.emplace_back(*v, static_cast<Dart>(d));
-  }
-  return out;
-}
-
 int run_apply(const ApplyArgs& a) {
   const RuleInput in = load_rule_input(a.rule, a.rule_name);
   if (auto refused = gate_rule(in, a.rule, a.force)) return *refused;
@@ -76,7 +50,7 @@ int run_apply(const ApplyArgs& a) {
   const Rule& r = *in.concrete;
   const GMapFile f = load_map(a.input, a.from);
   const GMap& g = f.map;
-  const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_pairs(r, g, a.match);
+  const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_match_pairs(r, g, a.match);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
   std::vector<Node> node_of(g.capacity(), kNoNode);

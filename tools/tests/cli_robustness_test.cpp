@@ -165,3 +165,14 @@ TEST_F(Cli, JerboaRuleNamesAreUniqueAndPreconditionsReported) {
   r = run("check " + q(fake));
   EXPECT_NE(r.out.find("S-precondition"), std::string::npos) << r.out;
 }
+
+TEST_F(Cli, LargeDrawingsAreRefusedBeforeGraphviz) {
+  const fs::path torus = dir / "torus.json";
+  ASSERT_EQ(run("demo --out " + q(dir / "demo")).code, 0);
+  fs::copy_file(dir / "demo" / "torus.json", torus);  // 576 darts
+  expect_bad_input("dot " + q(torus) + " --max-darts 500 -o " + q(dir / "out" / "t.svg"), (dir / "out" / "t.svg").string(),
+                   "the map has 576 darts; Graphviz is not asked to lay out more than 500");
+  EXPECT_EQ(outputs(), 0u);
+  // DOT text has no limit.
+  EXPECT_EQ(run("dot " + q(torus) + " --max-darts 500 -o " + q(dir / "out" / "t.dot")).code, 0);
+}

@@ -73,9 +73,32 @@ TEST(IoOff, AcceptsCommentsBlankLinesAndCountVariants) {
   }
 }
 
+TEST(IoOff, HeaderVariantsOfCgalData) {
+  // COFF (vertex colours, RGB or RGBA), NOFF (normals), 4OFF (homogeneous), STCNOFF (all).
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+  const std::string variants[] = {
+      "COFF\n4 4 0\n0 0 0 192 192 192 255\n1 0 0 1 2 3 4\n0 1 0 9 9 9\n0 0 1 0 0 0 0\n" + faces,
+      "NOFF\n4 4 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n0 0 1 0 0 1\n" + faces,
+      "4OFF\n4 4 0\n0 0 0 1\n2 0 0 2\n0 0.5 0 0.5\n0 0 -3 -3\n" + faces,
+      "STCNOFF\n4 4 0\n0 0 0 0 0 1 1 1 1 0.5 0.5\n1 0 0 0 0 1 1 1 1 1 0 0\n0 1 0 0 0 1 1 1 1 1 0 0\n"
+      "0 0 1 0 0 1 1 1 1 1 0 0\n" + faces,
+  };
+  for (const auto& text : variants) {
+    const PositionedMap m = read_off(text);
+    EXPECT_TRUE(is_isomorphic(m.map, make_tetrahedron())) << text;
+    EXPECT_EQ(m.position.get(2), (Vec3{0, 1, 0})) << text;
+  }
+  expect_error("COFF\n1 0\n0 0 0 1 1\n", ErrorCode::Parse, "t.off:3", "\"x y z r g b [a]\" (6 or 7 numbers)");
+  expect_error("NOFF\n1 0\n0 0 0 1 1 x\n", ErrorCode::Parse, "t.off:3", "a normal component");
+  expect_error("4OFF\n1 0\n1 1 1 0\n", ErrorCode::Parse, "t.off:3", "w = 0");
+  expect_error("OFF BINARY\n", ErrorCode::Parse, "t.off:1", "binary OFF");
+  expect_error("CNOFFX\n", ErrorCode::Parse, "t.off:1", "[ST][C][N][4]OFF");
+  expect_error("NCOFF\n", ErrorCode::Parse, "t.off:1", "[ST][C][N][4]OFF");
+}
+
 TEST(IoOff, MalformedLinesAreLocated) {
   expect_error("", ErrorCode::Parse, "t.off:1", "expected the header");
-  expect_error("OFFX\n", ErrorCode::Parse, "t.off:1", "expected the header \"OFF\"");
+  expect_error("OFFX\n", ErrorCode::Parse, "t.off:1", "expected the header \"[ST][C][N][4]OFF\"");
   expect_error("OFF\n# no counts\n", ErrorCode::Parse, "t.off:2", "end of file");
   expect_error("OFF\n4\n", ErrorCode::Parse, "t.off:2", "counts");
   expect_error("OFF\n4 x\n", ErrorCode::Parse, "t.off:2", "\"x\"");
