@@ -23,6 +23,7 @@
 #include "tools/cli/rule_gate.hpp"
 #include "tools/cli/rule_input.hpp"
 #include "tools/cli/scheme_apply.hpp"
+#include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
 using namespace gmr::graph;
@@ -32,7 +33,7 @@ namespace {
 
 struct ApplyArgs {
   std::string rule, input, from, output, to, match;
-  bool json = false, force = false;
+  bool json = false, force = false, lift = false;
   size_t limit = 20;
   std::string hooks, rule_name;  // rule schemes
   bool all = false;
@@ -43,7 +44,7 @@ int run_apply(const ApplyArgs& a) {
   if (auto refused = gate_rule(in, a.rule, a.force)) return *refused;
   if (in.is_scheme()) {
     if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
-    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.limit});
+    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift, a.limit});
   }
   if (!a.hooks.empty() || a.all)
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
@@ -106,6 +107,7 @@ int run_apply(const ApplyArgs& a) {
     j["match"] = match_text;
     j["valid"] = rep.ok();
     j["darts"] = d.H.size();
+    j["change"] = change_to_json(summarize(g), summarize(d.H));
     nlohmann::ordered_json co = nlohmann::ordered_json::object();
     for (Node v = 0; v < r.right().num_nodes(); ++v) co[r.right().name(v)] = d.comatch[v];
     j["comatch"] = co;
@@ -116,6 +118,7 @@ int run_apply(const ApplyArgs& a) {
     print_json(j);
   } else {
     std::cout << "match " << match_text << ": " << d.H.size() << " darts, " << (rep.ok() ? "valid" : "INVALID") << "\n";
+    if (const std::string c = describe_change(summarize(g), summarize(d.H)); !c.empty()) std::cout << "  " << c << "\n";
     print_violations(rep);
   }
   if (!rep.ok()) return kExitNegative;
@@ -139,6 +142,8 @@ void register_apply(CLI::App& app) {
   sub->add_option("--hook", args->hooks, "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
   sub->add_flag("--all", args->all, "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
+  sub->add_flag("--lift", args->lift,
+                "Rule schemes of a higher dimension than the map: apply to the map lifted to it (new dimensions free)");
   sub->add_flag("--force", args->force, "Apply a rule the checker rejects (by default it is refused, exit 1)");
   sub->add_option("--limit", args->limit, "Maximum number of violations of the result listed")
       ->check(non_negative_integer())

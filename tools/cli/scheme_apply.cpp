@@ -4,11 +4,13 @@
 #include <optional>
 #include <sstream>
 
+#include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
 using namespace gmr::scheme;
@@ -117,9 +119,29 @@ std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, 
   return out;
 }
 
-// Prints the applications, the dart counts and the validity of the result.
-void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, size_t before,
+// The map before and after, for the report of what changed.
+struct Change {
+  size_t darts_before;
+  MapSummary before, after;
+};
+
+// A surface given to a volume scheme: lifted with --lift (builders.hpp), else a usage error
+// that says so.
+void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, GMap& g) {
+  if (g.dimension() >= s.dimension || g.is_omap()) return;
+  if (!a.lift)
+    throw Error(ErrorCode::Usage,
+                "the scheme rewrites " + std::to_string(s.dimension) + "-G-maps, the map is a " + map_name(g) +
+                    ": --lift applies it to the map lifted to dimension " + std::to_string(s.dimension) +
+                    " (new dimensions free)",
+                a.input);
+  g = lift(g, s.dimension);
+}
+
+// Prints the applications, the dart counts, the change in cells and the validity of the result.
+void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, const Change& change,
                    const GMap& g, const ValidityReport& rep) {
+  const size_t before = change.darts_before;
   const auto& apps = r.apps;
   const auto& hooks_used = r.hooks_used;
   size_t added = 0, deleted = 0;
@@ -138,6 +160,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     j["darts_added"] = added;
     j["darts_deleted"] = deleted;
     j["valid"] = rep.ok();
+    j["change"] = change_to_json(change.before, change.after);
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (size_t k = 0; k < apps.size(); ++k) {
       nlohmann::ordered_json e;
@@ -161,6 +184,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     }
     std::cout << ": " << before << " -> " << g.size() << " darts (+" << added << " -" << deleted << "), "
               << (rep.ok() ? "valid" : "INVALID") << "\n";
+    if (const std::string c = describe_change(change.before, change.after); !c.empty()) std::cout << "  " << c << "\n";
     print_violations(rep);
   }
 }
@@ -172,11 +196,13 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   check_hook_arguments(s, a);
   GMapFile f = load_map(a.input, a.from);
   GMap& g = f.map;
+  lift_to_scheme(s, a, g);
   const size_t before = g.size();
+  const MapSummary summary_before = summarize(g);
   const std::optional<Applied> r = a.all ? apply_at_every_dart(engine, g, a) : apply_at_hooks(engine, g, a);
   if (!r) return kExitNegative;
   const ValidityReport rep = check_validity(g, a.limit);
-  print_applied(s, a, *r, before, g, rep);
+  print_applied(s, a, *r, {before, summary_before, summarize(g)}, g, rep);
   if (!rep.ok()) return kExitNegative;
   if (!a.output.empty()) save_map(GMapFile{g, {}}, a.output, output_format(a.output, a.to));
   return kExitOk;

@@ -12,7 +12,7 @@ using scheme::RuleScheme;
 
 struct SchemeApplyArgs {
   std::string rule, input, from, output, to, hooks;
-  bool all = false, json = false;
+  bool all = false, json = false, lift = false;
   size_t limit = 20;  // violations of the result listed
 };
 

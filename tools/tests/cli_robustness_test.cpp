@@ -176,3 +176,33 @@ TEST_F(Cli, LargeDrawingsAreRefusedBeforeGraphviz) {
   // DOT text has no limit.
   EXPECT_EQ(run("dot " + q(torus) + " --max-darts 500 -o " + q(dir / "out" / "t.dot")).code, 0);
 }
+
+TEST_F(Cli, SurfacesMeetVolumeRulesThroughLift) {
+  const std::string apply =
+      "apply " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --rule SubdivQuad " + q(tools_data("cube.off")) + " --hook 0";
+  expect_bad_input(apply, "cube.off", "the scheme rewrites 3-G-maps, the map is a 2-G-map: --lift");
+  const Result r = run(apply + " --lift --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["darts"], 192);
+  EXPECT_EQ(j["change"]["cells"], nlohmann::json::parse("[[8,12,6,1],[26,48,24,1]]"));
+  EXPECT_EQ(j["change"]["euler"], nlohmann::json::parse("[1,1]"));
+}
+
+TEST_F(Cli, ApplyReportsTheChangeInCells) {
+  const Result r = run("apply " + q(source_dir() / "tools/data/rules/quad_subdivision.json") + " " + q(tools_data("cube.off")) +
+                       " --hook 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cells 0:8 1:12 2:6 -> 0:26 1:48 2:24, components 1 -> 1, Euler characteristic 2 -> 2"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST_F(Cli, OffVariantsOfCgalDataAreRead) {
+  const fs::path coff = dir / "tetra.off";
+  std::ofstream(coff) << "#this is a comment\nCOFF\n4 4 0\n0 0 0 192 192 192 255\n1 0 0 192 192 192 255\n"
+                         "0 1 0 192 192 192 255\n0 0 1 192 192 192 255\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+  const Result r = run("info " + q(coff));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cells:       0:4 1:6 2:4"), std::string::npos) << r.out;
+}
