@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "model/io/atomic_write.hpp"
 #include "model/io/read_file.hpp"
@@ -202,39 +201,7 @@ FaceList parse_off(std::string_view text, const std::string& source, std::vector
 PositionedMap read_off(std::string_view text, const std::string& source) {
   std::vector<size_t> face_lines, vertex_lines;
   const FaceList fl = parse_off(text, source, &face_lines, &vertex_lines);
-  auto where = [&](size_t line) { return (source.empty() ? "line " : source + ":") + std::to_string(line); };
-  try {
-    return map_from_face_list(fl);
-  } catch (const Error& e) {
-    // Map the builder's location ("edge (u,v)", "vertex v", "face f") to file lines.
-    unsigned long u = 0, v = 0;
-    int used = 0;
-    const std::string& loc = e.location();
-    if (std::sscanf(loc.c_str(), "edge (%lu,%lu)%n", &u, &v, &used) == 2 && used == static_cast<int>(loc.size())) {
-      std::vector<size_t> lines;
-      for (size_t f = 0; f < fl.faces.size(); ++f) {
-        const auto& face = fl.faces[f];
-        for (size_t p = 0; p < face.size(); ++p) {
-          const uint32_t a = face[p], b = face[(p + 1) % face.size()];
-          if ((a == u && b == v) || (a == v && b == u)) {
-            lines.push_back(face_lines[f]);
-            break;
-          }
-        }
-      }
-      std::string list;
-      for (size_t l : lines) list += (list.empty() ? "" : ", ") + std::to_string(l);
-      const size_t at = lines.size() > 2 ? lines[2] : (lines.empty() ? 1 : lines.back());
-      throw Error(e.code(), e.message() + " on " + loc + ", faces at lines " + list, where(at));
-    }
-    if (std::sscanf(loc.c_str(), "vertex %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
-        u < vertex_lines.size())
-      throw Error(e.code(), e.message() + " (" + loc + ")", where(vertex_lines[u]));
-    if (std::sscanf(loc.c_str(), "face %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
-        u < face_lines.size())
-      throw Error(e.code(), e.message(), where(face_lines[u]));
-    throw Error(e.code(), e.message(), source.empty() ? loc : source + ": " + loc);
-  }
+  return map_from_file_faces(fl, {source, face_lines, vertex_lines});
 }
 
 PositionedMap read_off_file(const std::filesystem::path& path) { return read_off(read_text_file(path), path.string()); }

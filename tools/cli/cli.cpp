@@ -71,7 +71,7 @@ Format detect(const std::string& path, const std::string& override, const char* 
 
 Format input_format(const std::string& path, const std::string& override) {
   const Format f = detect(path, override, "--from", kInputFormats);
-  if (f != Format::Json && f != Format::Off)
+  if (f != Format::Json && f != Format::Off && f != Format::Obj)
     throw Error(ErrorCode::Usage, std::string("cannot read ") + to_string(f) + " maps (input formats: " + kInputFormats + ")",
                 path);
   return f;
@@ -84,6 +84,7 @@ Format output_format(const std::string& path, const std::string& override) {
 GMapFile load_map(const std::string& path, const std::string& from) {
   const Format f = input_format(path, from);
   if (f == Format::Off) return to_gmap_file(path == "-" ? read_off(read_text_file(path), "<stdin>") : read_off_file(path));
+  if (f == Format::Obj) return to_gmap_file(read_obj(read_text_file(path), path == "-" ? "<stdin>" : path));
   // JSON: a gmr.gmap document, or a gmr.voxels set read as its polycube (builders.hpp).
   const std::string source = path == "-" ? "<stdin>" : path;
   const nlohmann::json doc = parse_json(read_text_file(path), source);

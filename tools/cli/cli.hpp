@@ -39,7 +39,7 @@ std::optional<Format> parse_format(const std::string& name);
 Format input_format(const std::string& path, const std::string& override);
 Format output_format(const std::string& path, const std::string& override);
 // Help text for --from / --to.
-inline constexpr const char* kInputFormats = "json|off";
+inline constexpr const char* kInputFormats = "json|off|obj";
 inline constexpr const char* kOutputFormats = "json|off|obj|dot|svg|png";
 
 GMapFile load_map(const std::string& path, const std::string& from = {});

@@ -133,7 +133,7 @@ void register_apply(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "apply", "Apply a concrete rule once (DPO) at a match, or a rule scheme at hook darts; exit 1 if it does not apply or breaks the map");
   sub->add_option("rule", args->rule, "Rule file (gmr.rule JSON, concrete or scheme; Jerboa .jme with --rule)")->required();
-  sub->add_option("map", args->input, "Map file (.json, .off)")->required();
+  sub->add_option("map", args->input, "Map file (.json, .off, .obj)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--match", args->match, "L-node=dart pairs, e.g. a=3,b=5 (default: the first applicable match)");
   sub->add_option("-o,--output", args->output, "Write the result map here");

@@ -43,7 +43,7 @@ void register_dot(CLI::App& app) {
       "dot", "Draw a map: darts as nodes, links coloured per dimension (0 black, 1 red, 2 blue, 3 green, "
              "4 orange, 5 purple, 6 brown, 7 cyan)");
   sub->add_option("file", args->input,
-                  "Map file (.json, .off; - for standard input with --from), or rule file (gmr.rule JSON, concrete or "
+                  "Map file (.json, .off, .obj; - for standard input with --from), or rule file (gmr.rule JSON, concrete or "
                   "scheme; Jerboa .jme)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("-o,--output", args->output, "Output file (.dot, .svg, .png); default: DOT on standard output");

@@ -87,7 +87,7 @@ void register_validate(CLI::App& app) {
   auto args = std::make_shared<ValidateArgs>();
   CLI::App* sub = app.add_subcommand(
       "validate", "Check the G-map/O-map constraints and the embeddings; list every violation (exit 1 if any)");
-  sub->add_option("file", args->input, "Map file (.json, .off; - for standard input with --from)")->required();
+  sub->add_option("file", args->input, "Map file (.json, .off, .obj; - for standard input with --from)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--limit", args->limit, "Maximum number of violations listed")
       ->check(non_negative_integer())

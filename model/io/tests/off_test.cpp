@@ -253,3 +253,38 @@ TEST(IoOff, WriterRefusesUnfaithfulMaps) {
     EXPECT_NE(std::string(e.what()).find("two edges join the same two vertices"), std::string::npos);
   }
 }
+
+TEST(IoObj, ReadsFacesWithTextureAndNormalReferences) {
+  // The OBJ the writer produces, and a hand-written one with groups, vt/vn and negative indices.
+  const PositionedMap tetra = read_off(kTetra);
+  const PositionedMap back = read_obj(write_obj(tetra.map, tetra.position), "t.obj");
+  EXPECT_TRUE(is_isomorphic(back.map, make_tetrahedron()));
+  const std::string text =
+      "# tetrahedron\nmtllib t.mtl\no tetra\nv 0 0 0\nv 1 0 0\nv 0 1 0 0.5 0.5 0.5\nv 0 0 1 1.0\nvt 0 0\nvn 0 0 1\n"
+      "g side\ns off\nusemtl red\nf 1/1 3/1 2/1\nf 1//1 2//1 4//1\nf -3/1/1 -2/1/1 -1/1/1\nf 3 1 4\n";
+  const PositionedMap m = read_obj(text, "t.obj");
+  EXPECT_TRUE(is_isomorphic(m.map, make_tetrahedron()));
+  EXPECT_EQ(m.position.get(m.map.darts()[0]), (Vec3{0, 0, 0}));
+}
+
+TEST(IoObj, MalformedLinesAreLocated) {
+  auto error_of = [](const std::string& text) {
+    try {
+      read_obj(text, "t.obj");
+    } catch (const Error& e) {
+      return e.location() + ": " + e.message();
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of("v 0 0\n").find("t.obj:1: expected a vertex"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 x\n").find("t.obj:1: expected a finite number, found \"x\""), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nf 1 2\n").find("t.obj:3: a face needs at least 3 vertices"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n").find("t.obj:4: vertex index 4 out of range (3 vertices"),
+            std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n").find("t.obj:4: expected a vertex index"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n").find("degenerate face"), std::string::npos);
+  EXPECT_NE(error_of("\n\nbogus 1 2\n").find("t.obj:3: unknown OBJ statement \"bogus\""), std::string::npos);
+  // A non-manifold edge is named with the lines of its three faces.
+  const std::string fan = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 1 2 3\nf 1 2 4\nf 1 2 5\n";
+  EXPECT_NE(error_of(fan).find("faces at lines 6, 7, 8"), std::string::npos) << error_of(fan);
+}
