@@ -35,10 +35,17 @@ extern "C" void remove_temporaries_and_reraise(int sig) {
   std::raise(sig);
 }
 
-// Registers `tmp` for removal on a signal while it exists; unregistered on destruction.
+// A temporary file path registered for removal on a signal, armed before the file is created
+// (so that no signal finds the file unregistered) and disarmed on destruction.
 class PendingTemporary {
  public:
-  explicit PendingTemporary(const std::filesystem::path& tmp) {
+  PendingTemporary() = default;
+  ~PendingTemporary() { disarm(); }
+  PendingTemporary(const PendingTemporary&) = delete;
+  PendingTemporary& operator=(const PendingTemporary&) = delete;
+
+  void arm(const std::filesystem::path& tmp) {
+    disarm();
     const std::string& s = tmp.native();
     if (s.size() >= kPathBytes) return;
     for (size_t k = 0; k < kPendingSlots; ++k) {
@@ -50,15 +57,34 @@ class PendingTemporary {
       return;
     }
   }
-  ~PendingTemporary() {
+  void disarm() {
     if (slot_ < kPendingSlots) pending_state[slot_].store(kFree);
+    slot_ = kPendingSlots;
   }
-  PendingTemporary(const PendingTemporary&) = delete;
-  PendingTemporary& operator=(const PendingTemporary&) = delete;
 
  private:
   size_t slot_ = kPendingSlots;
 };
+
+// Creates "<dir>/.<name>.tmp.<pid>.<k>" with O_EXCL (mode 0666 before umask, like a plain
+// ofstream), retrying on a name clash.
+int create_temp(const std::filesystem::path& path, std::filesystem::path& tmp, PendingTemporary& pending) {
+  static std::atomic<unsigned> counter{0};
+  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    tmp = dir / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
+                 std::to_string(counter++));
+    pending.arm(tmp);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) return fd;
+    pending.disarm();
+    if (errno != EEXIST)
+      throw Error(ErrorCode::Io, "cannot create a temporary file in " + dir.string() + ": " + errno_text(errno),
+                  path.string());
+  }
+  throw Error(ErrorCode::Io, "cannot find a free temporary file name in " + dir.string(), path.string());
+}
+
 
 // Writes all of `content` to `fd`; false with errno set on failure.
 bool write_all(int fd, std::string_view content) {
@@ -103,23 +129,6 @@ std::filesystem::path resolve_links(const std::filesystem::path& path) {
   throw Error(ErrorCode::Io, "too many levels of symbolic links", path.string());
 }
 
-// Creates "<dir>/.<name>.tmp.<pid>.<k>" with O_EXCL (mode 0666 before umask, like a plain
-// ofstream), retrying on a name clash.
-int create_temp(const std::filesystem::path& path, std::filesystem::path& tmp) {
-  static std::atomic<unsigned> counter{0};
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    tmp = dir / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
-                 std::to_string(counter++));
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) return fd;
-    if (errno != EEXIST)
-      throw Error(ErrorCode::Io, "cannot create a temporary file in " + dir.string() + ": " + errno_text(errno),
-                  path.string());
-  }
-  throw Error(ErrorCode::Io, "cannot find a free temporary file name in " + dir.string(), path.string());
-}
-
 }  // namespace
 
 void remove_temporaries_on_signal() {
@@ -137,8 +146,8 @@ void write_file_atomic(const std::filesystem::path& requested, std::string_view 
     if (!S_ISREG(st.st_mode)) return write_special(path, content);
   }
   std::filesystem::path tmp;
-  const int fd = create_temp(path, tmp);
-  const PendingTemporary pending(tmp);
+  PendingTemporary pending;
+  const int fd = create_temp(path, tmp, pending);
   auto fail = [&](const std::string& what, int err) {
     ::close(fd);
     ::unlink(tmp.c_str());

@@ -6,6 +6,7 @@
 
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
+#include "model/io/read_limits.hpp"
 
 namespace gmr::io {
 
@@ -99,6 +100,9 @@ PositionedMap map_from_face_list(const FaceList& fl, const SurfaceOptions& opt) 
 }
 
 PositionedMap map_from_file_faces(const FaceList& fl, const FaceLines& file, const SurfaceOptions& opt) {
+  uint64_t darts = 0;  // two darts per face corner
+  for (const auto& face : fl.faces) darts += 2 * face.size();
+  check_dart_limit(darts, file.source);
   const std::string& source = file.source;
   const std::vector<size_t>& face_lines = file.face_lines;
   const std::vector<size_t>& vertex_lines = file.vertex_lines;

@@ -6,6 +6,7 @@
 #include "model/io/json_writer.hpp"
 #include "model/core/orbit.hpp"
 #include "model/io/read_file.hpp"
+#include "model/io/read_limits.hpp"
 
 namespace gmr::io {
 
@@ -113,6 +114,7 @@ GMapFile gmap_from_json(const JsonAt& doc) {
   const auto n_darts = static_cast<Dart>(doc["darts"].as_int(0, static_cast<int64_t>(kNoDart) - 1));
   GMapFile f;
   f.map = GMap(n, kind);
+  check_dart_limit(n_darts, doc["darts"].location());
   check_link_arrays(doc["alpha"], f.map, n_darts);
   f.map.add_darts(n_darts);
   read_links(doc["alpha"], f.map, n_darts);
