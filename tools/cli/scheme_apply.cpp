@@ -189,10 +189,20 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
   }
 }
 
+// The engine of `s`; a structural problem of the scheme is located in the rule file.
+SchemeEngine engine_for(const RuleScheme& s, const SchemeApplyArgs& a) {
+  try {
+    return SchemeEngine(s);
+  } catch (const Error& e) {
+    throw Error(e.code(), e.message() + " (gmr check lists every problem of the rule)",
+                a.rule + ": rule " + s.name + (e.location().empty() ? "" : ": " + e.location()));
+  }
+}
+
 }  // namespace
 
 int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
-  const SchemeEngine engine(s);
+  const SchemeEngine engine = engine_for(s, a);
   check_hook_arguments(s, a);
   GMapFile f = load_map(a.input, a.from);
   GMap& g = f.map;

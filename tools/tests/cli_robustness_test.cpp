@@ -230,3 +230,16 @@ TEST_F(Cli, InputSizeAndDartLimitsFailFast) {
   EXPECT_EQ(code, 2);
   EXPECT_NE(err.find("GMR_MAX_DARTS: expected a non-negative integer, found \"lots\""), std::string::npos) << err;
 }
+
+TEST_F(Cli, StructuralProblemsOfJerboaRulesAreLocated) {
+  std::string jme = gmr::io::read_text_file(tools_data("jerboa/JerboaTrackingOrbit.jme"));
+  const size_t arc = jme.find("dim=\"", jme.find("<arc ", jme.find("name=\"SubdivQuad\"")));
+  jme.replace(arc, 6, "dim=\"9");
+  const fs::path bad = dir / "bad.jme";
+  std::ofstream(bad) << jme;
+  const std::string apply = "apply " + q(bad) + " --rule SubdivQuad " + q(tools_data("cube.off")) + " --lift --hook 0";
+  Result r = run(apply);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("S-dim-range"), std::string::npos) << r.err;
+  expect_bad_input(apply + " --force", bad.string() + ": rule SubdivQuad: R arc 0", "arc dimension 9 outside 0..3");
+}
