@@ -16,6 +16,7 @@
 #include "model/io/rule_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -25,10 +26,7 @@ using namespace gmr::checker;
 
 namespace {
 
-std::string data(const std::string& name) {
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/checker/tests/data/" + name + ".json";
-}
+std::string data(const std::string& name) { return gmr::testing::source_path("checker/tests/data/" + name + ".json"); }
 
 Rule load(const std::string& name) { return read_rule_file(data(name)); }
 

@@ -7,6 +7,7 @@
 #include "checker/scheme_checker.hpp"
 #include "model/io/jme_import.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
@@ -182,8 +183,7 @@ TEST(SchemeChecker, Erratum6DefinitionVersusAlgorithm3) {
 }
 
 TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/tools/data/jerboa/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"));
   ASSERT_EQ(m.rules.size(), 50u);
   size_t accepted = 0;
   std::map<std::string, bool> verdict;

@@ -16,6 +16,7 @@
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 #include "model/words/word_scheme.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -354,8 +355,7 @@ TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
   }
   EXPECT_TRUE(check_cycle(app.rule, 0, 2, diags));
   // Jerboa-scheme engine on tools/data/rules/quad_subdivision.json.
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  const RuleScheme js = read_scheme_file(std::string(root ? root : ".") + "/tools/data/rules/quad_subdivision.json");
+  const RuleScheme js = read_scheme_file(gmr::testing::source_path("tools/data/rules/quad_subdivision.json"));
   const auto [J, japp] = apply_scheme(cube, js, {0});
   ASSERT_TRUE(japp.applied) << japp.why;
   EXPECT_EQ(J.size(), 192u);

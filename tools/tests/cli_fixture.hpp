@@ -10,16 +10,14 @@
 #include <string>
 
 #include "model/io/read_file.hpp"
+#include "model/testing/source_tree.hpp"
 
 namespace gmr::cli_test {
 namespace fs = std::filesystem;
 
 inline std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
-inline fs::path source_dir() {
-  const char* s = std::getenv("GMR_SOURCE_DIR");
-  return s ? s : ".";
-}
+inline fs::path source_dir() { return gmr::testing::source_path("."); }
 inline fs::path test_data(const std::string& name) { return source_dir() / "model/io/tests/data" / name; }
 inline fs::path tools_data(const std::string& name) { return source_dir() / "tools/data" / name; }
 

@@ -7,16 +7,14 @@
 #include "model/core/error.hpp"
 #include "model/io/jme_import.hpp"
 #include "model/scheme/scheme_engine.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
 using namespace gmr::io;
 
 namespace {
-std::string fixture() {
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/tools/data/jerboa/JerboaTrackingOrbit.jme";
-}
+std::string fixture() { return gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"); }
 }  // namespace
 
 TEST(Jme, OrbitAttribute) {

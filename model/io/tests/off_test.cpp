@@ -15,16 +15,14 @@
 #include "model/core/sew.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::io;
 
 namespace {
 
-std::string source_dir() {
-  const char* src = std::getenv("GMR_SOURCE_DIR");
-  return src ? src : ".";
-}
+std::string source_dir() { return gmr::testing::source_path("."); }
 
 void expect_error(const std::string& text, ErrorCode code, const std::string& location, const std::string& what = "") {
   try {
