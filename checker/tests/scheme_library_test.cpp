@@ -56,7 +56,7 @@ TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
     SchemeCheckReport rep = check_scheme(r);
     EXPECT_TRUE(rep.ok()) << to_text(rep);
     EXPECT_EQ(rep.warnings(), 0u) << to_text(rep);
-    // Erratum 6: the literal Algorithm 3 also rejects preserved nodes whose PRESERVED 0-arc is
+    // The literal Algorithm 3 also rejects preserved nodes whose PRESERVED 0-arc is
     // not on a (0,2)-cycle of R (their 2-link lies outside the orbit), although these operations
     // are valid (every application in the tests below yields a valid G-map).
     SchemeCheckOptions strict;

@@ -247,7 +247,7 @@ TEST(F8, Fig419aMatchAndDerivation) {
   const DGraph G = f8_graph();
   const PatternGraph P = pattern_graph(G, kF8Words);
   const WordRuleScheme S = fig419a();
-  // On a..d the (eps,1)-loops of ι(L,P) need 1-loops in G: no match (erratum 17, Ex. 49).
+  // On a..d the (eps,1)-loops of ι(L,P) need 1-loops in G: no match (Ex. 49).
   const PatternGraph Pa = component(P, 0);
   EXPECT_FALSE(propagate_match(S, Pa, instantiate_word_rule(S, Pa), G).has_value());
   // On e,f (1-free darts) the match is (u,y) ↦ u, and the derivation keeps I(1), I(2).
