@@ -49,7 +49,7 @@ void log_equals_dynamic(const SchemeEngine& engine, const StaticEvents& st, size
     for (Dart h : hooks) RC_LOG() << " " << h;
     RC_LOG() << "\n";
     for (size_t t = 0; t < st.orbits.size(); ++t) {
-      const auto dyn = touched_only(dynamic_events(before[t], g), before[t], la.application.match);
+      const auto dyn = dynamic_events(before[t], g, &la.application.match);
       const auto& log = la.log.orbits[t].events;
       if (!same_events(log, dyn)) {
         RC_LOG() << st.orbits[t].orbit.str() << "\nlog:\n" << listing(log) << "dynamic:\n" << listing(dyn);

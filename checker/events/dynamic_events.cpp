@@ -1,7 +1,7 @@
 #include "checker/events/dynamic_events.hpp"
 
 #include <algorithm>
-#include <unordered_set>
+#include <tuple>
 
 #include "model/core/orbit.hpp"
 
@@ -27,49 +27,51 @@ OrbitSnapshot snapshot(const GMap& g, const OrbitType& o) {
   return s;
 }
 
-std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& h) {
+std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& h,
+                                       const std::vector<Dart>* touched) {
   const OrbitType& o = before.orbit;
   const std::vector<Dart>& gname = before.name;
   const std::vector<Dart> hname = orbit_names(h, o.mask());
   const Dart gcap = static_cast<Dart>(gname.size()), hcap = h.capacity();
   auto alive_g = [&](Dart d) { return d < gcap && gname[d] != kNoDart; };
   auto alive_h = [&](Dart d) { return d < hcap && h.alive(d); };
-  // Per G-orbit: holds a preserved dart; changed (a deleted dart or a changed <o>-link).
-  std::vector<char> g_kept(gcap, 0), g_changed(gcap, 0), h_kept(hcap, 0);
-  std::vector<std::pair<Dart, Dart>> pairs;  // (G-orbit, H-orbit) of each preserved dart
+  // Per G-orbit (indexed by its name): the H-orbit of its first preserved dart, several H-orbits,
+  // changed (a deleted dart or a changed <o>-link), non-modification listed. Per H-orbit: the same.
+  std::vector<Dart> g_to(gcap, kNoDart), h_from(hcap, kNoDart);
+  std::vector<char> g_many(gcap, 0), h_many(hcap, 0), g_changed(gcap, 0);
+  std::vector<char> g_listed(gcap, touched ? 0 : 1);
+  if (touched)
+    for (Dart d : *touched)
+      if (alive_g(d)) g_listed[gname[d]] = 1;
   for (Dart d = 0; d < gcap; ++d) {
     if (!alive_g(d)) continue;
+    const Dart gn = gname[d];
     if (!alive_h(d)) {
-      g_changed[gname[d]] = 1;
+      g_changed[gn] = 1;
       continue;
     }
-    g_kept[gname[d]] = 1;
-    h_kept[hname[d]] = 1;
-    pairs.emplace_back(gname[d], hname[d]);
+    const Dart hn = hname[d];
+    if (g_to[gn] == kNoDart) g_to[gn] = hn;
+    else if (g_to[gn] != hn) g_many[gn] = 1;
+    if (h_from[hn] == kNoDart) h_from[hn] = gn;
+    else if (h_from[hn] != gn) h_many[hn] = 1;
     for (size_t p = 0; p < o.size(); ++p)
-      if (before.links[p][d] != h.alpha(o[p], d)) g_changed[gname[d]] = 1;
+      if (before.links[p][d] != h.alpha(o[p], d)) g_changed[gn] = 1;
   }
+  // The (G-orbit, H-orbit) pairs of the preserved darts of split G-orbits and merged H-orbits.
+  std::vector<std::pair<Dart, Dart>> pairs;
+  for (Dart d = 0; d < gcap; ++d)
+    if (alive_g(d) && alive_h(d) && (g_many[gname[d]] || h_many[hname[d]])) pairs.emplace_back(gname[d], hname[d]);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   std::vector<OrbitEvent> out;
-  // Splits, and the number of H-orbits of each G-orbit.
-  std::vector<uint32_t> g_out(gcap, 0), h_in(hcap, 0);
-  for (auto [gn, hn] : pairs) {
-    ++g_out[gn];
-    ++h_in[hn];
-  }
   for (size_t k = 0; k < pairs.size();) {
     size_t e = k;
     while (e < pairs.size() && pairs[e].first == pairs[k].first) ++e;
-    if (e - k > 1) {
+    if (g_many[pairs[k].first]) {
       OrbitEvent ev{OrbitEventKind::Split, o, {pairs[k].first}, {}, EventStatus::Observed};
       for (size_t j = k; j < e; ++j) ev.after.push_back(pairs[j].second);
-      std::sort(ev.after.begin(), ev.after.end());
       out.push_back(std::move(ev));
-    } else if (h_in[pairs[k].second] == 1) {
-      const bool same = !g_changed[pairs[k].first];
-      out.push_back({same ? OrbitEventKind::NonModification : OrbitEventKind::Modification, o,
-                     {pairs[k].first}, {pairs[k].second}, EventStatus::Observed});
     }
     k = e;
   }
@@ -79,31 +81,25 @@ std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& 
   for (size_t k = 0; k < pairs.size();) {
     size_t e = k;
     while (e < pairs.size() && pairs[e].second == pairs[k].second) ++e;
-    if (e - k > 1) {
+    if (h_many[pairs[k].second]) {
       OrbitEvent ev{OrbitEventKind::Merge, o, {}, {pairs[k].second}, EventStatus::Observed};
       for (size_t j = k; j < e; ++j) ev.before.push_back(pairs[j].first);
-      std::sort(ev.before.begin(), ev.before.end());
       out.push_back(std::move(ev));
     }
     k = e;
   }
-  for (Dart d = 0; d < gcap; ++d)
-    if (alive_g(d) && gname[d] == d && !g_kept[d])
+  for (Dart d = 0; d < gcap; ++d) {
+    if (!alive_g(d) || gname[d] != d) continue;
+    if (g_to[d] == kNoDart) {
       out.push_back({OrbitEventKind::Deletion, o, {d}, {}, EventStatus::Observed});
+    } else if (!g_many[d] && !h_many[g_to[d]] && (g_changed[d] || g_listed[d])) {
+      out.push_back({g_changed[d] ? OrbitEventKind::Modification : OrbitEventKind::NonModification, o, {d},
+                     {g_to[d]}, EventStatus::Observed});
+    }
+  }
   for (Dart d = 0; d < hcap; ++d)
-    if (alive_h(d) && hname[d] == d && !h_kept[d])
+    if (alive_h(d) && hname[d] == d && h_from[d] == kNoDart)
       out.push_back({OrbitEventKind::Creation, o, {}, {d}, EventStatus::Observed});
-  return out;
-}
-
-std::vector<OrbitEvent> touched_only(const std::vector<OrbitEvent>& events, const OrbitSnapshot& before,
-                                     const std::vector<Dart>& darts) {
-  std::unordered_set<Dart> names;
-  for (Dart d : darts)
-    if (d < before.name.size() && before.name[d] != kNoDart) names.insert(before.name[d]);
-  std::vector<OrbitEvent> out;
-  for (const auto& e : events)
-    if (e.kind != OrbitEventKind::NonModification || names.count(e.before.front())) out.push_back(e);
   return out;
 }
 

@@ -22,13 +22,11 @@ struct OrbitSnapshot {
 // Throws Error(Range) for an orbit type the map does not have (require_orbit_type).
 OrbitSnapshot snapshot(const GMap& g, const OrbitType& o);
 
-// Every event of the transformation from `before` to h, non-modifications included (one per
-// unchanged orbit of G); statuses are Observed.
-std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& h);
-
-// The events of `events` minus the non-modifications of G-orbits holding none of `darts` (G darts,
-// e.g. the matched ones): the orbits a rule application leaves untouched are not logged.
-std::vector<OrbitEvent> touched_only(const std::vector<OrbitEvent>& events, const OrbitSnapshot& before,
-                                     const std::vector<Dart>& darts);
+// Every event of the transformation from `before` to h; statuses are Observed. Non-modifications
+// are listed for every unchanged orbit of G, or, when `touched` is given (G darts, e.g. the matched
+// ones), only for those holding one of its darts: the orbits a rule application leaves untouched
+// are not logged.
+std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& h,
+                                       const std::vector<Dart>* touched = nullptr);
 
 }  // namespace gmr::events

@@ -1,9 +1,7 @@
 #include "checker/events/event_log.hpp"
 
 #include <algorithm>
-#include <map>
 #include <numeric>
-#include <set>
 #include <unordered_map>
 
 #include "model/core/error.hpp"
@@ -120,20 +118,40 @@ class Recorder {
  private:
   Dart l_slot(uint32_t v, uint32_t b) const { return v * static_cast<uint32_t>(ns_) + b; }
 
+  // Orbit names with a flag (certain), sorted by name, one entry per name (certain if any is).
+  static void settle(std::vector<std::pair<Dart, bool>>& v) {
+    std::sort(v.begin(), v.end());
+    size_t w = 0;
+    for (size_t k = 0; k < v.size(); ++k) {
+      if (w > 0 && v[w - 1].first == v[k].first) v[w - 1].second = v[w - 1].second || v[k].second;
+      else v[w++] = v[k];
+    }
+    v.resize(w);
+  }
+  static const std::pair<Dart, bool>* lookup(const std::vector<std::pair<Dart, bool>>& v, Dart name) {
+    auto it = std::lower_bound(v.begin(), v.end(), std::make_pair(name, false));
+    return it != v.end() && it->first == name ? &*it : nullptr;
+  }
+  static std::vector<Dart> unique_sorted(std::vector<Dart> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
+
   void log_orbit_type(const GMap& h, const OrbitTypeEvents& te, const std::vector<Dart>& gname,
                       const std::vector<Dart>& hname, OrbitTypeLog& log) const {
     const OrbitType& o = te.orbit;
-    std::map<Dart, EventStatus> split, merge;  // G-orbits split, H-orbits merged
-    std::set<uint32_t> flagged;                // L pattern orbits with a split or merge flag
+    std::vector<std::pair<Dart, bool>> split, merge;  // G-orbits split, H-orbits merged (certain)
+    std::vector<bool> flagged(te.left.size(), false);  // L pattern orbits with a split or merge flag
     for (uint32_t ei = 0; ei < te.events.size(); ++ei) {
       const PatternEvent& e = te.events[ei];
       if (e.kind == PatternEventKind::Deletion || e.kind == PatternEventKind::Creation) {
         const bool del = e.kind == PatternEventKind::Deletion;
         const auto& nodes = del ? te.left.nodes[e.left[0]] : te.right.nodes[e.right[0]];
-        std::set<Dart> names;
+        std::vector<Dart> names;
         for (uint32_t m : nodes)
-          for (uint32_t b = 0; b < ns_; ++b) names.insert(del ? gname[l_slot(m, b)] : hname[l_slot(m, b)]);
-        for (Dart n : names)
+          for (uint32_t b = 0; b < ns_; ++b) names.push_back(del ? gname[l_slot(m, b)] : hname[l_slot(m, b)]);
+        for (Dart n : unique_sorted(std::move(names)))
           log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, o,
                                 del ? std::vector<Dart>{n} : std::vector<Dart>{},
                                 del ? std::vector<Dart>{} : std::vector<Dart>{n}, EventStatus::Certain});
@@ -141,58 +159,80 @@ class Recorder {
       }
       const bool sp = is_split(e.kind), mg = is_merge(e.kind);
       if (!sp && !mg) continue;
-      for (uint32_t c : e.left) flagged.insert(c);
-      for (const InstancePair& p : e.pairs)
+      for (uint32_t c : e.left) flagged[c] = true;
+      const bool certain = e.certainty == Certainty::Certain;
+      for (const InstancePair& p : e.pairs) {
+        const uint32_t ra = *s_.right_of(p.a), rb = *s_.right_of(p.b);
         for (uint32_t b = 0; b < ns_; ++b) {
           const uint32_t b2 = p.position < 0 ? b : O_.neighbor(b, static_cast<size_t>(p.position));
-          const uint32_t ra = sp ? *s_.right_of(p.a) : 0, rb = sp ? *s_.right_of(p.b) : 0;
+          // Splits on H after the rewrite, merges on G before it.
           const Dart na = sp ? hname[l_slot(ra, b)] : gname[l_slot(p.a, b)];
           const Dart nb = sp ? hname[l_slot(rb, b2)] : gname[l_slot(p.b, b2)];
           const bool different = na != nb;
-          if (e.certainty == Certainty::Possible)
+          if (!certain)
             log.checks.push_back({ei, sp ? 'H' : 'G', M_[l_slot(p.a, b)], M_[l_slot(p.b, b2)], different});
           if (!different) continue;
-          auto& into = sp ? split : merge;
-          const Dart at = sp ? gname[l_slot(p.a, b)] : hname[l_slot(*s_.right_of(p.a), b)];
-          const EventStatus st =
-              e.certainty == Certainty::Certain ? EventStatus::Certain : EventStatus::Confirmed;
-          auto [it, fresh] = into.emplace(at, st);
-          if (!fresh && st == EventStatus::Certain) it->second = st;
+          (sp ? split : merge).emplace_back(sp ? gname[l_slot(p.a, b)] : hname[l_slot(ra, b)], certain);
         }
+      }
     }
-    // The (G-orbit, H-orbit) pairs of the preserved matched darts, and the matched darts' fate.
-    std::map<Dart, std::set<Dart>> outs, ins;
-    std::map<Dart, bool> changed, touches_flag;
+    settle(split);
+    settle(merge);
+    // The fate of every matched dart: its G-orbit, its H-orbit (kNoDart when deleted), whether
+    // one of its <o>-links changed, whether its pattern orbit carries a flag.
+    struct Fate {
+      Dart g, h;
+      bool changed, flagged;
+    };
+    std::vector<Fate> fates;
+    fates.reserve(s_.left.size() * ns_);
+    std::vector<std::pair<Dart, Dart>> into;  // (H-orbit, G-orbit) of the preserved matched darts
     for (uint32_t v = 0; v < s_.left.size(); ++v) {
       const auto r = s_.right_of(v);
-      const uint32_t c = te.left.class_of[v];
+      const bool fl = flagged[te.left.class_of[v]];
       for (uint32_t b = 0; b < ns_; ++b) {
         const Dart gn = gname[l_slot(v, b)];
-        bool& ch = changed[gn];
-        if (flagged.count(c)) touches_flag[gn] = true;
         if (!r) {
-          ch = true;
+          fates.push_back({gn, kNoDart, true, fl});
           continue;
         }
         const Dart hn = hname[l_slot(*r, b)];
-        outs[gn].insert(hn);
-        ins[hn].insert(gn);
         const Dart d = M_[l_slot(v, b)];
-        for (int i : o.dims())
-          if (old_[l_slot(v, b) * dims_ + i] != h.alpha(i, d)) ch = true;
+        bool ch = false;
+        for (int i : o.dims()) ch = ch || old_[l_slot(v, b) * dims_ + i] != h.alpha(i, d);
+        fates.push_back({gn, hn, ch, fl});
+        into.emplace_back(hn, gn);
       }
     }
-    for (auto [gn, st] : split)
-      log.events.push_back({OrbitEventKind::Split, o, {gn}, {outs[gn].begin(), outs[gn].end()}, st});
-    for (auto [hn, st] : merge)
-      log.events.push_back({OrbitEventKind::Merge, o, {ins[hn].begin(), ins[hn].end()}, {hn}, st});
-    for (const auto& [gn, hs] : outs) {
-      if (split.count(gn)) continue;
-      const Dart hn = *hs.begin();
-      if (merge.count(hn)) continue;
-      const EventStatus st = touches_flag.count(gn) ? EventStatus::Refuted : EventStatus::Certain;
-      log.events.push_back({changed[gn] ? OrbitEventKind::Modification : OrbitEventKind::NonModification,
-                            o, {gn}, {hn}, st});
+    std::sort(into.begin(), into.end());
+    into.erase(std::unique(into.begin(), into.end()), into.end());
+    for (auto [hn, certain] : merge) {
+      OrbitEvent ev{OrbitEventKind::Merge, o, {}, {hn}, certain ? EventStatus::Certain : EventStatus::Confirmed};
+      for (auto it = std::lower_bound(into.begin(), into.end(), std::make_pair(hn, Dart(0)));
+           it != into.end() && it->first == hn; ++it)
+        ev.before.push_back(it->second);
+      log.events.push_back(std::move(ev));
+    }
+    std::sort(fates.begin(), fates.end(), [](const Fate& a, const Fate& b) { return a.g < b.g; });
+    std::vector<Dart> hs;
+    for (size_t k = 0; k < fates.size();) {
+      const Dart gn = fates[k].g;
+      bool changed = false, fl = false;
+      hs.clear();
+      for (; k < fates.size() && fates[k].g == gn; ++k) {
+        changed = changed || fates[k].changed;
+        fl = fl || fates[k].flagged;
+        if (fates[k].h != kNoDart) hs.push_back(fates[k].h);
+      }
+      if (hs.empty()) continue;  // deleted (logged above)
+      hs = unique_sorted(std::move(hs));
+      if (const auto* sp = lookup(split, gn)) {
+        log.events.push_back({OrbitEventKind::Split, o, {gn}, hs, sp->second ? EventStatus::Certain : EventStatus::Confirmed});
+        continue;
+      }
+      if (lookup(merge, hs.front())) continue;  // part of a merge
+      log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, o, {gn},
+                            {hs.front()}, fl ? EventStatus::Refuted : EventStatus::Certain});
     }
     sort_events(log.events);
   }

@@ -51,7 +51,7 @@ inline Checked apply_checked(const scheme::RuleScheme& s, GMap& g, const std::ve
   Checked c{apply_with_events(engine, st, g, hooks), {}};
   if (!c.logged.application) return c;
   for (size_t t = 0; t < st.orbits.size(); ++t)
-    c.dynamic.push_back(touched_only(dynamic_events(before[t], g), before[t], c.logged.application.match));
+    c.dynamic.push_back(dynamic_events(before[t], g, &c.logged.application.match));
   return c;
 }
 
