@@ -54,9 +54,25 @@ class InstanceNamer {
       for (uint32_t b = 0; b < s_; ++b) out[m * s_ + b] = low[find(parent, b)];
   }
 
+  // The slot of a dart of the table, or UINT32_MAX. A hash map when the table is small against
+  // the map, else a dense array (filling it costs O(capacity)).
+  uint32_t slot(Dart x) {
+    if (!indexed_) {
+      indexed_ = true;
+      dense_ = table_.size() * 8 > g_.capacity();
+      if (dense_) {
+        dense_slot_.assign(g_.capacity(), UINT32_MAX);
+        for (uint32_t k = 0; k < table_.size(); ++k) dense_slot_[table_[k]] = k;
+      } else {
+        for (uint32_t k = 0; k < table_.size(); ++k) slot_.emplace(table_[k], k);
+      }
+    }
+    if (dense_) return dense_slot_[x];
+    auto it = slot_.find(x);
+    return it == slot_.end() ? UINT32_MAX : it->second;
+  }
+
   void name_by_traversal(const PatternOrbits& p, uint32_t c, std::vector<Dart>& out, size_t& traversed) {
-    if (slot_.empty())
-      for (uint32_t k = 0; k < table_.size(); ++k) slot_.emplace(table_[k], k);
     ScopedMarker seen(g_);
     std::vector<Dart> stack, visited;
     for (uint32_t m : p.nodes[c])
@@ -68,8 +84,8 @@ class InstanceNamer {
         const Dart low = *std::min_element(visited.begin(), visited.end());
         for (Dart x : visited) {
           seen.unmark(x);
-          auto it = slot_.find(x);
-          if (it != slot_.end()) out[it->second] = low;
+          const uint32_t k = slot(x);
+          if (k != UINT32_MAX) out[k] = low;
         }
         traversed += visited.size();
       }
@@ -80,7 +96,9 @@ class InstanceNamer {
   const OrbitGraph& O_;
   const std::vector<Dart>& table_;
   size_t nodes_, s_;
+  bool indexed_ = false, dense_ = false;
   std::unordered_map<Dart, uint32_t> slot_;
+  std::vector<uint32_t> dense_slot_;
 };
 
 class Recorder {
@@ -165,6 +183,7 @@ class Recorder {
         const uint32_t ra = *s_.right_of(p.a), rb = *s_.right_of(p.b);
         for (uint32_t b = 0; b < ns_; ++b) {
           const uint32_t b2 = p.position < 0 ? b : O_.neighbor(b, static_cast<size_t>(p.position));
+          if (p.a == p.b && b2 < b) continue;  // the pair (b2, b), already compared
           // Splits on H after the rewrite, merges on G before it.
           const Dart na = sp ? hname[l_slot(ra, b)] : gname[l_slot(p.a, b)];
           const Dart nb = sp ? hname[l_slot(rb, b2)] : gname[l_slot(p.b, b2)];
@@ -182,7 +201,7 @@ class Recorder {
     // one of its <o>-links changed, whether its pattern orbit carries a flag.
     struct Fate {
       Dart g, h;
-      bool changed, flagged;
+      bool changed, flagged, unchanged_statically;
     };
     std::vector<Fate> fates;
     fates.reserve(s_.left.size() * ns_);
@@ -190,17 +209,18 @@ class Recorder {
     for (uint32_t v = 0; v < s_.left.size(); ++v) {
       const auto r = s_.right_of(v);
       const bool fl = flagged[te.left.class_of[v]];
+      const bool nm = te.residual[te.left.class_of[v]] == PatternEventKind::NonModification;
       for (uint32_t b = 0; b < ns_; ++b) {
         const Dart gn = gname[l_slot(v, b)];
         if (!r) {
-          fates.push_back({gn, kNoDart, true, fl});
+          fates.push_back({gn, kNoDart, true, fl, false});
           continue;
         }
         const Dart hn = hname[l_slot(*r, b)];
         const Dart d = M_[l_slot(v, b)];
         bool ch = false;
         for (int i : o.dims()) ch = ch || old_[l_slot(v, b) * dims_ + i] != h.alpha(i, d);
-        fates.push_back({gn, hn, ch, fl});
+        fates.push_back({gn, hn, ch, fl, nm});
         into.emplace_back(hn, gn);
       }
     }
@@ -217,11 +237,12 @@ class Recorder {
     std::vector<Dart> hs;
     for (size_t k = 0; k < fates.size();) {
       const Dart gn = fates[k].g;
-      bool changed = false, fl = false;
+      bool changed = false, fl = false, nm = true;
       hs.clear();
       for (; k < fates.size() && fates[k].g == gn; ++k) {
         changed = changed || fates[k].changed;
         fl = fl || fates[k].flagged;
+        nm = nm && fates[k].unchanged_statically;
         if (fates[k].h != kNoDart) hs.push_back(fates[k].h);
       }
       if (hs.empty()) continue;  // deleted (logged above)
@@ -232,9 +253,8 @@ class Recorder {
       }
       if (lookup(merge, hs.front())) continue;  // part of a merge
       log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, o, {gn},
-                            {hs.front()}, fl ? EventStatus::Refuted : EventStatus::Certain});
+                            {hs.front()}, fl || changed == nm ? EventStatus::Refuted : EventStatus::Certain});
     }
-    sort_events(log.events);
   }
 
   const RuleScheme& s_;

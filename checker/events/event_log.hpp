@@ -44,6 +44,8 @@ struct PairCheck {
 
 struct OrbitTypeLog {
   OrbitType orbit;
+  // Creations and deletions (in the order of the pattern events, then by name), merges (by name),
+  // then splits, modifications and non-modifications by G-orbit name.
   std::vector<OrbitEvent> events;
   std::vector<PairCheck> checks;
   size_t traversed = 0;  // darts visited by the traversals of incomplete instances

@@ -26,7 +26,8 @@ const char* to_string(OrbitEventKind k);
 enum class EventStatus {
   Certain,    // decided by the static analysis alone
   Confirmed,  // a possible split or merge, confirmed on its instance pairs
-  Refuted,    // a modification or non-modification where a possible split or merge was not confirmed
+  Refuted,    // a (non-)modification where a possible split or merge was not confirmed, or where the
+              // static verdict, modification, was refuted by the links (a loop rewritten into itself)
   Observed,   // found by comparing all orbits (the dynamic detector)
 };
 const char* to_string(EventStatus s);

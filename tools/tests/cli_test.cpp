@@ -497,3 +497,17 @@ TEST_F(Cli, ApplyWritesTheEventLog) {
   expect_bad_input("apply " + tri + " " + house + " --all --events " + q(log), "--events");
   EXPECT_EQ(outputs(), 0u);
 }
+
+TEST_F(Cli, DotDrawsTheStaticEvents) {
+  const std::string tri = q(tools_data("rules/face_triangulation.json"));
+  Result r = run("dot " + tri + " --events \"<0,1>\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("S2?"), std::string::npos) << r.out;       // possible implicit split
+  EXPECT_NE(r.out.find("#ffd58a"), std::string::npos) << r.out;   // drawn as "to confirm"
+  r = run("dot " + tri + " --events \"<1,2>\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("mod"), std::string::npos) << r.out;       // certain modification
+  EXPECT_NE(r.out.find("#ff9c9c"), std::string::npos) << r.out;
+  expect_bad_input("dot " + tri + " --events \"<0,5>\"", "<0,5>");
+  expect_bad_input("dot " + tri + " --events \"<0,1>\" --check", "--events");
+}

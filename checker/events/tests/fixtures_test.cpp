@@ -243,3 +243,24 @@ TEST(Fixtures, F5EdgeCollapseOnCylinder) {
   EXPECT_EQ(count(c.log("<0,1,2>"), OrbitEventKind::Split), 0u);
   EXPECT_EQ(cells(g), (std::vector<size_t>{8, 15, 8, 1}));
 }
+
+// Def. 3.4.2 / §3.4.3 decide modification on the pattern: L<0,1>(n0) of swap_0_1 turns its
+// implicit 1-links into 0-links and its 0-loop into a 1-loop, a modification. On a free dart the
+// hook orbit is a single dart, the implicit 1-link a 1-loop, and H = G: the orbit is not modified,
+// which the log finds by comparing the matched darts' links (status refuted). On two 1-linked darts
+// the modification happens.
+TEST(Fixtures, StaticModificationRefutedOnALoop) {
+  const auto rule = io::read_scheme_file(event_data("swap_0_1.json"));
+  const StaticEvents st = analyse(rule, {OrbitType{0, 1}});
+  ASSERT_EQ(st.orbits[0].events.size(), 1u);
+  EXPECT_EQ(st.orbits[0].events[0].kind, PatternEventKind::Modification);
+  GMap dart = io::read_gmap_json_file(event_data("free_dart.json")).map;
+  const Checked c1 = apply_checked(rule, dart, {0});
+  expect_oracle_agrees(c1);
+  EXPECT_EQ(count(c1.log("<0,1>"), OrbitEventKind::NonModification, EventStatus::Refuted), 1u);
+  EXPECT_EQ(count(c1.log("<0,1>"), OrbitEventKind::Modification), 0u);
+  GMap corner = io::read_gmap_json_file(event_data("one_corner.json")).map;
+  const Checked c2 = apply_checked(rule, corner, {0});
+  expect_oracle_agrees(c2);
+  EXPECT_EQ(count(c2.log("<0,1>"), OrbitEventKind::Modification, EventStatus::Certain), 1u);
+}
