@@ -125,6 +125,7 @@ class Recorder {
 
   // Steps 3 and 4 (H after the rewrite).
   std::vector<OrbitTypeLog> after(const GMap& h, const SchemeApplication& res) {
+    T_ = &res.comatch;
     InstanceNamer namer(h, O_, res.comatch, s_.right.size());
     for (size_t t = 0; t < st_.orbits.size(); ++t) {
       const std::vector<Dart> hname = namer.names(st_.orbits[t].right, logs_[t].traversed);
@@ -165,14 +166,19 @@ class Recorder {
       const PatternEvent& e = te.events[ei];
       if (e.kind == PatternEventKind::Deletion || e.kind == PatternEventKind::Creation) {
         const bool del = e.kind == PatternEventKind::Deletion;
+        // Created and deleted pattern orbits are complete: each instance component is a whole
+        // orbit, logged once, at the dart that names it.
         const auto& nodes = del ? te.left.nodes[e.left[0]] : te.right.nodes[e.right[0]];
-        std::vector<Dart> names;
+        const std::vector<Dart>& table = del ? M_ : *T_;
+        const std::vector<Dart>& name = del ? gname : hname;
         for (uint32_t m : nodes)
-          for (uint32_t b = 0; b < ns_; ++b) names.push_back(del ? gname[l_slot(m, b)] : hname[l_slot(m, b)]);
-        for (Dart n : unique_sorted(std::move(names)))
-          log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, o,
-                                del ? std::vector<Dart>{n} : std::vector<Dart>{},
-                                del ? std::vector<Dart>{} : std::vector<Dart>{n}, EventStatus::Certain});
+          for (uint32_t b = 0; b < ns_; ++b) {
+            const Dart n = name[l_slot(m, b)];
+            if (table[l_slot(m, b)] != n) continue;
+            log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, o,
+                                  del ? std::vector<Dart>{n} : std::vector<Dart>{},
+                                  del ? std::vector<Dart>{} : std::vector<Dart>{n}, EventStatus::Certain});
+          }
         continue;
       }
       const bool sp = is_split(e.kind), mg = is_merge(e.kind);
@@ -263,6 +269,7 @@ class Recorder {
   size_t ns_ = 0;
   int dims_ = 0;
   std::vector<Dart> M_, old_;
+  const std::vector<Dart>* T_ = nullptr;  // the comatch, after the rewrite
   std::vector<OrbitTypeLog> logs_;
   std::vector<std::vector<Dart>> gname_;
 };

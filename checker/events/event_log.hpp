@@ -44,7 +44,7 @@ struct PairCheck {
 
 struct OrbitTypeLog {
   OrbitType orbit;
-  // Creations and deletions (in the order of the pattern events, then by name), merges (by name),
+  // Creations and deletions (in the order of the pattern events and of the instances), merges (by name),
   // then splits, modifications and non-modifications by G-orbit name.
   std::vector<OrbitEvent> events;
   std::vector<PairCheck> checks;
