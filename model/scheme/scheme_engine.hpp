@@ -35,6 +35,7 @@
 // exception; misuse (wrong number of hook darts, dead dart, wrong map kind or dimension, malformed
 // scheme) throws gmr::Error. When not applicable, the map is unchanged.
 #pragma once
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -87,6 +88,11 @@ class SchemeEngine {
 
   // Applies in place. `hook_darts[k]` is the dart for hooks[k].
   SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts) const;
+  // Called once the match is checked (after step 4), before the rewrite: g is still the map before
+  // the application, O the hook orbit graph, the report holds the orbit and the match table.
+  using BeforeRewrite = std::function<void(const GMap& g, const OrbitGraph& O, const SchemeApplication& res)>;
+  // As apply, calling `before_rewrite` (when set) between the match and the rewrite.
+  SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts, const BeforeRewrite& before_rewrite) const;
 
  private:
   // The phases of apply, numbered as in the header comment. check_call throws on misuse; a check

@@ -37,6 +37,7 @@ struct ApplyArgs {
   size_t limit = 20;
   std::string hooks, rule_name;  // rule schemes
   bool all = false;
+  std::string events;
 };
 
 int run_apply(const ApplyArgs& a) {
@@ -44,8 +45,11 @@ int run_apply(const ApplyArgs& a) {
   if (auto refused = gate_rule(in, a.rule, a.force)) return *refused;
   if (in.is_scheme()) {
     if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
-    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift, a.limit});
+    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift, a.limit,
+                                           a.events});
   }
+  if (!a.events.empty())
+    throw Error(ErrorCode::Usage, "--events logs the application of a rule scheme, not of a concrete rule", "--events");
   if (!a.hooks.empty() || a.all)
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
   const Rule& r = *in.concrete;
@@ -148,6 +152,8 @@ void register_apply(CLI::App& app) {
   sub->add_option("--limit", args->limit, "Maximum number of violations of the result listed")
       ->check(non_negative_integer())
       ->capture_default_str();
+  sub->add_option("--events", args->events,
+                  "Rule schemes at --hook: write the event log (gmr.events JSON: every orbit type's events, named by lowest dart, certain/confirmed/refuted) here");
   set_action(sub, [args] { return run_apply(*args); });
 }
 

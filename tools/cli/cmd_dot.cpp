@@ -1,6 +1,7 @@
 // `gmr dot FILE [-o OUT]`: the drawing of a map (model/io_dot.hpp): DOT text on standard output,
 // or DOT/SVG/PNG written atomically to OUT (format by extension or --to). Rule files (gmr.rule
-// concrete or scheme, Jerboa .jme with --rule NAME) are drawn by rule_dot.hpp (--kappa, --check).
+// concrete or scheme, Jerboa .jme with --rule NAME) are drawn by rule_dot.hpp (--kappa, --check,
+// --events).
 #include <iostream>
 #include <memory>
 
@@ -19,10 +20,11 @@ struct DotArgs {
   std::string rule;           // rule files: a rule of a .jme file
   bool kappa = false, check = false;
   size_t max_darts = kMaxRenderedDarts;
+  std::string events;         // rule schemes: the orbit type whose static events are drawn
 };
 
 int run_dot(const DotArgs& a) {
-  if (auto rc = dot_rule_input({a.input, a.output, a.to, a.rule, a.name == "gmap" ? "" : a.name, a.kappa, a.check}))
+  if (auto rc = dot_rule_input({a.input, a.output, a.to, a.rule, a.name == "gmap" ? "" : a.name, a.kappa, a.check, a.events}))
     return *rc;
   const Format out = a.output == "-" && a.to.empty() ? Format::Dot : output_format(a.output, a.to);
   if (out != Format::Dot && out != Format::Svg && out != Format::Png)
@@ -56,6 +58,9 @@ void register_dot(CLI::App& app) {
   sub->add_option("--max-darts", args->max_darts, "Largest map rendered to SVG/PNG (Graphviz layout time grows fast)")
       ->check(non_negative_integer())
       ->capture_default_str();
+  sub->add_option("--events", args->events,
+                  "Rule schemes: highlight the pattern orbits of the static events of this orbit type, e.g. \"<0,1>\" "
+                  "(possible events orange, certain ones red)");
   set_action(sub, [args] { return run_dot(*args); });
 }
 

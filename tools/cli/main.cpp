@@ -27,6 +27,7 @@
   X(dot)                   \
   X(signature)             \
   X(check)                 \
+  X(events)                \
   X(apply)                 \
   X(fold)                  \
   X(infer)                 \

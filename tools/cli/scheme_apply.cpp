@@ -4,8 +4,10 @@
 #include <optional>
 #include <sstream>
 
+#include "checker/events/event_format.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
+#include "model/io/json_writer.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
@@ -62,6 +64,8 @@ void check_hook_arguments(const RuleScheme& s, const SchemeApplyArgs& a) {
                 "--all applies schemes with one hook; \"" + s.name + "\" has " + std::to_string(nhooks) +
                     " (give them with --hook)",
                 "--all");
+  if (a.all && !a.events.empty())
+    throw Error(ErrorCode::Usage, "--events logs one application: give the hook(s) with --hook", "--events");
   if (!a.all && a.hooks.empty() && nhooks > 0)
     throw Error(ErrorCode::Usage,
                 "the scheme has " + std::to_string(nhooks) + " hook(s): give the dart(s) with --hook D[,D...] or use --all",
@@ -89,7 +93,15 @@ void print_not_applicable(const RuleScheme& s, const SchemeApplyArgs& a, NotAppl
 std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> hooks = a.hooks.empty() ? std::vector<Dart>{} : parse_hooks(a.hooks, g);
-  SchemeApplication app = engine.apply(g, hooks);  // wrong count, dead dart: Error (exit 2)
+  SchemeApplication app;
+  if (a.events.empty()) {
+    app = engine.apply(g, hooks);  // wrong count, dead dart: Error (exit 2)
+  } else {
+    const events::StaticEvents st = events::analyse(s);
+    events::LoggedApplication la = events::apply_with_events(engine, st, g, hooks);
+    app = std::move(la.application);
+    if (app) write_output(a.events, io::dump_json(events::event_log_to_json(s, st, la.log)));
+  }
   if (!app) {
     print_not_applicable(s, a, app.reason, app.why, s.name + ": " + app.why);
     return std::nullopt;

@@ -14,8 +14,11 @@ struct SchemeApplyArgs {
   std::string rule, input, from, output, to, hooks;
   bool all = false, json = false, lift = false;
   size_t limit = 20;  // violations of the result listed
+  std::string events;  // event log file (gmr.events, kind log), with --hook only
 };
 
+// With `events`, the application at the hooks is logged (checker/events/event_log.hpp: static
+// events confirmed on the match, every orbit type) and the log written there atomically.
 // Exit 0 when applied and the result is a valid map (written to -o when given), 1 when the scheme
 // does not apply (the reason is printed) or the result is not a valid map; bad input throws.
 int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a);

@@ -404,3 +404,64 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   std::ofstream(bad) << R"({"format":"gmr.mapping","version":1,"pairs":[[0,0],[1,0]]})";
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --map " + q(bad), "pairs[1]", "image of two darts");
 }
+
+// `gmr events`: the static table per orbit type (text and gmr.events JSON), every rule of a .jme
+// file; `gmr apply --events`: the event log of one application, written atomically.
+TEST_F(Cli, EventsPrintsTheStaticTable) {
+  const std::string tri = q(tools_data("rules/face_triangulation.json"));
+  Result r = run("events " + tri);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("implicit split along 2 of L<0,1>(n0) -> R<0,1>(n0), possible"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("modification of L<1,2>(n0) -> R<1,2>(n0), certain"), std::string::npos) << r.out;
+  r = run("events " + tri + " --orbits \"<1>,<0,2>\" --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["format"], "gmr.events");
+  EXPECT_EQ(j["kind"], "static");
+  ASSERT_EQ(j["orbits"].size(), 2u);
+  EXPECT_EQ(j["orbits"][0]["orbit"], "<1>");
+  EXPECT_EQ(j["orbits"][1]["orbit"], "<0,2>");
+  r = run("events " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --orbits \"<0,1>\" --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["kind"], "static-set");
+  expect_bad_input("events " + tri + " --orbits \"<0,3>\"", "<0,3>", "not a dimension");
+  expect_bad_input("events " + tri + " --orbits \"<0;1>\"", "--orbits");
+}
+
+TEST_F(Cli, ApplyWritesTheEventLog) {
+  const std::string tri = q(tools_data("rules/face_triangulation.json"));
+  const std::string house = q(source_dir() / "checker/events/tests/data/house.json");
+  const fs::path log = dir / "out" / "log.json";
+  Result r = run("apply " + tri + " " + house + " --hook 0 --events " + q(log));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(read_text_file(log));
+  EXPECT_EQ(j["format"], "gmr.events");
+  EXPECT_EQ(j["kind"], "log");
+  ASSERT_EQ(j["orbits"].size(), 8u);
+  EXPECT_EQ(j["orbits"][4]["orbit"], "<0,1>");
+  ASSERT_EQ(j["orbits"][4]["events"].size(), 1u);
+  EXPECT_EQ(j["orbits"][4]["events"][0]["event"], "split");
+  EXPECT_EQ(j["orbits"][4]["events"][0]["status"], "confirmed");
+  EXPECT_EQ(j["orbits"][4]["events"][0]["after"].size(), 4u);
+  fs::remove(log);
+  // Not applicable: unsewing at a 2-free dart does not match, and no log is written.
+  r = run("apply " + q(tools_data("rules/unsew2.json")) + " " + house + " --hook 4 --events " + q(log));
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_EQ(outputs(), 0u);
+  expect_bad_input("apply " + tri + " " + house + " --all --events " + q(log), "--events");
+  EXPECT_EQ(outputs(), 0u);
+}
+
+TEST_F(Cli, DotDrawsTheStaticEvents) {
+  const std::string tri = q(tools_data("rules/face_triangulation.json"));
+  Result r = run("dot " + tri + " --events \"<0,1>\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("S2?"), std::string::npos) << r.out;       // possible implicit split
+  EXPECT_NE(r.out.find("#ffd58a"), std::string::npos) << r.out;   // drawn as "to confirm"
+  r = run("dot " + tri + " --events \"<1,2>\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("mod"), std::string::npos) << r.out;       // certain modification
+  EXPECT_NE(r.out.find("#ff9c9c"), std::string::npos) << r.out;
+  expect_bad_input("dot " + tri + " --events \"<0,5>\"", "<0,5>");
+  expect_bad_input("dot " + tri + " --events \"<0,1>\" --check", "--events");
+}

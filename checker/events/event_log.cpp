@@ -1,0 +1,300 @@
+#include "checker/events/event_log.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+#include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+
+namespace gmr::events {
+using scheme::GraphScheme;
+using scheme::OrbitGraph;
+using scheme::RuleScheme;
+using scheme::SchemeApplication;
+
+namespace {
+
+uint32_t find(std::vector<uint32_t>& parent, uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// Names (lowest darts) of the instances of one side's pattern orbits: names[v * s + b] for node v
+// and orbit index b, `table` being the match (L, on G) or the comatch (R, on H).
+class InstanceNamer {
+ public:
+  InstanceNamer(const GMap& g, const OrbitGraph& O, const std::vector<Dart>& table, size_t nodes)
+      : g_(g), O_(O), table_(table), nodes_(nodes), s_(O.size()) {}
+
+  std::vector<Dart> names(const PatternOrbits& p, size_t& traversed) {
+    std::vector<Dart> out(nodes_ * s_, kNoDart);
+    for (uint32_t c = 0; c < p.size(); ++c) {
+      if (p.complete[c]) name_complete(p, c, out);
+      else name_by_traversal(p, c, out, traversed);
+    }
+    return out;
+  }
+
+ private:
+  // A complete pattern orbit: its instance components (the sub-orbits of the hook orbit along its
+  // positions) are whole orbits of the map.
+  void name_complete(const PatternOrbits& p, uint32_t c, std::vector<Dart>& out) const {
+    std::vector<uint32_t> parent(s_);
+    std::iota(parent.begin(), parent.end(), 0u);
+    for (uint32_t k : p.positions[c])
+      for (uint32_t b = 0; b < s_; ++b) parent[find(parent, b)] = find(parent, O_.neighbor(b, k));
+    std::vector<Dart> low(s_, kNoDart);
+    for (uint32_t m : p.nodes[c])
+      for (uint32_t b = 0; b < s_; ++b) {
+        Dart& l = low[find(parent, b)];
+        l = std::min(l, table_[m * s_ + b]);
+      }
+    for (uint32_t m : p.nodes[c])
+      for (uint32_t b = 0; b < s_; ++b) out[m * s_ + b] = low[find(parent, b)];
+  }
+
+  // The slot of a dart of the table, or UINT32_MAX. A hash map when the table is small against
+  // the map, else a dense array (filling it costs O(capacity)).
+  uint32_t slot(Dart x) {
+    if (!indexed_) {
+      indexed_ = true;
+      dense_ = table_.size() * 8 > g_.capacity();
+      if (dense_) {
+        dense_slot_.assign(g_.capacity(), UINT32_MAX);
+        for (uint32_t k = 0; k < table_.size(); ++k) dense_slot_[table_[k]] = k;
+      } else {
+        for (uint32_t k = 0; k < table_.size(); ++k) slot_.emplace(table_[k], k);
+      }
+    }
+    if (dense_) return dense_slot_[x];
+    auto it = slot_.find(x);
+    return it == slot_.end() ? UINT32_MAX : it->second;
+  }
+
+  void name_by_traversal(const PatternOrbits& p, uint32_t c, std::vector<Dart>& out, size_t& traversed) {
+    ScopedMarker seen(g_);
+    std::vector<Dart> stack, visited;
+    for (uint32_t m : p.nodes[c])
+      for (uint32_t b = 0; b < s_; ++b) {
+        if (out[m * s_ + b] != kNoDart) continue;
+        visited.clear();
+        visit_orbit_marked(g_, p.orbit, table_[m * s_ + b], seen.id(), stack,
+                           [&](Dart x) { visited.push_back(x); });
+        const Dart low = *std::min_element(visited.begin(), visited.end());
+        for (Dart x : visited) {
+          seen.unmark(x);
+          const uint32_t k = slot(x);
+          if (k != UINT32_MAX) out[k] = low;
+        }
+        traversed += visited.size();
+      }
+    seen.set_clean();
+  }
+
+  const GMap& g_;
+  const OrbitGraph& O_;
+  const std::vector<Dart>& table_;
+  size_t nodes_, s_;
+  bool indexed_ = false, dense_ = false;
+  std::unordered_map<Dart, uint32_t> slot_;
+  std::vector<uint32_t> dense_slot_;
+};
+
+class Recorder {
+ public:
+  Recorder(const RuleScheme& s, const StaticEvents& st) : s_(s), st_(st) {}
+
+  // Step 1 (G before the rewrite).
+  void before(const GMap& g, const OrbitGraph& O, const SchemeApplication& res) {
+    O_ = O;
+    ns_ = O.size();
+    M_ = res.match;
+    dims_ = g.dimension() + 1;
+    old_.resize(M_.size() * dims_);
+    for (size_t k = 0; k < M_.size(); ++k)
+      for (int i = 0; i < dims_; ++i) old_[k * dims_ + i] = g.alpha(i, M_[k]);
+    InstanceNamer namer(g, O_, M_, s_.left.size());
+    logs_.resize(st_.orbits.size());
+    gname_.resize(st_.orbits.size());
+    for (size_t t = 0; t < st_.orbits.size(); ++t) {
+      logs_[t].orbit = st_.orbits[t].orbit;
+      gname_[t] = namer.names(st_.orbits[t].left, logs_[t].traversed);
+    }
+  }
+
+  // Steps 3 and 4 (H after the rewrite).
+  std::vector<OrbitTypeLog> after(const GMap& h, const SchemeApplication& res) {
+    T_ = &res.comatch;
+    InstanceNamer namer(h, O_, res.comatch, s_.right.size());
+    for (size_t t = 0; t < st_.orbits.size(); ++t) {
+      const std::vector<Dart> hname = namer.names(st_.orbits[t].right, logs_[t].traversed);
+      log_orbit_type(h, st_.orbits[t], gname_[t], hname, logs_[t]);
+    }
+    return std::move(logs_);
+  }
+
+ private:
+  Dart l_slot(uint32_t v, uint32_t b) const { return v * static_cast<uint32_t>(ns_) + b; }
+
+  // Orbit names with a flag (certain), sorted by name, one entry per name (certain if any is).
+  static void settle(std::vector<std::pair<Dart, bool>>& v) {
+    std::sort(v.begin(), v.end());
+    size_t w = 0;
+    for (size_t k = 0; k < v.size(); ++k) {
+      if (w > 0 && v[w - 1].first == v[k].first) v[w - 1].second = v[w - 1].second || v[k].second;
+      else v[w++] = v[k];
+    }
+    v.resize(w);
+  }
+  static const std::pair<Dart, bool>* lookup(const std::vector<std::pair<Dart, bool>>& v, Dart name) {
+    auto it = std::lower_bound(v.begin(), v.end(), std::make_pair(name, false));
+    return it != v.end() && it->first == name ? &*it : nullptr;
+  }
+  static std::vector<Dart> unique_sorted(std::vector<Dart> v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
+
+  void log_orbit_type(const GMap& h, const OrbitTypeEvents& te, const std::vector<Dart>& gname,
+                      const std::vector<Dart>& hname, OrbitTypeLog& log) const {
+    const OrbitType& o = te.orbit;
+    std::vector<std::pair<Dart, bool>> split, merge;  // G-orbits split, H-orbits merged (certain)
+    std::vector<bool> flagged(te.left.size(), false);  // L pattern orbits with a split or merge flag
+    for (uint32_t ei = 0; ei < te.events.size(); ++ei) {
+      const PatternEvent& e = te.events[ei];
+      if (e.kind == PatternEventKind::Deletion || e.kind == PatternEventKind::Creation) {
+        const bool del = e.kind == PatternEventKind::Deletion;
+        // Created and deleted pattern orbits are complete: each instance component is a whole
+        // orbit, logged once, at the dart that names it.
+        const auto& nodes = del ? te.left.nodes[e.left[0]] : te.right.nodes[e.right[0]];
+        const std::vector<Dart>& table = del ? M_ : *T_;
+        const std::vector<Dart>& name = del ? gname : hname;
+        for (uint32_t m : nodes)
+          for (uint32_t b = 0; b < ns_; ++b) {
+            const Dart n = name[l_slot(m, b)];
+            if (table[l_slot(m, b)] != n) continue;
+            log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, o,
+                                  del ? std::vector<Dart>{n} : std::vector<Dart>{},
+                                  del ? std::vector<Dart>{} : std::vector<Dart>{n}, EventStatus::Certain});
+          }
+        continue;
+      }
+      const bool sp = is_split(e.kind), mg = is_merge(e.kind);
+      if (!sp && !mg) continue;
+      for (uint32_t c : e.left) flagged[c] = true;
+      const bool certain = e.certainty == Certainty::Certain;
+      for (const InstancePair& p : e.pairs) {
+        const uint32_t ra = *s_.right_of(p.a), rb = *s_.right_of(p.b);
+        for (uint32_t b = 0; b < ns_; ++b) {
+          const uint32_t b2 = p.position < 0 ? b : O_.neighbor(b, static_cast<size_t>(p.position));
+          if (p.a == p.b && b2 < b) continue;  // the pair (b2, b), already compared
+          // Splits on H after the rewrite, merges on G before it.
+          const Dart na = sp ? hname[l_slot(ra, b)] : gname[l_slot(p.a, b)];
+          const Dart nb = sp ? hname[l_slot(rb, b2)] : gname[l_slot(p.b, b2)];
+          const bool different = na != nb;
+          if (!certain)
+            log.checks.push_back({ei, sp ? 'H' : 'G', M_[l_slot(p.a, b)], M_[l_slot(p.b, b2)], different});
+          if (!different) continue;
+          (sp ? split : merge).emplace_back(sp ? gname[l_slot(p.a, b)] : hname[l_slot(ra, b)], certain);
+        }
+      }
+    }
+    settle(split);
+    settle(merge);
+    // The fate of every matched dart: its G-orbit, its H-orbit (kNoDart when deleted), whether
+    // one of its <o>-links changed, whether its pattern orbit carries a flag.
+    struct Fate {
+      Dart g, h;
+      bool changed, flagged, unchanged_statically;
+    };
+    std::vector<Fate> fates;
+    fates.reserve(s_.left.size() * ns_);
+    std::vector<std::pair<Dart, Dart>> into;  // (H-orbit, G-orbit) of the preserved matched darts
+    for (uint32_t v = 0; v < s_.left.size(); ++v) {
+      const auto r = s_.right_of(v);
+      const bool fl = flagged[te.left.class_of[v]];
+      const bool nm = te.residual[te.left.class_of[v]] == PatternEventKind::NonModification;
+      for (uint32_t b = 0; b < ns_; ++b) {
+        const Dart gn = gname[l_slot(v, b)];
+        if (!r) {
+          fates.push_back({gn, kNoDart, true, fl, false});
+          continue;
+        }
+        const Dart hn = hname[l_slot(*r, b)];
+        const Dart d = M_[l_slot(v, b)];
+        bool ch = false;
+        for (int i : o.dims()) ch = ch || old_[l_slot(v, b) * dims_ + i] != h.alpha(i, d);
+        fates.push_back({gn, hn, ch, fl, nm});
+        into.emplace_back(hn, gn);
+      }
+    }
+    std::sort(into.begin(), into.end());
+    into.erase(std::unique(into.begin(), into.end()), into.end());
+    for (auto [hn, certain] : merge) {
+      OrbitEvent ev{OrbitEventKind::Merge, o, {}, {hn}, certain ? EventStatus::Certain : EventStatus::Confirmed};
+      for (auto it = std::lower_bound(into.begin(), into.end(), std::make_pair(hn, Dart(0)));
+           it != into.end() && it->first == hn; ++it)
+        ev.before.push_back(it->second);
+      log.events.push_back(std::move(ev));
+    }
+    std::sort(fates.begin(), fates.end(), [](const Fate& a, const Fate& b) { return a.g < b.g; });
+    std::vector<Dart> hs;
+    for (size_t k = 0; k < fates.size();) {
+      const Dart gn = fates[k].g;
+      bool changed = false, fl = false, nm = true;
+      hs.clear();
+      for (; k < fates.size() && fates[k].g == gn; ++k) {
+        changed = changed || fates[k].changed;
+        fl = fl || fates[k].flagged;
+        nm = nm && fates[k].unchanged_statically;
+        if (fates[k].h != kNoDart) hs.push_back(fates[k].h);
+      }
+      if (hs.empty()) continue;  // deleted (logged above)
+      hs = unique_sorted(std::move(hs));
+      if (const auto* sp = lookup(split, gn)) {
+        log.events.push_back({OrbitEventKind::Split, o, {gn}, hs, sp->second ? EventStatus::Certain : EventStatus::Confirmed});
+        continue;
+      }
+      if (lookup(merge, hs.front())) continue;  // part of a merge
+      log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, o, {gn},
+                            {hs.front()}, fl || changed == nm ? EventStatus::Refuted : EventStatus::Certain});
+    }
+  }
+
+  const RuleScheme& s_;
+  const StaticEvents& st_;
+  OrbitGraph O_;
+  size_t ns_ = 0;
+  int dims_ = 0;
+  std::vector<Dart> M_, old_;
+  const std::vector<Dart>* T_ = nullptr;  // the comatch, after the rewrite
+  std::vector<OrbitTypeLog> logs_;
+  std::vector<std::vector<Dart>> gname_;
+};
+
+}  // namespace
+
+LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
+                                    GMap& g, const std::vector<Dart>& hooks) {
+  const RuleScheme& s = engine.scheme();
+  if (analysis.rule != s.name || analysis.dimension != s.dimension)
+    throw Error(ErrorCode::Usage, "the static events are those of rule \"" + analysis.rule + "\"",
+                "scheme " + s.name);
+  for (const auto& t : analysis.orbits)
+    if (t.left.class_of.size() != s.left.size() || t.right.class_of.size() != s.right.size())
+      throw Error(ErrorCode::Usage, "the static events do not match the scheme's nodes", "scheme " + s.name);
+  LoggedApplication out;
+  out.log.rule = s.name;
+  out.log.hooks = hooks;
+  Recorder rec(s, analysis);
+  out.application = engine.apply(
+      g, hooks, [&](const GMap& before, const OrbitGraph& O, const SchemeApplication& res) {
+        rec.before(before, O, res);
+      });
+  if (out.application) out.log.orbits = rec.after(g, out.application);
+  return out;
+}
+
+}  // namespace gmr::events

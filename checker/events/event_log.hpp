@@ -1,0 +1,71 @@
+// The event log of one rule application (Gaide et al. 2023, §4): the static events of the scheme
+// (static_events.hpp) instantiated on the match, the possible splits and merges confirmed on their
+// instance pairs only, every orbit named by its lowest dart (§5).
+//
+// Procedure, per analysed orbit type <o>:
+//  1. before the rewrite (G intact): every instance of an L pattern orbit is named. A complete
+//     pattern orbit's instance components are whole G-orbits, named by their lowest dart without
+//     leaving the match; an incomplete one is named by traversing its G-orbit (once per orbit).
+//     The pairs of possible merges are compared there: merges are confirmed on G, before the
+//     darts change (the paper says "on G" for splits too, Props. 3.2.1/3.3.1: a split can only be
+//     seen on H).
+//  2. the engine rewrites G into H (model/scheme/scheme_engine.hpp).
+//  3. after it: the instances of R pattern orbits are named the same way on H, and the pairs of
+//     possible splits are compared there.
+//  4. the log: creations and deletions of the created / deleted pattern orbits; a split for every
+//     G-orbit where a flagged pair lies in two H-orbits, listing the H-orbits of all its preserved
+//     matched darts; a merge for every H-orbit where a flagged pair comes from two G-orbits; every
+//     other G-orbit holding matched darts is not modified when none of its matched darts is deleted
+//     and none of their <o>-links changed, else modified (§3.4.2–3.4.3). The static verdict of
+//     Def. 3.4.2 is not used for this last choice: on a hook orbit where position k is an i-loop,
+//     a label change at k can rewrite an i-loop into the same i-loop, and the orbit is unchanged
+//     although the pattern orbit is modified; comparing the links of the matched darts stays
+//     inside the match.
+// Orbits holding no matched dart are not logged: the rule leaves them unchanged (Prop. 3.4.2).
+// Cost: the match and comatch tables times the number of orbit types, plus one traversal per
+// G- or H-orbit of an incomplete pattern orbit (the whole component for <0,..,n>).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "checker/events/orbit_event.hpp"
+#include "checker/events/static_events.hpp"
+#include "model/scheme/scheme_engine.hpp"
+
+namespace gmr::events {
+
+// One comparison of an instance pair of a possible split (on H) or merge (on G).
+struct PairCheck {
+  uint32_t event = 0;  // index in OrbitTypeEvents::events
+  char map = 'G';      // 'G' before the rewrite (merges), 'H' after it (splits)
+  Dart a = kNoDart, b = kNoDart;
+  bool different = false;  // the two darts lie in different orbits: the event holds there
+};
+
+struct OrbitTypeLog {
+  OrbitType orbit;
+  // Creations and deletions (in the order of the pattern events and of the instances), merges (by name),
+  // then splits, modifications and non-modifications by G-orbit name.
+  std::vector<OrbitEvent> events;
+  std::vector<PairCheck> checks;
+  size_t traversed = 0;  // darts visited by the traversals of incomplete instances
+};
+
+struct EventLog {
+  std::string rule;
+  std::vector<Dart> hooks;
+  std::vector<OrbitTypeLog> orbits;  // in the order of StaticEvents::orbits
+};
+
+struct LoggedApplication {
+  scheme::SchemeApplication application;
+  EventLog log;  // empty orbits when the scheme was not applied
+};
+
+// Applies `engine` at `hooks` in place and logs the events of every orbit type of `analysis`
+// (which must be the static events of engine.scheme()). Throws what SchemeEngine::apply throws, and
+// Error(Usage) when `analysis` belongs to another rule.
+LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
+                                    GMap& g, const std::vector<Dart>& hooks);
+
+}  // namespace gmr::events
