@@ -30,9 +30,11 @@ struct VerifyArgs {
 };
 
 struct Run {
-  const Rule* rule = nullptr;  // the concrete rule the counterexample belongs to
   VerifyResult result;
   std::optional<SchemeVerifyResult> scheme;
+  std::optional<Rule> concrete;
+  // The concrete rule the counterexample belongs to (the instance, for a scheme).
+  const Rule& rule() const { return scheme && scheme->instance ? *scheme->instance : *concrete; }
 };
 
 std::string model_name(const Rule& r) {
@@ -64,7 +66,6 @@ int run_verify(const VerifyArgs& a) {
       run.scheme = verify_scheme(*in.scheme, a.bound, e, a.orbit_bound);
       if (run.scheme->result) {
         run.result = *run.scheme->result;
-        run.rule = &*run.scheme->instance;
       } else {
         run.result.engine = e;
         run.result.bound = a.bound;
@@ -73,7 +74,7 @@ int run_verify(const VerifyArgs& a) {
       run.result.seconds = run.scheme->seconds;
     } else {
       run.result = verify(*in.concrete, a.bound, e);
-      run.rule = &*in.concrete;
+      run.concrete = *in.concrete;
     }
     runs.push_back(std::move(run));
   }
@@ -88,8 +89,8 @@ int run_verify(const VerifyArgs& a) {
     if (r.result.counterexample && !cex) cex = &r;
   if (cex) {
     const auto& c = *cex->result.counterexample;
-    if (!a.output.empty()) write_output(a.output, to_json(*cex->rule, a.bound, c).dump(2) + "\n");
-    if (!a.dot.empty()) write_output(a.dot, to_dot(*cex->rule, c));
+    if (!a.output.empty()) write_output(a.output, to_json(cex->rule(), a.bound, c).dump(2) + "\n");
+    if (!a.dot.empty()) write_output(a.dot, to_dot(cex->rule(), c));
   }
   if (a.json) {
     nlohmann::ordered_json j;
@@ -111,7 +112,7 @@ int run_verify(const VerifyArgs& a) {
       j["engines"].push_back(e);
     }
     if (cex) {
-      auto cj = to_json(*cex->rule, a.bound, *cex->result.counterexample);
+      auto cj = to_json(cex->rule(), a.bound, *cex->result.counterexample);
       if (cex->scheme) cj["instance_of"] = name;
       j["counterexample"] = cj;
     }
@@ -124,7 +125,7 @@ int run_verify(const VerifyArgs& a) {
         std::cout << "no " << model << " of at most " << a.bound << " darts on which an application breaks a constraint"
                   << (r.result.applicable ? "" : " (the rule never applies within the bound)");
       else
-        std::cout << describe(*r.rule, *r.result.counterexample);
+        std::cout << describe(r.rule(), *r.result.counterexample);
       if (r.scheme)
         std::cout << " [" << r.scheme->orbits << " hook orbits of at most " << r.scheme->orbit_bound << " darts]";
       std::printf(" (engine %s, %.3f s)\n", to_string(r.result.engine), r.result.seconds);
