@@ -44,6 +44,7 @@ nlohmann::ordered_json to_json(const Rule& r, unsigned bound, const Counterexamp
   j["engine"] = to_string(c.engine);
   j["bound"] = bound;
   j["G"] = io::gmap_to_json(c.G);
+  j["gluing_fails"] = c.gluing_fails;  // the match fails the gluing condition (consistency semantics; no H)
   nlohmann::ordered_json m = nlohmann::ordered_json::object();
   for (Node v = 0; v < r.left().num_nodes(); ++v) m[r.left().name(v)] = c.match.node[v];
   j["match"] = m;

@@ -167,10 +167,16 @@ VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& op
 
 VerifyResult verify_enum(const Rule& r, unsigned bound, Semantics sem) {
   const auto t0 = std::chrono::steady_clock::now();
+  VerifyResult res = verify_enum(r, graph::map_family(r.dimension(), r.kind(), bound), sem);
+  res.seconds = since(t0);
+  return res;
+}
+
+VerifyResult verify_enum(const Rule& r, const graph::MapFamily& fam, Semantics sem) {
+  const auto t0 = std::chrono::steady_clock::now();
   VerifyResult res;
   res.engine = Engine::Enum;
-  res.bound = bound;
-  const graph::MapFamily fam = graph::map_family(r.dimension(), r.kind(), bound);
+  res.bound = static_cast<unsigned>(fam.max_darts);
   if (sem == Semantics::Consistency) {
     // Every match, in the family's order (smallest maps first); a gluing failure is a break.
     for (size_t k = 0; k < fam.graphs.size() && res.preserves; ++k) {

@@ -23,6 +23,7 @@
 #include "model/core/gmap.hpp"
 #include "model/graph/constraints.hpp"
 #include "model/graph/dgraph.hpp"
+#include "model/graph/map_family.hpp"
 #include "model/rewrite/match.hpp"
 #include "model/rewrite/rule.hpp"
 
@@ -89,6 +90,8 @@ VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& op
 // applicable_check = false skips the applicability query (verdict only).
 VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& opt, bool applicable_check);
 VerifyResult verify_enum(const Rule& r, unsigned bound, Semantics sem = Semantics::Preservation);
+// On a family computed once (graph::map_family of the rule's model).
+VerifyResult verify_enum(const Rule& r, const graph::MapFamily& family, Semantics sem);
 inline VerifyResult verify(const Rule& r, unsigned bound, Engine e, const EncodingOptions& opt = {}) {
   return e == Engine::Smt ? verify_smt(r, bound, opt) : verify_enum(r, bound, opt.semantics);
 }

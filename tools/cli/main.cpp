@@ -26,7 +26,8 @@
   X(fold)                  \
   X(infer)                 \
   X(demo)                  \
-  X(verify)
+  X(verify)                \
+  X(validate_condition)
 // ========================================================================================
 
 namespace gmr::cli {
