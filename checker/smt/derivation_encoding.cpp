@@ -73,23 +73,30 @@ z3::expr DerivationEncoding::dangling_condition() const {
 
 z3::expr DerivationEncoding::alive(unsigned x) const {
   if (x >= map_.capacity()) return map_.ctx().bool_val(true);
+  return alive_term(map_.dart(x));
+}
+
+z3::expr DerivationEncoding::alive_term(const z3::expr& X) const {
   z3::expr_vector deleted(map_.ctx());
-  for (Node v : rule_.deleted_nodes()) deleted.push_back(m_[v] == map_.dart(x));
-  return map_.active(x) && !z3::mk_or(deleted);
+  for (Node v : rule_.deleted_nodes()) deleted.push_back(m_[v] == X);
+  return map_.active_term(X) && !z3::mk_or(deleted);
 }
 
 std::vector<DerivationEncoding::Candidate> DerivationEncoding::out_arcs(unsigned x, int i) const {
+  return out_arcs(map_.dart(x), x < map_.capacity(), i);
+}
+
+std::vector<DerivationEncoding::Candidate> DerivationEncoding::out_arcs(const z3::expr& X, bool g_dart, int i) const {
   z3::context& c = map_.ctx();
-  const z3::expr X = map_.dart(x);
   std::vector<Candidate> out;
-  if (x < map_.capacity()) {
+  if (g_dart) {
     // G's i-arc leaving x survives unless a deleted L-arc is matched onto it.
     z3::expr_vector removed(c);
     const DGraph& L = rule_.left();
     for (ArcId a = 0; a < L.num_arc_slots(); ++a)
       if (L.arc_alive(a) && L.arc(a).label == i && rule_.left_arc_status(a) == ElemStatus::Deleted)
         removed.push_back(m_[L.arc(a).src] == X);
-    out.push_back({alive(x) && !z3::mk_or(removed), map_.alpha(i, X)});
+    out.push_back({alive_term(X) && !z3::mk_or(removed), map_.alpha(i, X)});
   }
   const DGraph& R = rule_.right();
   for (ArcId a = 0; a < R.num_arc_slots(); ++a)
@@ -99,17 +106,20 @@ std::vector<DerivationEncoding::Candidate> DerivationEncoding::out_arcs(unsigned
 }
 
 std::vector<DerivationEncoding::Candidate> DerivationEncoding::in_arcs(unsigned x, int i) const {
+  return in_arcs(map_.dart(x), x < map_.capacity(), i);
+}
+
+std::vector<DerivationEncoding::Candidate> DerivationEncoding::in_arcs(const z3::expr& X, bool g_dart, int i) const {
   z3::context& c = map_.ctx();
-  const z3::expr X = map_.dart(x);
   std::vector<Candidate> in;
-  if (x < map_.capacity()) {
+  if (g_dart) {
     // G's i-arc entering x (from alpha_i^-1(x)); a deleted L-arc u -i-> w is matched onto it iff m(w) = x.
     z3::expr_vector removed(c);
     const DGraph& L = rule_.left();
     for (ArcId a = 0; a < L.num_arc_slots(); ++a)
       if (L.arc_alive(a) && L.arc(a).label == i && rule_.left_arc_status(a) == ElemStatus::Deleted)
         removed.push_back(m_[L.arc(a).tgt] == X);
-    in.push_back({alive(x) && !z3::mk_or(removed), map_.alpha_inverse(i, X)});
+    in.push_back({alive_term(X) && !z3::mk_or(removed), map_.alpha_inverse(i, X)});
   }
   const DGraph& R = rule_.right();
   for (ArcId a = 0; a < R.num_arc_slots(); ++a)
@@ -155,6 +165,26 @@ z3::expr DerivationEncoding::violates(ConstraintKind kind, unsigned x, int i, in
       return alive(x) && h(j, h(i, h(j, h(i, X)))) != X;
   }
   return map_.ctx().bool_val(false);
+}
+
+z3::expr DerivationEncoding::breaks_model_local() const {
+  // The nodes of H a rewrite touches: images of the preserved nodes and the added nodes.
+  std::vector<std::pair<z3::expr, bool>> image;
+  for (Node v : rule_.preserved_nodes()) image.emplace_back(m_[v], true);
+  for (unsigned a = 0; a < added_.size(); ++a) image.emplace_back(map_.dart(map_.capacity() + a), false);
+  z3::expr_vector any(map_.ctx());
+  const MapSpec& s = map_.spec();
+  for (const auto& [X, g_dart] : image) {
+    for (int i : s.labels()) {
+      any.push_back(!(exactly_one(out_arcs(X, g_dart, i)) && exactly_one(in_arcs(X, g_dart, i))));
+      if (s.is_involutive_dim(i)) any.push_back(h(i, h(i, X)) != X);
+    }
+    for (auto [i, j] : s.cycle_pairs()) {
+      any.push_back(h(j, h(i, h(j, h(i, X)))) != X);
+      any.push_back(h(i, h(j, h(i, h(j, X)))) != X);
+    }
+  }
+  return z3::mk_or(any);
 }
 
 z3::expr DerivationEncoding::breaks_model() const {

@@ -55,6 +55,12 @@ class DerivationEncoding {
   z3::expr_vector h_definitions() const;
   // Some node of H violates some constraint of the model.
   z3::expr breaks_model() const;
+  // The same, with the violations looked for only at the nodes the rewrite touches: the images of
+  // the preserved nodes and the added nodes (docs/verify.md, "Local violations"): I_H can only
+  // change there; if I_H holds everywhere, h_i is a permutation, an O_H violation at x shows at
+  // h_i(x) too, and a C_H(i,j) violation shows on every node of its alternating path (as an ijij
+  // or a jiji violation), one of which is touched, as an untouched path is a path of G.
+  z3::expr breaks_model_local() const;
 
  private:
   struct Candidate {
@@ -63,6 +69,9 @@ class DerivationEncoding {
   };
   std::vector<Candidate> out_arcs(unsigned x, int i) const;
   std::vector<Candidate> in_arcs(unsigned x, int i) const;
+  std::vector<Candidate> out_arcs(const z3::expr& X, bool g_dart, int i) const;
+  std::vector<Candidate> in_arcs(const z3::expr& X, bool g_dart, int i) const;
+  z3::expr alive_term(const z3::expr& X) const;
   z3::expr exactly_one(const std::vector<Candidate>& cs) const;
   z3::expr h(int i, const z3::expr& x) const { return h_[i](x); }
 

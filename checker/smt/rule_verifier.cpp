@@ -74,8 +74,8 @@ VerifyResult verify_on(z3::context& ctx, const MapEncoding& map, z3::solver* sha
     z3::expr_vector v = der.match_constraints();
     if (with_violation) {
       for (const auto& e : der.h_definitions()) v.push_back(e);
-      v.push_back(consistency ? (!der.dangling_condition() || der.breaks_model())
-                              : (der.dangling_condition() && der.breaks_model()));
+      const z3::expr breaks = opt.local_violations ? der.breaks_model_local() : der.breaks_model();
+      v.push_back(consistency ? (!der.dangling_condition() || breaks) : (der.dangling_condition() && breaks));
     } else if (!consistency) {
       v.push_back(der.dangling_condition());
     }

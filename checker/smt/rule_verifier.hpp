@@ -48,6 +48,7 @@ struct EncodingOptions {
   bool fixed_match = true;   // symmetry breaking: the k-th node of L on dart k
   bool incremental = true;   // one solver, push/pop per bound; false: a fresh solver per bound
   Semantics semantics = Semantics::Preservation;
+  bool local_violations = true;  // look for violations at the touched nodes only (derivation_encoding.hpp)
 };
 
 struct Counterexample {

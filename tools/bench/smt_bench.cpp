@@ -1,0 +1,61 @@
+// Time to a verdict of the two bounded engines (checker/smt/rule_verifier.hpp) as the bound grows,
+// in one run: the SMT engine (Z3) and the exhaustive enumerator on the same rules, maps of 4..10
+// darts, rules of 1..4 nodes. The rules are identity rules on a path of m nodes of a 2-G-map
+// (a0 -0- a1 -1- a2 -0- a3, every node preserved): they preserve the model, so each engine must
+// cover every map of the bound (no early counterexample). The enumerator is run only while its
+// family of maps is small enough (GMR_BENCH_ENUM_MAX darts, default 6: map_family is a brute force
+// over the involutions of k darts). tools/bench/run_smt.sh prints the table.
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+
+#include "checker/smt/rule_verifier.hpp"
+
+using namespace gmr;
+using namespace gmr::smt;
+
+namespace {
+Rule path_rule(int m) {
+  graph::DGraph L, R;
+  for (int k = 0; k < m; ++k) {
+    L.add_node("a" + std::to_string(k));
+    R.add_node("a" + std::to_string(k));
+  }
+  for (int k = 0; k + 1 < m; ++k) {
+    L.add_link(k, k + 1, k % 2);
+    R.add_link(k, k + 1, k % 2);
+  }
+  return Rule(std::move(L), std::move(R), 2, MapKind::GMap, "path" + std::to_string(m));
+}
+
+unsigned enum_max() {
+  const char* s = std::getenv("GMR_BENCH_ENUM_MAX");
+  return s ? static_cast<unsigned>(std::atoi(s)) : 6;
+}
+
+void BM_Smt(benchmark::State& st) {
+  const Rule r = path_rule(static_cast<int>(st.range(1)));
+  const unsigned bound = static_cast<unsigned>(st.range(0));
+  bool preserves = true;
+  for (auto _ : st) preserves = verify_smt(r, bound).preserves;
+  st.counters["preserves"] = preserves;
+}
+
+void BM_Enum(benchmark::State& st) {
+  const unsigned bound = static_cast<unsigned>(st.range(0));
+  if (bound > enum_max()) {
+    st.SkipWithError("enumerator bound above GMR_BENCH_ENUM_MAX");
+    for (auto _ : st) {
+    }
+    return;
+  }
+  const Rule r = path_rule(static_cast<int>(st.range(1)));
+  bool preserves = true;
+  for (auto _ : st) preserves = verify_enum(r, bound).preserves;
+  st.counters["preserves"] = preserves;
+}
+}  // namespace
+
+BENCHMARK(BM_Smt)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Enum)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK_MAIN();
