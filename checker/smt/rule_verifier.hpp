@@ -44,7 +44,7 @@ const char* to_string(Engine e);
 enum class Semantics { Preservation, Consistency };
 
 struct EncodingOptions {
-  DartSort sort = DartSort::Int;
+  DartSort sort = DartSort::BitVec;  // measured: docs/verify.md
   bool fixed_match = true;   // symmetry breaking: the k-th node of L on dart k
   bool incremental = true;   // one solver, push/pop per bound; false: a fresh solver per bound
   Semantics semantics = Semantics::Preservation;
