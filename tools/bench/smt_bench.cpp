@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 
+#include "checker/smt/rule_space.hpp"
 #include "checker/smt/rule_verifier.hpp"
 
 using namespace gmr;
@@ -69,8 +70,25 @@ void BM_SmtVariant(benchmark::State& st) {
   }
   for (auto _ : st) benchmark::DoNotOptimize(verify_smt(r, static_cast<unsigned>(st.range(0)), o).preserves);
 }
+// The 2931 rules of the 1-G-map family (2 nodes, labels 0 and 1) at 4 darts, consistency
+// semantics: arg 0 one SmtSession for all, arg 1 a fresh verification (context, solver) per rule.
+void BM_FamilySession(benchmark::State& st) {
+  EncodingOptions o;
+  o.semantics = Semantics::Consistency;
+  size_t breaks = 0;
+  for (auto _ : st) {
+    breaks = 0;
+    SmtSession session({1, MapKind::GMap}, 4, 2, o);
+    for_each_rule(1, MapKind::GMap, 2, {0, 1}, [&](size_t, const Rule& r) {
+      breaks += !(st.range(0) == 0 ? session.verify(r) : verify_smt(r, 4, o)).preserves;
+      return true;
+    });
+  }
+  st.counters["breaks"] = static_cast<double>(breaks);
+}
 }  // namespace
 
+BENCHMARK(BM_FamilySession)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SmtVariant)->ArgsProduct({{6, 7, 8}, {0, 1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Smt)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Enum)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
