@@ -1,7 +1,10 @@
 #include "checker/smt/condition_validation.hpp"
 
 #include <chrono>
+#include <cstdio>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 #include "checker/smt/counterexample.hpp"
 #include "checker/smt/rule_space.hpp"
@@ -124,6 +127,66 @@ nlohmann::ordered_json to_json(const ValidationReport& r) {
   j["seconds"] = r.seconds;
   j["condition_seconds"] = r.condition_seconds;
   return j;
+}
+
+namespace {
+// (nodes, darts, index) of a witness in a report, for the "smallest" order.
+std::tuple<size_t, size_t, size_t> witness_key(const nlohmann::json& w) {
+  const Rule r = io::rule_from_json(w.at("rule"));
+  const size_t darts = w.contains("counterexample") ? w["counterexample"]["G"]["darts"].get<size_t>() : 0;
+  return {r.left().num_nodes() + r.added_nodes().size(), darts, w.at("index").get<size_t>()};
+}
+}  // namespace
+
+nlohmann::ordered_json merge_reports(const std::vector<nlohmann::json>& shards) {
+  if (shards.empty()) throw Error(ErrorCode::Usage, "no report to merge", "--merge");
+  const char* same[] = {"format", "condition", "engine", "model", "n", "labels", "max_nodes", "bound"};
+  nlohmann::ordered_json out;
+  std::set<unsigned> seen;
+  unsigned m = 0;
+  for (size_t k = 0; k < shards.size(); ++k) {
+    const auto& j = shards[k];
+    const std::string where = "report " + std::to_string(k + 1);
+    if (!j.is_object() || j.value("format", "") != kValidationFormat)
+      throw Error(ErrorCode::Usage, std::string("not a ") + kValidationFormat + " document", where);
+    for (const char* key : same)
+      if (j.at(key) != shards[0].at(key)) throw Error(ErrorCode::Usage, std::string("differs in \"") + key + "\"", where);
+    const std::string shard = j.at("shard").get<std::string>();
+    unsigned a = 0, b = 0;
+    if (std::sscanf(shard.c_str(), "%u/%u", &a, &b) != 2 || (m && b != m) || !seen.insert(a).second)
+      throw Error(ErrorCode::Usage, "shard " + shard + " repeated or of another sweep", where);
+    m = b;
+  }
+  for (const char* key : same) out[key] = shards[0].at(key);
+  out["version"] = 1;
+  std::string list;
+  for (unsigned a : seen) list += (list.empty() ? "" : ",") + std::to_string(a);
+  out["shard"] = list + "/" + std::to_string(m);
+  for (const char* key : {"rules", "checked", "holds", "fails", "vacuous", "unsound", "incomplete"}) {
+    size_t sum = 0;
+    for (const auto& j : shards) sum += j.at(key).get<size_t>();
+    out[key] = sum;
+  }
+  int covered = INT32_MAX;
+  bool hit = false;
+  double seconds = 0;
+  for (const auto& j : shards) {
+    covered = std::min(covered, j.at("nodes_covered").get<int>());
+    hit = hit || j.at("time_limit_hit").get<bool>();
+    seconds += j.at("seconds").get<double>();
+  }
+  out["nodes_covered"] = covered;
+  out["time_limit_hit"] = hit;
+  out["sound"] = out["unsound"] == 0;
+  out["complete"] = out["incomplete"] == 0;
+  for (const char* key : {"smallest_unsound", "smallest_incomplete"}) {
+    const nlohmann::json* best = nullptr;
+    for (const auto& j : shards)
+      if (j.contains(key) && (!best || witness_key(j[key]) < witness_key(*best))) best = &j[key];
+    if (best) out[key] = *best;
+  }
+  out["seconds"] = seconds;  // summed over the shards
+  return out;
 }
 
 namespace {

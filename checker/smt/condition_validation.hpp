@@ -68,4 +68,10 @@ inline constexpr const char* kValidationFormat = "gmr.condition-validation";
 nlohmann::ordered_json to_json(const ValidationReport& r);
 std::string to_text(const ValidationReport& r);
 
+// Merges the JSON reports of the shards of one sweep (same condition, engine, model, labels,
+// bounds and shard count M; distinct K): counts added, `nodes_covered` the least, the smallest
+// witnesses the least of the shards' (nodes, then darts, then family index); "shard" lists the
+// shards merged. Error(Usage), located by file index, when the reports do not belong together.
+nlohmann::ordered_json merge_reports(const std::vector<nlohmann::json>& shards);
+
 }  // namespace gmr::smt

@@ -1,6 +1,6 @@
 // `gmr validate-condition (--condition NAME | --plugin LIB.so) [--model gmap|omap] [-n N]
 //  [--labels 0,1] [--max-nodes m] [--bound k] [--engine smt|enum] [--shard K/M] [--time-limit s]
-//  [--json] [-o report.json]`: is the condition sound and complete against the DPO semantics on
+//  [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
 // every rule of the bounded family and every map of at most k darts
 // (checker/smt/condition_validation.hpp; docs/verify.md)? Built-in conditions run in-process,
 // plug-ins in a forked child (checker/smt/condition_plugin.hpp). Progress on standard error when
@@ -17,6 +17,7 @@
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
 #include "model/core/error.hpp"
+#include "model/io/read_file.hpp"
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {
@@ -38,6 +39,7 @@ struct ValidateConditionArgs {
   double time_limit = 0;
   bool json = false;
   std::string output;
+  std::vector<std::string> merge;
 };
 
 std::vector<int> parse_labels(const std::string& text) {
@@ -60,6 +62,20 @@ int run_validate_condition(const ValidateConditionArgs& a) {
   if (a.list) {
     for (const auto& c : builtin_conditions()) std::printf("%-32s %s\n", c.name.c_str(), c.description.c_str());
     return kExitOk;
+  }
+  if (!a.merge.empty()) {
+    std::vector<nlohmann::json> docs;
+    for (const auto& f : a.merge) {
+      try {
+        docs.push_back(nlohmann::json::parse(io::read_text_file(f)));
+      } catch (const nlohmann::json::exception& e) {
+        throw Error(ErrorCode::Parse, e.what(), f);
+      }
+    }
+    const auto j = merge_reports(docs);
+    if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
+    print_json(j);
+    return j["sound"].get<bool>() && j["complete"].get<bool>() ? kExitOk : kExitNegative;
   }
   if (a.condition.empty() == a.plugin.empty())
     throw Error(ErrorCode::Usage, "give exactly one of --condition NAME and --plugin LIB.so (--list: the names)",
@@ -136,6 +152,7 @@ void register_validate_condition(CLI::App& app) {
   sub->add_option("--time-limit", args->time_limit, "Stop after this many seconds, reporting the part covered");
   sub->add_flag("--json", args->json, "Print JSON (format gmr.condition-validation)");
   sub->add_option("-o,--output", args->output, "Also write the JSON report to this file");
+  sub->add_option("--merge", args->merge, "Merge the JSON reports of the shards of one sweep (prints JSON)");
   set_action(sub, [args] { return run_validate_condition(*args); });
 }
 

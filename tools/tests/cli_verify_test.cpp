@@ -106,3 +106,17 @@ TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
   EXPECT_EQ(run("validate-condition --condition no-such-condition").code, 2);
   EXPECT_EQ(run("validate-condition --condition thesis --shard 3/2").code, 2);
 }
+
+TEST_F(CliVerify, ShardsMergeIntoTheWholeSweep) {
+  const std::string sweep = "validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes 2 --bound 3 ";
+  EXPECT_EQ(run(sweep + "--shard 0/2 -o " + q(dir / "s0.json")).code, 1);
+  EXPECT_EQ(run(sweep + "--shard 1/2 -o " + q(dir / "s1.json")).code, 1);
+  const Result whole = run(sweep + "--json");
+  const Result merged = run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s1.json"));
+  EXPECT_EQ(merged.code, 1) << merged.err;
+  const auto a = nlohmann::json::parse(whole.out), b = nlohmann::json::parse(merged.out);
+  for (const char* key : {"rules", "holds", "fails", "vacuous", "unsound", "incomplete"}) EXPECT_EQ(a[key], b[key]) << key;
+  EXPECT_EQ(a["smallest_unsound"]["index"], b["smallest_unsound"]["index"]);
+  EXPECT_EQ(b["shard"], "0,1/2");
+  EXPECT_EQ(run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s0.json")).code, 2);
+}
