@@ -23,6 +23,11 @@ TEST(Proof, Thm1And2_1GMaps_Labels01_Nodes2_Darts6) { prove_conditions(1, MapKin
 // Theorem 3 on the cycle pair (0,2) with 6 darts.
 TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts6) { prove_conditions(2, MapKind::GMap, {0, 2}, 2, 6); }
 
+// 8 darts: Theorem 2 with three nodes, Theorem 3 on (0,2), O-maps.
+TEST(Proof, Thm2_1GMaps_Label0_Nodes3_Darts8) { prove_conditions(1, MapKind::GMap, {0}, 3, 8); }
+TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts8) { prove_conditions(2, MapKind::GMap, {0, 2}, 2, 8); }
+TEST(Proof, Thm1And2_2OMaps_Labels12_Nodes2_Darts8) { prove_conditions(2, MapKind::OMap, {1, 2}, 2, 8); }
+
 // O-maps (beta_1 a permutation, no non-orientation on 1): 2 nodes, labels 1 and 2, 4 darts.
 TEST(Proof, Thm1And2_2OMaps_Labels12_Nodes2_Darts4) { prove_conditions(2, MapKind::OMap, {1, 2}, 2, 4); }
 
