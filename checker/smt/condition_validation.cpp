@@ -39,6 +39,17 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
     }
     return true;
   });
+  size_t next = 0;  // the family's size: random rules are indexed after it
+  for (int m = 1; m <= opt.max_nodes; ++m) next += count_rules(m, opt.labels.size());
+  std::mt19937_64 rng(opt.seed);
+  for (size_t k = 0; k < opt.random; ++k) {
+    const int nodes = opt.max_nodes + 1 + static_cast<int>(rng() % 2);
+    Rule r = random_rule(rng, opt.n, opt.kind, nodes, opt.labels, "random" + std::to_string(k));
+    if ((next + k) % opt.shards == opt.shard) {
+      rules.push_back(std::move(r));
+      index.push_back(next + k);
+    }
+  }
   rep.rules = rules.size();
   const auto tc = std::chrono::steady_clock::now();
   const std::vector<bool> holds = evaluate(rules);
@@ -48,7 +59,7 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
   std::optional<SmtSession> session;
   std::optional<graph::MapFamily> family;
   if (opt.engine == Engine::Smt)
-    session.emplace(MapSpec{opt.n, opt.kind}, opt.bound, static_cast<unsigned>(opt.max_nodes), eo);
+    session.emplace(MapSpec{opt.n, opt.kind}, opt.bound, static_cast<unsigned>(opt.max_nodes + (opt.random ? 2 : 0)), eo);
   else
     family.emplace(graph::map_family(opt.n, opt.kind, opt.bound));
   auto last_progress = std::chrono::steady_clock::now();
@@ -56,7 +67,7 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
   for (size_t k = 0; k < rules.size(); ++k) {
     if (opt.time_limit > 0 && since(t0) > opt.time_limit) {
       rep.time_limit_hit = true;
-      rep.nodes_covered = static_cast<int>(nodes_of(rules[k])) - 1;
+      rep.nodes_covered = std::min(opt.max_nodes, static_cast<int>(nodes_of(rules[k])) - 1);
       break;
     }
     const Rule& r = rules[k];
@@ -96,6 +107,8 @@ nlohmann::ordered_json to_json(const ValidationReport& r) {
   j["n"] = o.n;
   j["labels"] = o.labels;
   j["max_nodes"] = o.max_nodes;
+  j["random"] = o.random;
+  j["seed"] = o.seed;
   j["bound"] = o.bound;
   j["shard"] = std::to_string(o.shard) + "/" + std::to_string(o.shards);
   j["rules"] = r.rules;
@@ -140,7 +153,7 @@ std::tuple<size_t, size_t, size_t> witness_key(const nlohmann::json& w) {
 
 nlohmann::ordered_json merge_reports(const std::vector<nlohmann::json>& shards) {
   if (shards.empty()) throw Error(ErrorCode::Usage, "no report to merge", "--merge");
-  const char* same[] = {"format", "condition", "engine", "model", "n", "labels", "max_nodes", "bound"};
+  const char* same[] = {"format", "condition", "engine", "model", "n", "labels", "max_nodes", "random", "seed", "bound"};
   nlohmann::ordered_json out;
   std::set<unsigned> seen;
   unsigned m = 0;
@@ -219,6 +232,8 @@ std::string to_text(const ValidationReport& r) {
   if (o.shards > 1) s << ", shard " << o.shard << "/" << o.shards;
   s << "\n  rules " << r.checked << " of " << r.rules << (r.time_limit_hit ? " (time limit hit)" : "")
     << "; covered: every rule of at most " << r.nodes_covered << " nodes\n";
+ if (o.random) s << "  including " << o.random << " random rules of " << o.max_nodes + 1 << "-" << o.max_nodes + 2
+                  << " nodes (seed " << o.seed << ")\n";
   s << "  condition holds on " << r.holds << ", fails on " << r.fails << "; vacuous (match no map) " << r.vacuous << "\n";
   s << "  sound: " << (r.sound() ? "yes" : "NO") << " (" << r.unsound << " unsound rules)";
   if (r.smallest_unsound) {

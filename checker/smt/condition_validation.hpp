@@ -6,6 +6,7 @@
 //   incomplete  the condition fails, yet the rule matches some map within the bound and every
 //               such match glues and yields a map of the model;
 //   vacuous     the rule matches no map within the bound: counted, neither.
+// Optionally, random larger rules follow (counted with the others; not in `nodes_covered`).
 // The condition is sound (resp. complete) within the bound when no rule is unsound (resp.
 // incomplete). The smallest witness each way is kept: fewest rule nodes, then fewest darts (for an
 // unsound rule), then first in the family's order.
@@ -35,6 +36,10 @@ struct ValidationOptions {
   Engine engine = Engine::Smt;
   unsigned shard = 0, shards = 1;
   double time_limit = 0;       // seconds; 0: none
+  // Random larger rules after the family: `random` rules of max_nodes+1 or max_nodes+2 nodes
+  // (rule_space.hpp random_rule) from generator seed `seed`; their indices follow the family's.
+  size_t random = 0;
+  uint64_t seed = 1;
   // Called now and then with (rules done, rules of the shard).
   std::function<void(size_t, size_t)> progress;
 };

@@ -52,6 +52,37 @@ void status_tuples(size_t nodes, const std::function<void(const std::vector<int>
 }
 }  // namespace
 
+rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, const std::vector<int>& labels,
+                          const std::string& name) {
+  // rng() % k: portable (std::uniform_int_distribution is not specified bit for bit).
+  auto below = [&](size_t k) { return static_cast<size_t>(rng() % k); };
+  std::vector<int> st(static_cast<size_t>(nodes));
+  for (int& s : st) s = static_cast<int>(below(3));
+  std::vector<size_t> ln, rn;
+  for (size_t x = 0; x < st.size(); ++x) {
+    if (st[x] != 2) ln.push_back(x);
+    if (st[x] != 1) rn.push_back(x);
+  }
+  // A random partial injection on m nodes: a random permutation, each pair kept with probability 1/2.
+  auto pinj = [&](size_t m) {
+    std::vector<Node> perm(m);
+    for (size_t k = 0; k < m; ++k) perm[k] = static_cast<Node>(k);
+    for (size_t k = m; k > 1; --k) std::swap(perm[k - 1], perm[below(k)]);
+    PInj out;
+    for (size_t k = 0; k < m; ++k)
+      if (below(2)) out.emplace_back(static_cast<Node>(k), perm[k]);
+    return out;
+  };
+  DGraph L, R;
+  for (size_t x : ln) L.add_node(std::string(1, static_cast<char>('a' + x)));
+  for (size_t x : rn) R.add_node(std::string(1, static_cast<char>('a' + x)));
+  for (int i : labels) {
+    for (auto [s, t] : pinj(ln.size())) L.add_arc(s, t, i);
+    for (auto [s, t] : pinj(rn.size())) R.add_arc(s, t, i);
+  }
+  return rewrite::Rule(std::move(L), std::move(R), n, kind, name);
+}
+
 size_t count_rules(int nodes, size_t labels) {
   size_t total = 0;
   status_tuples(static_cast<size_t>(nodes), [&](const std::vector<int>& st) {

@@ -8,6 +8,8 @@
 // P(2) = 7, P(3) = 34 partial injections.
 #pragma once
 #include <functional>
+#include <random>
+#include <string>
 #include <vector>
 
 #include "model/rewrite/rule.hpp"
@@ -19,5 +21,11 @@ size_t for_each_rule(int n, MapKind kind, int max_nodes, const std::vector<int>&
                      const std::function<bool(size_t, const rewrite::Rule&)>& f);
 // The number of rules of the family with exactly `nodes` nodes (without building them).
 size_t count_rules(int nodes, size_t labels);
+
+// One random rule of exactly `nodes` nodes in the same shape (each node preserved, deleted or
+// added uniformly; per label a uniformly drawn partial injection on each side), named `name`.
+// Deterministic for a given generator state (std::mt19937_64, portable draws).
+rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, const std::vector<int>& labels,
+                          const std::string& name);
 
 }  // namespace gmr::smt

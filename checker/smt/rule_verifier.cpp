@@ -134,11 +134,12 @@ VerifyResult verify_on(z3::context& ctx, const MapEncoding& map, z3::solver* sha
 
 struct SmtSession::State {
   EncodingOptions opt;
+  unsigned max_added;
   z3::context ctx;
   MapEncoding map;
   z3::solver solver;
-  State(MapSpec spec, unsigned bound, unsigned max_added, const EncodingOptions& o)
-      : opt(o), map(ctx, spec, bound, max_added, o.sort), solver(ctx) {
+  State(MapSpec spec, unsigned bound, unsigned added, const EncodingOptions& o)
+      : opt(o), max_added(added), map(ctx, spec, bound, added, o.sort), solver(ctx) {
     solver.add(map.constraints());
   }
 };
@@ -152,6 +153,9 @@ unsigned SmtSession::bound() const { return s_->map.capacity(); }
 VerifyResult SmtSession::verify(const Rule& r, bool applicable_check) {
   if (r.spec() != s_->map.spec())
     throw Error(ErrorCode::Usage, "the rule and the session have different models", "rule " + r.name());
+  // The added nodes are numerals after the darts: the dart sort was sized for max_added of them.
+  if (r.added_nodes().size() > s_->max_added)
+    throw Error(ErrorCode::Usage, "the rule adds more nodes than the session reserved", "rule " + r.name());
   return verify_on(s_->ctx, s_->map, &s_->solver, r, s_->opt, applicable_check);
 }
 

@@ -1,5 +1,5 @@
 // `gmr validate-condition (--condition NAME | --plugin LIB.so) [--model gmap|omap] [-n N]
-//  [--labels 0,1] [--max-nodes m] [--bound k] [--engine smt|enum] [--shard K/M] [--time-limit s]
+//  [--labels 0,1] [--max-nodes m] [--random N --seed S] [--bound k] [--engine smt|enum] [--shard K/M] [--time-limit s]
 //  [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
 // every rule of the bounded family and every map of at most k darts
 // (checker/smt/condition_validation.hpp; docs/verify.md)? Built-in conditions run in-process,
@@ -40,6 +40,8 @@ struct ValidateConditionArgs {
   bool json = false;
   std::string output;
   std::vector<std::string> merge;
+  size_t random = 0;
+  uint64_t seed = 1;
 };
 
 std::vector<int> parse_labels(const std::string& text) {
@@ -105,6 +107,8 @@ int run_validate_condition(const ValidateConditionArgs& a) {
   o.shard = k;
   o.shards = m;
   o.time_limit = a.time_limit;
+  o.random = a.random;
+  o.seed = a.seed;
   if (isatty(STDERR_FILENO))
     o.progress = [](size_t done, size_t total) {
       std::fprintf(stderr, "\r  %zu / %zu rules", done, total);
@@ -148,6 +152,8 @@ void register_validate_condition(CLI::App& app) {
   sub->add_option("--max-nodes", args->max_nodes, "Rules of at most this many nodes (1..4, default 2)");
   sub->add_option("--bound,-k", args->bound, "Maps of at most this many darts (default 4)");
   sub->add_option("--engine", args->engine, "smt (default) or enum");
+  sub->add_option("--random", args->random, "Also this many random rules of max-nodes+1 or +2 nodes (default 0)");
+  sub->add_option("--seed", args->seed, "Seed of the random rules (default 1)");
   sub->add_option("--shard", args->shard, "K/M: the rules whose index is K mod M (default 0/1)");
   sub->add_option("--time-limit", args->time_limit, "Stop after this many seconds, reporting the part covered");
   sub->add_flag("--json", args->json, "Print JSON (format gmr.condition-validation)");

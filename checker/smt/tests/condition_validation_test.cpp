@@ -195,3 +195,37 @@ TEST(ConditionPlugins, BadPluginsFailNamingPluginAndRule) {
   const std::string absent = message("does_not_exist");
   EXPECT_NE(absent.find("cannot load"), std::string::npos) << absent;
 }
+
+TEST(ConditionValidation, RandomLargerRules) {
+  const BuiltinCondition* c = find_builtin_condition("thesis");
+  ValidationOptions o;
+  o.n = 1;
+  o.labels = {0, 1};
+  o.max_nodes = 1;
+  o.bound = 6;
+  o.random = 300;
+  o.seed = 7;
+  auto eval = [&](const std::vector<Rule>& rs) {
+    std::vector<bool> out;
+    for (const auto& x : rs) out.push_back(c->holds(x));
+    return out;
+  };
+  const auto r = validate_condition(c->name, eval, o);
+  std::printf("%s", to_text(r).c_str());
+  EXPECT_EQ(r.rules, count_rules(1, 2) + 300);
+  EXPECT_TRUE(r.sound());
+  EXPECT_TRUE(r.complete());
+  EXPECT_GT(r.holds, 0u);
+  // The enumerator agrees on every count.
+  o.engine = Engine::Enum;
+  const auto m = validate_condition(c->name, eval, o);
+  EXPECT_EQ(m.holds, r.holds);
+  EXPECT_EQ(m.vacuous, r.vacuous);
+  EXPECT_EQ(m.unsound, r.unsound);
+  EXPECT_EQ(m.incomplete, r.incomplete);
+  o.engine = Engine::Smt;
+  // Deterministic: the same seed gives the same counts.
+  const auto again = validate_condition(c->name, eval, o);
+  EXPECT_EQ(again.holds, r.holds);
+  EXPECT_EQ(again.incomplete, r.incomplete);
+}
