@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 
 #include "checker/smt/rule_view.hpp"
@@ -68,6 +69,8 @@ std::vector<bool> ConditionPlugin::evaluate(const std::vector<rewrite::Rule>& ru
   if (pid < 0) throw Error(ErrorCode::Io, std::string("fork: ") + std::strerror(errno), "plugin " + path_);
   if (pid == 0) {  // child
     close(fds[0]);
+    // A crash kills the child (a sanitizer's own handlers would turn it into an exit status).
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
     for (const auto& v : views) {
       char c = '0';
       try {

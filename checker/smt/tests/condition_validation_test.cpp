@@ -188,7 +188,10 @@ TEST(ConditionPlugins, BadPluginsFailNamingPluginAndRule) {
   EXPECT_NE(thrown.find("threw while evaluating rule rule"), std::string::npos) << thrown;
   EXPECT_NE(thrown.find("deleted nodes are not supported"), std::string::npos) << thrown;
   const std::string crashed = message("crashing_condition");
-  EXPECT_NE(crashed.find("crashed (signal 11"), std::string::npos) << crashed;
+  // A signal, or (when a sanitizer keeps its own handler) an early exit of the child.
+  EXPECT_TRUE(crashed.find("crashed (signal 11") != std::string::npos ||
+              crashed.find("process exited") != std::string::npos)
+      << crashed;
   EXPECT_NE(crashed.find("while evaluating rule rule"), std::string::npos) << crashed;
   const std::string missing = message("no_entry_condition");
   EXPECT_NE(missing.find("no entry symbol gmr_condition_v1"), std::string::npos) << missing;
