@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstring>
 
+#include "checker/smt/rule_space.hpp"
 #include "checker/smt/rule_view.hpp"
 #include "model/core/error.hpp"
 
@@ -103,7 +104,7 @@ std::vector<bool> ConditionPlugin::evaluate(const std::vector<rewrite::Rule>& ru
   const size_t e = got.find('E');
   const size_t done = e == std::string::npos ? got.size() : e;
   auto rule_at = [&](size_t k) {
-    return k < rules.size() ? "rule " + rules[k].name() + " (#" + std::to_string(k) + ")" : std::string("no rule");
+    return k < rules.size() ? "rule " + rules[k].name() + " (" + rule_text(rules[k]) + ")" : std::string("no rule");
   };
   if (e != std::string::npos)
     throw Error(ErrorCode::Usage, "the condition threw while evaluating " + rule_at(done) + ": " + got.substr(e + 1),

@@ -202,25 +202,6 @@ nlohmann::ordered_json merge_reports(const std::vector<nlohmann::json>& shards) 
   return out;
 }
 
-namespace {
-std::string rule_text(const Rule& r) {
-  std::ostringstream s;
-  auto side = [&](bool right) {
-    const auto& g = r.side(right);
-    s << (right ? "R" : "L") << " {";
-    for (graph::Node v = 0; v < g.num_nodes(); ++v) s << (v ? " " : "") << g.name(v);
-    s << ";";
-    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a)
-      if (g.arc_alive(a))
-        s << " " << g.name(g.arc(a).src) << "-" << g.arc(a).label << "->" << g.name(g.arc(a).tgt);
-    s << "}";
-  };
-  side(false);
-  s << " => ";
-  side(true);
-  return s.str();
-}
-}  // namespace
 
 std::string to_text(const ValidationReport& r) {
   const ValidationOptions& o = r.options;

@@ -83,6 +83,21 @@ rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, 
   return rewrite::Rule(std::move(L), std::move(R), n, kind, name);
 }
 
+std::string rule_text(const rewrite::Rule& r) {
+  std::string s;
+  for (bool right : {false, true}) {
+    const DGraph& g = r.side(right);
+    s += right ? " => R {" : "L {";
+    for (Node v = 0; v < g.num_nodes(); ++v) s += (v ? " " : "") + g.name(v);
+    s += ";";
+    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a)
+      if (g.arc_alive(a))
+        s += " " + g.name(g.arc(a).src) + "-" + std::to_string(g.arc(a).label) + "->" + g.name(g.arc(a).tgt);
+    s += "}";
+  }
+  return s;
+}
+
 size_t count_rules(int nodes, size_t labels) {
   size_t total = 0;
   status_tuples(static_cast<size_t>(nodes), [&](const std::vector<int>& st) {
