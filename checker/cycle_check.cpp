@@ -302,6 +302,10 @@ bool check_cycle(const Rule& r0, int i, int j, std::vector<Diagnostic>& out) {
   std::vector<Diagnostic> notes;
   const Rule r = ij_complete(r0, i, j, &notes);
   for (auto& n : notes) out.push_back(std::move(n));
+  return check_cycle_as_written(r, i, j, out);
+}
+
+bool check_cycle_as_written(const Rule& r, int i, int j, std::vector<Diagnostic>& out) {
   if (!combinatorial_on(r.left(), i, j) || !combinatorial_on(r.right(), i, j)) {
     out.push_back({.code = "C-skipped",
                    .severity = Severity::Note,

@@ -79,6 +79,9 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, bool right, int i, int j);
 bool on_alternating_cycle(const DGraph& g, ArcId a, int i, int j);
 
 bool check_cycle(const Rule& r, int i, int j, std::vector<Diagnostic>& out);
+// Def. 40 on the rule as written, without the ij-completion of Assumption 5 (check_cycle is this
+// on ij_complete(r)); kept for the deliberately wrong condition of docs/verify.md.
+bool check_cycle_as_written(const Rule& r, int i, int j, std::vector<Diagnostic>& out);
 
 // model_completion = false checks C_r on the ij-completion only (the thesis' per-constraint
 // reading); kept for the equivalence test that documents the gap.

@@ -31,7 +31,9 @@
   X(apply)                 \
   X(fold)                  \
   X(infer)                 \
-  X(demo)
+  X(demo)                  \
+  X(verify)                \
+  X(validate_condition)
 // ========================================================================================
 
 namespace gmr::cli {

@@ -1,0 +1,120 @@
+// `gmr verify` and `gmr validate-condition` (tools/cli/cmd_verify.cpp, cmd_validate_condition.cpp):
+// verdicts and exit codes 0/1/2, the counterexample files, plug-ins that fail.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "model/io/read_file.hpp"
+#include "model/testing/source_tree.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+fs::path source_dir() { return gmr::testing::source_path("."); }
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+class CliVerify : public ::testing::Test {
+ protected:
+  fs::path dir;
+  void SetUp() override {
+    dir = fs::temp_directory_path() /
+          ("gmr_cli_verify_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  Result run(const std::string& args) {
+    const std::string cmd = q(GMR_BIN) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") + " </dev/null";
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, gmr::io::read_text_file(dir / "stdout"),
+            gmr::io::read_text_file(dir / "stderr")};
+  }
+};
+}  // namespace
+
+TEST_F(CliVerify, PreservingRule) {
+  const Result r = run("verify " + q(source_dir() / "checker/tests/data/F5_fig319a_sew.json") + " --bound 5 --engine both");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("no 2-G-map of at most 5 darts"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("engine smt"), std::string::npos);
+  EXPECT_NE(r.out.find("engine enum"), std::string::npos);
+}
+
+TEST_F(CliVerify, CounterexampleFiles) {
+  const Result r = run("verify " + q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json") + " -k 4 --json -o " +
+                       q(dir / "cex.json") + " --dot " + q(dir / "cex.dot"));
+  EXPECT_EQ(r.code, 1) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["format"], "gmr.verify");
+  EXPECT_EQ(doc["verdict"], "breaks");
+  const auto cex = nlohmann::json::parse(gmr::io::read_text_file(dir / "cex.json"));
+  EXPECT_EQ(cex["format"], "gmr.counterexample");
+  EXPECT_EQ(cex["version"], 1);
+  EXPECT_EQ(cex["G"]["format"], "gmr.gmap");
+  EXPECT_FALSE(cex["violations"].empty());
+  EXPECT_FALSE(cex["offending_darts"].empty());
+  const std::string dot = gmr::io::read_text_file(dir / "cex.dot");
+  EXPECT_NE(dot.find("fillcolor=\"#ff6b6b\""), std::string::npos) << dot;
+}
+
+TEST_F(CliVerify, RuleSchemeByInstantiation) {
+  const Result r = run("verify " + q(source_dir() / "tools/data/jerboa/JerboaTrackingOrbit.jme") +
+                       " --rule DeleteEdge --bound 6 --json");
+  EXPECT_EQ(r.code, 1) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["kind"], "scheme");
+  EXPECT_EQ(doc["counterexample"]["instance_of"], "DeleteEdge");
+}
+
+TEST_F(CliVerify, BadInput) {
+  EXPECT_EQ(run("verify " + q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json") + " --engine z3").code, 2);
+  EXPECT_EQ(run("verify " + q(dir / "missing.json")).code, 2);
+}
+
+TEST_F(CliVerify, ValidateConditionWrongVariantExits1) {
+  const Result r = run("validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes 1 --bound 2 --json");
+  EXPECT_EQ(r.code, 1) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["format"], "gmr.condition-validation");
+  EXPECT_EQ(doc["sound"], false);
+  EXPECT_TRUE(doc["smallest_unsound"]["counterexample"]["gluing_fails"].get<bool>());
+  EXPECT_TRUE(r.err.empty()) << "no progress output when standard error is not a terminal: " << r.err;
+}
+
+TEST_F(CliVerify, ValidateConditionThesisExits0) {
+  const Result r = run("validate-condition --condition thesis --labels 0,1 --max-nodes 1 --bound 3 --shard 1/2");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("sound: yes"), std::string::npos) << r.out;
+}
+
+TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
+  const Result r = run(std::string("validate-condition --plugin ") + q(GMR_CRASHING_PLUGIN) + " --labels 0 --max-nodes 2");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("crashing_condition"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("while evaluating rule rule"), std::string::npos) << r.err;
+  EXPECT_EQ(run(std::string("validate-condition --plugin ") + q(dir / "nothing.so")).code, 2);
+  EXPECT_EQ(run("validate-condition --condition no-such-condition").code, 2);
+  EXPECT_EQ(run("validate-condition --condition thesis --shard 3/2").code, 2);
+}
+
+TEST_F(CliVerify, ShardsMergeIntoTheWholeSweep) {
+  const std::string sweep = "validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes 2 --bound 3 ";
+  EXPECT_EQ(run(sweep + "--shard 0/2 -o " + q(dir / "s0.json")).code, 1);
+  EXPECT_EQ(run(sweep + "--shard 1/2 -o " + q(dir / "s1.json")).code, 1);
+  const Result whole = run(sweep + "--json");
+  const Result merged = run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s1.json"));
+  EXPECT_EQ(merged.code, 1) << merged.err;
+  const auto a = nlohmann::json::parse(whole.out), b = nlohmann::json::parse(merged.out);
+  for (const char* key : {"rules", "holds", "fails", "vacuous", "unsound", "incomplete"}) EXPECT_EQ(a[key], b[key]) << key;
+  EXPECT_EQ(a["smallest_unsound"]["index"], b["smallest_unsound"]["index"]);
+  EXPECT_EQ(b["shard"], "0,1/2");
+  EXPECT_EQ(run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s0.json")).code, 2);
+}
