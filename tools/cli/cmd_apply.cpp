@@ -2,7 +2,8 @@
 // concrete rule on a map. The match is given by L-node=dart pairs: with an anchor in every
 // connected component of L it is propagated along the arcs (linear); otherwise the first match
 // (in enumeration order) that agrees with the given pairs and satisfies the gluing condition is
-// used. Embeddings of the input are not carried over (the output has none).
+// used. Concrete rules do not carry embeddings (the output has none); rule schemes do, with their
+// expressions (docs/embeddings.md).
 // Exit 0 when the result is a valid map (written to -o when given), 1 when no match applies or the
 // result breaks a constraint of the model (listed), 2 on bad input.
 // Rule schemes (gmr.rule kind "scheme", Jerboa .jme with --rule) go to scheme_apply.hpp

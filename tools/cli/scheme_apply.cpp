@@ -5,6 +5,9 @@
 #include <sstream>
 
 #include "model/core/error.hpp"
+#include "model/expr/compiled_scheme.hpp"
+#include "model/expr/embedded_map.hpp"
+#include "model/expr/propagation.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
@@ -84,10 +87,11 @@ void print_not_applicable(const RuleScheme& s, const SchemeApplyArgs& a, NotAppl
 }
 
 // --hook D[,D...] (or no hook): one application; nullopt when not applicable (already printed).
-std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a) {
+std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a,
+                                      ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> hooks = a.hooks.empty() ? std::vector<Dart>{} : parse_hooks(a.hooks, g);
-  SchemeApplication app = engine.apply(g, hooks);  // wrong count, dead dart: Error (exit 2)
+  SchemeApplication app = engine.apply(g, hooks, obs);  // wrong count, dead dart: Error (exit 2)
   if (!app) {
     print_not_applicable(s, a, app.reason, app.why, s.name + ": " + app.why);
     return std::nullopt;
@@ -99,10 +103,11 @@ std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const
 }
 
 // --all: apply_everywhere; nullopt when applicable at no dart (already printed).
-std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a) {
+std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a,
+                                           ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> darts = g.darts();
-  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json);  // tables only with --json
+  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json, obs);  // tables only with --json
   if (all.applications.empty()) {
     const SchemeApplication& last = all.last_failure;
     const std::string why = darts.empty() ? "the map has no dart"
@@ -119,7 +124,8 @@ std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, 
 
 // Prints the applications, the dart counts and the validity of the result.
 void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, size_t before,
-                   const GMap& g, const ValidityReport& rep) {
+                   const GMap& g, const ValidityReport& rep, const expr::EmbeddingPropagation& prop,
+                   const expr::EmbeddedMap& m) {
   const auto& apps = r.apps;
   const auto& hooks_used = r.hooks_used;
   size_t added = 0, deleted = 0;
@@ -151,6 +157,14 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
     for (const auto& v : rep.violations) vs.push_back(v.describe());
     j["violations"] = vs;
+    nlohmann::ordered_json em = nlohmann::ordered_json::array();
+    for (const auto& f : m.fields) em.push_back(f.name());
+    j["embeddings"] = em;
+    j["evaluations"] = prop.evaluations();
+    nlohmann::ordered_json is = nlohmann::ordered_json::array();
+    for (const auto& i : prop.issues())
+      is.push_back({{"code", i.code}, {"embedding", i.embedding}, {"dart", i.dart}, {"message", i.message}});
+    j["embedding_issues"] = is;
     print_json(j);
   } else {
     std::cout << s.name << ": applied " << apps.size() << " time" << (apps.size() == 1 ? "" : "s");
@@ -161,6 +175,15 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     std::cout << ": " << before << " -> " << g.size() << " darts (+" << added << " -" << deleted << "), "
               << (rep.ok() ? "valid" : "INVALID") << "\n";
     for (const auto& v : rep.violations) std::cout << "  " << v.describe() << "\n";
+    std::cout << "embeddings: ";
+    if (m.fields.empty()) std::cout << "none";
+    for (size_t k = 0; k < m.fields.size(); ++k)
+      std::cout << (k ? ", " : "") << m.fields[k].name() << " " << m.fields[k].orbit().str();
+    std::cout << " (" << prop.evaluations() << " expression evaluations)\n";
+    if (prop.issue_count() > 0)
+      std::cout << "embedding issues: " << prop.issue_count() << " (the result is not embedding-consistent)\n";
+    for (const auto& i : prop.issues())
+      std::cout << "  " << i.code << ": embedding " << i.embedding << ", dart " << i.dart << ": " << i.message << "\n";
   }
 }
 
@@ -169,15 +192,18 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
 int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   const SchemeEngine engine(s);
   check_hook_arguments(s, a);
-  GMapFile f = load_map(a.input, a.from);
-  GMap& g = f.map;
+  const expr::CompiledScheme cs = expr::compile_scheme(s);
+  expr::EmbeddedMap m = expr::to_embedded_map(load_map(a.input, a.from));
+  expr::EmbeddingPropagation prop(cs, m);
+  GMap& g = m.map;
   const size_t before = g.size();
-  const std::optional<Applied> r = a.all ? apply_at_every_dart(engine, g, a) : apply_at_hooks(engine, g, a);
+  const std::optional<Applied> r =
+      a.all ? apply_at_every_dart(engine, g, a, &prop) : apply_at_hooks(engine, g, a, &prop);
   if (!r) return kExitNegative;
   const ValidityReport rep = check_validity(g);
-  print_applied(s, a, *r, before, g, rep);
-  if (!rep.ok()) return kExitNegative;
-  if (!a.output.empty()) save_map(GMapFile{g, {}}, a.output, output_format(a.output, a.to));
+  print_applied(s, a, *r, before, g, rep, prop, m);
+  if (!rep.ok() || prop.issue_count() > 0) return kExitNegative;
+  if (!a.output.empty()) save_map(expr::to_gmap_file(m), a.output, output_format(a.output, a.to));
   return kExitOk;
 }
 
