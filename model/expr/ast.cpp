@@ -44,6 +44,11 @@ std::string to_text(const Expr& e) {
     case Expr::Op::Value: return ref_text(e.ref) + "." + e.name;
     case Expr::Op::Collect: return e.orbit.str() + "_" + e.name + "(" + ref_text(e.ref) + ")";
     case Expr::Op::Comprehension:
+      if (!e.word.empty()) {
+        std::string w;
+        for (int d : e.word) w += "@" + std::to_string(d);
+        return "[" + to_text(*e.args[0]) + " | " + e.name + ", " + e.index + " in (" + w + ")*(" + ref_text(e.ref) + ")]";
+      }
       return "[" + to_text(*e.args[0]) + " | " + e.name + " in " + e.orbit.str() + "/" + e.classes.str() + "(" +
              ref_text(e.ref) + ")]";
     case Expr::Op::Call: {

@@ -6,6 +6,8 @@
 // the multiset of pi-values, one per pi-orbit met in the <o>-orbit of ref. Comprehensions
 // [e | x in <o>/<c>(ref)] generalise collects: one value of e per <c>-orbit met in <o>(ref), x
 // bound to the first dart met of that <c>-orbit (so <o>_pi(r) is [x.pi | x in <o>/<o_pi>(r)]).
+// A walk [e | x, k in (@i@j...)*(ref)] visits ref, ref w, ref w w, ... (the cycle of the word w
+// through ref), with x the dart and k its rank.
 // `let x = e1 in e2` names a value (args[0]) inside its body (args[1]).
 #pragma once
 #include <memory>
@@ -36,6 +38,10 @@ struct Expr {
   NodeRef ref;        // Value, Collect, Comprehension
   OrbitType orbit;    // Collect, Comprehension: <o>
   OrbitType classes;  // Comprehension: <c>
+  // Comprehension over a word walk [e | x, k in (@i@j...)*(ref)]: x = ref w^k for k = 0, 1, ...
+  // until x is ref again (a cycle: the word is a permutation of the darts), k bound as a scalar.
+  std::vector<int> word;
+  std::string index;  // the name of k (walks only)
   std::vector<std::unique_ptr<Expr>> args;  // operands, call arguments, comprehension body
 
   // Filled by the type checker.

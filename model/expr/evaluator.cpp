@@ -66,6 +66,21 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   const Dart d = dart_of(e.ref, e);
   const DimMask mo = e.orbit.mask();
   const DimMask mc = e.op == Expr::Op::Collect ? sigs_[static_cast<size_t>(e.embedding)].orbit.mask() : e.classes.mask();
+  if (!e.word.empty()) {  // walk: d, d w, d w w, ... until d again
+    Dart x = d;
+    double k = 0;
+    do {
+      vars_.push_back(x);
+      lets_.push_back({k, 0, 0, 0});
+      out.push_back(eval(*e.args[0]));
+      lets_.pop_back();
+      vars_.pop_back();
+      for (int dim : e.word) x = g_.alpha(dim, x);
+      k += 1;
+      if (k > static_cast<double>(g_.capacity())) fail(e, "the walk does not come back to its dart", d);
+    } while (x != d);
+    return;
+  }
   if (e.op == Expr::Op::Collect && (mo & ~mc) == 0) {  // <o>(d) lies in one pi-orbit
     out.push_back(field_value(e.embedding, d, e));
     return;

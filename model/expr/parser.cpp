@@ -185,9 +185,22 @@ class Parser {
       e->args.push_back(sum());
       expect('|', "after the body of the comprehension");
       e->name = ident("a dart variable");
+      if (accept(',')) e->index = ident("an index variable after ','");
       skip();
       const size_t kw = pos_;
       if (ident("'in'") != "in") fail("expected 'in'", kw);
+      if (!e->index.empty()) {  // (@i@j...)*(ref)
+        expect('(', "to open the walked word, e.g. (@0@1)*");
+        while (accept('@')) e->word.push_back(integer("a dimension after '@'"));
+        if (e->word.empty()) fail("expected a word of dimensions, e.g. (@0@1)");
+        expect(')', "to close the word");
+        expect('*', "after the word (a walk repeats it)");
+        expect('(', "before the walk's dart");
+        e->ref = node_ref();
+        expect(')', "after the walk's dart");
+        expect(']', "to close the comprehension");
+        return e;
+      }
       e->orbit = orbit_type();
       expect('/', "between the orbit type and the class orbit type");
       e->classes = orbit_type();

@@ -186,4 +186,9 @@ scheme::SchemeApplication apply_embedded(const scheme::SchemeEngine& engine, Emb
   return engine.apply(m.map, hooks, &p);
 }
 
+scheme::EverywhereApplication apply_everywhere_embedded(const scheme::SchemeEngine& engine, EmbeddingPropagation& p,
+                                                        EmbeddedMap& m) {
+  return scheme::apply_everywhere(engine, m.map, /*keep_tables=*/false, &p);
+}
+
 }  // namespace gmr::expr

@@ -21,6 +21,7 @@
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/embedded_map.hpp"
 #include "model/expr/evaluator.hpp"
+#include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
 
 namespace gmr::expr {
@@ -65,5 +66,9 @@ class EmbeddingPropagation : public scheme::ApplicationObserver {
 // One application at the hook darts (scheme_engine.hpp), embeddings included.
 scheme::SchemeApplication apply_embedded(const scheme::SchemeEngine& engine, EmbeddingPropagation& p,
                                          EmbeddedMap& m, const std::vector<Dart>& hooks);
+
+// Application at every dart (model/scheme/apply_everywhere.hpp), embeddings included.
+scheme::EverywhereApplication apply_everywhere_embedded(const scheme::SchemeEngine& engine, EmbeddingPropagation& p,
+                                                        EmbeddedMap& m);
 
 }  // namespace gmr::expr

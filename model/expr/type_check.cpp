@@ -220,9 +220,14 @@ class Checker {
       case Expr::Op::Comprehension: {
         check_orbit(e, e.orbit);
         check_orbit(e, e.classes);
+        for (int d : e.word)
+          if (d < 0 || d > c_.dimension)
+            fail(e, "dimension " + std::to_string(d) + " outside 0.." + std::to_string(c_.dimension));
         resolve(e.ref);
         vars_.push_back(e.name);
+        if (!e.word.empty()) lets_.emplace_back(e.index, StaticType::scalar());
         const StaticType body = check(*e.args[0]);
+        if (!e.word.empty()) lets_.pop_back();
         vars_.pop_back();
         if (!is_value(body)) fail(*e.args[0], "a comprehension's body must be a value, found " + body.str());
         return StaticType::multiset(body);
