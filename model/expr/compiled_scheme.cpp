@@ -54,6 +54,7 @@ CompiledScheme compile_scheme(const scheme::RuleScheme& s) {
   cs.right.assign(cs.embeddings.size(), std::vector<std::shared_ptr<const Expr>>(s.right.size()));
   for (uint32_t v = 0; v < s.right.size(); ++v) {
     for (const auto& x : s.right.nodes[v].expressions) {
+      if (x.code.empty() && !x.unsupported.empty()) continue;  // an untranslated Jerboa expression
       const std::string where = "rule " + s.name + ", R node " + s.right.nodes[v].name + ", embedding " + x.embedding;
       size_t k = 0;
       while (k < cs.embeddings.size() && cs.embeddings[k].name != x.embedding) ++k;

@@ -5,6 +5,7 @@
 // node and embedding (S-UNIQ); an expression on a left-only node, for an undeclared embedding, or
 // a declaration with an unknown value type, a malformed orbit type or a duplicate name is an error.
 // Errors are thrown as gmr::Error located "rule <name>, R node <n>, embedding <e>, column <c>".
+// Jerboa expressions that could not be translated (EmbeddingExpression::unsupported) are skipped.
 #pragma once
 #include <memory>
 #include <string>

@@ -135,7 +135,7 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
       if (vis.test(x)) {
         const Vec3& old = E.get(x);
         if (!same_value(old, p.value))
-          report("D-OVERLAP", f, x,
+          report("E-overlap", f, x,
                  "the orbit receives two values, " + text(old, f.arity) + " and " + text(p.value, f.arity) +
                      " (from R node " + s.right.nodes[p.v].name + ")");
         continue;
@@ -160,7 +160,7 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
         if (slot == Embedding<Vec3>::kNoValue) {
           slot = sy;
         } else if (sy != slot && !reported && !same_value(E.value(sy), E.value(slot))) {
-          report("S-MERGE", f, y,
+          report("E-merge", f, y,
                  "the rewrite merges orbits of values " + text(E.value(slot), f.arity) + " and " +
                      text(E.value(sy), f.arity) + " and no expression gives the merged orbit a value");
           reported = true;
@@ -170,7 +170,7 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
         // Reported when the map carries this embedding at all (a map without any value of it is
         // not embedded for it, and stays so).
         if (E.num_values() > 0)
-          report("S-NOVAL", f, x, "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
+          report("E-no-value", f, x, "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
         continue;
       }
       for (Dart y : orbit_darts_)

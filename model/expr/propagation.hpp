@@ -9,9 +9,9 @@
 //     preserved darts (thesis §5.4.2 completion: an orbit without expression inherits), and added
 //     darts get it.
 // Problems are reported, not thrown (the map is already rewritten): an orbit that receives two
-// different values (D-OVERLAP, thesis Def. 84, compared on values with a relative tolerance of
-// 1e-9), an orbit merging preserved darts of different values without an expression (S-MERGE), an
-// orbit of added darts without value (S-NOVAL). Embeddings of the map the scheme does not declare
+// different values (E-overlap, thesis Def. 84, compared on values with a relative tolerance of
+// 1e-9), an orbit merging preserved darts of different values without an expression (E-merge), an
+// orbit of added darts without value (E-no-value). Embeddings of the map the scheme does not declare
 // are propagated by steps 2–3 only. A declared embedding the map lacks is created (its old orbits
 // then have no value).
 #pragma once
@@ -27,7 +27,7 @@
 namespace gmr::expr {
 
 struct PropagationIssue {
-  std::string code;  // "D-OVERLAP", "S-MERGE", "S-NOVAL"
+  std::string code;  // "E-overlap", "E-merge", "E-no-value"
   std::string embedding;
   Dart dart = kNoDart;  // a dart of the offending orbit in the result
   std::string message;

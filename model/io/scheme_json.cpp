@@ -50,8 +50,13 @@ GraphScheme read_side(const JsonAt& side, const RuleScheme& r) {
       for (size_t e = 0; e < ex->array_size(); ++e) {
         const JsonAt x = (*ex)[e];
         x.require_object();
-        x.allow_only({"embedding", "code"});
-        g.nodes[id].expressions.push_back({x["embedding"].as_string(), x["code"].as_string()});
+        x.allow_only({"embedding", "code", "jerboa", "unsupported"});
+        scheme::EmbeddingExpression ee{x["embedding"].as_string(), {}, {}, {}};
+        if (auto u = x.get("unsupported")) ee.unsupported = u->as_string();
+        if (auto j = x.get("jerboa")) ee.jerboa = j->as_string();
+        if (ee.unsupported.empty()) ee.code = x["code"].as_string();
+        else if (auto c = x.get("code")) c->fail("an unsupported Jerboa expression has no code");
+        g.nodes[id].expressions.push_back(std::move(ee));
       }
     }
   }
@@ -93,6 +98,7 @@ void check_expressions(const JsonAt& root, const RuleScheme& r) {
       }
       for (size_t k = 0; k < xs.size(); ++k) {
         const JsonAt x = ex[k];
+        if (!xs[k].unsupported.empty()) continue;  // an untranslated Jerboa expression
         const auto* decl = r.find_embedding(xs[k].embedding);
         if (!decl)
           x["embedding"].fail("embedding \"" + xs[k].embedding + "\" is not declared in \"embeddings\"");
@@ -121,7 +127,14 @@ nlohmann::ordered_json side_to_json(const GraphScheme& g) {
     v["orbit"] = n.label.str();
     if (!n.expressions.empty()) {
       v["expressions"] = nlohmann::ordered_json::array();
-      for (const auto& e : n.expressions) v["expressions"].push_back({{"embedding", e.embedding}, {"code", e.code}});
+      for (const auto& e : n.expressions) {
+        nlohmann::ordered_json x;
+        x["embedding"] = e.embedding;
+        if (e.unsupported.empty()) x["code"] = e.code;
+        if (!e.jerboa.empty()) x["jerboa"] = e.jerboa;
+        if (!e.unsupported.empty()) x["unsupported"] = e.unsupported;
+        v["expressions"].push_back(std::move(x));
+      }
     }
     j["nodes"].push_back(std::move(v));
   }

@@ -19,6 +19,9 @@
 //                                            the same node twice is a loop
 //     "right": { "nodes": [ {"name": "n1", "orbit": "<_,_,2>",
 //                            "expressions": [ {"embedding": "pos", "code": "..."} ]} ],
+//                                            (imported from Jerboa: also "jerboa", the Java code,
+//                                            and "unsupported" instead of "code" when it could
+//                                            not be translated)
 //                "arcs": [...] },
 //     "precondition": "..."                  (optional, Jerboa code kept as text, never evaluated)
 //   }

@@ -29,8 +29,10 @@
 namespace gmr::scheme {
 
 struct EmbeddingExpression {
-  std::string embedding;  // e.g. "pos"
-  std::string code;       // expression text, not interpreted
+  std::string embedding;  // e.g. "position"
+  std::string code;       // expression text (docs/embeddings.md); empty when `unsupported`
+  std::string jerboa;       // the Jerboa (Java) code it was translated from, when imported
+  std::string unsupported;  // why the Jerboa code could not be translated (then code is empty)
   friend bool operator==(const EmbeddingExpression&, const EmbeddingExpression&) = default;
 };
 

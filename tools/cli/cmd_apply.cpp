@@ -31,6 +31,7 @@ struct ApplyArgs {
   bool json = false;
   std::string hooks, rule_name;  // rule schemes
   bool all = false;
+  bool no_embeddings = false;
 };
 
 std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, const std::string& text) {
@@ -61,7 +62,7 @@ int run_apply(const ApplyArgs& a) {
   const RuleInput in = load_rule_input(a.rule, a.rule_name);
   if (in.is_scheme()) {
     if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
-    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json});
+    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.no_embeddings});
   }
   if (!a.hooks.empty() || a.all)
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
@@ -156,6 +157,8 @@ void register_apply(CLI::App& app) {
   sub->add_option("--hook", args->hooks, "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
   sub->add_flag("--all", args->all, "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
+  sub->add_flag("--no-embeddings", args->no_embeddings,
+                "Rule schemes: drop the map's embeddings (positions, ...) and rewrite the topology only");
   set_action(sub, [args] { return run_apply(*args); });
 }
 

@@ -193,7 +193,9 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   const SchemeEngine engine(s);
   check_hook_arguments(s, a);
   const expr::CompiledScheme cs = expr::compile_scheme(s);
-  expr::EmbeddedMap m = expr::to_embedded_map(load_map(a.input, a.from));
+  GMapFile f = load_map(a.input, a.from);
+  if (a.no_embeddings) f.embeddings.clear();
+  expr::EmbeddedMap m = expr::to_embedded_map(f);
   expr::EmbeddingPropagation prop(cs, m);
   GMap& g = m.map;
   const size_t before = g.size();

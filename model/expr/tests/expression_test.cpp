@@ -215,7 +215,7 @@ TEST(ExpressionPropagation, NewOrbitWithoutValueIsReported) {
   EmbeddingPropagation p(cs, sq.m);
   scheme::SchemeEngine(s).apply(sq.m.map, {0}, &p);
   ASSERT_EQ(p.issue_count(), 1u);
-  EXPECT_EQ(p.issues()[0].code, "S-NOVAL");
+  EXPECT_EQ(p.issues()[0].code, "E-no-value");
 }
 
 TEST(ExpressionPropagation, TwoValuesOnOneOrbitAreReported) {
@@ -230,15 +230,15 @@ TEST(ExpressionPropagation, TwoValuesOnOneOrbitAreReported) {
     s.right.add_node(n, OrbitType{});
     s.hooks.push_back(n);
   }
-  s.right.nodes[0].expressions = {{"position", "n0.position + vector(0, 0, 1)"}};
-  s.right.nodes[1].expressions = {{"position", "n1.position + vector(0, 0, 2)"}};
+  s.right.nodes[0].expressions = {{"position", "n0.position + vector(0, 0, 1)", {}, {}}};
+  s.right.nodes[1].expressions = {{"position", "n1.position + vector(0, 0, 2)", {}, {}}};
   const CompiledScheme cs = compile_scheme(s);
   Square sq;
   const Dart d = 0, e = sq.m.map.alpha(1, 0);  // one vertex
   EmbeddingPropagation p(cs, sq.m);
   ASSERT_TRUE(scheme::SchemeEngine(s).apply(sq.m.map, {d, e}, &p));
   ASSERT_EQ(p.issue_count(), 1u);
-  EXPECT_EQ(p.issues()[0].code, "D-OVERLAP");
+  EXPECT_EQ(p.issues()[0].code, "E-overlap");
   // Two different vertices: no overlap, each vertex moves.
   Square sq2;
   const Dart f = sq2.m.map.alpha(0, 0);

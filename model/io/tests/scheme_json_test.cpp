@@ -24,7 +24,7 @@ std::string error_location(const std::string& text) {
   return "no error";
 }
 
-const char* kQuad = R"({
+const char* kQuad = R"json({
   "format": "gmr.rule", "version": 1, "kind": "scheme", "name": "q", "map": "gmap", "n": 2,
   "orbit": "<0,1,2>", "hooks": ["n0"],
   "embeddings": [{"name": "pos", "orbit": "<1,2>", "type": "point"}],
@@ -32,7 +32,7 @@ const char* kQuad = R"({
   "right": {"nodes": [{"name": "n0", "orbit": "<_,1,2>"},
                       {"name": "n1", "orbit": "<_,_,2>", "expressions": [{"embedding": "pos", "code": "middle(<0>_pos(n0))"}]}],
             "arcs": [{"nodes": ["n0", "n1"], "label": 0}]}
-})";
+})json";
 
 }  // namespace
 
