@@ -61,7 +61,7 @@ class Checker {
         rep_.conditions.emplace_back("C(" + std::to_string(i) + "," + std::to_string(j) + ")", cycle(i, j));
     bool has_expressions = !s_.embeddings.empty();
     for (const auto& n : s_.right.nodes) has_expressions |= !n.expressions.empty();
-    if (has_expressions) rep_.conditions.emplace_back("embeddings", check_embeddings(s_, rep_.diagnostics));
+    if (has_expressions && opt_.embeddings) rep_.conditions.emplace_back("embeddings", check_embeddings(s_, rep_.diagnostics));
     if (!s_.precondition.empty())
       add("S-precondition", Severity::Warning, "structure", std::nullopt, {},
           "the Jerboa precondition is not evaluated; the verdict is about the topology only");

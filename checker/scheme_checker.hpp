@@ -81,6 +81,7 @@ struct SchemeCheckReport {
 
 struct SchemeCheckOptions {
   bool algorithm3_strict = false;  // Algorithm 3 literally (see above)
+  bool embeddings = true;          // the embedding checks (embedding_check.hpp); false: topology only
 };
 
 SchemeCheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt = {});

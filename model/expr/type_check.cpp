@@ -271,7 +271,7 @@ StaticType check_expression(Expr& e, const CheckContext& ctx, ValueType target) 
   if (ok && t.kind == K::Affine && t.mass) ok = std::fabs(*t.mass - *want.mass) < 1e-12;
   if (!ok)
     throw Error(ErrorCode::Schema,
-                "the expression is a " + t.str() + ", the embedding holds " + to_string(target) + " values",
+                std::string("the expression is ") + (t.str()[0] == 'a' ? "an " : "a ") + t.str() + ", the embedding holds " + to_string(target) + " values",
                 (ctx.where.empty() ? "" : ctx.where + ", ") + "column " + std::to_string(e.column));
   return t;
 }
