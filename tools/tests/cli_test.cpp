@@ -408,6 +408,10 @@ TEST_F(Cli, ApplyCarriesPositions) {
   const GMapFile f = read_gmap_json_file(json);
   ASSERT_NE(f.find("position"), nullptr);
   EXPECT_EQ(write_gmap_json(read_gmap_json(write_gmap_json(f))), write_gmap_json(f));
+  // gmr check reports the static embedding checks (sew with positions and no expression: E-merge).
+  r = run("check " + q(source_dir() / "checker/tests/data/embeddings/sew2_positions.json"));
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("E-merge"), std::string::npos) << r.out;
   const fs::path bad = source_dir() / "model/expr/tests/data/bad_expression.json";
   expect_bad_input("apply " + q(bad) + " " + q(tools_data("cube.off")) + " --all",
                    "$.right.nodes[1].expressions[0].code (rule bad_midpoint, node n1), column 1",
