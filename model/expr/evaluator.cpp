@@ -1,5 +1,6 @@
 #include "model/expr/evaluator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/core/error.hpp"
@@ -96,6 +97,12 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   ScopedMarker mo_mark(g_), mc_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
+  if (e.op == Expr::Op::Collect && collect_by_slots(e, mc, mc_mark, out)) {
+    for (Dart x : in_orbit) mo_mark.unmark(x);
+    mo_mark.set_clean();
+    mc_mark.set_clean();  // collect_by_slots unmarked what it marked
+    return;
+  }
   for (size_t k = 0; k < n; ++k) {
     const Dart x = in_orbit[k];
     if (mc_mark.test(x)) continue;
@@ -113,6 +120,44 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   for (Dart x : in_classes) mc_mark.unmark(x);
   mo_mark.set_clean();
   mc_mark.set_clean();
+}
+
+// The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one
+// pi-orbit. When they hold pairwise different value slots, they are pairwise different pi-orbits
+// (every pi-orbit holds one slot, see the header) and the collect is their values, in order;
+// otherwise (two pieces share a slot) returns false and the caller marks whole pi-orbits.
+bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out) {
+  const size_t depth = vars_.size();
+  const std::vector<Dart>& in_orbit = scratch_[3 * depth];
+  std::vector<Dart>& pieces = scratch_[3 * depth + 1];
+  std::vector<Dart>& stack = scratch_[3 * depth + 2];
+  const EmbeddingField* f = fields_[static_cast<size_t>(e.embedding)];
+  if (!f) return false;
+  const DimMask inter = e.orbit.mask() & mc;
+  pieces.clear();
+  slots_.clear();
+  size_t marked = 0;
+  for (Dart x : in_orbit) {
+    if (mark.test(x)) continue;
+    slots_.push_back(f->values.slot(x));
+    pieces.push_back(x);
+    if (inter == 0) {
+      mark.mark(x);
+      ++marked;
+    } else {
+      marked += visit_orbit_marked(g_, inter, x, mark.id(), stack, [](Dart) {});
+    }
+  }
+  for (Dart x : in_orbit) mark.unmark(x);  // every marked dart is in the <o>-orbit
+  (void)marked;
+  std::vector<uint32_t> sorted = slots_;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    pieces.clear();
+    return false;
+  }
+  for (Dart x : pieces) out.push_back(field_value(e.embedding, x, e));
+  return true;
 }
 
 Val Evaluator::eval(const Expr& e) {

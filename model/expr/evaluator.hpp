@@ -6,7 +6,11 @@
 // vector; type.hpp); a scalar is x, a colour (x, y, z). A collect or a comprehension visits the
 // <o>-orbit of its dart depth-first (Algorithm 4 with markers) and keeps one value per <c>-orbit
 // met (c = o_pi for a collect: one value per pi-orbit, not per dart — thesis §5.5.2), marking each
-// <c>-orbit whole. Run-time errors (a dart without value, an empty multiset's barycentre, a point
+// <c>-orbit whole. A collect first tries a cheaper exact way: the <o ∩ o_pi>-pieces of the
+// <o>-orbit each lie in one pi-orbit, and when their value slots are pairwise different they are
+// different pi-orbits — valid because every pi-orbit holds a single slot in the maps this library
+// builds (readers set one slot per orbit; propagation.hpp gives each orbit one slot); only when two
+// pieces share a slot are the pi-orbits marked whole. Run-time errors (a dart without value, an empty multiset's barycentre, a point
 // whose mass is not 1) are Error(Schema) located "<where>, column <c>, dart <d>".
 #pragma once
 #include <string>
@@ -40,6 +44,7 @@ class Evaluator {
  private:
   Val eval(const Expr& e);
   void members(const Expr& e, std::vector<Val>& out);
+  bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
   Val field_value(int embedding, Dart d, const Expr& e);
   [[noreturn]] void fail(const Expr& e, const std::string& msg, Dart d = kNoDart) const;
@@ -52,6 +57,7 @@ class Evaluator {
   std::vector<Val> lets_;
   const std::string* where_ = nullptr;
   std::vector<std::vector<Dart>> scratch_;
+  std::vector<uint32_t> slots_;
 };
 
 }  // namespace gmr::expr

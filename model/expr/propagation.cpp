@@ -173,8 +173,9 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
           report("E-no-value", f, x, "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
         continue;
       }
+      // One slot for the whole orbit (the evaluator's collects rely on it, evaluator.hpp).
       for (Dart y : orbit_darts_)
-        if (E.slot(y) == Embedding<Vec3>::kNoValue) E.set_slot(g, y, slot);
+        if (E.slot(y) != slot) E.set_slot(g, y, slot);
     }
     for (Dart y : touched_) vis.unmark(y);
     vis.set_clean();

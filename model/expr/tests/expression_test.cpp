@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 
+#include "model/core/validity.hpp"
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
@@ -282,4 +283,32 @@ TEST(ExpressionReader, EmbeddingsRoundTrip) {
     EXPECT_EQ(io::parse_scheme(io::scheme_to_json_text(s)), s) << f;
     EXPECT_NO_THROW(compile_scheme(s));
   }
+}
+
+TEST(ExpressionEvaluation, CollectOnAFaceThroughOneVertexFourTimes) {
+  // The 1x1 torus: one square face whose four corners are one vertex. One value, not four
+  // (thesis §5.5.2); the face's pieces share a slot, so the evaluator marks the vertex orbit.
+  EmbeddedMap m;
+  m.map = GMap(2);
+  m.map.add_darts(8);  // the square's darts in order; bottom 0-1, right 2-3, top 4-5, left 6-7
+  for (Dart k = 0; k < 8; k += 2) m.map.link(0, k, k + 1);
+  for (Dart k = 1; k < 8; k += 2) m.map.link(1, k, (k + 1) % 8);
+  m.map.link(2, 0, 5);  // bottom glued to top, right to left
+  m.map.link(2, 1, 4);
+  m.map.link(2, 2, 7);
+  m.map.link(2, 3, 6);
+  ASSERT_TRUE(check_validity(m.map).ok());
+  EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+  for (Dart r : orbit_representatives(m.map, OrbitType{1, 2})) pos.values.set(m.map, r, {1, 2, 3});
+  m.fields.push_back(std::move(pos));
+  ASSERT_EQ(count_orbits(m.map, OrbitType{1, 2}), 1u);
+  const std::vector<EmbeddingSignature> sigs{{"position", OrbitType{1, 2}, ValueType::Point}};
+  CheckContext c;
+  c.nodes = {"n0"};
+  c.embeddings = sigs;
+  auto e = parse_expression("count(<0,1>_position(n0))");
+  check_expression(*e, c, ValueType::Scalar);
+  Evaluator ev(m.map, sigs, {m.find("position")});
+  Dart d = 0;
+  EXPECT_EQ(ev.evaluate(*e, &d, ValueType::Scalar, "test").x, 1.0);
 }
