@@ -28,6 +28,9 @@ struct NodeRef {
   uint32_t index = 0;
 };
 
+// The functions of the language (type_check.cpp resolves the names, including synonyms).
+enum class Function : uint8_t { None, Point, Vector, Colour, Middle, Sum, Count, Cos, Sin, Sqrt, Abs, Dot, Cross, Norm, Clamp };
+
 struct Expr {
   enum class Op { Number, Constant, Value, Collect, Comprehension, Call, Neg, Add, Sub, Mul, Div, Let };
   Op op = Op::Number;
@@ -48,6 +51,7 @@ struct Expr {
   StaticType type;
   int embedding = -1;  // Value/Collect: index of the embedding in the declarations
   int let_index = -1;  // Constant naming a let variable: its depth
+  Function function = Function::None;  // Call
 };
 
 // The expression text regenerated from the tree (normal spacing), for messages and round trips.

@@ -20,6 +20,7 @@ using K = StaticType::Kind;
 Evaluator::Evaluator(const GMap& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
     : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
   scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
+  vals_.resize(kMaxNesting + 1);
 }
 
 Val Evaluator::from_storage(const Vec3& s, ValueType t) {
@@ -190,52 +191,62 @@ Val Evaluator::eval(const Expr& e) {
     }
     case Expr::Op::Call: break;
   }
-  const std::string& f = e.name;
-  if (f == "point" || f == "vector" || f == "colour" || f == "color") {
-    const Val x = eval(*e.args[0]), y = eval(*e.args[1]), z = eval(*e.args[2]);
-    return {x.x, y.x, z.x, f == "point" ? 1.0 : 0.0};
-  }
-  if (f == "middle" || f == "barycenter" || f == "barycentre" || f == "center" || f == "mix" || f == "sum" ||
-      f == "count") {
-    Val acc;
-    size_t n = 0;
-    if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) {
-      std::vector<Val> m;
-      members(*e.args[0], m);
-      for (const Val& v : m) acc = add(acc, v);
-      n = m.size();
-    } else {
-      for (const auto& a : e.args) acc = add(acc, eval(*a));
-      n = e.args.size();
+  switch (e.function) {
+    case Function::Point:
+    case Function::Vector:
+    case Function::Colour: {
+      const Val x = eval(*e.args[0]), y = eval(*e.args[1]), z = eval(*e.args[2]);
+      return {x.x, y.x, z.x, e.function == Function::Point ? 1.0 : 0.0};
     }
-    if (f == "count") return {static_cast<double>(n), 0, 0, 0};
-    if (f == "sum") return acc;
-    if (n == 0) fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
-    return scale(acc, 1.0 / static_cast<double>(n));
+    case Function::Middle:
+    case Function::Sum:
+    case Function::Count: {
+      Val acc;
+      size_t n = 0;
+      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) {
+        // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
+        std::vector<Val>& m = vals_[vars_.size()];
+        m.clear();
+        members(*e.args[0], m);
+        for (const Val& v : m) acc = add(acc, v);
+        n = m.size();
+      } else {
+        for (const auto& a : e.args) acc = add(acc, eval(*a));
+        n = e.args.size();
+      }
+      if (e.function == Function::Count) return {static_cast<double>(n), 0, 0, 0};
+      if (e.function == Function::Sum) return acc;
+      if (n == 0) fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+      return scale(acc, 1.0 / static_cast<double>(n));
+    }
+    case Function::Cos: return {std::cos(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Sin: return {std::sin(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Abs: return {std::fabs(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Sqrt: {
+      const double x = eval(*e.args[0]).x;
+      if (x < 0) fail(e, "square root of a negative number", nodes_ ? nodes_[0] : kNoDart);
+      return {std::sqrt(x), 0, 0, 0};
+    }
+    case Function::Dot: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return {a.x * b.x + a.y * b.y + a.z * b.z, 0, 0, 0};
+    }
+    case Function::Cross: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x, 0};
+    }
+    case Function::Norm: {
+      const Val a = eval(*e.args[0]);
+      return {std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z), 0, 0, 0};
+    }
+    case Function::Clamp: {
+      const Val a = eval(*e.args[0]);
+      auto c = [](double v) { return v < 0 ? 0.0 : v > 1 ? 1.0 : v; };
+      return {c(a.x), c(a.y), c(a.z), 0};
+    }
+    case Function::None: break;
   }
-  if (f == "cos" || f == "sin" || f == "sqrt" || f == "abs") {
-    const double x = eval(*e.args[0]).x;
-    if (f == "sqrt" && x < 0) fail(e, "square root of a negative number", nodes_ ? nodes_[0] : kNoDart);
-    return {f == "cos" ? std::cos(x) : f == "sin" ? std::sin(x) : f == "sqrt" ? std::sqrt(x) : std::fabs(x), 0, 0, 0};
-  }
-  if (f == "dot") {
-    const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
-    return {a.x * b.x + a.y * b.y + a.z * b.z, 0, 0, 0};
-  }
-  if (f == "cross") {
-    const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x, 0};
-  }
-  if (f == "norm") {
-    const Val a = eval(*e.args[0]);
-    return {std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z), 0, 0, 0};
-  }
-  if (f == "clamp") {
-    const Val a = eval(*e.args[0]);
-    auto c = [](double v) { return v < 0 ? 0.0 : v > 1 ? 1.0 : v; };
-    return {c(a.x), c(a.y), c(a.z), 0};
-  }
-  fail(e, "unknown function " + f);
+  fail(e, "unknown function " + e.name);
 }
 
 }  // namespace gmr::expr

@@ -58,6 +58,7 @@ class Evaluator {
   const std::string* where_ = nullptr;
   std::vector<std::vector<Dart>> scratch_;
   std::vector<uint32_t> slots_;
+  std::vector<std::vector<Val>> vals_;  // multiset buffers per nesting depth
 };
 
 }  // namespace gmr::expr

@@ -114,8 +114,27 @@ class Checker {
     return std::nullopt;
   }
 
+  static Function function_of(const std::string& f) {
+    if (f == "point") return Function::Point;
+    if (f == "vector") return Function::Vector;
+    if (f == "colour" || f == "color") return Function::Colour;
+    if (f == "middle" || f == "barycenter" || f == "barycentre" || f == "center" || f == "mix") return Function::Middle;
+    if (f == "sum") return Function::Sum;
+    if (f == "count") return Function::Count;
+    if (f == "cos") return Function::Cos;
+    if (f == "sin") return Function::Sin;
+    if (f == "sqrt") return Function::Sqrt;
+    if (f == "abs") return Function::Abs;
+    if (f == "dot") return Function::Dot;
+    if (f == "cross") return Function::Cross;
+    if (f == "norm") return Function::Norm;
+    if (f == "clamp") return Function::Clamp;
+    return Function::None;
+  }
+
   StaticType call(Expr& e) {
     const std::string& f = e.name;
+    e.function = function_of(f);
     std::vector<StaticType> t;
     for (auto& a : e.args) t.push_back(check(*a));
     auto arity = [&](size_t n) {
