@@ -9,6 +9,7 @@
 #include "model/core/error.hpp"
 #include "model/io/jme_import.hpp"
 #include "model/io/scheme_json.hpp"
+#include "model/testing/source_tree.hpp"
 
 namespace gmr::prop {
 using namespace gmr::scheme;
@@ -18,14 +19,13 @@ using namespace gmr::checker;
 const std::vector<LibraryScheme>& scheme_library() {
   static const std::vector<LibraryScheme> lib = [] {
     std::vector<LibraryScheme> out;
-    const char* r = std::getenv("GMR_SOURCE_DIR");
-    const std::string root = r ? r : ".";
+    const std::string root = gmr::testing::source_path(".");
     std::vector<std::pair<RuleScheme, bool>> all;
     std::vector<std::filesystem::path> files;
     for (const auto& e : std::filesystem::directory_iterator(root + "/tools/data/rules")) files.push_back(e.path());
     std::sort(files.begin(), files.end());  // directory order is not portable
     for (const auto& f : files) all.emplace_back(read_scheme_file(f), true);
-    for (auto& s : read_jme_file(root + "/model/io/tests/data/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
+    for (auto& s : read_jme_file(root + "/tools/data/jerboa/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
     for (auto& [s, standard] : all) {
       std::shared_ptr<const SchemeEngine> e;
       try {

@@ -1,5 +1,5 @@
 // The scheme library used by the property tests: the standard operations of tools/data/rules and
-// the 50 rules of the Jerboa fixture (model/io/tests/data/JerboaTrackingOrbit.jme), each with the
+// the 50 rules of the Jerboa fixture (tools/data/jerboa/JerboaTrackingOrbit.jme), each with the
 // scheme checker's verdict. Schemes the engine cannot apply (malformed, or breaking I_S) are left
 // out. Loaded once from $GMR_SOURCE_DIR (set by CTest).
 #pragma once

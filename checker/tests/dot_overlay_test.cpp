@@ -6,6 +6,7 @@
 #include "checker/rule_check.hpp"
 #include "model/io/rule_json.hpp"
 #include "model/io/scheme_json.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::rewrite;
@@ -15,10 +16,7 @@ using namespace gmr::draw;
 using namespace gmr::checker;
 
 namespace {
-std::string source(const std::string& rel) {
-  const char* s = std::getenv("GMR_SOURCE_DIR");
-  return std::string(s ? s : ".") + "/" + rel;
-}
+std::string source(const std::string& rel) { return gmr::testing::source_path(rel); }
 }  // namespace
 
 TEST(DotOverlay, RejectedConcreteRuleHighlightsTheAddedNode) {

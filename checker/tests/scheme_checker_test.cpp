@@ -1,4 +1,5 @@
-// The rule-scheme checker: reference schemes, each diagnostic code, erratum 6, the Jerboa fixture.
+// The rule-scheme checker: reference schemes, each diagnostic code, the identity rule that the
+// literal Algorithm 3 rejects, the Jerboa fixture.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -7,6 +8,7 @@
 #include "checker/scheme_checker.hpp"
 #include "model/io/jme_import.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
@@ -16,8 +18,10 @@ using namespace gmr::fixtures;
 
 namespace {
 
-// The identity-on-0 edge rule of erratum 6: L a -0- b with explicit 1-loops; R a -0- b, a -1- b.
-RuleScheme erratum6_scheme() {
+// The identity-on-0 edge rule that the literal Algorithm 3 rejects (an L arc of a preserved node on
+// no R-cycle; Def. 40 asks it of deleted arcs only): L a -0- b with explicit 1-loops; R a -0- b,
+// a -1- b.
+RuleScheme identity_on_0_scheme() {
   RuleScheme r;
   r.name = "relink1";
   r.dimension = 2;
@@ -168,8 +172,8 @@ TEST(SchemeChecker, CycleWordNotCongruent) {
   EXPECT_TRUE(rep.ok()) << to_text(rep);
 }
 
-TEST(SchemeChecker, Erratum6DefinitionVersusAlgorithm3) {
-  const RuleScheme r = erratum6_scheme();
+TEST(SchemeChecker, DefinitionVersusLiteralAlgorithm3) {
+  const RuleScheme r = identity_on_0_scheme();
   SchemeCheckReport def40 = check_scheme(r);
   EXPECT_TRUE(def40.ok()) << to_text(def40);
   SchemeCheckOptions strict;
@@ -182,8 +186,7 @@ TEST(SchemeChecker, Erratum6DefinitionVersusAlgorithm3) {
 }
 
 TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"));
   ASSERT_EQ(m.rules.size(), 50u);
   size_t accepted = 0;
   std::map<std::string, bool> verdict;
@@ -203,7 +206,7 @@ TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
 
 // A scheme report is a gmr.check document (docs/check-format.md) with subject "scheme".
 TEST(SchemeChecker, JsonIsAGmrCheckDocument) {
-  RuleScheme r = erratum6_scheme();
+  RuleScheme r = identity_on_0_scheme();
   const SchemeCheckReport rep = check_scheme(r);
   const auto j = to_json(rep);
   EXPECT_EQ(j["format"], "gmr.check");

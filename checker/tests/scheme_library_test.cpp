@@ -15,6 +15,7 @@
 #include "model/io/scheme_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
@@ -23,10 +24,7 @@ using namespace gmr::checker;
 
 namespace {
 
-std::filesystem::path rules_dir() {
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  return std::filesystem::path(root ? root : ".") / "tools/data/rules";
-}
+std::filesystem::path rules_dir() { return gmr::testing::source_path("tools/data/rules"); }
 
 RuleScheme lib(const std::string& name) { return read_scheme_file(rules_dir() / (name + ".json")); }
 
@@ -58,7 +56,7 @@ TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
     SchemeCheckReport rep = check_scheme(r);
     EXPECT_TRUE(rep.ok()) << to_text(rep);
     EXPECT_EQ(rep.warnings(), 0u) << to_text(rep);
-    // Erratum 6: the literal Algorithm 3 also rejects preserved nodes whose PRESERVED 0-arc is
+    // The literal Algorithm 3 also rejects preserved nodes whose PRESERVED 0-arc is
     // not on a (0,2)-cycle of R (their 2-link lies outside the orbit), although these operations
     // are valid (every application in the tests below yields a valid G-map).
     SchemeCheckOptions strict;

@@ -12,6 +12,7 @@
 #include "model/io/jme_import.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
@@ -51,8 +52,7 @@ std::optional<Witness> find_witness(const RuleScheme& s) {
 }  // namespace
 
 TEST(SchemeWitness, RejectedJerboaRules) {
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  JmeModeler m = read_jme_file(std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"));
   std::map<std::string, std::optional<Witness>> found;
   SchemeCheckOptions topology;  // witnesses are about the topology
   topology.embeddings = false;

@@ -146,7 +146,7 @@ TEST(Systems, GmapRulesAndConfluence) {
   }
   EXPECT_EQ(checked, 4u + 16 + 64 + 256 + 1024);
   EXPECT_EQ(R.normal_form(w("0202")), PathWord{});
-  EXPECT_EQ(R.normal_form(w("02")), w("02"));  // erratum 7: a length-2 cycle word is not ε
+  EXPECT_EQ(R.normal_form(w("02")), w("02"));  // a length-2 cycle word is not ε (no rule of Def. 52 applies)
   EXPECT_EQ(R.normal_form(w("31303")), w("103"));  // 31303 -> 13303 -> 103 (1,0 do not commute)
 }
 

@@ -16,6 +16,7 @@
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 #include "model/words/word_scheme.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -246,7 +247,7 @@ TEST(F8, Fig419aMatchAndDerivation) {
   const DGraph G = f8_graph();
   const PatternGraph P = pattern_graph(G, kF8Words);
   const WordRuleScheme S = fig419a();
-  // On a..d the (eps,1)-loops of ι(L,P) need 1-loops in G: no match (erratum 17, Ex. 49).
+  // On a..d the (eps,1)-loops of ι(L,P) need 1-loops in G: no match (Ex. 49).
   const PatternGraph Pa = component(P, 0);
   EXPECT_FALSE(propagate_match(S, Pa, instantiate_word_rule(S, Pa), G).has_value());
   // On e,f (1-free darts) the match is (u,y) ↦ u, and the derivation keeps I(1), I(2).
@@ -354,8 +355,7 @@ TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
   }
   EXPECT_TRUE(check_cycle(app.rule, 0, 2, diags));
   // Jerboa-scheme engine on tools/data/rules/quad_subdivision.json.
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  const RuleScheme js = read_scheme_file(std::string(root ? root : ".") + "/tools/data/rules/quad_subdivision.json");
+  const RuleScheme js = read_scheme_file(gmr::testing::source_path("tools/data/rules/quad_subdivision.json"));
   const auto [J, japp] = apply_scheme(cube, js, {0});
   ASSERT_TRUE(japp.applied) << japp.why;
   EXPECT_EQ(J.size(), 192u);

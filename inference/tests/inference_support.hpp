@@ -9,13 +9,11 @@
 #include "inference/fold.hpp"
 #include "inference/fold_check.hpp"
 #include "inference/joint_graph.hpp"
+#include "model/testing/source_tree.hpp"
 
 namespace gmr::inference::test {
 
-inline std::string source_dir() {
-  const char* s = std::getenv("GMR_SOURCE_DIR");
-  return s ? s : ".";
-}
+inline std::string source_dir() { return gmr::testing::source_path("."); }
 // An orbit type in the papers' notation, e.g. ot("<0,_,2>").
 inline OrbitType ot(const char* s) { return OrbitType::parse(s); }
 

@@ -253,4 +253,18 @@ GMap orient(const GMap& g, Dart d, bool keep_boundary) {
   return o;
 }
 
+GMap lift(const GMap& g, int n) {
+  if (n < g.dimension() || n >= kMaxDim)
+    throw Error(ErrorCode::Usage, "cannot lift a " + std::to_string(g.dimension()) + "-map to dimension " +
+                                      std::to_string(n) + " (expected " + std::to_string(g.dimension()) + ".." +
+                                      std::to_string(kMaxDim - 1) + ")");
+  GMap out(n, g.kind());
+  out.add_darts(g.capacity());
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
+    for (Dart d = 0; d < g.capacity(); ++d) out.set_alpha(i, d, g.alpha(i, d));
+  for (Dart d = 0; d < g.capacity(); ++d)
+    if (!g.alive(d)) out.remove_dart(d);
+  return out;
+}
+
 }  // namespace gmr

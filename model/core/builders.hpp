@@ -43,6 +43,11 @@ std::vector<Voxel> menger_voxels(int level);
 // A closed orientable surface of genus 1 (a torus) as a grid of w x h quads with wrap-around.
 GMap make_torus(size_t w, size_t h, int n = 2);
 
+// The map as an n-G-map (n-O-map) for n >= its dimension: the same darts and links, every new
+// dimension free (loops). A surface lifted to dimension 3 is a 3-G-map with one volume per
+// connected component, so that rules written for volumes apply to it.
+GMap lift(const GMap& g, int n);
+
 // The O-map of the orientation class of dart `d` of a closed orientable G-map:
 // beta_i = alpha_i o alpha_0 (i >= 1) restricted to the darts reachable from d by even words.
 // Throws Error(InvalidMap) when the component is not orientable or has a free dart.

@@ -21,21 +21,22 @@ JsonEmbedding position_to_json(const GMap& g, const PositionEmbedding& pos) {
   return out;
 }
 
+std::optional<std::string> position_value_problem(const nlohmann::json& v) {
+  if (!v.is_array() || v.size() != 3) return "a position must be an array [x, y, z], found " + v.dump();
+  for (size_t a = 0; a < 3; ++a)
+    if (!v[a].is_number() || !std::isfinite(v[a].get<double>()))
+      return "a position coordinate must be a finite number, found " + v[a].dump();
+  return std::nullopt;
+}
+
 PositionEmbedding position_from_json(const GMap& g, const JsonEmbedding& e) {
   PositionEmbedding out(e.name(), e.orbit_type());
   for (Dart rep : orbit_representatives(g, e.orbit_type())) {
     if (!e.has(rep)) continue;
     const nlohmann::json& v = e.get(rep);
-    const std::string where = "embedding '" + e.name() + "', dart " + std::to_string(rep);
-    if (!v.is_array() || v.size() != 3)
-      throw Error(ErrorCode::Schema, "a position must be an array [x, y, z], found " + v.dump(), where);
-    Vec3 p{};
-    for (size_t a = 0; a < 3; ++a) {
-      if (!v[a].is_number() || !std::isfinite(v[a].get<double>()))
-        throw Error(ErrorCode::Schema, "a position coordinate must be a finite number, found " + v[a].dump(), where);
-      p[a] = v[a].get<double>();
-    }
-    out.set(g, rep, p);
+    if (auto problem = position_value_problem(v))
+      throw Error(ErrorCode::Schema, *problem, "embedding '" + e.name() + "', dart " + std::to_string(rep));
+    out.set(g, rep, Vec3{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()});
   }
   return out;
 }

@@ -92,8 +92,9 @@ ValidityReport check_validity(const GMap& g, size_t limit) {
       });
     }
   }
-  for (auto [i, j] : g.spec().cycle_pairs()) {
+  for (const auto& pair : g.spec().cycle_pairs()) {
     {
+      const int i = pair.first, j = pair.second;  // named, not bound: the lambda below captures them
       if (!dim_ok[i] || !dim_ok[j]) continue;
       const Dart* const li = g.links(i).data();
       const Dart* const lj = g.links(j).data();

@@ -1,10 +1,12 @@
 #include "model/io/face_list.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
+#include "model/io/read_limits.hpp"
 
 namespace gmr::io {
 
@@ -95,6 +97,48 @@ PositionedMap map_from_face_list(const FaceList& fl, const SurfaceOptions& opt) 
   for (Dart rep : orbit_representatives(m.map, m.position.orbit_type()))
     m.position.set(m.map, rep, fl.vertices[vertex_of_dart[rep]]);
   return m;
+}
+
+PositionedMap map_from_file_faces(const FaceList& fl, const FaceLines& file, const SurfaceOptions& opt) {
+  uint64_t darts = 0;  // two darts per face corner
+  for (const auto& face : fl.faces) darts += 2 * face.size();
+  check_dart_limit(darts, file.source);
+  const std::string& source = file.source;
+  const std::vector<size_t>& face_lines = file.face_lines;
+  const std::vector<size_t>& vertex_lines = file.vertex_lines;
+  auto where = [&](size_t line) { return (source.empty() ? "line " : source + ":") + std::to_string(line); };
+  try {
+    return map_from_face_list(fl, opt);
+  } catch (const Error& e) {
+    // Map the builder's location ("edge (u,v)", "vertex v", "face f") to file lines.
+    unsigned long u = 0, v = 0;
+    int used = 0;
+    const std::string& loc = e.location();
+    if (std::sscanf(loc.c_str(), "edge (%lu,%lu)%n", &u, &v, &used) == 2 && used == static_cast<int>(loc.size())) {
+      std::vector<size_t> lines;
+      for (size_t f = 0; f < fl.faces.size(); ++f) {
+        const auto& face = fl.faces[f];
+        for (size_t p = 0; p < face.size(); ++p) {
+          const uint32_t a = face[p], b = face[(p + 1) % face.size()];
+          if ((a == u && b == v) || (a == v && b == u)) {
+            lines.push_back(face_lines[f]);
+            break;
+          }
+        }
+      }
+      std::string list;
+      for (size_t l : lines) list += (list.empty() ? "" : ", ") + std::to_string(l);
+      const size_t at = lines.size() > 2 ? lines[2] : (lines.empty() ? 1 : lines.back());
+      throw Error(e.code(), e.message() + " on " + loc + ", faces at lines " + list, where(at));
+    }
+    if (std::sscanf(loc.c_str(), "vertex %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
+        u < vertex_lines.size())
+      throw Error(e.code(), e.message() + " (" + loc + ")", where(vertex_lines[u]));
+    if (std::sscanf(loc.c_str(), "face %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
+        u < face_lines.size())
+      throw Error(e.code(), e.message(), where(face_lines[u]));
+    throw Error(e.code(), e.message(), source.empty() ? loc : source + ": " + loc);
+  }
 }
 
 }  // namespace gmr::io

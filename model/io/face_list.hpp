@@ -13,6 +13,7 @@
 //    neighbouring faces necessarily disagree.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "model/core/builders.hpp"
@@ -39,5 +40,15 @@ FaceList face_list_from_map(const GMap& g, const PositionEmbedding& pos);
 // surface_from_faces propagate (Error(NonManifold) naming the edge or vertex, Error(Schema) naming
 // the face).
 PositionedMap map_from_face_list(const FaceList& fl, const SurfaceOptions& opt = {});
+
+// Where a file's faces and vertices are: the 1-based line of each face and vertex of a face list.
+struct FaceLines {
+  std::string source;
+  std::vector<size_t> face_lines, vertex_lines;
+};
+// map_from_face_list for a face list read from a file (OFF, OBJ): the builder's errors are
+// located "<source>:<line>" at the offending face or vertex, a non-manifold edge naming the lines
+// of all its faces.
+PositionedMap map_from_file_faces(const FaceList& fl, const FaceLines& file, const SurfaceOptions& opt = {});
 
 }  // namespace gmr::io

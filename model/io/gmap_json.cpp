@@ -6,6 +6,7 @@
 #include "model/io/json_writer.hpp"
 #include "model/core/orbit.hpp"
 #include "model/io/read_file.hpp"
+#include "model/io/read_limits.hpp"
 
 namespace gmr::io {
 
@@ -18,7 +19,9 @@ bool parse_dim_key(const std::string& key, int& dim) {
   return ec == std::errc() && p == key.data() + key.size();
 }
 
-void read_links(const JsonAt& alpha, GMap& g, Dart n_darts) {
+// Checks the dimension keys of "alpha" and that each link array has one entry per dart, before
+// any dart is allocated (a small file may declare billions of darts).
+void check_link_arrays(const JsonAt& alpha, const GMap& g, Dart n_darts) {
   alpha.require_object();
   const int lo = g.lowest_dim(), n = g.dimension();
   const std::string dims = std::to_string(lo) + ".." + std::to_string(n);
@@ -33,11 +36,19 @@ void read_links(const JsonAt& alpha, GMap& g, Dart n_darts) {
     const size_t count = links.array_size();
     if (count != n_darts)
       links.fail("expected " + std::to_string(n_darts) + " entries (one per dart), found " + std::to_string(count));
+  }
+}
+
+void read_links(const JsonAt& alpha, GMap& g, Dart n_darts) {
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
+    const JsonAt links = alpha[std::to_string(i)];
     const nlohmann::json& arr = links.value();
     for (Dart d = 0; d < n_darts; ++d) {
       const nlohmann::json& t = arr[d];
+      if (!t.is_number_integer() && !t.is_number_unsigned())
+        links.fail_at(links.child_path(d), "expected a dart index (an integer), found " + describe_json(t));
       if (!t.is_number_unsigned() || t.get<uint64_t>() >= n_darts) {
-        const std::string what = t.is_number() ? t.dump() : describe_json(t);
+        const std::string what = t.dump();
         links.fail_at(links.child_path(d), "dart index " + what + " out of range: the map has " +
                                                std::to_string(n_darts) + " darts (0.." +
                                                std::to_string(static_cast<int64_t>(n_darts) - 1) + ")");
@@ -71,8 +82,10 @@ JsonEmbedding read_embedding(const JsonAt& at, const GMap& g, Dart n_darts) {
     entry.allow_only({"dart", "value"});
     const JsonAt dart_at = entry["dart"];
     const nlohmann::json& dv = dart_at.value();
+    if (!dv.is_number_integer() && !dv.is_number_unsigned())
+      dart_at.fail("expected a dart index (an integer), found " + describe_json(dv));
     if (!dv.is_number_unsigned() || dv.get<uint64_t>() >= n_darts)
-      dart_at.fail("dart index " + (dv.is_number() ? dv.dump() : describe_json(dv)) + " out of range: the map has " +
+      dart_at.fail("dart index " + dv.dump() + " out of range: the map has " +
                    std::to_string(n_darts) + " darts");
     const auto d = static_cast<Dart>(dv.get<uint64_t>());
     const JsonAt value_at = entry["value"];
@@ -101,6 +114,8 @@ GMapFile gmap_from_json(const JsonAt& doc) {
   const auto n_darts = static_cast<Dart>(doc["darts"].as_int(0, static_cast<int64_t>(kNoDart) - 1));
   GMapFile f;
   f.map = GMap(n, kind);
+  check_dart_limit(n_darts, doc["darts"].location());
+  check_link_arrays(doc["alpha"], f.map, n_darts);
   f.map.add_darts(n_darts);
   read_links(doc["alpha"], f.map, n_darts);
   if (auto embs = doc.get("embeddings")) {

@@ -179,6 +179,12 @@ JmeModeler parse_jme(std::string_view text, const std::string& source) {
   for (const XMLElement* r : xml_children(rules, "rule")) {
     RuleScheme s;
     s.name = cx.attr(*r, "name");
+    for (size_t k = 0; k < m.rules.size(); ++k)
+      if (m.rules[k].name == s.name)
+        throw Error(ErrorCode::Schema,
+                    "two rules named \"" + s.name + "\" (lines " + std::to_string(m.rule_lines[k]) + " and " +
+                        std::to_string(r->GetLineNum()) + "): --rule could not tell them apart",
+                    cx.at(*r));
     s.dimension = m.dimension;
     if (const XMLElement* c = r->FirstChildElement("comment")) s.description = trimmed(xml_text(*c));
     if (const XMLElement* p = r->FirstChildElement("precondition")) s.precondition = trimmed(xml_text(*p));

@@ -18,8 +18,8 @@
 //    code blocks (header, pre/mid/postprocess, paramsebd) are ignored.
 // Layout attributes (x, y, angle, color, shape, ...) are ignored. The importer is tolerant on
 // scheme consistency (wrong arity, `_` in hooks, ...: the checker reports them) but strict on the
-// file: malformed XML, a missing attribute, a non-integer dimension or an arc naming an unknown
-// node is an Error (Parse, Schema) located "<file>:<line>".
+// file: malformed XML, a missing attribute, a non-integer dimension, an arc naming an unknown
+// node or two rules of one name is an Error (Parse, Schema) located "<file>:<line>".
 #pragma once
 #include <filesystem>
 #include <string>

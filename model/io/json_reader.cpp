@@ -3,32 +3,128 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <vector>
 
 namespace gmr::io {
 
-nlohmann::json parse_json(std::string_view text, const std::string& source) {
-  try {
-    return nlohmann::json::parse(text.begin(), text.end());
-  } catch (const nlohmann::json::parse_error& e) {
-    // e.byte is the 1-based offset of the last character read; turn it into line:column.
-    const size_t end = std::min(e.byte > 0 ? e.byte - 1 : 0, text.size());
-    size_t line = 1, col = 1;
-    for (size_t k = 0; k < end; ++k) {
-      if (text[k] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
+namespace {
+
+// "line:column" of byte offset `end` in `text`.
+std::string line_column(std::string_view text, size_t end) {
+  end = std::min(end, text.size());
+  size_t line = 1, col = 1;
+  for (size_t k = 0; k < end; ++k) {
+    if (text[k] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
     }
-    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5: <what>".
-    std::string what = e.what();
-    const size_t column_at = what.find("column ");
-    const size_t colon = what.find(": ", column_at == std::string::npos ? 0 : column_at);
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    std::string loc = std::to_string(line) + ":" + std::to_string(col);
-    throw Error(ErrorCode::Parse, "malformed JSON: " + what, source.empty() ? "line " + loc : source + ":" + loc);
   }
+  return std::to_string(line) + ":" + std::to_string(col);
+}
+
+// Builds the document from nlohmann's SAX events, rejecting what the DOM parser accepts silently:
+// a member name given twice in one object (nlohmann keeps the last) and nesting deeper than
+// kMaxJsonDepth (the writers and the destructor recurse per level). Problems are located by path.
+class DomBuilder : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  DomBuilder(std::string_view text, const std::string& source) : text_(text), source_(source) {}
+  nlohmann::json take() { return std::move(root_); }
+
+  bool null() override { return add(nullptr); }
+  bool boolean(bool v) override { return add(v); }
+  bool number_integer(number_integer_t v) override { return add(v); }
+  bool number_unsigned(number_unsigned_t v) override { return add(v); }
+  bool number_float(number_float_t v, const string_t&) override { return add(v); }
+  bool string(string_t& v) override { return add(std::move(v)); }
+  bool binary(binary_t&) override { return fail_here("binary values are not JSON"); }
+  bool start_object(std::size_t) override { return open(nlohmann::json::object()); }
+  bool start_array(std::size_t) override { return open(nlohmann::json::array()); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+  bool key(string_t& k) override {
+    Frame& top = stack_.back();
+    if (top.node->contains(k))
+      throw Error(ErrorCode::Parse, "duplicate member \"" + k + "\" (JSON objects name each member once)",
+                  located(top.path + json_path_key(k)));
+    top.key = std::move(k);
+    return true;
+  }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
+    // nlohmann's message: "[json.exception.<kind>.<id>] [parse error at line 3, column 5: ]<what>".
+    std::string what = e.what();
+    const size_t bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    const size_t column_at = what.find("column ");
+    if (column_at != std::string::npos) {
+      const size_t colon = what.find(": ", column_at);
+      if (colon != std::string::npos) what = what.substr(colon + 2);
+    }
+    // position is the 1-based offset of the last character read.
+    const std::string loc = line_column(text_, position > 0 ? position - 1 : 0);
+    throw Error(ErrorCode::Parse, "malformed JSON: " + what, source_.empty() ? "line " + loc : source_ + ":" + loc);
+  }
+
+ private:
+  struct Frame {
+    nlohmann::json* node;
+    std::string path;
+    std::string key;  // pending member name (objects)
+  };
+
+  std::string located(const std::string& path) const { return source_.empty() ? path : source_ + ":" + path; }
+  std::string next_path() const {
+    if (stack_.empty()) return "$";
+    const Frame& top = stack_.back();
+    return top.node->is_array() ? top.path + "[" + std::to_string(top.node->size()) + "]"
+                                : top.path + json_path_key(top.key);
+  }
+  bool fail_here(const std::string& message) const { throw Error(ErrorCode::Parse, message, located(next_path())); }
+
+  nlohmann::json* place(nlohmann::json&& v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return &root_;
+    }
+    Frame& top = stack_.back();
+    if (top.node->is_array()) {
+      top.node->push_back(std::move(v));
+      return &top.node->back();
+    }
+    nlohmann::json& slot = (*top.node)[top.key];
+    slot = std::move(v);
+    return &slot;
+  }
+  bool add(nlohmann::json&& v) {
+    place(std::move(v));
+    return true;
+  }
+  bool open(nlohmann::json&& container) {
+    if (stack_.size() >= kMaxJsonDepth)
+      fail_here("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels of arrays and objects");
+    std::string path = next_path();
+    nlohmann::json* node = place(std::move(container));
+    stack_.push_back(Frame{node, std::move(path), {}});
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+
+  std::string_view text_;
+  const std::string& source_;
+  nlohmann::json root_;
+  std::vector<Frame> stack_;
+};
+
+}  // namespace
+
+nlohmann::json parse_json(std::string_view text, const std::string& source) {
+  DomBuilder builder(text, source);
+  nlohmann::json::sax_parse(text.begin(), text.end(), &builder);
+  return builder.take();
 }
 
 std::string json_path_key(std::string_view key) {

@@ -20,6 +20,11 @@
 
 namespace gmr::io {
 
+// Nesting limit of parse_json: deeper documents are Error(Parse) located by path.
+inline constexpr size_t kMaxJsonDepth = 100;
+
+// Parses a JSON document. Besides malformed text (located line:column), rejects a member name
+// given twice in one object and nesting deeper than kMaxJsonDepth (located by path).
 nlohmann::json parse_json(std::string_view text, const std::string& source = {});
 
 // `.key` or `["key"]`, as appended to a path.

@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "model/io/atomic_write.hpp"
 #include "model/io/read_file.hpp"
@@ -62,6 +61,48 @@ bool to_double(std::string_view t, double& x) {
 
 std::string quoted(std::string_view t) { return "\"" + std::string(t) + "\""; }
 
+// The OFF header keyword [ST][C][N][4]OFF (Princeton OFF, as CGAL reads it): vertex lines carry
+// x y z [w] (4: homogeneous), then a normal (N: 3 numbers), a colour (C: 3 or 4 numbers, RGB[A])
+// and texture coordinates (ST: 2 numbers). Normals, colours and texture coordinates are read and
+// dropped: the map keeps positions only.
+struct OffHeader {
+  bool known = false, texture = false, colour = false, normal = false, homogeneous = false;
+
+  size_t fixed() const { return (homogeneous ? 4 : 3) + (normal ? 3 : 0) + (texture ? 2 : 0); }
+  bool accepts(size_t n) const { return colour ? (n == fixed() + 3 || n == fixed() + 4) : n == fixed(); }
+  std::string value_counts() const {
+    return colour ? std::to_string(fixed() + 3) + " or " + std::to_string(fixed() + 4) : std::to_string(fixed());
+  }
+  std::string vertex_layout() const {
+    return std::string(homogeneous ? "x y z w" : "x y z") + (normal ? " nx ny nz" : "") + (colour ? " r g b [a]" : "") +
+           (texture ? " s t" : "");
+  }
+  std::string value_name(size_t a) const {
+    const size_t coords = homogeneous ? 4 : 3;
+    if (a < coords) return std::string("coordinate ") + "xyzw"[a];
+    if (normal && a < coords + 3) return "a normal component";
+    return "a colour or texture component";
+  }
+};
+
+OffHeader parse_header(std::string_view word) {
+  OffHeader h;
+  if (word.size() < 3 || word.substr(word.size() - 3) != "OFF") return h;
+  std::string_view prefix = word.substr(0, word.size() - 3);
+  auto take = [&](std::string_view flag, bool& on) {
+    if (prefix.substr(0, flag.size()) == flag) {
+      on = true;
+      prefix.remove_prefix(flag.size());
+    }
+  };
+  take("ST", h.texture);
+  take("C", h.colour);
+  take("N", h.normal);
+  take("4", h.homogeneous);
+  h.known = prefix.empty();
+  return h;
+}
+
 }  // namespace
 
 FaceList parse_off(std::string_view text, const std::string& source, std::vector<size_t>* face_lines,
@@ -74,9 +115,10 @@ FaceList parse_off(std::string_view text, const std::string& source, std::vector
     if (!lex.next(line)) throw fail(lex.last_line() == 0 ? 1 : lex.last_line(), "unexpected end of file: expected " + what);
   };
   need("the header \"OFF\"");
-  if (line.tokens[0] != "OFF")
-    throw fail(line.number, "expected the header \"OFF\", found " + quoted(line.tokens[0]));
+  const OffHeader header = parse_header(line.tokens[0]);
+  if (!header.known) throw fail(line.number, "expected the header \"[ST][C][N][4]OFF\", found " + quoted(line.tokens[0]));
   std::vector<std::string_view> counts(line.tokens.begin() + 1, line.tokens.end());
+  if (!counts.empty() && counts[0] == "BINARY") throw fail(line.number, "binary OFF files are not supported");
   size_t counts_line = line.number;
   if (counts.empty()) {
     need("the counts line \"vertices faces [edges]\"");
@@ -98,15 +140,20 @@ FaceList parse_off(std::string_view text, const std::string& source, std::vector
   if (vertex_lines) vertex_lines->clear();
   if (face_lines) face_lines->clear();
   for (uint64_t v = 0; v < nv; ++v) {
-    need("vertex " + std::to_string(v) + " of " + std::to_string(nv) + " (\"x y z\")");
-    if (line.tokens.size() != 3)
-      throw fail(line.number, "expected a vertex \"x y z\" (3 numbers), found " + std::to_string(line.tokens.size()) +
-                                  " value(s)");
-    Vec3 p{};
-    for (size_t a = 0; a < 3; ++a)
-      if (!to_double(line.tokens[a], p[a]))
-        throw fail(line.number, "expected a finite number for coordinate " + std::string(1, "xyz"[a]) + ", found " +
+    need("vertex " + std::to_string(v) + " of " + std::to_string(nv) + " (\"" + header.vertex_layout() + "\")");
+    if (!header.accepts(line.tokens.size()))
+      throw fail(line.number, "expected a vertex \"" + header.vertex_layout() + "\" (" + header.value_counts() +
+                                  " numbers), found " + std::to_string(line.tokens.size()) + " value(s)");
+    double values[16] = {};
+    for (size_t a = 0; a < line.tokens.size(); ++a)
+      if (!to_double(line.tokens[a], values[a]))
+        throw fail(line.number, "expected a finite number for " + header.value_name(a) + ", found " +
                                     quoted(line.tokens[a]));
+    Vec3 p{values[0], values[1], values[2]};
+    if (header.homogeneous) {  // 4OFF: x y z w, the point (x/w, y/w, z/w)
+      if (values[3] == 0) throw fail(line.number, "homogeneous coordinate w = 0 (a point at infinity)");
+      for (size_t a = 0; a < 3; ++a) p[a] /= values[3];
+    }
     fl.vertices.push_back(p);
     if (vertex_lines) vertex_lines->push_back(line.number);
   }
@@ -154,39 +201,7 @@ FaceList parse_off(std::string_view text, const std::string& source, std::vector
 PositionedMap read_off(std::string_view text, const std::string& source) {
   std::vector<size_t> face_lines, vertex_lines;
   const FaceList fl = parse_off(text, source, &face_lines, &vertex_lines);
-  auto where = [&](size_t line) { return (source.empty() ? "line " : source + ":") + std::to_string(line); };
-  try {
-    return map_from_face_list(fl);
-  } catch (const Error& e) {
-    // Map the builder's location ("edge (u,v)", "vertex v", "face f") to file lines.
-    unsigned long u = 0, v = 0;
-    int used = 0;
-    const std::string& loc = e.location();
-    if (std::sscanf(loc.c_str(), "edge (%lu,%lu)%n", &u, &v, &used) == 2 && used == static_cast<int>(loc.size())) {
-      std::vector<size_t> lines;
-      for (size_t f = 0; f < fl.faces.size(); ++f) {
-        const auto& face = fl.faces[f];
-        for (size_t p = 0; p < face.size(); ++p) {
-          const uint32_t a = face[p], b = face[(p + 1) % face.size()];
-          if ((a == u && b == v) || (a == v && b == u)) {
-            lines.push_back(face_lines[f]);
-            break;
-          }
-        }
-      }
-      std::string list;
-      for (size_t l : lines) list += (list.empty() ? "" : ", ") + std::to_string(l);
-      const size_t at = lines.size() > 2 ? lines[2] : (lines.empty() ? 1 : lines.back());
-      throw Error(e.code(), e.message() + " on " + loc + ", faces at lines " + list, where(at));
-    }
-    if (std::sscanf(loc.c_str(), "vertex %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
-        u < vertex_lines.size())
-      throw Error(e.code(), e.message() + " (" + loc + ")", where(vertex_lines[u]));
-    if (std::sscanf(loc.c_str(), "face %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
-        u < face_lines.size())
-      throw Error(e.code(), e.message(), where(face_lines[u]));
-    throw Error(e.code(), e.message(), source.empty() ? loc : source + ": " + loc);
-  }
+  return map_from_file_faces(fl, {source, face_lines, vertex_lines});
 }
 
 PositionedMap read_off_file(const std::filesystem::path& path) { return read_off(read_text_file(path), path.string()); }

@@ -2,12 +2,16 @@
 //
 // Accepted input (one statement per line; '#' starts a comment anywhere on a line; blank lines and
 // comment-only lines are skipped):
-//   OFF                      header; the counts may follow on the same line ("OFF 8 6 12")
+//   [ST][C][N][4]OFF         header; the counts may follow on the same line ("OFF 8 6 12");
+//                            binary OFF is refused by name
 //   nv nf [ne]               counts line; ne (edges) is optional and ignored
-//   x y z                    nv vertex lines, exactly 3 finite numbers
+//   x y z [w] [n] [c] [st]   nv vertex lines of finite numbers: 3 coordinates (4OFF: 4,
+//                            homogeneous), then per the header a normal (N, 3), a colour (C, 3 or
+//                            4) and texture coordinates (ST, 2), read and dropped
 //   k v_1 ... v_k [colour]   nf face lines: k >= 3 vertex indices in 0..nv-1, no vertex repeated
 //                            consecutively; 0, 1, 3 or 4 trailing numbers (a colour) are ignored
-// Anything after the last face is an error. Every malformed line is reported as Error(Parse)
+// Anything after the last face is an error (the counts disagree with the file; CGAL's reader
+// ignores it). Every malformed line is reported as Error(Parse)
 // located "<source>:<line>", with what was expected. The faces are turned into a 2-G-map by
 // surface_from_faces (face_list.hpp): an edge shared by more than two faces or a pinched vertex is
 // rejected with the builder's Error(NonManifold), located at the file line of the offending face

@@ -9,7 +9,10 @@ namespace gmr::io {
 
 std::vector<Voxel> read_voxels_json(std::string_view text, const std::string& source) {
   const nlohmann::json doc = parse_json(text, source);
-  const JsonAt at(doc, source);
+  return voxels_from_json(JsonAt(doc, source));
+}
+
+std::vector<Voxel> voxels_from_json(const JsonAt& at) {
   at.check_header("gmr.voxels", 1);
   at.allow_only({"format", "version", "voxels"});
   const JsonAt list = at["voxels"];

@@ -8,10 +8,12 @@
 #include <vector>
 
 #include "model/core/builders.hpp"
+#include "model/io/json_reader.hpp"
 
 namespace gmr::io {
 
 std::vector<Voxel> read_voxels_json(std::string_view text, const std::string& source = {});
+std::vector<Voxel> voxels_from_json(const JsonAt& doc);
 std::vector<Voxel> read_voxels_json_file(const std::filesystem::path& path);
 
 }  // namespace gmr::io

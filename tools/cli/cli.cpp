@@ -6,6 +6,8 @@
 
 #include "model/io/atomic_write.hpp"
 #include "model/io/gmap_json.hpp"
+#include "model/io/json_reader.hpp"
+#include "model/io/voxels.hpp"
 #include "model/io/obj.hpp"
 #include "model/io/off.hpp"
 #include "model/io/json_writer.hpp"
@@ -47,7 +49,7 @@ std::optional<Format> parse_format(const std::string& name) {
 
 namespace {
 
-Format detect(const std::string& path, const std::string& override, const char* option) {
+Format detect(const std::string& path, const std::string& override, const char* option, const char* formats) {
   if (!override.empty()) {
     if (auto f = parse_format(override)) return *f;
     throw Error(ErrorCode::Usage, "unknown format \"" + override + "\"", option);
@@ -56,28 +58,40 @@ Format detect(const std::string& path, const std::string& override, const char* 
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (!ext.empty())
     if (auto f = parse_format(ext.substr(1))) return *f;
+  if (ext == ".jme")
+    throw Error(ErrorCode::Usage, "a Jerboa rule file (.jme) holds rules, not a map: give it to check, apply or dot as the rule",
+                path);
   throw Error(ErrorCode::Usage,
               "cannot tell the format from the file name" + std::string(ext.empty() ? "" : " (extension " + ext + ")") +
-                  "; name it with " + option,
+                  "; name it with " + option + " " + formats,
               path);
 }
 
 }  // namespace
 
 Format input_format(const std::string& path, const std::string& override) {
-  const Format f = detect(path, override, "--from");
-  if (f != Format::Json && f != Format::Off)
+  const Format f = detect(path, override, "--from", kInputFormats);
+  if (f != Format::Json && f != Format::Off && f != Format::Obj)
     throw Error(ErrorCode::Usage, std::string("cannot read ") + to_string(f) + " maps (input formats: " + kInputFormats + ")",
                 path);
   return f;
 }
 
-Format output_format(const std::string& path, const std::string& override) { return detect(path, override, "--to"); }
+Format output_format(const std::string& path, const std::string& override) {
+  return detect(path, override, "--to", kOutputFormats);
+}
 
 GMapFile load_map(const std::string& path, const std::string& from) {
   const Format f = input_format(path, from);
   if (f == Format::Off) return to_gmap_file(path == "-" ? read_off(read_text_file(path), "<stdin>") : read_off_file(path));
-  return path == "-" ? read_gmap_json(read_text_file(path), "<stdin>") : read_gmap_json_file(path);
+  if (f == Format::Obj) return to_gmap_file(read_obj(read_text_file(path), path == "-" ? "<stdin>" : path));
+  // JSON: a gmr.gmap document, or a gmr.voxels set read as its polycube (builders.hpp).
+  const std::string source = path == "-" ? "<stdin>" : path;
+  const nlohmann::json doc = parse_json(read_text_file(path), source);
+  const JsonAt at(doc, source);
+  if (doc.is_object() && doc.contains("format") && doc["format"] == "gmr.voxels")
+    return GMapFile{make_polycube(voxels_from_json(at)), {}};
+  return gmap_from_json(at);
 }
 
 void write_output(const std::string& path, const std::string& text) {
@@ -88,16 +102,31 @@ void write_output(const std::string& path, const std::string& text) {
   write_file_atomic(path, text);
 }
 
-void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot) {
+namespace {
+
+// The positions a mesh format needs, or an error located at the output naming what is missing.
+PositionedMap positioned_for_output(const GMapFile& f, const std::string& path, Format format) {
+  if (!f.find(kPositionName))
+    throw Error(ErrorCode::Schema,
+                std::string("the map has no \"position\" embedding: ") + to_string(format) +
+                    " output needs vertex coordinates (write json, dot or svg instead)",
+                path);
+  return to_positioned(f);
+}
+
+}  // namespace
+
+void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot,
+              size_t max_rendered_darts) {
   switch (format) {
     case Format::Json: write_output(path, write_gmap_json(f)); return;
     case Format::Off: {
-      const PositionedMap m = to_positioned(f);
+      const PositionedMap m = positioned_for_output(f, path, format);
       write_output(path, write_off(m.map, m.position));
       return;
     }
     case Format::Obj: {
-      const PositionedMap m = to_positioned(f);
+      const PositionedMap m = positioned_for_output(f, path, format);
       write_output(path, write_obj(m.map, m.position));
       return;
     }
@@ -105,14 +134,49 @@ void save_map(const GMapFile& f, const std::string& path, Format format, const D
     case Format::Svg:
     case Format::Png: {
       if (path == "-") throw Error(ErrorCode::Usage, "images are not written to standard output", path);
+      if (f.map.size() > max_rendered_darts)
+        throw Error(ErrorCode::Usage,
+                    "the map has " + std::to_string(f.map.size()) + " darts; Graphviz is not asked to lay out more than " +
+                        std::to_string(max_rendered_darts) +
+                        " (it would run for minutes to hours): write .dot instead, or raise the limit with gmr dot --max-darts N",
+                    path);
       render_dot_file(to_dot(f.map, dot), format == Format::Svg ? ImageFormat::Svg : ImageFormat::Png, path);
       return;
     }
   }
 }
 
+const CLI::Validator& non_negative_integer() {
+  static const CLI::Validator check(
+      [](std::string& text) -> std::string {
+        const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) {
+          return std::isdigit(c) != 0;
+        });
+        return digits ? std::string() : "expected a non-negative integer, found \"" + abbreviate(text) + "\"";
+      },
+      "UINT");
+  return check;
+}
+
+std::string abbreviate(const std::string& text, size_t max_chars) {
+  if (text.size() <= max_chars) return text;
+  const size_t keep = max_chars / 2;
+  return text.substr(0, keep) + "[... " + std::to_string(text.size() - 2 * keep) + " characters ...]" +
+         text.substr(text.size() - keep);
+}
+
+void print_violations(const ValidityReport& r) {
+  for (const Violation& v : r.violations) std::cout << "  " << v.describe() << "\n";
+  if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
+}
+
 void print_json(const nlohmann::ordered_json& j) { std::cout << dump_json(j) << std::flush; }
 
-std::string default_data_dir() { return GMR_DATA_DIR; }
+std::string default_data_dir() {
+  // From the checkout's root (as the README runs gmr), else the source tree gmr was built from.
+  std::error_code ec;
+  if (std::filesystem::is_directory("tools/data/rules", ec)) return "tools/data";
+  return GMR_DATA_DIR;
+}
 
 }  // namespace gmr::cli

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/core/gmap_file.hpp"
+#include "model/core/validity.hpp"
 #include "model/draw/map_dot.hpp"
 
 namespace gmr::cli {
@@ -38,19 +39,37 @@ std::optional<Format> parse_format(const std::string& name);
 Format input_format(const std::string& path, const std::string& override);
 Format output_format(const std::string& path, const std::string& override);
 // Help text for --from / --to.
-inline constexpr const char* kInputFormats = "json|off";
+inline constexpr const char* kInputFormats = "json|off|obj";
 inline constexpr const char* kOutputFormats = "json|off|obj|dot|svg|png";
 
 GMapFile load_map(const std::string& path, const std::string& from = {});
-// Writes `f` to `path` (atomically; "-" = standard output for text formats).
-void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot = {});
+// Graphviz lays out a few hundred darts in seconds and a 300,000-dart map in hours: drawings
+// rendered to SVG/PNG are refused above this many darts unless raised (`gmr dot --max-darts`).
+inline constexpr size_t kMaxRenderedDarts = 1000;
+
+// Writes `f` to `path` (atomically; "-" = standard output for text formats). SVG/PNG of maps with
+// more than `max_rendered_darts` darts are refused with Error(Usage).
+void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot = {},
+              size_t max_rendered_darts = kMaxRenderedDarts);
 // Writes text to `path` atomically, or to standard output for "-".
 void write_output(const std::string& path, const std::string& text);
+
+// The violations of a validity report, one per line, then "... and N more (--limit)".
+void print_violations(const ValidityReport& r);
 
 // Pretty JSON on standard output (model/json_writer.hpp layout).
 void print_json(const nlohmann::ordered_json& j);
 
-// Directory of the example data files (tools/data/), from the build.
+// Option check for counts and limits: digits only (CLI11 would read "-1" into a size_t as its
+// largest value).
+const CLI::Validator& non_negative_integer();
+
+// `text` itself when short, else its first and last characters around "[... N characters ...]":
+// messages quote user input (an orbit type, a file name) without echoing megabytes of it.
+std::string abbreviate(const std::string& text, size_t max_chars = 200);
+
+// Directory of the example data files: tools/data of the current directory when it is a gmr
+// checkout, else the source tree's tools/data recorded at build time.
 std::string default_data_dir();
 
 }  // namespace gmr::cli

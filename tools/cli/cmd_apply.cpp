@@ -4,10 +4,13 @@
 // (in enumeration order) that agrees with the given pairs and satisfies the gluing condition is
 // used. Concrete rules do not carry embeddings (the output has none); rule schemes do, with their
 // expressions (docs/embeddings.md).
-// Exit 0 when the result is a valid map (written to -o when given), 1 when no match applies or the
-// result breaks a constraint of the model (listed), 2 on bad input.
+// A rule the checker rejects is refused unless --force (rule_gate.hpp).
+// Exit 0 when the result is a valid map (written to -o when given), 1 when the rule is refused, no
+// match applies or the result breaks a constraint of the model (listed up to --limit), 2 on bad
+// input.
 // Rule schemes (gmr.rule kind "scheme", Jerboa .jme with --rule) go to scheme_apply.hpp
 // (--hook D[,D...] or --all).
+#include <cctype>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -17,8 +20,11 @@
 #include "model/io/rule_json.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/match_syntax.hpp"
+#include "tools/cli/rule_gate.hpp"
 #include "tools/cli/rule_input.hpp"
 #include "tools/cli/scheme_apply.hpp"
+#include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
 using namespace gmr::graph;
@@ -28,48 +34,27 @@ namespace {
 
 struct ApplyArgs {
   std::string rule, input, from, output, to, match;
-  bool json = false;
+  bool json = false, force = false, lift = false;
+  size_t limit = 20;
   std::string hooks, rule_name;  // rule schemes
   bool all = false;
   bool no_embeddings = false;
 };
 
-std::vector<std::pair<Node, Dart>> parse_pairs(const Rule& r, const GMap& g, const std::string& text) {
-  std::vector<std::pair<Node, Dart>> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) throw Error(ErrorCode::Usage, "expected NODE=DART, found \"" + item + "\"", "--match");
-    const std::string name = item.substr(0, eq), dart = item.substr(eq + 1);
-    const auto v = r.left().find(name);
-    if (!v) throw Error(ErrorCode::Usage, "no node \"" + name + "\" in the left-hand side", "--match");
-    size_t used = 0;
-    unsigned long d = 0;
-    try {
-      d = std::stoul(dart, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != dart.size() || dart.empty() || !g.alive(static_cast<Dart>(d)))
-      throw Error(ErrorCode::Usage, "\"" + dart + "\" is not a dart of the map", "--match " + item);
-    out.emplace_back(*v, static_cast<Dart>(d));
-  }
-  return out;
-}
-
 int run_apply(const ApplyArgs& a) {
   const RuleInput in = load_rule_input(a.rule, a.rule_name);
+  if (auto refused = gate_rule(in, a.rule, a.force)) return *refused;
   if (in.is_scheme()) {
     if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
-    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.no_embeddings});
+    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift,
+                                           a.limit, a.no_embeddings});
   }
   if (!a.hooks.empty() || a.all)
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
   const Rule& r = *in.concrete;
   const GMapFile f = load_map(a.input, a.from);
   const GMap& g = f.map;
-  const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_pairs(r, g, a.match);
+  const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_match_pairs(r, g, a.match);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
   std::vector<Node> node_of(g.capacity(), kNoNode);
@@ -114,7 +99,7 @@ int run_apply(const ApplyArgs& a) {
     std::cout << "the result is not a map: " << e.location() << ": " << e.message() << "\n";
     return kExitNegative;
   }
-  const ValidityReport rep = check_validity(d.H);
+  const ValidityReport rep = check_validity(d.H, a.limit);
   std::string match_text;
   for (Node v = 0; v < r.left().num_nodes(); ++v)
     match_text += (v ? "," : "") + r.left().name(v) + "=" + std::to_string(md[v]);
@@ -125,16 +110,19 @@ int run_apply(const ApplyArgs& a) {
     j["match"] = match_text;
     j["valid"] = rep.ok();
     j["darts"] = d.H.size();
+    j["change"] = change_to_json(summarize(g), summarize(d.H));
     nlohmann::ordered_json co = nlohmann::ordered_json::object();
     for (Node v = 0; v < r.right().num_nodes(); ++v) co[r.right().name(v)] = d.comatch[v];
     j["comatch"] = co;
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
     for (const auto& v : rep.violations) vs.push_back(v.describe());
     j["violations"] = vs;
+    j["violations_not_listed"] = rep.truncated;
     print_json(j);
   } else {
     std::cout << "match " << match_text << ": " << d.H.size() << " darts, " << (rep.ok() ? "valid" : "INVALID") << "\n";
-    for (const auto& v : rep.violations) std::cout << "  " << v.describe() << "\n";
+    if (const std::string c = describe_change(summarize(g), summarize(d.H)); !c.empty()) std::cout << "  " << c << "\n";
+    print_violations(rep);
   }
   if (!rep.ok()) return kExitNegative;
   if (!a.output.empty()) save_map(GMapFile{d.H, {}}, a.output, output_format(a.output, a.to));
@@ -148,7 +136,7 @@ void register_apply(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "apply", "Apply a concrete rule once (DPO) at a match, or a rule scheme at hook darts; exit 1 if it does not apply or breaks the map");
   sub->add_option("rule", args->rule, "Rule file (gmr.rule JSON, concrete or scheme; Jerboa .jme with --rule)")->required();
-  sub->add_option("map", args->input, "Map file (.json, .off)")->required();
+  sub->add_option("map", args->input, "Map file (.json, .off, .obj)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--match", args->match, "L-node=dart pairs, e.g. a=3,b=5 (default: the first applicable match)");
   sub->add_option("-o,--output", args->output, "Write the result map here");
@@ -159,6 +147,12 @@ void register_apply(CLI::App& app) {
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
   sub->add_flag("--no-embeddings", args->no_embeddings,
                 "Rule schemes: drop the map's embeddings (positions, ...) and rewrite the topology only");
+  sub->add_flag("--lift", args->lift,
+                "Rule schemes of a higher dimension than the map: apply to the map lifted to it (new dimensions free)");
+  sub->add_flag("--force", args->force, "Apply a rule the checker rejects (by default it is refused, exit 1)");
+  sub->add_option("--limit", args->limit, "Maximum number of violations of the result listed")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   set_action(sub, [args] { return run_apply(*args); });
 }
 

@@ -54,7 +54,7 @@ void register_check(CLI::App& app) {
                 "Check C_r on the ij-completion only (the thesis' per-constraint reading), without the model completion");
   // Rule schemes: a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
   sub->add_flag("--algorithm3", args->algorithm3,
-                "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones; erratum 6)");
+                "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones)");
   set_action(sub, [args] { return run_check(*args); });
 }
 

@@ -1,6 +1,6 @@
 // `gmr demo`: builds the standard objects (builders.hpp) — the stacked cubes of the inference
 // paper (§3.3), a cube read from tools/data/cube.off, a torus grid with computed coordinates, a
-// level-2 Menger sponge polycube and the polycube of tools/data/polycube.json — validates them and
+// level-2 Menger sponge polycube and the polycube of tools/data/polycube.voxels.json — validates them and
 // prints their cell counts. The cube and the torus are also compared (is_isomorphic) with
 // make_cube and make_torus. Writes into --out (default out/demo): DOT and SVG drawings of the stacked
 // cubes and the cube, OBJ files of the cube and the torus with positions, and gmr.gmap JSON files.
@@ -33,7 +33,7 @@ namespace {
 
 struct DemoArgs {
   std::string out = "out/demo";
-  std::string data = default_data_dir();
+  std::string data;  // empty: default_data_dir()
   bool json = false;
 };
 
@@ -61,7 +61,7 @@ struct Object {
 };
 
 int run_demo(const DemoArgs& a) {
-  const std::filesystem::path data(a.data), out(a.out);
+  const std::filesystem::path data(a.data.empty() ? default_data_dir() : a.data), out(a.out);
   constexpr size_t kTorusW = 12, kTorusH = 6;
 
   const PositionedMap cube = read_off_file(data / "cube.off");
@@ -71,7 +71,7 @@ int run_demo(const DemoArgs& a) {
   objects.push_back({"cube", "tools/data/cube.off", cube.map, is_isomorphic(cube.map, make_cube())});
   objects.push_back({"torus 12x6", "computed mesh", torus.map, is_isomorphic(torus.map, make_torus(kTorusW, kTorusH))});
   objects.push_back({"Menger sponge L2", "make_polycube(menger_voxels(2))", make_polycube(menger_voxels(2)), std::nullopt});
-  objects.push_back({"polycube", "tools/data/polycube.json", make_polycube(read_voxels_json_file(data / "polycube.json")),
+  objects.push_back({"polycube", "tools/data/polycube.voxels.json", make_polycube(read_voxels_json_file(data / "polycube.voxels.json")),
                      std::nullopt});
 
   std::error_code ec;
@@ -154,7 +154,9 @@ void register_demo(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "demo", "Build the standard objects, validate them, print their cells, write drawings and meshes");
   sub->add_option("--out", args->out, "Output directory")->capture_default_str();
-  sub->add_option("--data", args->data, "Directory of the example data files")->capture_default_str();
+  sub->add_option("--data", args->data,
+                  "Directory of the example data files (default: tools/data of the current directory when present, "
+                  "else of the source tree gmr was built from)");
   sub->add_flag("--json", args->json, "Print JSON");
   set_action(sub, [args] { return run_demo(*args); });
 }

@@ -18,6 +18,7 @@ struct DotArgs {
   std::string name = "gmap";
   std::string rule;           // rule files: a rule of a .jme file
   bool kappa = false, check = false;
+  size_t max_darts = kMaxRenderedDarts;
 };
 
 int run_dot(const DotArgs& a) {
@@ -30,7 +31,7 @@ int run_dot(const DotArgs& a) {
   DotOptions opt;
   opt.loops = a.loops;
   opt.name = a.name;
-  save_map(f, a.output, out, opt);
+  save_map(f, a.output, out, opt, a.max_darts);
   return kExitOk;
 }
 
@@ -42,7 +43,7 @@ void register_dot(CLI::App& app) {
       "dot", "Draw a map: darts as nodes, links coloured per dimension (0 black, 1 red, 2 blue, 3 green, "
              "4 orange, 5 purple, 6 brown, 7 cyan)");
   sub->add_option("file", args->input,
-                  "Map file (.json, .off; - for standard input with --from), or rule file (gmr.rule JSON, concrete or "
+                  "Map file (.json, .off, .obj; - for standard input with --from), or rule file (gmr.rule JSON, concrete or "
                   "scheme; Jerboa .jme)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("-o,--output", args->output, "Output file (.dot, .svg, .png); default: DOT on standard output");
@@ -52,6 +53,9 @@ void register_dot(CLI::App& app) {
   sub->add_option("--rule", args->rule, "Rule files: the rule of a .jme file to draw");
   sub->add_flag("--kappa", args->kappa, "Concrete rules: draw the kappa arcs of the joint representation (pink dashed)");
   sub->add_flag("--check", args->check, "Rule files: run the checker and highlight the offending nodes");
+  sub->add_option("--max-darts", args->max_darts, "Largest map rendered to SVG/PNG (Graphviz layout time grows fast)")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   set_action(sub, [args] { return run_dot(*args); });
 }
 

@@ -51,7 +51,7 @@ void register_fold(CLI::App& app) {
   auto args = std::make_shared<FoldArgs>();
   CLI::App* sub = app.add_subcommand(
       "fold", "Fold a connected G-map into a graph scheme on an orbit type from a start dart (thesis Alg. 6); exit 1 with the named failure");
-  sub->add_option("map", args->input, "Map file (.json, .off)")->required();
+  sub->add_option("map", args->input, "Map file (.json, .off, .obj)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--orbit", args->orbit, "Orbit type, e.g. \"<1,2>\" or \"<>\"")->required();
   sub->add_option("--dart", args->dart, "Start dart")->required();

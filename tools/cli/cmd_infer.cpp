@@ -123,8 +123,8 @@ void register_infer(CLI::App& app) {
   auto args = std::make_shared<InferArgs>();
   CLI::App* sub = app.add_subcommand(
       "infer", "Infer rule schemes from a before and an after map by topological folding (thesis Ch. 7); exit 1 if none is found");
-  sub->add_option("before", args->before, "Before map (.json, .off)")->required();
-  sub->add_option("after", args->after, "After map (.json, .off)")->required();
+  sub->add_option("before", args->before, "Before map (.json, .off, .obj)")->required();
+  sub->add_option("after", args->after, "After map (.json, .off, .obj)")->required();
   sub->add_option("--from", args->from, std::string("Input format of both maps (") + kInputFormats + ")");
   sub->add_option("--orbit", args->orbit, "Orbit type to fold on, e.g. \"<0,1,2>\" (default: every orbit type)");
   sub->add_flag("--all-orbits", args->all_orbits, "Try every orbit type (2^(n+1)), the default");

@@ -63,7 +63,7 @@ int run_info(const InfoArgs& a) {
 void register_info(CLI::App& app) {
   auto args = std::make_shared<InfoArgs>();
   CLI::App* sub = app.add_subcommand("info", "Describe a map: darts, links, cells, Euler characteristic, validity");
-  sub->add_option("file", args->input, "Map file (.json, .off; - for standard input with --from)")->required();
+  sub->add_option("file", args->input, "Map file (.json, .off, .obj; - for standard input with --from)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_flag("--json", args->json, "Print JSON");
   set_action(sub, [args] { return run_info(*args); });

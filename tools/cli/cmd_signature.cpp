@@ -65,7 +65,7 @@ int run_signature(const SignatureArgs& a) {
 void register_signature(CLI::App& app) {
   auto args = std::make_shared<SignatureArgs>();
   CLI::App* sub = app.add_subcommand("signature", "Print the minimal signature of a map (equal iff isomorphic)");
-  sub->add_option("file", args->input, "Map file (.json, .off; - for standard input with --from)")->required();
+  sub->add_option("file", args->input, "Map file (.json, .off, .obj; - for standard input with --from)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--flags", args->flags, "Embedding whose values flag the darts (e.g. position)");
   sub->add_flag("--json", args->json, "Print JSON");

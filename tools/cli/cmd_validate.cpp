@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "model/core/position.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/summary.hpp"
@@ -18,6 +19,17 @@ struct ValidateArgs {
   bool json = false;
 };
 
+// Orbits without one consistent value; for the "position" embedding, also values that are not
+// [x, y, z] (model/core/position.hpp).
+std::vector<EmbeddingIssue> embedding_issues(const GMap& g, const JsonEmbedding& e) {
+  std::vector<EmbeddingIssue> issues = e.check(g);
+  if (e.name() != kPositionName) return issues;
+  for (Dart rep : orbit_representatives(g, e.orbit_type()))
+    if (e.has(rep))
+      if (auto problem = position_value_problem(e.get(rep))) issues.push_back({rep, *problem});
+  return issues;
+}
+
 int run_validate(const ValidateArgs& a) {
   const GMapFile f = load_map(a.input, a.from);
   const ValidityReport r = check_validity(f.map, a.limit);
@@ -28,7 +40,7 @@ int run_validate(const ValidateArgs& a) {
   std::vector<Issue> issues;
   if (r.ok())  // orbits of an invalid map do not describe cells: embeddings are checked on valid maps
     for (const auto& e : f.embeddings)
-      for (auto& i : e.check(f.map)) issues.push_back({e.name(), i});
+      for (auto& i : embedding_issues(f.map, e)) issues.push_back({e.name(), i});
   const bool valid = r.ok() && issues.empty();
   if (a.json) {
     nlohmann::ordered_json j;
@@ -60,8 +72,7 @@ int run_validate(const ValidateArgs& a) {
   }
   if (!r.ok()) {
     std::cout << a.input << ": invalid " << map_name(f.map) << ": " << r.total() << " violation(s)\n";
-    for (const Violation& v : r.violations) std::cout << "  " << v.describe() << "\n";
-    if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
+    print_violations(r);
   } else {
     std::cout << a.input << ": valid " << map_name(f.map) << ", but " << issues.size() << " embedding issue(s)\n";
     for (const Issue& i : issues)
@@ -76,9 +87,11 @@ void register_validate(CLI::App& app) {
   auto args = std::make_shared<ValidateArgs>();
   CLI::App* sub = app.add_subcommand(
       "validate", "Check the G-map/O-map constraints and the embeddings; list every violation (exit 1 if any)");
-  sub->add_option("file", args->input, "Map file (.json, .off; - for standard input with --from)")->required();
+  sub->add_option("file", args->input, "Map file (.json, .off, .obj; - for standard input with --from)")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
-  sub->add_option("--limit", args->limit, "Maximum number of violations listed")->capture_default_str();
+  sub->add_option("--limit", args->limit, "Maximum number of violations listed")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   sub->add_flag("--json", args->json, "Print JSON");
   set_action(sub, [args] { return run_validate(*args); });
 }

@@ -4,6 +4,7 @@
 #include <optional>
 #include <sstream>
 
+#include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/embedded_map.hpp"
@@ -12,6 +13,7 @@
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
 using namespace gmr::scheme;
@@ -122,10 +124,30 @@ std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, 
   return out;
 }
 
-// Prints the applications, the dart counts and the validity of the result.
-void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, size_t before,
+// The map before and after, for the report of what changed.
+struct Change {
+  size_t darts_before;
+  MapSummary before, after;
+};
+
+// A surface given to a volume scheme: lifted with --lift (builders.hpp), else a usage error
+// that says so.
+void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, GMap& g) {
+  if (g.dimension() >= s.dimension || g.is_omap()) return;
+  if (!a.lift)
+    throw Error(ErrorCode::Usage,
+                "the scheme rewrites " + std::to_string(s.dimension) + "-G-maps, the map is a " + map_name(g) +
+                    ": --lift applies it to the map lifted to dimension " + std::to_string(s.dimension) +
+                    " (new dimensions free)",
+                a.input);
+  g = lift(g, s.dimension);
+}
+
+// Prints the applications, the dart counts, the change in cells and the validity of the result.
+void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, const Change& change,
                    const GMap& g, const ValidityReport& rep, const expr::EmbeddingPropagation& prop,
                    const expr::EmbeddedMap& m) {
+  const size_t before = change.darts_before;
   const auto& apps = r.apps;
   const auto& hooks_used = r.hooks_used;
   size_t added = 0, deleted = 0;
@@ -144,6 +166,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     j["darts_added"] = added;
     j["darts_deleted"] = deleted;
     j["valid"] = rep.ok();
+    j["change"] = change_to_json(change.before, change.after);
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (size_t k = 0; k < apps.size(); ++k) {
       nlohmann::ordered_json e;
@@ -157,6 +180,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
     for (const auto& v : rep.violations) vs.push_back(v.describe());
     j["violations"] = vs;
+    j["violations_not_listed"] = rep.truncated;
     nlohmann::ordered_json em = nlohmann::ordered_json::array();
     for (const auto& f : m.fields) em.push_back(f.name());
     j["embeddings"] = em;
@@ -174,7 +198,8 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     }
     std::cout << ": " << before << " -> " << g.size() << " darts (+" << added << " -" << deleted << "), "
               << (rep.ok() ? "valid" : "INVALID") << "\n";
-    for (const auto& v : rep.violations) std::cout << "  " << v.describe() << "\n";
+    if (const std::string c = describe_change(change.before, change.after); !c.empty()) std::cout << "  " << c << "\n";
+    print_violations(rep);
     std::cout << "embeddings: ";
     if (m.fields.empty()) std::cout << "none";
     for (size_t k = 0; k < m.fields.size(); ++k)
@@ -187,23 +212,35 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
   }
 }
 
+// The engine of `s`; a structural problem of the scheme is located in the rule file.
+SchemeEngine engine_for(const RuleScheme& s, const SchemeApplyArgs& a) {
+  try {
+    return SchemeEngine(s);
+  } catch (const Error& e) {
+    throw Error(e.code(), e.message() + " (gmr check lists every problem of the rule)",
+                a.rule + ": rule " + s.name + (e.location().empty() ? "" : ": " + e.location()));
+  }
+}
+
 }  // namespace
 
 int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
-  const SchemeEngine engine(s);
+  const SchemeEngine engine = engine_for(s, a);
   check_hook_arguments(s, a);
   const expr::CompiledScheme cs = expr::compile_scheme(s);
   GMapFile f = load_map(a.input, a.from);
   if (a.no_embeddings) f.embeddings.clear();
   expr::EmbeddedMap m = expr::to_embedded_map(f);
-  expr::EmbeddingPropagation prop(cs, m);
   GMap& g = m.map;
+  lift_to_scheme(s, a, g);
+  expr::EmbeddingPropagation prop(cs, m);
   const size_t before = g.size();
+  const MapSummary summary_before = summarize(g);
   const std::optional<Applied> r =
       a.all ? apply_at_every_dart(engine, g, a, &prop) : apply_at_hooks(engine, g, a, &prop);
   if (!r) return kExitNegative;
-  const ValidityReport rep = check_validity(g);
-  print_applied(s, a, *r, before, g, rep, prop, m);
+  const ValidityReport rep = check_validity(g, a.limit);
+  print_applied(s, a, *r, {before, summary_before, summarize(g)}, g, rep, prop, m);
   if (!rep.ok() || prop.issue_count() > 0) return kExitNegative;
   if (!a.output.empty()) save_map(expr::to_gmap_file(m), a.output, output_format(a.output, a.to));
   return kExitOk;

@@ -14,7 +14,9 @@ using scheme::RuleScheme;
 
 struct SchemeApplyArgs {
   std::string rule, input, from, output, to, hooks;
-  bool all = false, json = false, no_embeddings = false;
+  bool all = false, json = false, lift = false;
+  size_t limit = 20;  // violations of the result listed
+  bool no_embeddings = false;
 };
 
 // Exit 0 when applied and the result is a valid map with consistent embeddings (written to -o when

@@ -55,4 +55,21 @@ void add_to_json(nlohmann::ordered_json& j, const MapSummary& s) {
   }
 }
 
+std::string describe_change(const MapSummary& before, const MapSummary& after) {
+  if (!before.cells_known || !after.cells_known) return {};
+  const int lo = before.kind == MapKind::OMap ? 1 : 0;
+  return "cells " + per_dimension(before.cells, lo) + " -> " + per_dimension(after.cells, lo) + ", components " +
+         std::to_string(before.components) + " -> " + std::to_string(after.components) + ", Euler characteristic " +
+         std::to_string(before.euler) + " -> " + std::to_string(after.euler);
+}
+
+nlohmann::ordered_json change_to_json(const MapSummary& before, const MapSummary& after) {
+  if (!before.cells_known || !after.cells_known) return nullptr;
+  nlohmann::ordered_json j;
+  j["cells"] = {before.cells, after.cells};
+  j["components"] = {before.components, after.components};
+  j["euler"] = {before.euler, after.euler};
+  return j;
+}
+
 }  // namespace gmr::cli

@@ -35,4 +35,11 @@ std::string per_dimension(const std::vector<size_t>& v, int lo);
 // Appends the summary's members to the object j.
 void add_to_json(nlohmann::ordered_json& j, const MapSummary& s);
 
+// What an operation changed (`gmr apply`), for valid maps before and after:
+// "cells 0:8 1:12 2:6 -> 0:26 1:48 2:24, components 1 -> 1, Euler characteristic 2 -> 2";
+// empty when either map is invalid.
+std::string describe_change(const MapSummary& before, const MapSummary& after);
+// {"cells": [[before], [after]], "components": [b, a], "euler": [b, a]}; null when either is invalid.
+nlohmann::ordered_json change_to_json(const MapSummary& before, const MapSummary& after);
+
 }  // namespace gmr::cli

@@ -3,7 +3,6 @@
 // behind by a failed command. The binary's path comes from the build (GMR_BIN), the data files
 // from GMR_SOURCE_DIR.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -16,58 +15,13 @@
 #include "model/io/read_file.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
+#include "tools/tests/cli_fixture.hpp"
 
 using namespace gmr;
 using namespace gmr::io;
+using namespace gmr::cli_test;
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
-fs::path source_dir() {
-  const char* s = std::getenv("GMR_SOURCE_DIR");
-  return s ? s : ".";
-}
-fs::path test_data(const std::string& name) { return source_dir() / "model/io/tests/data" / name; }
-fs::path tools_data(const std::string& name) { return source_dir() / "tools/data" / name; }
-
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir = fs::temp_directory_path() / ("gmr_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir);
-    fs::create_directories(dir / "out");
-  }
-  void TearDown() override { fs::remove_all(dir); }
-
-  Result run(const std::string& args, const std::string& stdin_file = "") {
-    const std::string cmd = q(GMR_BIN) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") +
-                            (stdin_file.empty() ? " </dev/null" : " <" + q(stdin_file));
-    const int status = std::system(cmd.c_str());
-    Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text_file(dir / "stdout"), read_text_file(dir / "stderr")};
-    return r;
-  }
-  // Entries of the output directory (temporary files included).
-  size_t outputs() const {
-    return static_cast<size_t>(std::distance(fs::directory_iterator(dir / "out"), fs::directory_iterator()));
-  }
-  void expect_bad_input(const std::string& args, const std::string& location, const std::string& what = "") {
-    const Result r = run(args);
-    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
-    EXPECT_EQ(r.err.rfind("gmr: error: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(location), std::string::npos) << "expected location " << location << " in: " << r.err;
-    EXPECT_NE(r.err.find(what), std::string::npos) << "expected " << what << " in: " << r.err;
-  }
-  fs::path dir;
-};
-
-}  // namespace
 
 TEST_F(Cli, HelpForEverySubcommand) {
   Result r = run("--help");
@@ -251,10 +205,10 @@ TEST_F(Cli, DotOfRulesAndSchemes) {
   EXPECT_NE(read_text_file(dir / "out/sew2.svg").find("<svg"), std::string::npos);
   EXPECT_EQ(run("dot --kappa " + q(checker_data("F1_ex34_weak_incident.json")) + " -o " + q(dir / "out/f1.png")).code, 0);
   EXPECT_EQ(read_text_file(dir / "out/f1.png").substr(1, 3), "PNG");
-  r = run("dot " + q(test_data("JerboaTrackingOrbit.jme")) + " --rule " + "NOTARULE");
+  r = run("dot " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --rule " + "NOTARULE");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("rules: "), std::string::npos) << r.err;
-  expect_bad_input("dot " + q(test_data("JerboaTrackingOrbit.jme")), "JerboaTrackingOrbit.jme", "--rule NAME");
+  expect_bad_input("dot " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")), "JerboaTrackingOrbit.jme", "--rule NAME");
   expect_bad_input("dot --kappa " + q(rule_data("sew2.json")), "sew2.json", "concrete rule");
   expect_bad_input("dot --check " + q(test_data("square.json")), "square.json", "rule files");
   EXPECT_EQ(outputs(), 2u);
@@ -272,7 +226,7 @@ TEST_F(Cli, CheckJsonIsOneFormat) {
       {checker_data("F5_fig319a_unsew.json"), "rule", 0},
       {checker_data("F1_ex34_weak_incident.json"), "rule", 1},
       {rule_data("quad_subdivision.json"), "scheme", 0},
-      {test_data("JerboaTrackingOrbit.jme"), "modeler", -1},
+      {tools_data("jerboa/JerboaTrackingOrbit.jme"), "modeler", -1},
   };
   for (const auto& c : cases) {
     const Result r = run("check --json " + q(c.file));
@@ -302,11 +256,11 @@ TEST_F(Cli, CheckJsonIsOneFormat) {
 }
 
 TEST_F(Cli, DotOfJerboaRule) {
-  Result r = run("check --json " + q(test_data("JerboaTrackingOrbit.jme")));
+  Result r = run("check --json " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")));
   ASSERT_NE(r.out, "");
   const auto j = nlohmann::json::parse(r.out);
   const std::string name = j["reports"][0]["rule"];
-  r = run("dot --check " + q(test_data("JerboaTrackingOrbit.jme")) + " --rule " + q(name));
+  r = run("dot --check " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --rule " + q(name));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("subgraph cluster_L"), std::string::npos) << r.out;
 }

@@ -75,6 +75,23 @@ TEST(GMap, RejectsBadDimensions) {
   EXPECT_TRUE(o.is_involutive_dim(2));
 }
 
+TEST(Builders, LiftAddsFreeDimensions) {
+  GMap cube = make_cube();
+  cube.remove_dart(cube.add_dart());  // a hole in the index range is kept as a hole
+  const GMap lifted = lift(cube, 3);
+  EXPECT_EQ(lifted.dimension(), 3);
+  EXPECT_EQ(lifted.size(), 48u);
+  EXPECT_FALSE(lifted.alive(48));
+  EXPECT_TRUE(is_valid(lifted));
+  EXPECT_EQ(count_all_cells(lifted), (std::vector<size_t>{8, 12, 6, 1}));  // one volume bounded by the surface
+  for (Dart d : lifted.darts()) {
+    EXPECT_TRUE(lifted.is_free(3, d));
+    for (int i = 0; i <= 2; ++i) EXPECT_EQ(lifted.alpha(i, d), cube.alpha(i, d));
+  }
+  EXPECT_EQ(lift(cube, 2).size(), 48u);
+  EXPECT_THROW(lift(cube, 1), Error);
+}
+
 TEST(Builders, PolycubeAndMenger) {
   GMap m = make_polycube(menger_voxels(1));
   EXPECT_TRUE(is_valid(m));

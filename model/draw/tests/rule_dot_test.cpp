@@ -5,6 +5,7 @@
 #include "model/draw/rule_dot.hpp"
 #include "model/io/rule_json.hpp"
 #include "model/io/scheme_json.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -21,10 +22,7 @@ size_t count(const std::string& text, const std::string& what) {
   return k;
 }
 
-std::string source(const std::string& rel) {
-  const char* s = std::getenv("GMR_SOURCE_DIR");
-  return std::string(s ? s : ".") + "/" + rel;
-}
+std::string source(const std::string& rel) { return gmr::testing::source_path(rel); }
 
 // 2-sew of two 2-free edges a–0–b and c–0–d, written as a concrete G-map rule.
 Rule sew_rule() {

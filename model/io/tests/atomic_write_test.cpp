@@ -1,10 +1,16 @@
 // Atomic file writes (model/atomic_write.hpp): content replaced whole, no temporary file left,
 // nothing created on failure.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "model/io/atomic_write.hpp"
 #include "model/core/error.hpp"
@@ -67,4 +73,65 @@ TEST(ReadFile, MissingFileIsAnIoError) {
     EXPECT_EQ(e.code(), ErrorCode::Io);
     EXPECT_EQ(e.location(), "/nonexistent/gmr/file.json");
   }
+}
+
+TEST(AtomicWrite, SymbolicLinkIsWrittenThrough) {
+  TempDir dir;
+  write_file_atomic(dir.path / "target.txt", "old");
+  fs::create_symlink("target.txt", dir.path / "link.txt");
+  write_file_atomic(dir.path / "link.txt", "new");
+  EXPECT_TRUE(fs::is_symlink(dir.path / "link.txt"));
+  EXPECT_EQ(read_text_file(dir.path / "target.txt"), "new");
+  // A dangling link creates its target.
+  fs::create_symlink("later.txt", dir.path / "dangling.txt");
+  write_file_atomic(dir.path / "dangling.txt", "made");
+  EXPECT_TRUE(fs::is_symlink(dir.path / "dangling.txt"));
+  EXPECT_EQ(read_text_file(dir.path / "later.txt"), "made");
+  EXPECT_EQ(dir.entries(), 4u);
+}
+
+TEST(AtomicWrite, SpecialFileIsWrittenInPlace) {
+  TempDir dir;
+  const fs::path fifo = dir.path / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] { received = read_text_file(fifo); });
+  write_file_atomic(fifo, "through the pipe");
+  reader.join();
+  EXPECT_EQ(received, "through the pipe");
+  EXPECT_EQ(fs::status(fifo).type(), fs::file_type::fifo);
+  EXPECT_EQ(dir.entries(), 1u);
+  EXPECT_NO_THROW(write_file_atomic("/dev/null", "discarded"));
+  EXPECT_EQ(fs::status("/dev/null").type(), fs::file_type::character);
+}
+
+TEST(AtomicWrite, TerminationDuringAWriteLeavesNoTemporary) {
+  TempDir dir;
+  const fs::path out = dir.path / "big.txt";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    remove_temporaries_on_signal();
+    const std::string content(size_t{1} << 27, 'x');  // long enough to be interrupted
+    write_file_atomic(out, content);
+    ::_exit(0);
+  }
+  // Wait for the temporary file to appear, then terminate the writer.
+  auto temporary_exists = [&] {
+    for (const auto& e : fs::directory_iterator(dir.path))
+      if (e.path().filename().string().rfind(".big.txt.tmp.", 0) == 0) return true;
+    return false;
+  };
+  bool seen = false;
+  for (int k = 0; k < 20000 && !seen; ++k) {
+    seen = temporary_exists();
+    if (!seen) ::usleep(500);
+  }
+  ::kill(child, SIGTERM);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(seen);
+  if (fs::exists(out)) GTEST_SKIP() << "the write finished before the signal arrived";
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_EQ(dir.entries(), 0u);
 }

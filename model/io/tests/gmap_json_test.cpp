@@ -10,16 +10,14 @@
 #include "model/io/off.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::io;
 
 namespace {
 
-std::string data(const std::string& name) {
-  const char* src = std::getenv("GMR_SOURCE_DIR");
-  return std::string(src ? src : ".") + "/model/io/tests/data/" + name;
-}
+std::string data(const std::string& name) { return gmr::testing::source_path("model/io/tests/data/" + name); }
 
 // A gmr.gmap text of a 1-G-map with 4 darts, `alpha1` spliced in.
 std::string tiny(const std::string& alpha1, const std::string& extra = "") {
@@ -59,8 +57,7 @@ void expect_same_embeddings(const GMapFile& a, const GMapFile& b) {
 }  // namespace
 
 TEST(IoJson, RoundTripCubeWithPositions) {
-  const PositionedMap cube = read_off_file(std::string(std::getenv("GMR_SOURCE_DIR") ? std::getenv("GMR_SOURCE_DIR") : ".") +
-                                           "/tools/data/cube.off");
+  const PositionedMap cube = read_off_file(gmr::testing::source_path("tools/data/cube.off"));
   GMapFile f = to_gmap_file(cube);
   f.embeddings.emplace_back("label", OrbitType{0, 1});
   f.embeddings.back().set(f.map, 0, nlohmann::json{{"colour", "red"}, {"weight", 2.5}});

@@ -9,16 +9,14 @@
 #include "model/io/jme_expression.hpp"
 #include <iostream>
 #include "model/scheme/scheme_engine.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
 using namespace gmr::io;
 
 namespace {
-std::string fixture() {
-  const char* root = std::getenv("GMR_SOURCE_DIR");
-  return std::string(root ? root : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme";
-}
+std::string fixture() { return gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"); }
 }  // namespace
 
 TEST(Jme, OrbitAttribute) {

@@ -48,6 +48,40 @@ TEST(JsonReader, ParseErrorsGiveLineAndColumn) {
   }
 }
 
+// Error of parse_json on `text`, or an empty Error when it parses.
+Error parse_failure(const std::string& text) {
+  try {
+    parse_json(text, "f.json");
+  } catch (const Error& e) {
+    return e;
+  }
+  return Error(ErrorCode::Usage, "");
+}
+
+TEST(JsonReader, DuplicateMemberIsAnErrorAtItsPath) {
+  const Error e = parse_failure(R"({"alpha": {"0": [0], "1": [0], "0": [0]}})");
+  EXPECT_EQ(e.code(), ErrorCode::Parse);
+  EXPECT_EQ(e.location(), "f.json:$.alpha.0");
+  EXPECT_NE(e.message().find("duplicate member \"0\""), std::string::npos) << e.message();
+}
+
+TEST(JsonReader, NestingBeyondTheLimitIsAnErrorBeforeReadingTheRest) {
+  EXPECT_NO_THROW(parse_json(std::string(kMaxJsonDepth, '[') + std::string(kMaxJsonDepth, ']')));
+  // A deep value and 10^6 unclosed brackets: refused at the first level too deep.
+  const Error e = parse_failure(R"({"v": )" + std::string(1000000, '['));
+  EXPECT_EQ(e.code(), ErrorCode::Parse);
+  EXPECT_NE(e.message().find("nesting deeper than 100"), std::string::npos) << e.message();
+  EXPECT_EQ(e.location().rfind("f.json:$.v[0][0]", 0), 0u) << e.location();
+}
+
+TEST(JsonReader, NumberOverflowIsLocatedWithoutLibraryText) {
+  const Error e = parse_failure("{\n \"x\": 1e999}");
+  EXPECT_EQ(e.code(), ErrorCode::Parse);
+  EXPECT_EQ(e.location(), "f.json:2:11");
+  EXPECT_EQ(e.message().find("json.exception"), std::string::npos) << e.message();
+  EXPECT_NE(e.message().find("1e999"), std::string::npos) << e.message();
+}
+
 TEST(JsonWriter, LayoutKeepsOrderAndInlinesScalarArrays) {
   nlohmann::ordered_json j;
   j["format"] = "gmr.test";

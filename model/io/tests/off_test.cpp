@@ -15,16 +15,14 @@
 #include "model/core/sew.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::io;
 
 namespace {
 
-std::string source_dir() {
-  const char* src = std::getenv("GMR_SOURCE_DIR");
-  return src ? src : ".";
-}
+std::string source_dir() { return gmr::testing::source_path("."); }
 
 void expect_error(const std::string& text, ErrorCode code, const std::string& location, const std::string& what = "") {
   try {
@@ -73,9 +71,32 @@ TEST(IoOff, AcceptsCommentsBlankLinesAndCountVariants) {
   }
 }
 
+TEST(IoOff, HeaderVariantsOfCgalData) {
+  // COFF (vertex colours, RGB or RGBA), NOFF (normals), 4OFF (homogeneous), STCNOFF (all).
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+  const std::string variants[] = {
+      "COFF\n4 4 0\n0 0 0 192 192 192 255\n1 0 0 1 2 3 4\n0 1 0 9 9 9\n0 0 1 0 0 0 0\n" + faces,
+      "NOFF\n4 4 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n0 0 1 0 0 1\n" + faces,
+      "4OFF\n4 4 0\n0 0 0 1\n2 0 0 2\n0 0.5 0 0.5\n0 0 -3 -3\n" + faces,
+      "STCNOFF\n4 4 0\n0 0 0 0 0 1 1 1 1 0.5 0.5\n1 0 0 0 0 1 1 1 1 1 0 0\n0 1 0 0 0 1 1 1 1 1 0 0\n"
+      "0 0 1 0 0 1 1 1 1 1 0 0\n" + faces,
+  };
+  for (const auto& text : variants) {
+    const PositionedMap m = read_off(text);
+    EXPECT_TRUE(is_isomorphic(m.map, make_tetrahedron())) << text;
+    EXPECT_EQ(m.position.get(2), (Vec3{0, 1, 0})) << text;
+  }
+  expect_error("COFF\n1 0\n0 0 0 1 1\n", ErrorCode::Parse, "t.off:3", "\"x y z r g b [a]\" (6 or 7 numbers)");
+  expect_error("NOFF\n1 0\n0 0 0 1 1 x\n", ErrorCode::Parse, "t.off:3", "a normal component");
+  expect_error("4OFF\n1 0\n1 1 1 0\n", ErrorCode::Parse, "t.off:3", "w = 0");
+  expect_error("OFF BINARY\n", ErrorCode::Parse, "t.off:1", "binary OFF");
+  expect_error("CNOFFX\n", ErrorCode::Parse, "t.off:1", "[ST][C][N][4]OFF");
+  expect_error("NCOFF\n", ErrorCode::Parse, "t.off:1", "[ST][C][N][4]OFF");
+}
+
 TEST(IoOff, MalformedLinesAreLocated) {
   expect_error("", ErrorCode::Parse, "t.off:1", "expected the header");
-  expect_error("OFFX\n", ErrorCode::Parse, "t.off:1", "expected the header \"OFF\"");
+  expect_error("OFFX\n", ErrorCode::Parse, "t.off:1", "expected the header \"[ST][C][N][4]OFF\"");
   expect_error("OFF\n# no counts\n", ErrorCode::Parse, "t.off:2", "end of file");
   expect_error("OFF\n4\n", ErrorCode::Parse, "t.off:2", "counts");
   expect_error("OFF\n4 x\n", ErrorCode::Parse, "t.off:2", "\"x\"");
@@ -229,4 +250,39 @@ TEST(IoOff, WriterRefusesUnfaithfulMaps) {
     EXPECT_EQ(e.code(), ErrorCode::NonManifold);
     EXPECT_NE(std::string(e.what()).find("two edges join the same two vertices"), std::string::npos);
   }
+}
+
+TEST(IoObj, ReadsFacesWithTextureAndNormalReferences) {
+  // The OBJ the writer produces, and a hand-written one with groups, vt/vn and negative indices.
+  const PositionedMap tetra = read_off(kTetra);
+  const PositionedMap back = read_obj(write_obj(tetra.map, tetra.position), "t.obj");
+  EXPECT_TRUE(is_isomorphic(back.map, make_tetrahedron()));
+  const std::string text =
+      "# tetrahedron\nmtllib t.mtl\no tetra\nv 0 0 0\nv 1 0 0\nv 0 1 0 0.5 0.5 0.5\nv 0 0 1 1.0\nvt 0 0\nvn 0 0 1\n"
+      "g side\ns off\nusemtl red\nf 1/1 3/1 2/1\nf 1//1 2//1 4//1\nf -3/1/1 -2/1/1 -1/1/1\nf 3 1 4\n";
+  const PositionedMap m = read_obj(text, "t.obj");
+  EXPECT_TRUE(is_isomorphic(m.map, make_tetrahedron()));
+  EXPECT_EQ(m.position.get(m.map.darts()[0]), (Vec3{0, 0, 0}));
+}
+
+TEST(IoObj, MalformedLinesAreLocated) {
+  auto error_of = [](const std::string& text) {
+    try {
+      read_obj(text, "t.obj");
+    } catch (const Error& e) {
+      return e.location() + ": " + e.message();
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of("v 0 0\n").find("t.obj:1: expected a vertex"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 x\n").find("t.obj:1: expected a finite number, found \"x\""), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nf 1 2\n").find("t.obj:3: a face needs at least 3 vertices"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n").find("t.obj:4: vertex index 4 out of range (3 vertices"),
+            std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n").find("t.obj:4: expected a vertex index"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n").find("degenerate face"), std::string::npos);
+  EXPECT_NE(error_of("\n\nbogus 1 2\n").find("t.obj:3: unknown OBJ statement \"bogus\""), std::string::npos);
+  // A non-manifold edge is named with the lines of its three faces.
+  const std::string fan = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf 1 2 3\nf 1 2 4\nf 1 2 5\n";
+  EXPECT_NE(error_of(fan).find("faces at lines 6, 7, 8"), std::string::npos) << error_of(fan);
 }

@@ -12,6 +12,7 @@
 #include "model/io/scheme_json.hpp"
 #include "model/scheme/tests/scheme_dpo_compare.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
@@ -19,10 +20,7 @@ using namespace gmr::io;
 using namespace gmr::testing;
 
 namespace {
-std::string root() {
-  const char* r = std::getenv("GMR_SOURCE_DIR");
-  return r ? r : ".";
-}
+std::string root() { return gmr::testing::source_path("."); }
 
 // Runs the comparison at up to `samples` hook choices; returns (applied, refused) counts.
 std::pair<size_t, size_t> sweep(const GMap& g, const RuleScheme& s, size_t samples) {
@@ -60,7 +58,7 @@ TEST(EngineVsDpo, LibrarySchemes) {
 }
 
 TEST(EngineVsDpo, JerboaFixtureRules) {
-  JmeModeler m = read_jme_file(root() + "/model/io/tests/data/JerboaTrackingOrbit.jme");
+  JmeModeler m = read_jme_file(root() + "/tools/data/jerboa/JerboaTrackingOrbit.jme");
   size_t applied = 0, compared = 0;
   for (const RuleScheme& s : m.rules) {
     std::unique_ptr<SchemeEngine> e;
