@@ -89,7 +89,7 @@ TEST(EmbeddingCheck, TypeErrorsNameTheColumn) {
 }
 
 TEST(EmbeddingCheck, UntranslatedJerboaExpressionsAreWarnings) {
-  const io::JmeModeler m = io::read_jme_file(root() / "model/io/tests/data/JerboaTrackingOrbit.jme");
+  const io::JmeModeler m = io::read_jme_file(root() / "tools/data/jerboa/JerboaTrackingOrbit.jme");
   size_t unsupported = 0, type_errors = 0;
   for (const auto& s : m.rules) {
     const SchemeCheckReport r = check_scheme(s);

@@ -45,9 +45,9 @@ EmbeddingPropagation::EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap
   for (const auto& sig : cs.embeddings) {
     const int arity_wanted = arity(sig.type);
     EmbeddingField* f = m.find(sig.name);
-    if (!f) {
-      m.fields.push_back(EmbeddingField{arity_wanted, Embedding<Vec3>(sig.name, sig.orbit)});
-      f = &m.fields.back();
+    if (!f) {  // the map is not embedded for it: its expressions are not evaluated
+      field_of_decl_.push_back(-1);
+      continue;
     }
     if (!(f->orbit() == sig.orbit))
       throw Error(ErrorCode::Schema,
@@ -75,11 +75,11 @@ void EmbeddingPropagation::before_rewrite(const GMap& g, const scheme::SchemeApp
   const size_t sz = O.size(), nr = s.right.size(), nl = s.left.size();
   pending_.assign(m_.fields.size(), {});
   std::vector<const EmbeddingField*> fields;
-  for (int fi : field_of_decl_) fields.push_back(&m_.fields[static_cast<size_t>(fi)]);
+  for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   Evaluator ev(g, cs_.embeddings, fields);
   std::vector<Dart> node_darts(nl);
   for (size_t e = 0; e < cs_.embeddings.size(); ++e) {
-    if (!cs_.has_expressions(e)) continue;
+    if (!cs_.has_expressions(e) || field_of_decl_[e] < 0) continue;
     const DimMask mask = cs_.embeddings[e].orbit.mask();
     // Classes of the instantiated R over the dimensions of <o_pi>.
     parent_.resize(nr * sz);

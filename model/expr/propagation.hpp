@@ -12,8 +12,8 @@
 // different values (E-overlap, thesis Def. 84, compared on values with a relative tolerance of
 // 1e-9), an orbit merging preserved darts of different values without an expression (E-merge), an
 // orbit of added darts without value (E-no-value). Embeddings of the map the scheme does not declare
-// are propagated by steps 2–3 only. A declared embedding the map lacks is created (its old orbits
-// then have no value).
+// are propagated by steps 2–3 only. A declared embedding the map lacks is left out (the map is not
+// embedded for it; expressions reading it from another embedding's expression fail at evaluation).
 #pragma once
 #include <string>
 #include <vector>
@@ -35,8 +35,8 @@ struct PropagationIssue {
 
 class EmbeddingPropagation : public scheme::ApplicationObserver {
  public:
-  // Binds the declarations to m's fields (creating missing ones). Error(Schema) when a field of
-  // the same name has another orbit type or arity.
+  // Binds the declarations to m's fields (declarations the map lacks are left out).
+  // Error(Schema) when a field of the same name has another orbit type or arity.
   EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m);
 
   void before_rewrite(const GMap& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;

@@ -200,11 +200,12 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
               << (rep.ok() ? "valid" : "INVALID") << "\n";
     if (const std::string c = describe_change(change.before, change.after); !c.empty()) std::cout << "  " << c << "\n";
     print_violations(rep);
-    std::cout << "embeddings: ";
-    if (m.fields.empty()) std::cout << "none";
-    for (size_t k = 0; k < m.fields.size(); ++k)
-      std::cout << (k ? ", " : "") << m.fields[k].name() << " " << m.fields[k].orbit().str();
-    std::cout << " (" << prop.evaluations() << " expression evaluations)\n";
+    if (!m.fields.empty()) {
+      std::cout << "embeddings: ";
+      for (size_t k = 0; k < m.fields.size(); ++k)
+        std::cout << (k ? ", " : "") << m.fields[k].name() << " " << m.fields[k].orbit().str();
+      std::cout << " (" << prop.evaluations() << " expression evaluations)\n";
+    }
     if (prop.issue_count() > 0)
       std::cout << "embedding issues: " << prop.issue_count() << " (the result is not embedding-consistent)\n";
     for (const auto& i : prop.issues())

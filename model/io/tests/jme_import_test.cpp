@@ -118,8 +118,7 @@ TEST(Jme, DeepNestingIsALocatedError) {
 // Jerboa expressions of the fixture translated into gmr's language (jme_expression.hpp): every
 // translation checks in its rule, the others name why they are not translated.
 TEST(Jme, ExpressionsTranslateOrSayWhyNot) {
-  const char* src = std::getenv("GMR_SOURCE_DIR");
-  const JmeModeler m = read_jme_file(std::string(src ? src : ".") + "/model/io/tests/data/JerboaTrackingOrbit.jme");
+  const JmeModeler m = read_jme_file(fixture());
   size_t translated = 0, unsupported = 0;
   for (const auto& r : m.rules) {
     ASSERT_EQ(r.embeddings.size(), 2u);
