@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "checker/embedding_check.hpp"
 #include "model/words/word_rewriting.hpp"
 
 namespace gmr::checker {
@@ -58,6 +59,9 @@ class Checker {
     for (int i = 0; i <= s_.dimension; ++i)
       for (int j = i + 2; j <= s_.dimension; ++j)
         rep_.conditions.emplace_back("C(" + std::to_string(i) + "," + std::to_string(j) + ")", cycle(i, j));
+    bool has_expressions = !s_.embeddings.empty();
+    for (const auto& n : s_.right.nodes) has_expressions |= !n.expressions.empty();
+    if (has_expressions && opt_.embeddings) rep_.conditions.emplace_back("embeddings", check_embeddings(s_, rep_.diagnostics));
     if (!s_.precondition.empty())
       add("S-precondition", Severity::Warning, "structure", std::nullopt, {},
           "the Jerboa precondition is not evaluated; the verdict is about the topology only");

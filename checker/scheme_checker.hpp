@@ -23,6 +23,8 @@
 //   S-precondition    warning a Jerboa precondition (code) is present: it is not evaluated, the
 //                             verdict is about the topology only
 //   S-left-expression warning an embedding expression on an L-only node (ignored)
+// Embeddings (condition "embeddings", when the scheme declares embeddings or has expressions):
+//   E-*               the static embedding checks of embedding_check.hpp
 // Incident arcs I_S(d), d in 0..n (Def. 49, Alg. 1):
 //   I-preserved-node  error   E2: a preserved node has a d-arc in L but not in R, or conversely
 //   I-deleted-node    error   E3: a deleted node without a d-arc in L (gluing/dangling condition)
@@ -79,6 +81,7 @@ struct SchemeCheckReport {
 
 struct SchemeCheckOptions {
   bool algorithm3_strict = false;  // Algorithm 3 literally (see above)
+  bool embeddings = true;          // the embedding checks (embedding_check.hpp); false: topology only
 };
 
 SchemeCheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt = {});

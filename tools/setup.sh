@@ -3,7 +3,7 @@
 # downloaded). Used by tools/demo.sh and tools/test.sh.
 set -euo pipefail
 pkgs=(cmake g++ make ninja-build ccache libz3-dev librapidcheck-dev libgtest-dev libgmock-dev graphviz
-      libgraphviz-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev libbenchmark-dev libcgal-dev pkg-config)
+      libgraphviz-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev libbenchmark-dev libcgal-dev libcgal-demo pkg-config)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

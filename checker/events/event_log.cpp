@@ -277,7 +277,7 @@ class Recorder {
 }  // namespace
 
 LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
-                                    GMap& g, const std::vector<Dart>& hooks) {
+                                    GMap& g, const std::vector<Dart>& hooks, scheme::ApplicationObserver* also) {
   const RuleScheme& s = engine.scheme();
   if (analysis.rule != s.name || analysis.dimension != s.dimension)
     throw Error(ErrorCode::Usage, "the static events are those of rule \"" + analysis.rule + "\"",
@@ -289,10 +289,20 @@ LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const St
   out.log.rule = s.name;
   out.log.hooks = hooks;
   Recorder rec(s, analysis);
-  out.application = engine.apply(
-      g, hooks, [&](const GMap& before, const OrbitGraph& O, const SchemeApplication& res) {
-        rec.before(before, O, res);
-      });
+  // Merges are checked on G, before the rewrite; `also` (embedding propagation) sees both phases.
+  struct RecordingObserver : scheme::ApplicationObserver {
+    Recorder& rec;
+    scheme::ApplicationObserver* also;
+    RecordingObserver(Recorder& r, scheme::ApplicationObserver* a) : rec(r), also(a) {}
+    void before_rewrite(const GMap& before, const SchemeApplication& res, const OrbitGraph& O) override {
+      rec.before(before, O, res);
+      if (also) also->before_rewrite(before, res, O);
+    }
+    void after_rewrite(const GMap& after, const SchemeApplication& res, const OrbitGraph& O) override {
+      if (also) also->after_rewrite(after, res, O);
+    }
+  } observer(rec, also);
+  out.application = engine.apply(g, hooks, &observer);
   if (out.application) out.log.orbits = rec.after(g, out.application);
   return out;
 }

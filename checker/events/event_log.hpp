@@ -64,8 +64,10 @@ struct LoggedApplication {
 
 // Applies `engine` at `hooks` in place and logs the events of every orbit type of `analysis`
 // (which must be the static events of engine.scheme()). Throws what SchemeEngine::apply throws, and
-// Error(Usage) when `analysis` belongs to another rule.
+// Error(Usage) when `analysis` belongs to another rule. `also` (e.g. the embedding propagation of
+// model/expr) observes the application too.
 LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
-                                    GMap& g, const std::vector<Dart>& hooks);
+                                    GMap& g, const std::vector<Dart>& hooks,
+                                    scheme::ApplicationObserver* also = nullptr);
 
 }  // namespace gmr::events

@@ -64,7 +64,7 @@ TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
     if (!check_scheme(r, strict).ok()) strict_rejects.insert(r.name);
     EXPECT_TRUE(SchemeEngine(r).not_combinatorial().empty());
   }
-  EXPECT_EQ(count, 14u);
+  EXPECT_EQ(count, 16u);
   EXPECT_EQ(strict_rejects, (std::set<std::string>{"face_extrusion", "face_triangulation", "sew3", "unsew3"}));
 }
 

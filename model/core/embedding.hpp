@@ -44,6 +44,20 @@ class Embedding {
     values_.push_back(std::move(v));
   }
   bool has(Dart d) const { return d < slot_.size() && slot_[d] != kNoValue; }
+
+  // Slot-level access, for the propagation of values after a rewrite (thesis §5.3, Jerboa's
+  // per-dart reference): a new value slot, the slot of a dart, and the assignment of a slot.
+  uint32_t add_value(T v) {
+    values_.push_back(std::move(v));
+    return static_cast<uint32_t>(values_.size() - 1);
+  }
+  uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
+  void set_slot(const GMap& g, Dart d, uint32_t s) {
+    grow(g);
+    slot_[d] = s;
+  }
+  const T& value(uint32_t s) const { return values_[s]; }
+  size_t num_values() const { return values_.size(); }
   const T& get(Dart d) const {
     if (!has(d)) throw Error(ErrorCode::Range, "embedding '" + name_ + "' has no value", "dart " + std::to_string(d));
     return values_[slot_[d]];

@@ -1,5 +1,8 @@
 #include "model/io/jme_import.hpp"
 
+#include "model/expr/compiled_scheme.hpp"
+#include "model/io/jme_expression.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -78,7 +81,7 @@ void read_side(const Ctx& cx, const XMLElement& side, GraphScheme& g, std::vecto
       // Duplicate names are kept (the checker reports them): add_node does not refuse them.
       const uint32_t id = g.add_node(name, std::move(label));
       for (const XMLElement* ex : xml_children(*n, "expr"))
-        g.nodes[id].expressions.push_back({cx.attr(*ex, "ebd"), xml_text(*ex)});
+        g.nodes[id].expressions.push_back({cx.attr(*ex, "ebd"), xml_text(*ex), {}, {}});
       if (n->Attribute("kind", "HOOK")) {
         if (!hooks) throw Error(ErrorCode::Schema, "a hook in the right-hand side", cx.at(*n));
         hooks->push_back(name);
@@ -102,6 +105,42 @@ void read_side(const Ctx& cx, const XMLElement& side, GraphScheme& g, std::vecto
         g.arcs.push_back(SchemeArc{v, v, d});
       } else {
         throw Error(ErrorCode::Schema, "unexpected <" + std::string(kind) + "> in <arcs>", cx.at(*a));
+      }
+    }
+}
+
+// Each right-hand expression translated into gmr's language (jme_expression.hpp) and checked in
+// the rule's context; the Java code is kept in `jerboa`, and an expression that does not translate
+// or check gets `unsupported` (the reason) and no code.
+void translate_expressions(RuleScheme& s) {
+  std::vector<expr::EmbeddingSignature> sigs;
+  try {
+    sigs = expr::embedding_signatures(s);
+  } catch (const Error&) {
+    // an unknown embedding type: expressions for it are reported below
+  }
+  const expr::CheckContext ctx = expr::check_context(s, sigs);
+  for (auto& n : s.right.nodes)
+    for (auto& x : n.expressions) {
+      x.jerboa = x.code;
+      x.code.clear();
+      const JerboaTranslation t = translate_jerboa_expression(x.jerboa);
+      if (!t.code) {
+        x.unsupported = t.unsupported;
+        continue;
+      }
+      const expr::EmbeddingSignature* sig = nullptr;
+      for (const auto& g : sigs)
+        if (g.name == x.embedding) sig = &g;
+      if (!sig) {
+        x.unsupported = "no declared embedding '" + x.embedding + "' of a known type";
+        continue;
+      }
+      try {
+        expr::compile_expression(*t.code, *sig, ctx, "");
+        x.code = *t.code;
+      } catch (const Error& e) {
+        x.unsupported = "translated to '" + *t.code + "', which does not check: " + e.message();
       }
     }
 }
@@ -168,6 +207,11 @@ JmeModeler parse_jme(std::string_view text, const std::string& source) {
       const GraphScheme& side = s.left.size() ? s.left : s.right;
       if (side.size() && !side.nodes[0].label.has_hole()) s.orbit = side.nodes[0].label;
     }
+    for (const auto& e : m.embeddings) {
+      const auto t = expr::parse_value_type(e.type);
+      s.embeddings.push_back({e.name, e.orbit, t ? expr::to_string(*t) : e.type});
+    }
+    translate_expressions(s);
     m.rules.push_back(std::move(s));
     m.rule_lines.push_back(static_cast<size_t>(r->GetLineNum()));
   }

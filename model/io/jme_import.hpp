@@ -3,8 +3,12 @@
 // The file's <modeler dimension="n"> gives the dimension; each <rule name=...> becomes a
 // RuleScheme:
 //  * <left>/<right> <nodes>: <node name=.. orbit="0,-1,2" kind="HOOK|SIMPLE"> — the orbit attribute
-//    is the node label, -1 standing for `_`, "" for <>; <expr ebd="pos">code</expr> children are
-//    kept as text (EmbeddingExpression);
+//    is the node label, -1 standing for `_`, "" for <>; <expr ebd="pos">code</expr> children of
+//    right nodes are translated into gmr's expression language (jme_expression.hpp) and checked,
+//    the Java code kept in EmbeddingExpression::jerboa; those that do not translate carry the
+//    reason in `unsupported`;
+//  * the modeler's <embedding name= type= orbit=> become every rule's embedding declarations
+//    (Jerboa's Vec3 -> point, Color -> colour);
 //  * <arcs>: <arc dim=.. a=.. b=..> explicit arcs, <arcloop dim=.. node=..> explicit loops;
 //  * hooks: L nodes of kind HOOK, ordered by <paramtopo name=.. order=..> when present, else in
 //    document order; the rule's orbit type <o> is the first hook's label. A rule without hook takes

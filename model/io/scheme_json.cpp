@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "model/expr/compiled_scheme.hpp"
 #include "model/io/atomic_write.hpp"
 #include "model/core/error.hpp"
 #include "model/io/json_reader.hpp"
@@ -49,8 +50,13 @@ GraphScheme read_side(const JsonAt& side, const RuleScheme& r) {
       for (size_t e = 0; e < ex->array_size(); ++e) {
         const JsonAt x = (*ex)[e];
         x.require_object();
-        x.allow_only({"embedding", "code"});
-        g.nodes[id].expressions.push_back({x["embedding"].as_string(), x["code"].as_string()});
+        x.allow_only({"embedding", "code", "jerboa", "unsupported"});
+        scheme::EmbeddingExpression ee{x["embedding"].as_string(), {}, {}, {}};
+        if (auto u = x.get("unsupported")) ee.unsupported = u->as_string();
+        if (auto j = x.get("jerboa")) ee.jerboa = j->as_string();
+        if (ee.unsupported.empty()) ee.code = x["code"].as_string();
+        else if (auto c = x.get("code")) c->fail("an unsupported Jerboa expression has no code");
+        g.nodes[id].expressions.push_back(std::move(ee));
       }
     }
   }
@@ -75,6 +81,43 @@ GraphScheme read_side(const JsonAt& side, const RuleScheme& r) {
   return g;
 }
 
+// Every expression parsed and type-checked (docs/embeddings.md), errors located by JSON path, rule
+// and node, and column in the code.
+void check_expressions(const JsonAt& root, const RuleScheme& r) {
+  const auto sigs = expr::embedding_signatures(r);
+  const auto ctx = expr::check_context(r, sigs);
+  auto side_check = [&](const char* key, const GraphScheme& g, bool right) {
+    const JsonAt nodes = root[key]["nodes"];
+    for (uint32_t v = 0; v < g.size(); ++v) {
+      const auto& xs = g.nodes[v].expressions;
+      if (xs.empty()) continue;
+      const JsonAt ex = nodes[v]["expressions"];
+      if (!right) {
+        if (!r.right_of(v)) ex.fail("an expression on a deleted node: expressions belong to right-hand nodes");
+        continue;  // kept, the right-hand node's expression is the one applied
+      }
+      for (size_t k = 0; k < xs.size(); ++k) {
+        const JsonAt x = ex[k];
+        if (!xs[k].unsupported.empty()) continue;  // an untranslated Jerboa expression
+        const auto* decl = r.find_embedding(xs[k].embedding);
+        if (!decl)
+          x["embedding"].fail("embedding \"" + xs[k].embedding + "\" is not declared in \"embeddings\"");
+        for (size_t j = 0; j < k; ++j)
+          if (xs[j].embedding == xs[k].embedding)
+            x["embedding"].fail("two expressions for embedding \"" + xs[k].embedding + "\" on node " +
+                                g.nodes[v].name + " (thesis Def. 71: at most one)");
+        size_t e = 0;
+        while (sigs[e].name != decl->name) ++e;
+        const std::string where = x.location_of(x.child_path("code")) + " (rule " + r.name + ", node " +
+                                  g.nodes[v].name + ")";
+        expr::compile_expression(xs[k].code, sigs[e], ctx, where);
+      }
+    }
+  };
+  side_check("left", r.left, false);
+  side_check("right", r.right, true);
+}
+
 nlohmann::ordered_json side_to_json(const GraphScheme& g) {
   nlohmann::ordered_json j;
   j["nodes"] = nlohmann::ordered_json::array();
@@ -84,7 +127,14 @@ nlohmann::ordered_json side_to_json(const GraphScheme& g) {
     v["orbit"] = n.label.str();
     if (!n.expressions.empty()) {
       v["expressions"] = nlohmann::ordered_json::array();
-      for (const auto& e : n.expressions) v["expressions"].push_back({{"embedding", e.embedding}, {"code", e.code}});
+      for (const auto& e : n.expressions) {
+        nlohmann::ordered_json x;
+        x["embedding"] = e.embedding;
+        if (e.unsupported.empty()) x["code"] = e.code;
+        if (!e.jerboa.empty()) x["jerboa"] = e.jerboa;
+        if (!e.unsupported.empty()) x["unsupported"] = e.unsupported;
+        v["expressions"].push_back(std::move(x));
+      }
     }
     j["nodes"].push_back(std::move(v));
   }
@@ -106,7 +156,7 @@ RuleScheme scheme_from_json(const nlohmann::json& doc, const std::string& source
   const JsonAt root(doc, source);
   root.check_header("gmr.rule", 1);
   root.allow_only({"format", "version", "kind", "name", "description", "map", "n", "orbit", "hooks", "left",
-                   "right", "precondition"});
+                   "right", "precondition", "embeddings"});
   const JsonAt kind = root["kind"];
   if (kind.as_string() != "scheme")
     kind.fail("expected kind \"scheme\", found \"" + kind.as_string() + "\"");
@@ -125,6 +175,22 @@ RuleScheme scheme_from_json(const nlohmann::json& doc, const std::string& source
     if (x > r.dimension) ov.fail("dimension " + std::to_string(x) + " outside 0.." + std::to_string(r.dimension));
     if (!seen.insert(x).second) ov.fail("dimension " + std::to_string(x) + " repeated in " + r.orbit.str());
   }
+  if (auto em = root.get("embeddings")) {
+    for (size_t k = 0; k < em->array_size(); ++k) {
+      const JsonAt d = (*em)[k];
+      d.require_object();
+      d.allow_only({"name", "orbit", "type"});
+      scheme::EmbeddingDeclaration decl{d["name"].as_string(), read_orbit(d["orbit"]), d["type"].as_string()};
+      if (decl.name.empty()) d["name"].fail("embedding names must not be empty");
+      if (!expr::parse_value_type(decl.type))
+        d["type"].fail("unknown value type \"" + decl.type + "\" (point, vector, scalar, colour)");
+      for (int x : decl.orbit.dims())
+        if (x == OrbitType::kHole || x > r.dimension)
+          d["orbit"].fail("an embedding's orbit type uses dimensions 0.." + std::to_string(r.dimension) + " without `_`");
+      if (r.find_embedding(decl.name)) d["name"].fail("embedding \"" + decl.name + "\" declared twice");
+      r.embeddings.push_back(std::move(decl));
+    }
+  }
   r.left = read_side(root["left"], r);
   r.right = read_side(root["right"], r);
   const JsonAt hooks = root["hooks"];
@@ -135,6 +201,7 @@ RuleScheme scheme_from_json(const nlohmann::json& doc, const std::string& source
       if (prev == h) hooks[k].fail("hook \"" + h + "\" listed twice");
     r.hooks.push_back(h);
   }
+  check_expressions(root, r);
   return r;
 }
 
@@ -156,6 +223,11 @@ nlohmann::ordered_json scheme_to_json(const RuleScheme& s) {
   j["map"] = "gmap";
   j["n"] = s.dimension;
   j["orbit"] = s.orbit.str();
+  if (!s.embeddings.empty()) {
+    j["embeddings"] = nlohmann::ordered_json::array();
+    for (const auto& d : s.embeddings)
+      j["embeddings"].push_back({{"name", d.name}, {"orbit", d.orbit.str()}, {"type", d.type}});
+  }
   j["hooks"] = s.hooks;
   j["left"] = side_to_json(s.left);
   j["right"] = side_to_json(s.right);

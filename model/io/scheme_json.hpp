@@ -9,6 +9,9 @@
 //     "map": "gmap",                         schemes rewrite G-maps only
 //     "n": 2,                                dimension: labels and arcs use 0..n
 //     "orbit": "<0,1,2>",                    the parameter <o> of the scheme (no `_`)
+//     "embeddings": [                        (optional) the embeddings the expressions write:
+//       {"name": "position", "orbit": "<1,2>", "type": "point"} ],   value types point, vector,
+//                                            scalar, colour (docs/embeddings.md)
 //     "hooks": ["n0"],                       L nodes, one per connected component of L; the
 //                                            first is the reference hook
 //     "left":  { "nodes": [ {"name": "n0", "orbit": "<0,1,2>"} ],
@@ -16,6 +19,9 @@
 //                                            the same node twice is a loop
 //     "right": { "nodes": [ {"name": "n1", "orbit": "<_,_,2>",
 //                            "expressions": [ {"embedding": "pos", "code": "..."} ]} ],
+//                                            (imported from Jerboa: also "jerboa", the Java code,
+//                                            and "unsupported" instead of "code" when it could
+//                                            not be translated)
 //                "arcs": [...] },
 //     "precondition": "..."                  (optional, Jerboa code kept as text, never evaluated)
 //   }
@@ -25,7 +31,10 @@
 // line:column) or Error(Schema) located by JSON path (e.g. "$.right.nodes[2].orbit" for a wrong
 // arity, "$.left.arcs[0].nodes[1]" for an unknown node, "$.hooks[0]" for a hook not in L). Whether
 // the scheme is *consistent* (hooks per component, incident arcs, cycles, ...) is the scheme
-// checker's business, not the reader's. The writer writes atomically.
+// checker's business, not the reader's. Every expression is parsed and type-checked
+// (docs/embeddings.md): a malformed or ill-typed expression, one for an undeclared embedding, two
+// for one embedding on a node, or one on a deleted node is an error located
+// "$.right.nodes[1].expressions[0].code (rule r, node n1), column 12". The writer writes atomically.
 #pragma once
 #include <filesystem>
 #include <string>

@@ -18,7 +18,8 @@ size_t EverywhereApplication::darts_deleted() const {
   return n;
 }
 
-EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool keep_tables) {
+EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool keep_tables,
+                                       ApplicationObserver* observer) {
   const RuleScheme& s = engine.scheme();
   if (s.hooks.size() != 1)
     throw Error(ErrorCode::Usage,
@@ -30,7 +31,7 @@ EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool
   std::vector<bool> used(g.capacity(), false);
   for (Dart d : darts) {
     if (used[d] || !g.alive(d)) continue;
-    SchemeApplication app = engine.apply(g, {d});
+    SchemeApplication app = engine.apply(g, {d}, observer);
     if (!app) {
       if (out.applications.empty()) out.last_failure = std::move(app);
       continue;

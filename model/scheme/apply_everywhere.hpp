@@ -38,6 +38,8 @@ struct EverywhereApplication {
 
 // Applies `engine` at every dart of g (see above). With keep_tables == false, the orbit, match and
 // comatch tables of each application are dropped (they grow with the number of applications).
-EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool keep_tables = true);
+// `observer` (optional) sees every successful application (scheme_engine.hpp).
+EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool keep_tables = true,
+                                       ApplicationObserver* observer = nullptr);
 
 }  // namespace gmr::scheme

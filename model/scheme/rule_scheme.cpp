@@ -147,4 +147,10 @@ void RuleScheme::validate_structure() const {
 
 std::string node_label_text(const SchemeNode& n) { return n.name + " " + n.label.str(); }
 
+const EmbeddingDeclaration* RuleScheme::find_embedding(const std::string& embedding) const {
+  for (const auto& e : embeddings)
+    if (e.name == embedding) return &e;
+  return nullptr;
+}
+
 }  // namespace gmr::scheme

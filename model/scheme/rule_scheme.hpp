@@ -7,8 +7,10 @@
 //    node's dimension o^v[p], or deletes it when o^v[p] is `_` (OrbitType::kHole). These are the
 //    node's *implicit arcs*;
 //  * explicit arcs a –i– b, undirected (G-maps), a == b being an i-loop;
-//  * an optional list of embedding expressions per node (kept as text: the expression language is not
-//    implemented; they only matter on right nodes).
+//  * an optional list of embedding expressions per node (text in the language of
+//    docs/embeddings.md, parsed and typed by model/expr; they only matter on right nodes).
+// The embeddings the expressions write are declared once per scheme (name, orbit type, value
+// type; thesis Def. 69, the embedding type graph).
 // Nodes are preserved when their name occurs on both sides, deleted when only in L, added when only
 // in R. Hooks are L nodes (names), one per connected component of L; the first hook is the
 // reference hook and its label is normally <o> itself.
@@ -27,9 +29,20 @@
 namespace gmr::scheme {
 
 struct EmbeddingExpression {
-  std::string embedding;  // e.g. "pos"
-  std::string code;       // expression text, not interpreted
+  std::string embedding;  // e.g. "position"
+  std::string code;       // expression text (docs/embeddings.md); empty when `unsupported`
+  std::string jerboa;       // the Jerboa (Java) code it was translated from, when imported
+  std::string unsupported;  // why the Jerboa code could not be translated (then code is empty)
   friend bool operator==(const EmbeddingExpression&, const EmbeddingExpression&) = default;
+};
+
+// An embedding pi : <o_pi> -> tau_pi (thesis §5.2.2). `type` is the value type's name in the
+// expression language ("point", "vector", "scalar", "colour"), checked by model/expr.
+struct EmbeddingDeclaration {
+  std::string name;
+  OrbitType orbit;
+  std::string type;
+  friend bool operator==(const EmbeddingDeclaration&, const EmbeddingDeclaration&) = default;
 };
 
 struct SchemeNode {
@@ -81,6 +94,7 @@ class RuleScheme {
   OrbitType orbit;          // <o>: the parameter of the rule (no `_`)
   GraphScheme left, right;
   std::vector<std::string> hooks;  // names of L nodes; hooks[0] is the reference hook
+  std::vector<EmbeddingDeclaration> embeddings;
   // Jerboa precondition / other code, kept as text (never evaluated; the checker warns).
   std::string precondition;
 
@@ -92,6 +106,8 @@ class RuleScheme {
   std::optional<uint32_t> left_of(uint32_t right_node) const;
   // Indices (in `left`) of the hooks; throws Error(Schema) for a hook that is not an L node.
   std::vector<uint32_t> hook_nodes() const;
+  // The declaration of embedding `name`, or nullptr.
+  const EmbeddingDeclaration* find_embedding(const std::string& name) const;
 
   // Throws Error(Schema) with a location ("L node n1", "R arc 3", "hook 0") for: arity of a label
   // different from |<o>|, dimension outside 0..n (or -1 = `_` in a label), `_` in <o>, unknown or

@@ -296,12 +296,8 @@ void SchemeEngine::remove_deleted_darts(GMap& g, size_t s, const std::vector<Dar
     }
 }
 
-SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_darts) const {
-  return apply(g, hook_darts, BeforeRewrite{});
-}
-
 SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_darts,
-                                      const BeforeRewrite& before_rewrite) const {
+                                     ApplicationObserver* observer) const {
   check_call(g, hook_darts);
   SchemeApplication res;
   if (!not_combinatorial_.empty()) {
@@ -314,13 +310,14 @@ SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_dar
   if (!match_other_hooks(g, hook_darts, O, res)) return res;  // 2
   propagate_match(g, s, res.match);                            // 3
   if (!check_match(g, O, res)) return res;                     // 4
-  if (before_rewrite) before_rewrite(g, O, res);
+  if (observer) observer->before_rewrite(g, res, O);
   place_right_darts(g, s, res);                                // 5
   write_right_links(g, O, res.comatch);                        // 6
   remove_deleted_darts(g, s, res.match);                       // 7
   res.applied = true;
   res.darts_added = num_added_ * s;
   res.darts_deleted = deleted_.size() * s;
+  if (observer) observer->after_rewrite(g, res, O);
   return res;
 }
 

@@ -28,7 +28,9 @@
 //    derivation of the instantiated rule (tested in model/scheme/tests/scheme_dpo_test.cpp).
 //  * The cycle condition is not required: a scheme breaking it yields a map that check_validity
 //    rejects, exactly as DPO would.
-//  * Embedding expressions are not evaluated; Jerboa preconditions neither.
+//  * Embedding expressions are not evaluated here; an ApplicationObserver (model/expr) sees the
+//    map before and after the rewrite, which is where Jerboa evaluates them into a buffer and
+//    propagates them (thesis §6.3.4). Jerboa preconditions are not evaluated.
 //  * A scheme whose L is empty is applied on one abstract dart free at every position (it creates
 //    |V_R| darts); it takes no hook dart.
 // Inapplicability is a result (SchemeApplication::applied == false, with a reason), never an
@@ -75,6 +77,16 @@ struct SchemeApplication {
   explicit operator bool() const { return applied; }
 };
 
+// Hooks around the rewrite of one successful application: `before_rewrite` is called once the
+// match is checked (step 4), on the unchanged map; `after_rewrite` once the deleted darts are freed
+// (step 7), with the comatch filled. Both receive the hook orbit graph O.
+class ApplicationObserver {
+ public:
+  virtual ~ApplicationObserver() = default;
+  virtual void before_rewrite(const GMap& g, const SchemeApplication& app, const OrbitGraph& O) = 0;
+  virtual void after_rewrite(const GMap& g, const SchemeApplication& app, const OrbitGraph& O) = 0;
+};
+
 // A scheme prepared for repeated application.
 class SchemeEngine {
  public:
@@ -87,12 +99,8 @@ class SchemeEngine {
   const std::string& not_combinatorial() const { return not_combinatorial_; }
 
   // Applies in place. `hook_darts[k]` is the dart for hooks[k].
-  SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts) const;
-  // Called once the match is checked (after step 4), before the rewrite: g is still the map before
-  // the application, O the hook orbit graph, the report holds the orbit and the match table.
-  using BeforeRewrite = std::function<void(const GMap& g, const OrbitGraph& O, const SchemeApplication& res)>;
-  // As apply, calling `before_rewrite` (when set) between the match and the rewrite.
-  SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts, const BeforeRewrite& before_rewrite) const;
+  SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts,
+                          ApplicationObserver* observer = nullptr) const;
 
  private:
   // The phases of apply, numbered as in the header comment. check_call throws on misuse; a check

@@ -3,7 +3,9 @@
 # against CGAL on G-maps of >= 10^7 darts (tools/bench/cgal_peer_bench.cpp), and prints a table of
 # gmr/CGAL time ratios (< 1: gmr faster) and the bytes per dart of both. Then the rule-scheme engine
 # against hand-written CGAL code (tools/bench/scheme_bench.cpp: quad subdivision of a torus, 2*10^6
-# darts after), with the darts created per second of both.
+# darts after), with the darts created per second of both. Then subdivision with positions
+# (tools/bench/subdivision_bench.cpp: Catmull-Clark and Loop, 3 iterations, on CGAL's elephant)
+# against CGAL::Subdivision_method_3.
 #
 #   tools/bench/run.sh                                  # everything (~2-3 min, ~1.5 GB RAM)
 #   tools/bench/run.sh --benchmark_filter='torus2d/'    # extra arguments go to Google Benchmark
@@ -17,7 +19,7 @@ reps=${GMR_BENCH_REPS:-3}
 jobs=$(nproc 2>/dev/null || echo 2)
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
-cmake --build "$build" --target gmr_bench_cgal gmr_bench_scheme -j"$jobs"
+cmake --build "$build" --target gmr_bench_cgal gmr_bench_scheme gmr_bench_subdivision -j"$jobs"
 
 out="$build/bench-results.json"
 mem="$build/bench-memory.txt"
@@ -28,8 +30,12 @@ out2="$build/bench-results-scheme.json"
 "$build/tools/bench/gmr_bench_scheme" --benchmark_repetitions="$reps" \
   --benchmark_report_aggregates_only=true --benchmark_out="$out2" --benchmark_out_format=json "$@" \
   || rm -f "$out2"  # e.g. a --benchmark_filter that matches none of its benchmarks
+out3="$build/bench-results-subdivision.json"
+(cd "$build" && "$build/tools/bench/gmr_bench_subdivision" --benchmark_repetitions="$reps" \
+  --benchmark_report_aggregates_only=true --benchmark_out="$out3" --benchmark_out_format=json "$@") \
+  || rm -f "$out3"
 
-python3 - "$out" "$out2" <<'PY'
+python3 - "$out" "$out2" "$out3" <<'PY'
 import json, os, sys
 benchmarks = []
 for path in sys.argv[1:]:

@@ -2,7 +2,8 @@
 // concrete rule on a map. The match is given by L-node=dart pairs: with an anchor in every
 // connected component of L it is propagated along the arcs (linear); otherwise the first match
 // (in enumeration order) that agrees with the given pairs and satisfies the gluing condition is
-// used. Embeddings of the input are not carried over (the output has none).
+// used. Concrete rules do not carry embeddings (the output has none); rule schemes do, with their
+// expressions (docs/embeddings.md).
 // A rule the checker rejects is refused unless --force (rule_gate.hpp).
 // Exit 0 when the result is a valid map (written to -o when given), 1 when the rule is refused, no
 // match applies or the result breaks a constraint of the model (listed up to --limit), 2 on bad
@@ -38,15 +39,16 @@ struct ApplyArgs {
   std::string hooks, rule_name;  // rule schemes
   bool all = false;
   std::string events;
+  bool no_embeddings = false;
 };
 
 int run_apply(const ApplyArgs& a) {
   const RuleInput in = load_rule_input(a.rule, a.rule_name);
-  if (auto refused = gate_rule(in, a.rule, a.force)) return *refused;
+  if (auto refused = gate_rule(in, a.rule, a.force, !a.no_embeddings)) return *refused;
   if (in.is_scheme()) {
     if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
-    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift, a.limit,
-                                           a.events});
+    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift,
+                                           a.limit, a.no_embeddings, a.events});
   }
   if (!a.events.empty())
     throw Error(ErrorCode::Usage, "--events logs the application of a rule scheme, not of a concrete rule", "--events");
@@ -146,6 +148,8 @@ void register_apply(CLI::App& app) {
   sub->add_option("--hook", args->hooks, "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
   sub->add_flag("--all", args->all, "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
+  sub->add_flag("--no-embeddings", args->no_embeddings,
+                "Rule schemes: drop the map's embeddings (positions, ...) and rewrite the topology only");
   sub->add_flag("--lift", args->lift,
                 "Rule schemes of a higher dimension than the map: apply to the map lifted to it (new dimensions free)");
   sub->add_flag("--force", args->force, "Apply a rule the checker rejects (by default it is refused, exit 1)");

@@ -24,11 +24,12 @@ struct CheckArgs {
   bool json = false;
   bool per_constraint = false;
   bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (scheme_checker.hpp)
+  bool no_embeddings = false;  // rule schemes: the topological conditions only
 };
 
 int run_check(const CheckArgs& a) {
   // Rule schemes (.jme files, gmr.rule files of kind "scheme") go to the scheme checker.
-  if (auto code = check_scheme_input(a.input, a.json, a.algorithm3)) return *code;
+  if (auto code = check_scheme_input(a.input, a.json, a.algorithm3, !a.no_embeddings)) return *code;
   // Concrete rules.
   const Rule r = read_rule_file(a.input);
   const CheckReport rep = check_rule(r, !a.per_constraint);
@@ -55,6 +56,8 @@ void register_check(CLI::App& app) {
   // Rule schemes: a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
   sub->add_flag("--algorithm3", args->algorithm3,
                 "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones)");
+  sub->add_flag("--no-embeddings", args->no_embeddings,
+                "Rule schemes: the topological conditions only, without the embedding checks");
   set_action(sub, [args] { return run_check(*args); });
 }
 

@@ -16,13 +16,13 @@ struct Verdict {
   std::string first_error;
 };
 
-Verdict verdict_of(const RuleInput& in) {
+Verdict verdict_of(const RuleInput& in, bool embeddings) {
   Verdict v;
   const std::vector<Diagnostic>* diagnostics = nullptr;
   CheckReport concrete;
   SchemeCheckReport scheme;
   if (in.is_scheme()) {
-    scheme = check_scheme(*in.scheme);
+    scheme = check_scheme(*in.scheme, {.embeddings = embeddings});
     v.rule = in.scheme->name;
     diagnostics = &scheme.diagnostics;
   } else {
@@ -39,11 +39,11 @@ Verdict verdict_of(const RuleInput& in) {
 
 }  // namespace
 
-std::optional<int> gate_rule(const RuleInput& in, const std::string& path, bool force) {
+std::optional<int> gate_rule(const RuleInput& in, const std::string& path, bool force, bool embeddings) {
   if (in.is_scheme() && !in.scheme->precondition.empty())
     std::cerr << "gmr: warning: rule \"" << in.scheme->name
               << "\" has a Jerboa precondition; gmr does not evaluate it (the rule is applied as if it held)\n";
-  const Verdict v = verdict_of(in);
+  const Verdict v = verdict_of(in, embeddings);
   if (v.errors == 0) return std::nullopt;
   if (force) {
     std::cerr << "gmr: warning: applying rule \"" << v.rule << "\", which the checker rejects (" << v.errors

@@ -8,6 +8,9 @@
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/io/json_writer.hpp"
+#include "model/expr/compiled_scheme.hpp"
+#include "model/expr/embedded_map.hpp"
+#include "model/expr/propagation.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
@@ -90,15 +93,16 @@ void print_not_applicable(const RuleScheme& s, const SchemeApplyArgs& a, NotAppl
 }
 
 // --hook D[,D...] (or no hook): one application; nullopt when not applicable (already printed).
-std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a) {
+std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a,
+                                      ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> hooks = a.hooks.empty() ? std::vector<Dart>{} : parse_hooks(a.hooks, g);
   SchemeApplication app;
   if (a.events.empty()) {
-    app = engine.apply(g, hooks);  // wrong count, dead dart: Error (exit 2)
+    app = engine.apply(g, hooks, obs);  // wrong count, dead dart: Error (exit 2)
   } else {
     const events::StaticEvents st = events::analyse(s);
-    events::LoggedApplication la = events::apply_with_events(engine, st, g, hooks);
+    events::LoggedApplication la = events::apply_with_events(engine, st, g, hooks, obs);
     app = std::move(la.application);
     if (app) write_output(a.events, io::dump_json(events::event_log_to_json(s, st, la.log)));
   }
@@ -113,10 +117,11 @@ std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const
 }
 
 // --all: apply_everywhere; nullopt when applicable at no dart (already printed).
-std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a) {
+std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a,
+                                           ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> darts = g.darts();
-  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json);  // tables only with --json
+  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json, obs);  // tables only with --json
   if (all.applications.empty()) {
     const SchemeApplication& last = all.last_failure;
     const std::string why = darts.empty() ? "the map has no dart"
@@ -152,7 +157,8 @@ void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, GMap& g) {
 
 // Prints the applications, the dart counts, the change in cells and the validity of the result.
 void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, const Change& change,
-                   const GMap& g, const ValidityReport& rep) {
+                   const GMap& g, const ValidityReport& rep, const expr::EmbeddingPropagation& prop,
+                   const expr::EmbeddedMap& m) {
   const size_t before = change.darts_before;
   const auto& apps = r.apps;
   const auto& hooks_used = r.hooks_used;
@@ -187,6 +193,14 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     for (const auto& v : rep.violations) vs.push_back(v.describe());
     j["violations"] = vs;
     j["violations_not_listed"] = rep.truncated;
+    nlohmann::ordered_json em = nlohmann::ordered_json::array();
+    for (const auto& f : m.fields) em.push_back(f.name());
+    j["embeddings"] = em;
+    j["evaluations"] = prop.evaluations();
+    nlohmann::ordered_json is = nlohmann::ordered_json::array();
+    for (const auto& i : prop.issues())
+      is.push_back({{"code", i.code}, {"embedding", i.embedding}, {"dart", i.dart}, {"message", i.message}});
+    j["embedding_issues"] = is;
     print_json(j);
   } else {
     std::cout << s.name << ": applied " << apps.size() << " time" << (apps.size() == 1 ? "" : "s");
@@ -198,6 +212,16 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
               << (rep.ok() ? "valid" : "INVALID") << "\n";
     if (const std::string c = describe_change(change.before, change.after); !c.empty()) std::cout << "  " << c << "\n";
     print_violations(rep);
+    if (!m.fields.empty()) {
+      std::cout << "embeddings: ";
+      for (size_t k = 0; k < m.fields.size(); ++k)
+        std::cout << (k ? ", " : "") << m.fields[k].name() << " " << m.fields[k].orbit().str();
+      std::cout << " (" << prop.evaluations() << " expression evaluations)\n";
+    }
+    if (prop.issue_count() > 0)
+      std::cout << "embedding issues: " << prop.issue_count() << " (the result is not embedding-consistent)\n";
+    for (const auto& i : prop.issues())
+      std::cout << "  " << i.code << ": embedding " << i.embedding << ", dart " << i.dart << ": " << i.message << "\n";
   }
 }
 
@@ -216,17 +240,22 @@ SchemeEngine engine_for(const RuleScheme& s, const SchemeApplyArgs& a) {
 int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   const SchemeEngine engine = engine_for(s, a);
   check_hook_arguments(s, a);
+  const expr::CompiledScheme cs = expr::compile_scheme(s);
   GMapFile f = load_map(a.input, a.from);
-  GMap& g = f.map;
+  if (a.no_embeddings) f.embeddings.clear();
+  expr::EmbeddedMap m = expr::to_embedded_map(f);
+  GMap& g = m.map;
   lift_to_scheme(s, a, g);
+  expr::EmbeddingPropagation prop(cs, m);
   const size_t before = g.size();
   const MapSummary summary_before = summarize(g);
-  const std::optional<Applied> r = a.all ? apply_at_every_dart(engine, g, a) : apply_at_hooks(engine, g, a);
+  const std::optional<Applied> r =
+      a.all ? apply_at_every_dart(engine, g, a, &prop) : apply_at_hooks(engine, g, a, &prop);
   if (!r) return kExitNegative;
   const ValidityReport rep = check_validity(g, a.limit);
-  print_applied(s, a, *r, {before, summary_before, summarize(g)}, g, rep);
-  if (!rep.ok()) return kExitNegative;
-  if (!a.output.empty()) save_map(GMapFile{g, {}}, a.output, output_format(a.output, a.to));
+  print_applied(s, a, *r, {before, summary_before, summarize(g)}, g, rep, prop, m);
+  if (!rep.ok() || prop.issue_count() > 0) return kExitNegative;
+  if (!a.output.empty()) save_map(expr::to_gmap_file(m), a.output, output_format(a.output, a.to));
   return kExitOk;
 }
 

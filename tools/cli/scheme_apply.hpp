@@ -2,6 +2,8 @@
 // given hook dart(s), or at every dart where the scheme applies (--all, schemes with one hook:
 // model/scheme/apply_everywhere.hpp). Called by tools/cli/cmd_apply.cpp when the rule file is a
 // scheme (gmr.rule kind "scheme" or .jme). This file handles the arguments and the printing only.
+// Embeddings: the map's embeddings go through the application with the scheme's expressions
+// (model/expr/propagation.hpp); --no-embeddings drops them first (topology only).
 #pragma once
 #include <string>
 
@@ -14,13 +16,15 @@ struct SchemeApplyArgs {
   std::string rule, input, from, output, to, hooks;
   bool all = false, json = false, lift = false;
   size_t limit = 20;  // violations of the result listed
+  bool no_embeddings = false;
   std::string events;  // event log file (gmr.events, kind log), with --hook only
 };
 
 // With `events`, the application at the hooks is logged (checker/events/event_log.hpp: static
 // events confirmed on the match, every orbit type) and the log written there atomically.
-// Exit 0 when applied and the result is a valid map (written to -o when given), 1 when the scheme
-// does not apply (the reason is printed) or the result is not a valid map; bad input throws.
+// Exit 0 when applied and the result is a valid map with consistent embeddings (written to -o when
+// given), 1 when the scheme does not apply (the reason is printed), the result is not a valid map,
+// or an embedding is not consistent (E-no-value, E-merge, E-overlap, listed); bad input throws.
 int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a);
 
 }  // namespace gmr::cli

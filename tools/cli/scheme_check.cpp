@@ -33,9 +33,10 @@ std::string code_summary(const SchemeCheckReport& r) {
 
 }  // namespace
 
-std::optional<int> check_scheme_input(const std::string& path, bool json, bool algorithm3_strict) {
+std::optional<int> check_scheme_input(const std::string& path, bool json, bool algorithm3_strict, bool embeddings) {
   SchemeCheckOptions opt;
   opt.algorithm3_strict = algorithm3_strict;
+  opt.embeddings = embeddings;
   const bool jme = path.size() > 4 && path.substr(path.size() - 4) == ".jme";
   if (!jme) {
     const std::string text = read_text_file(path);
@@ -59,6 +60,14 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
     reps.push_back(check_scheme(r, opt));
     accepted += reps.back().ok();
   }
+  // Jerboa expressions translated into gmr's language (model/io/jme_expression.hpp).
+  size_t expressions = 0, translated = 0;
+  for (const auto& r : m.rules)
+    for (const auto& n : r.right.nodes)
+      for (const auto& x : n.expressions) {
+        ++expressions;
+        translated += x.unsupported.empty();
+      }
   if (json) {
     nlohmann::ordered_json j = check_document("modeler", accepted == m.rules.size());
     j["file"] = path;
@@ -67,6 +76,8 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
     j["rules"] = m.rules.size();
     j["accepted"] = accepted;
     j["rejected"] = m.rules.size() - accepted;
+    j["expressions"] = expressions;
+    j["expressions_translated"] = translated;
     j["reports"] = nlohmann::ordered_json::array();
     for (const auto& r : reps) {
       // Each report is the body of a "scheme" document, without the document header.
@@ -87,6 +98,8 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
                 << pad(std::to_string(reps[k].errors()), 6) << "  " << pad(std::to_string(reps[k].warnings()), 8)
                 << "  " << code_summary(reps[k]) << "\n";
     std::cout << accepted << " accepted, " << m.rules.size() - accepted << " rejected\n";
+    std::cout << "expressions: " << translated << " of " << expressions
+              << " translated into gmr's language (the others: E-unsupported, by rule and node)\n";
     for (size_t k = 0; k < reps.size(); ++k)
       if (!reps[k].ok()) std::cout << "\n" << to_text(reps[k]);
   }

@@ -9,6 +9,7 @@ namespace gmr::cli {
 // nullopt when `path` is neither a .jme file nor a gmr.rule document of kind "scheme" (the caller
 // then checks it as a concrete rule); otherwise the exit code (0 all accepted, 1 a rule rejected).
 // Bad input throws gmr::Error (exit 2).
-std::optional<int> check_scheme_input(const std::string& path, bool json, bool algorithm3_strict);
+std::optional<int> check_scheme_input(const std::string& path, bool json, bool algorithm3_strict,
+                                      bool embeddings = true);
 
 }  // namespace gmr::cli

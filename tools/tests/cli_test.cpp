@@ -13,6 +13,7 @@
 #include "model/io/gmap_json.hpp"
 #include "model/io/off.hpp"
 #include "model/io/read_file.hpp"
+#include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
 #include "tools/tests/cli_fixture.hpp"
 
@@ -314,8 +315,13 @@ TEST_F(Cli, CheckAndApplyScheme) {
   r = run("apply --all " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("applied 1 time"), std::string::npos) << r.out;
-  // Two hooks: sew two free edges of an open square.
+  // Two hooks: sew two free edges of an open square. Its positions clash: the sewn vertices merge
+  // orbits of different positions without an expression (E-merge, exit 1, nothing written)...
   r = run("apply " + q(rule_data("sew2.json")) + " " + q(test_data("square.json")) + " --hook 0,4 -o " + q(dir / "out/sewn.json"));
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("E-merge"), std::string::npos) << r.out;
+  // ... unless the embeddings are dropped.
+  r = run("apply --no-embeddings " + q(rule_data("sew2.json")) + " " + q(test_data("square.json")) + " --hook 0,4 -o " + q(dir / "out/sewn.json"));
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   // Not applicable (exit 1, the reason, no output): sew on the closed cube.
   r = run("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --hook 0,8 -o " + q(dir / "out/x.json"));
@@ -331,6 +337,40 @@ TEST_F(Cli, CheckAndApplyScheme) {
   expect_bad_input("apply " + quad, "--hook", "--all");
   expect_bad_input("apply " + quad + " --hook 0 --match n0=0", "--match");
   EXPECT_EQ(outputs(), 2u);
+}
+
+// Embeddings through `gmr apply` (docs/embeddings.md): Catmull-Clark positions on the cube in OFF,
+// OBJ and JSON (the JSON round-trips), a malformed expression located by rule, node and column.
+TEST_F(Cli, ApplyCarriesPositions) {
+  const fs::path off = dir / "out/cc.off", obj = dir / "out/cc.obj", json = dir / "out/cc.json";
+  Result r = run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(off));
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("embeddings: position <1,2>"), std::string::npos) << r.out;
+  const PositionedMap m = read_off_file(off);
+  EXPECT_EQ(count_orbits(m.map, OrbitType{1, 2}), 26u);
+  // The corner (0,0,0) of the unit cube moves to (Q + 2R + 0)/3 with Q = (1/3,1/3,1/3) (mean of
+  // the face points) and R = (1/6,1/6,1/6) (mean of the edge midpoints).
+  bool corner = false;
+  for (Dart d : orbit_representatives(m.map, OrbitType{1, 2})) {
+    const Vec3 p = m.position.get(d);
+    if (std::abs(p[0] - 2.0 / 9) < 1e-12 && std::abs(p[1] - 2.0 / 9) < 1e-12 && std::abs(p[2] - 2.0 / 9) < 1e-12) corner = true;
+  }
+  EXPECT_TRUE(corner);
+  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(obj)).code, 0);
+  EXPECT_NE(read_text_file(obj).find("v 0.2222222222222222 0.2222222222222222 0.2222222222222222"), std::string::npos);
+  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(json)).code, 0);
+  const GMapFile f = read_gmap_json_file(json);
+  ASSERT_NE(f.find("position"), nullptr);
+  EXPECT_EQ(write_gmap_json(read_gmap_json(write_gmap_json(f))), write_gmap_json(f));
+  // gmr check reports the static embedding checks (sew with positions and no expression: E-merge).
+  r = run("check " + q(source_dir() / "checker/tests/data/embeddings/sew2_positions.json"));
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("E-merge"), std::string::npos) << r.out;
+  const fs::path bad = source_dir() / "model/expr/tests/data/bad_expression.json";
+  expect_bad_input("apply " + q(bad) + " " + q(tools_data("cube.off")) + " --all",
+                   "$.right.nodes[1].expressions[0].code (rule bad_midpoint, node n1), column 1",
+                   "affine combination of mass 2");
+  EXPECT_EQ(outputs(), 3u);
 }
 
 // `gmr fold` (thesis Alg. 6): the cube on <1,2> folds into 8 nodes with the opposite vertex <2,1>;

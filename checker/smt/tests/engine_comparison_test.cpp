@@ -49,7 +49,8 @@ void scheme_verdicts(const RuleScheme& s, unsigned bound, Findings& f) {
   EXPECT_EQ(a.applicable > 0, b.applicable > 0) << s.name;
   std::printf("  %-28s smt %-9s %6.3fs  enum %-9s %6.3fs  %zu orbits\n", s.name.c_str(),
               a.preserves ? "preserves" : "breaks", a.seconds, b.preserves ? "preserves" : "breaks", b.seconds, a.orbits);
-  const bool static_ok = checker::check_scheme(s).ok();
+  // Both engines judge the topology: the static verdict compared is the topological one.
+  const bool static_ok = checker::check_scheme(s, {.embeddings = false}).ok();
   if (!static_ok && b.preserves) {
     const SchemeVerifyResult c = verify_scheme(s, kEscalationBound, Engine::Smt);
     std::printf("  %-28s rejected, preserves within %u darts; within %u: %s (%.3fs)\n", s.name.c_str(), bound,
@@ -70,7 +71,7 @@ TEST(EngineComparison, LibraryRuleSchemes) {
     ++n;
   }
   f.print("library");
-  EXPECT_EQ(n, 14u);
+  EXPECT_GE(n, 14u);
   EXPECT_TRUE(f.found.empty());
 }
 

@@ -6,6 +6,8 @@
 
 #include "model/core/error.hpp"
 #include "model/io/jme_import.hpp"
+#include "model/io/jme_expression.hpp"
+#include <iostream>
 #include "model/scheme/scheme_engine.hpp"
 #include "model/testing/source_tree.hpp"
 
@@ -61,7 +63,8 @@ TEST(Jme, AllFiftyRulesOfTheFixtureImport) {
   const RuleScheme& iv = m.rules[1];
   ASSERT_EQ(iv.right.nodes[2].expressions.size(), 1u);
   EXPECT_EQ(iv.right.nodes[2].expressions[0].embedding, "pos");
-  EXPECT_EQ(iv.right.nodes[2].expressions[0].code, "return Vec3.mid(n0.pos, n1.pos);");
+  EXPECT_EQ(iv.right.nodes[2].expressions[0].jerboa, "return Vec3.mid(n0.pos, n1.pos);");
+  EXPECT_EQ(iv.right.nodes[2].expressions[0].code, "middle(n0.pos, n1.pos)");
   const RuleScheme& sew = m.rules[2];
   EXPECT_EQ(sew.name, "SewA2");
   EXPECT_EQ(sew.hooks, (std::vector<std::string>{"n0", "n1"}));
@@ -110,4 +113,42 @@ TEST(Jme, DeepNestingIsALocatedError) {
     EXPECT_EQ(e.location(), "deep.jme:5");
     EXPECT_NE(e.message().find("nested too deeply"), std::string::npos) << e.message();
   }
+}
+
+// Jerboa expressions of the fixture translated into gmr's language (jme_expression.hpp): every
+// translation checks in its rule, the others name why they are not translated.
+TEST(Jme, ExpressionsTranslateOrSayWhyNot) {
+  const JmeModeler m = read_jme_file(fixture());
+  size_t translated = 0, unsupported = 0;
+  for (const auto& r : m.rules) {
+    ASSERT_EQ(r.embeddings.size(), 2u);
+    EXPECT_EQ(r.embeddings[0].type, "point");
+    EXPECT_EQ(r.embeddings[1].type, "colour");
+    for (const auto& n : r.right.nodes)
+      for (const auto& x : n.expressions) {
+        EXPECT_FALSE(x.jerboa.empty());
+        if (x.code.empty()) {
+          ++unsupported;
+          EXPECT_FALSE(x.unsupported.empty()) << r.name << " " << n.name;
+        } else {
+          ++translated;
+        }
+      }
+  }
+  EXPECT_EQ(translated + unsupported, 46u);
+  EXPECT_GE(translated, 40u);
+  std::cout << "[ jme      ] " << translated << " of 46 expressions translated, " << unsupported << " unsupported\n";
+}
+
+TEST(Jme, TranslationOfTheJerboaForms) {
+  auto code = [](const std::string& java) { return translate_jerboa_expression(java).code.value_or("<none>"); };
+  EXPECT_EQ(code("return Vec3.mid(n0.pos, n1.pos);"), "middle(n0.pos, n1.pos)");
+  EXPECT_EQ(code("return new Vec3(0.5, 1.5,0);"), "point(0.5, 1.5, 0)");
+  EXPECT_EQ(code("Vec3 res = new Vec3();\nres.barycenter(<0,1>_pos(n0));\nreturn res.addn(0,0,1);"),
+            "((middle(<0,1>_pos(n0))) + vector(0, 0, 1))");
+  EXPECT_EQ(code("return n0@1@0.pos.addn(1,0,0);"), "(n0@1@0.pos + vector(1, 0, 0))");
+  EXPECT_EQ(code("Color col = new Color(20,20,25);\nreturn col;"), "(colour(20 / 255, 20 / 255, 25 / 255))");
+  const auto w = translate_jerboa_expression("return new Vec3(Vec3.segmentABByWeight(n0.pos, n0@0.pos, weight));");
+  EXPECT_FALSE(w.code);
+  EXPECT_EQ(w.unsupported, "Vec3.segmentABByWeight");
 }

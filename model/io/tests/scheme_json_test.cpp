@@ -24,14 +24,15 @@ std::string error_location(const std::string& text) {
   return "no error";
 }
 
-const char* kQuad = R"({
+const char* kQuad = R"json({
   "format": "gmr.rule", "version": 1, "kind": "scheme", "name": "q", "map": "gmap", "n": 2,
   "orbit": "<0,1,2>", "hooks": ["n0"],
+  "embeddings": [{"name": "pos", "orbit": "<1,2>", "type": "point"}],
   "left": {"nodes": [{"name": "n0", "orbit": "<0,1,2>"}], "arcs": []},
   "right": {"nodes": [{"name": "n0", "orbit": "<_,1,2>"},
-                      {"name": "n1", "orbit": "<_,_,2>", "expressions": [{"embedding": "pos", "code": "mid"}]}],
+                      {"name": "n1", "orbit": "<_,_,2>", "expressions": [{"embedding": "pos", "code": "middle(<0>_pos(n0))"}]}],
             "arcs": [{"nodes": ["n0", "n1"], "label": 0}]}
-})";
+})json";
 
 }  // namespace
 
@@ -44,7 +45,7 @@ TEST(SchemeJson, RoundTrip) {
   }
   RuleScheme q = parse_scheme(kQuad);
   ASSERT_EQ(q.right.nodes[1].expressions.size(), 1u);
-  EXPECT_EQ(q.right.nodes[1].expressions[0].code, "mid");
+  EXPECT_EQ(q.right.nodes[1].expressions[0].code, "middle(<0>_pos(n0))");
   q.precondition = "return true;";
   q.description = "with \"quotes\"";
   EXPECT_EQ(parse_scheme(scheme_to_json_text(q)), q);

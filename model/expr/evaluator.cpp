@@ -1,0 +1,252 @@
+#include "model/expr/evaluator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+
+namespace gmr::expr {
+
+namespace {
+
+Val add(const Val& a, const Val& b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
+Val sub(const Val& a, const Val& b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w}; }
+Val scale(const Val& a, double k) { return {a.x * k, a.y * k, a.z * k, a.w * k}; }
+using K = StaticType::Kind;
+
+}  // namespace
+
+Evaluator::Evaluator(const GMap& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
+    : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
+  scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
+  vals_.resize(kMaxNesting + 1);
+}
+
+Val Evaluator::from_storage(const Vec3& s, ValueType t) {
+  return {s[0], t == ValueType::Scalar ? 0.0 : s[1], t == ValueType::Scalar ? 0.0 : s[2],
+          t == ValueType::Point ? 1.0 : 0.0};
+}
+
+void Evaluator::fail(const Expr& e, const std::string& msg, Dart d) const {
+  std::string loc = (where_ && !where_->empty() ? *where_ + ", " : std::string()) + "column " + std::to_string(e.column);
+  if (d != kNoDart) loc += ", dart " + std::to_string(d);
+  throw Error(ErrorCode::Schema, msg, loc);
+}
+
+Val Evaluator::evaluate(const Expr& e, const Dart* node_darts, ValueType target, const std::string& where) {
+  nodes_ = node_darts;
+  where_ = &where;
+  vars_.clear();
+  lets_.clear();
+  Val v = eval(e);
+  if (target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9)
+    fail(e, "the point's weights sum to " + std::to_string(v.w) + ", not 1 (an affine combination of points needs weights summing to 1)",
+         node_darts ? node_darts[0] : kNoDart);
+  if (target == ValueType::Vector && std::fabs(v.w) > 1e-9)
+    fail(e, "the vector's weights sum to " + std::to_string(v.w) + ", not 0", node_darts ? node_darts[0] : kNoDart);
+  if (target == ValueType::Point) v.w = 1.0;
+  if (target == ValueType::Vector) v.w = 0.0;
+  return v;
+}
+
+Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
+  Dart d = r.is_variable ? vars_[r.index] : nodes_[r.index];
+  if (d == kNoDart) fail(e, "node " + r.base + " has no dart");
+  for (int dim : r.path) d = g_.alpha(dim, d);
+  return d;
+}
+
+Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
+  const EmbeddingField* f = fields_[static_cast<size_t>(embedding)];
+  const EmbeddingSignature& s = sigs_[static_cast<size_t>(embedding)];
+  if (!f || !f->values.has(d)) fail(e, "no '" + s.name + "' value on this dart", d);
+  return from_storage(f->values.get(d), s.type);
+}
+
+void Evaluator::members(const Expr& e, std::vector<Val>& out) {
+  const Dart d = dart_of(e.ref, e);
+  const DimMask mo = e.orbit.mask();
+  const DimMask mc = e.op == Expr::Op::Collect ? sigs_[static_cast<size_t>(e.embedding)].orbit.mask() : e.classes.mask();
+  if (!e.word.empty()) {  // walk: d, d w, d w w, ... until d again
+    Dart x = d;
+    double k = 0;
+    do {
+      vars_.push_back(x);
+      lets_.push_back({k, 0, 0, 0});
+      out.push_back(eval(*e.args[0]));
+      lets_.pop_back();
+      vars_.pop_back();
+      for (int dim : e.word) x = g_.alpha(dim, x);
+      k += 1;
+      if (k > static_cast<double>(g_.capacity())) fail(e, "the walk does not come back to its dart", d);
+    } while (x != d);
+    return;
+  }
+  if (e.op == Expr::Op::Collect && (mo & ~mc) == 0) {  // <o>(d) lies in one pi-orbit
+    out.push_back(field_value(e.embedding, d, e));
+    return;
+  }
+  // Scratch lists per nesting depth (comprehension bodies may collect again).
+  const size_t depth = vars_.size();
+  if (depth >= kMaxNesting) fail(e, "comprehensions nested more than " + std::to_string(kMaxNesting) + " deep");
+  std::vector<Dart>& in_orbit = scratch_[3 * depth];
+  std::vector<Dart>& in_classes = scratch_[3 * depth + 1];
+  std::vector<Dart>& stack = scratch_[3 * depth + 2];
+  in_orbit.clear();
+  in_classes.clear();
+  ScopedMarker mo_mark(g_), mc_mark(g_);
+  visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
+  const size_t n = in_orbit.size();
+  if (e.op == Expr::Op::Collect && collect_by_slots(e, mc, mc_mark, out)) {
+    for (Dart x : in_orbit) mo_mark.unmark(x);
+    mo_mark.set_clean();
+    mc_mark.set_clean();  // collect_by_slots unmarked what it marked
+    return;
+  }
+  for (size_t k = 0; k < n; ++k) {
+    const Dart x = in_orbit[k];
+    if (mc_mark.test(x)) continue;
+    if (e.op == Expr::Op::Collect) {
+      out.push_back(field_value(e.embedding, x, e));
+    } else {
+      vars_.push_back(x);
+      out.push_back(eval(*e.args[0]));
+      vars_.pop_back();
+    }
+    // eval may have used deeper scratch lists, never this depth's.
+    visit_orbit_marked(g_, mc, x, mc_mark.id(), stack, [&](Dart y) { in_classes.push_back(y); });
+  }
+  for (Dart x : in_orbit) mo_mark.unmark(x);
+  for (Dart x : in_classes) mc_mark.unmark(x);
+  mo_mark.set_clean();
+  mc_mark.set_clean();
+}
+
+// The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one
+// pi-orbit. When they hold pairwise different value slots, they are pairwise different pi-orbits
+// (every pi-orbit holds one slot, see the header) and the collect is their values, in order;
+// otherwise (two pieces share a slot) returns false and the caller marks whole pi-orbits.
+bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out) {
+  const size_t depth = vars_.size();
+  const std::vector<Dart>& in_orbit = scratch_[3 * depth];
+  std::vector<Dart>& pieces = scratch_[3 * depth + 1];
+  std::vector<Dart>& stack = scratch_[3 * depth + 2];
+  const EmbeddingField* f = fields_[static_cast<size_t>(e.embedding)];
+  if (!f) return false;
+  const DimMask inter = e.orbit.mask() & mc;
+  pieces.clear();
+  slots_.clear();
+  size_t marked = 0;
+  for (Dart x : in_orbit) {
+    if (mark.test(x)) continue;
+    slots_.push_back(f->values.slot(x));
+    pieces.push_back(x);
+    if (inter == 0) {
+      mark.mark(x);
+      ++marked;
+    } else {
+      marked += visit_orbit_marked(g_, inter, x, mark.id(), stack, [](Dart) {});
+    }
+  }
+  for (Dart x : in_orbit) mark.unmark(x);  // every marked dart is in the <o>-orbit
+  (void)marked;
+  std::vector<uint32_t> sorted = slots_;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    pieces.clear();
+    return false;
+  }
+  for (Dart x : pieces) out.push_back(field_value(e.embedding, x, e));
+  return true;
+}
+
+Val Evaluator::eval(const Expr& e) {
+  switch (e.op) {
+    case Expr::Op::Number: return {e.number, 0, 0, 0};
+    case Expr::Op::Constant:
+      if (e.let_index >= 0) return lets_[static_cast<size_t>(e.let_index)];
+      return {M_PI, 0, 0, 0};
+    case Expr::Op::Let: {
+      lets_.push_back(eval(*e.args[0]));
+      const Val v = eval(*e.args[1]);
+      lets_.pop_back();
+      return v;
+    }
+    case Expr::Op::Value: return field_value(e.embedding, dart_of(e.ref, e), e);
+    case Expr::Op::Collect:
+    case Expr::Op::Comprehension: fail(e, "a multiset is not a value");
+    case Expr::Op::Neg: return scale(eval(*e.args[0]), -1.0);
+    case Expr::Op::Add: return add(eval(*e.args[0]), eval(*e.args[1]));
+    case Expr::Op::Sub: return sub(eval(*e.args[0]), eval(*e.args[1]));
+    case Expr::Op::Mul: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      if (e.args[0]->type.kind == K::Scalar) return scale(b, a.x);
+      return scale(a, b.x);
+    }
+    case Expr::Op::Div: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      if (b.x == 0.0) fail(e, "division by zero", nodes_ ? nodes_[0] : kNoDart);
+      return scale(a, 1.0 / b.x);
+    }
+    case Expr::Op::Call: break;
+  }
+  switch (e.function) {
+    case Function::Point:
+    case Function::Vector:
+    case Function::Colour: {
+      const Val x = eval(*e.args[0]), y = eval(*e.args[1]), z = eval(*e.args[2]);
+      return {x.x, y.x, z.x, e.function == Function::Point ? 1.0 : 0.0};
+    }
+    case Function::Middle:
+    case Function::Sum:
+    case Function::Count: {
+      Val acc;
+      size_t n = 0;
+      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) {
+        // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
+        std::vector<Val>& m = vals_[vars_.size()];
+        m.clear();
+        members(*e.args[0], m);
+        for (const Val& v : m) acc = add(acc, v);
+        n = m.size();
+      } else {
+        for (const auto& a : e.args) acc = add(acc, eval(*a));
+        n = e.args.size();
+      }
+      if (e.function == Function::Count) return {static_cast<double>(n), 0, 0, 0};
+      if (e.function == Function::Sum) return acc;
+      if (n == 0) fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+      return scale(acc, 1.0 / static_cast<double>(n));
+    }
+    case Function::Cos: return {std::cos(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Sin: return {std::sin(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Abs: return {std::fabs(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Sqrt: {
+      const double x = eval(*e.args[0]).x;
+      if (x < 0) fail(e, "square root of a negative number", nodes_ ? nodes_[0] : kNoDart);
+      return {std::sqrt(x), 0, 0, 0};
+    }
+    case Function::Dot: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return {a.x * b.x + a.y * b.y + a.z * b.z, 0, 0, 0};
+    }
+    case Function::Cross: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x, 0};
+    }
+    case Function::Norm: {
+      const Val a = eval(*e.args[0]);
+      return {std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z), 0, 0, 0};
+    }
+    case Function::Clamp: {
+      const Val a = eval(*e.args[0]);
+      auto c = [](double v) { return v < 0 ? 0.0 : v > 1 ? 1.0 : v; };
+      return {c(a.x), c(a.y), c(a.z), 0};
+    }
+    case Function::None: break;
+  }
+  fail(e, "unknown function " + e.name);
+}
+
+}  // namespace gmr::expr

@@ -1,0 +1,64 @@
+// Evaluation of type-checked embedding expressions on a map (thesis §5.5, Algorithm 4 for the
+// orbits): the identifier terms read the map as it is (the object before the rewrite), node n
+// standing for the dart `node_darts[n]`.
+//
+// Values are homogeneous: (x, y, z, w) with w the mass of an affine value (1 for a point, 0 for a
+// vector; type.hpp); a scalar is x, a colour (x, y, z). A collect or a comprehension visits the
+// <o>-orbit of its dart depth-first (Algorithm 4 with markers) and keeps one value per <c>-orbit
+// met (c = o_pi for a collect: one value per pi-orbit, not per dart — thesis §5.5.2), marking each
+// <c>-orbit whole. A collect first tries a cheaper exact way: the <o ∩ o_pi>-pieces of the
+// <o>-orbit each lie in one pi-orbit, and when their value slots are pairwise different they are
+// different pi-orbits — valid because every pi-orbit holds a single slot in the maps this library
+// builds (readers set one slot per orbit; propagation.hpp gives each orbit one slot); only when two
+// pieces share a slot are the pi-orbits marked whole. Run-time errors (a dart without value, an empty multiset's barycentre, a point
+// whose mass is not 1) are Error(Schema) located "<where>, column <c>, dart <d>".
+#pragma once
+#include <string>
+#include <vector>
+
+#include "model/core/gmap.hpp"
+#include "model/expr/ast.hpp"
+#include "model/expr/embedded_map.hpp"
+#include "model/expr/type_check.hpp"
+
+namespace gmr::expr {
+
+struct Val {
+  double x = 0, y = 0, z = 0, w = 0;
+};
+
+class Evaluator {
+ public:
+  static constexpr size_t kMaxNesting = 16;
+  // fields[k]: the storage of signature k (nullptr when the map does not have it).
+  Evaluator(const GMap& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields);
+
+  // The value of `e` (a checked expression) with node n at node_darts[n]; `target` is checked
+  // (mass of points and vectors). `where` locates errors.
+  Val evaluate(const Expr& e, const Dart* node_darts, ValueType target, const std::string& where);
+
+  // Storage conversion of a value of type t, and back.
+  static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
+  static Val from_storage(const Vec3& s, ValueType t);
+
+ private:
+  Val eval(const Expr& e);
+  void members(const Expr& e, std::vector<Val>& out);
+  bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
+  Dart dart_of(const NodeRef& r, const Expr& e);
+  Val field_value(int embedding, Dart d, const Expr& e);
+  [[noreturn]] void fail(const Expr& e, const std::string& msg, Dart d = kNoDart) const;
+
+  const GMap& g_;
+  std::vector<EmbeddingSignature> sigs_;
+  std::vector<const EmbeddingField*> fields_;
+  const Dart* nodes_ = nullptr;
+  std::vector<Dart> vars_;
+  std::vector<Val> lets_;
+  const std::string* where_ = nullptr;
+  std::vector<std::vector<Dart>> scratch_;
+  std::vector<uint32_t> slots_;
+  std::vector<std::vector<Val>> vals_;  // multiset buffers per nesting depth
+};
+
+}  // namespace gmr::expr

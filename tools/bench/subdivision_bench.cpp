@@ -1,0 +1,147 @@
+// Subdivision with positions: gmr's rule schemes with expressions (tools/data/rules, applied at
+// every dart, model/expr/propagation.hpp) against CGAL::Subdivision_method_3 on a Surface_mesh, in
+// the same process, 3 iterations of Catmull-Clark and of Loop on a CGAL data mesh (default:
+// elephant, 33,348 darts -> 2,134,272 after 3 iterations; GMR_BENCH_MESH names another mesh of
+// CGAL's data.tar.gz, e.g. bunny00). The mesh is unpacked from Debian's libcgal-demo archive into
+// the working directory. Each iteration starts from a copy of the loaded mesh (copy not timed).
+// Counters: darts_per_second (darts of the result per second of subdivision: gmr's darts; for
+// CGAL the same number, the results being isomorphic — model/expr/tests/subdivision_slow_test.cpp)
+// and vertices_per_second (vertices of the result per second). `gmr_topology_only` runs the same
+// applications on the map without embeddings (the engine's share of gmr's time).
+#include <benchmark/benchmark.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "model/core/orbit.hpp"
+#include "model/expr/compiled_scheme.hpp"
+#include "model/expr/embedded_map.hpp"
+#include "model/expr/propagation.hpp"
+#include "model/io/off.hpp"
+#include "model/io/scheme_json.hpp"
+
+namespace {
+
+using Mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
+constexpr int kIterations = 3;
+
+std::string mesh_path() {
+  const char* m = std::getenv("GMR_BENCH_MESH");
+  const std::string name = m ? m : "elephant";
+  const char* archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
+  const std::filesystem::path off = std::filesystem::current_path() / "cgal-data/data/meshes" / (name + ".off");
+  if (!std::filesystem::exists(off)) {
+    std::filesystem::create_directories(std::filesystem::current_path() / "cgal-data");
+    const std::string cmd = std::string("tar xzf ") + archive + " -C cgal-data data/meshes/" + name + ".off";
+    if (std::system(cmd.c_str()) != 0)
+      throw std::runtime_error("CGAL's data meshes are missing: install libcgal-demo (tools/setup.sh)");
+  }
+  return off.string();
+}
+
+struct Fixture {
+  gmr::expr::EmbeddedMap map;
+  Mesh mesh;
+  Fixture() {
+    const std::string off = mesh_path();
+    map = gmr::expr::to_embedded_map(gmr::to_gmap_file(gmr::io::read_off_file(off)));
+    std::ifstream in(off);
+    if (!CGAL::IO::read_OFF(in, mesh)) throw std::runtime_error("CGAL cannot read " + off);
+  }
+};
+
+const Fixture& fixture() {
+  static const Fixture f;
+  return f;
+}
+
+void run_gmr(benchmark::State& state, const char* rule) {
+  const Fixture& f = fixture();
+  const gmr::scheme::RuleScheme s = gmr::io::read_scheme_file(std::string(GMR_RULES_DIR) + "/" + rule);
+  const gmr::scheme::SchemeEngine engine(s);
+  const gmr::expr::CompiledScheme cs = gmr::expr::compile_scheme(s);
+  size_t darts = 0, vertices = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    gmr::expr::EmbeddedMap m = f.map;
+    state.ResumeTiming();
+    for (int k = 0; k < kIterations; ++k) {
+      gmr::expr::EmbeddingPropagation p(cs, m);
+      gmr::expr::apply_everywhere_embedded(engine, p, m);
+      if (p.issue_count() != 0) state.SkipWithError("embedding issues");
+    }
+    state.PauseTiming();
+    darts = m.map.size();
+    vertices = gmr::count_orbits(m.map, gmr::OrbitType{1, 2});
+    state.ResumeTiming();
+  }
+  state.counters["darts_per_second"] = benchmark::Counter(static_cast<double>(darts), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices_per_second"] =
+      benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["darts_after"] = static_cast<double>(darts);
+}
+
+// The same applications without embeddings (the topology alone), to separate the engine's share.
+void run_gmr_topology(benchmark::State& state, const char* rule) {
+  const Fixture& f = fixture();
+  const gmr::scheme::RuleScheme s = gmr::io::read_scheme_file(std::string(GMR_RULES_DIR) + "/" + rule);
+  const gmr::scheme::SchemeEngine engine(s);
+  for (auto _ : state) {
+    state.PauseTiming();
+    gmr::GMap g = f.map.map;
+    state.ResumeTiming();
+    for (int k = 0; k < kIterations; ++k) gmr::scheme::apply_everywhere(engine, g, /*keep_tables=*/false);
+    benchmark::DoNotOptimize(g.size());
+  }
+}
+
+template <class Subdivide>
+void run_cgal(benchmark::State& state, Subdivide subdivide) {
+  const Fixture& f = fixture();
+  size_t darts = 0, vertices = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    Mesh m = f.mesh;
+    state.ResumeTiming();
+    subdivide(m);
+    benchmark::DoNotOptimize(m.number_of_vertices());
+    darts = 4 * m.number_of_edges();  // a closed surface: 4 darts of a 2-G-map per edge
+    vertices = m.number_of_vertices();
+  }
+  state.counters["darts_per_second"] = benchmark::Counter(static_cast<double>(darts), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices_per_second"] =
+      benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["darts_after"] = static_cast<double>(darts);
+}
+
+void BM_catmull_clark_gmr(benchmark::State& state) { run_gmr(state, "quad_subdivision.json"); }
+void BM_catmull_clark_cgal(benchmark::State& state) {
+  run_cgal(state, [](Mesh& m) {
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
+  });
+}
+void BM_loop_gmr(benchmark::State& state) { run_gmr(state, "loop_subdivision.json"); }
+void BM_catmull_clark_topology(benchmark::State& state) { run_gmr_topology(state, "quad_subdivision.json"); }
+void BM_loop_topology(benchmark::State& state) { run_gmr_topology(state, "loop_subdivision.json"); }
+void BM_loop_cgal(benchmark::State& state) {
+  run_cgal(state, [](Mesh& m) {
+    CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
+  });
+}
+
+}  // namespace
+
+BENCHMARK(BM_catmull_clark_gmr)->Name("subdivision_catmull_clark/gmr")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_catmull_clark_cgal)->Name("subdivision_catmull_clark/cgal")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_loop_gmr)->Name("subdivision_loop/gmr")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_loop_cgal)->Name("subdivision_loop/cgal")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_catmull_clark_topology)->Name("subdivision_catmull_clark/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_loop_topology)->Name("subdivision_loop/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_MAIN();
