@@ -1,0 +1,29 @@
+// A map with dart flags (Damiand & Nivoliers 2022 §3, §4.3.2): flags are optional dart marks that
+// matched darts must share. In files, flags are the embedding "flag" on the orbit type <> (one
+// value per dart): true or a positive integer flags the dart, false, 0 or no value leave it
+// unflagged. Other embeddings are not carried by query-replace (geometry is not replaced).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "model/core/gmap_file.hpp"
+
+namespace gmr::replace {
+
+inline constexpr const char* kFlagEmbedding = "flag";
+
+struct FlaggedMap {
+  GMap map{2};
+  std::vector<uint32_t> flag;  // indexed by dart, 0: unflagged (sized to map.capacity())
+
+  void resize_flags() { flag.resize(map.capacity(), 0); }
+  size_t flagged() const;
+};
+
+// Reads the flags of a gmr.gmap content; throws Error(Schema) at `where` for an embedding "flag"
+// on another orbit type or with a value that is not a boolean or a non-negative integer.
+FlaggedMap flagged_map(const GMapFile& f, const std::string& where = {});
+// The map with its flags as the embedding "flag" (unflagged darts get no value).
+GMapFile to_gmap_file(const FlaggedMap& m);
+
+}  // namespace gmr::replace
