@@ -68,7 +68,7 @@ def pattern(positions, corners, faces):
         "format": "gmr.gmap", "version": 1, "kind": "gmap", "dimension": 2, "darts": n,
         "alpha": {"0": a0, "1": a1, "2": a2},
         "embeddings": [
-            {"name": "flag", "orbit": "<>", "values": [{"dart": d, "value": True} for d in flags]},
+            {"name": "flag", "orbit": "<>", "values": [{"dart": d, "value": d in flags} for d in range(n)]},
             {"name": "position", "orbit": "<1,2>",
              "values": [{"dart": d, "value": positions[v]} for v, d in sorted(first.items())]},
         ],

@@ -36,7 +36,8 @@ GMapFile to_gmap_file(const FlaggedMap& m) {
   f.map = m.map;
   JsonEmbedding e(kFlagEmbedding, OrbitType{});
   m.map.for_each_dart([&](Dart d) {
-    if (d < m.flag.size() && m.flag[d]) e.set_dart(m.map, d, m.flag[d] == 1 ? nlohmann::json(true) : nlohmann::json(m.flag[d]));
+    const uint32_t v = d < m.flag.size() ? m.flag[d] : 0;
+    e.set_dart(m.map, d, v <= 1 ? nlohmann::json(v == 1) : nlohmann::json(v));
   });
   f.embeddings.push_back(std::move(e));
   return f;

@@ -23,7 +23,7 @@ struct FlaggedMap {
 // Reads the flags of a gmr.gmap content; throws Error(Schema) at `where` for an embedding "flag"
 // on another orbit type or with a value that is not a boolean or a non-negative integer.
 FlaggedMap flagged_map(const GMapFile& f, const std::string& where = {});
-// The map with its flags as the embedding "flag" (unflagged darts get no value).
+// The map with its flags as the embedding "flag" (every dart gets a value: false when unflagged).
 GMapFile to_gmap_file(const FlaggedMap& m);
 
 }  // namespace gmr::replace
