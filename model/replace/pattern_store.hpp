@@ -17,7 +17,14 @@ struct StoreEntry {
   size_t pattern = 0;          // index in patterns()
   uint32_t start = 0;          // local boundary index of the minimal word's start dart
   uint32_t automorphisms = 0;  // boundary automorphisms (preserving flags, and D+ if oriented)
+  // Some boundary automorphism does not extend to the whole pattern: the result of a replacement
+  // depends on the minimal start dart chosen (the paper's Fig. 4; ties are broken deterministically).
+  bool ambiguous = false;
 };
+
+// Whether every automorphism of the pattern's boundary in `mode` (start dart e.start mapped to
+// another minimal start) extends to an automorphism of the pattern preserving flags.
+bool boundary_automorphisms_extend(const Pattern& p, Mode mode, const StoreEntry& e);
 
 class PatternStore {
  public:

@@ -1,6 +1,8 @@
 // `gmr patterns check PATTERNS_DIR [--configurations GENERATOR]`: the exhaustiveness report of a
 // pattern set (Damiand & Nivoliers 2022 §6.4) in both modes: patterns with the same boundary
 // signature (duplicates) and, with a generator, the configuration classes no pattern covers.
+// Patterns whose boundary automorphisms do not all extend to their interior are listed as ambiguous
+// (their result depends on the tie-break; not a negative verdict).
 // Exit 1 when the verdict mode (unoriented, or --oriented) has duplicates or missing classes.
 #include <iostream>
 #include <memory>
@@ -43,6 +45,10 @@ int run_check(const PatternsArgs& a) {
       dups.push_back(g);
     }
     m["duplicates"] = dups;
+    nlohmann::ordered_json amb = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < patterns.size(); ++i)
+      if (store.entry(i).ambiguous) amb.push_back(patterns[i].name);
+    m["ambiguous"] = amb;  // boundary automorphisms that the interior does not share
     if (verdict && !dups.empty()) negative = true;
     if (!a.generator.empty()) {
       const replace::CoverageReport r = replace::check_coverage(store, set);
@@ -72,6 +78,8 @@ int run_check(const PatternsArgs& a) {
     const auto& m = j[mode];
     std::cout << mode << ": " << m["duplicates"].size() << " duplicate groups";
     for (const auto& g : m["duplicates"]) std::cout << " " << g.dump();
+    std::cout << "; " << m["ambiguous"].size() << " ambiguous";
+    for (const auto& g : m["ambiguous"]) std::cout << " " << g.get<std::string>();
     if (!a.generator.empty())
       std::cout << "; " << a.generator << ": " << m["configurations"].get<size_t>() << " configurations, "
                 << m["classes"].get<size_t>() << " classes, " << m["missing_classes"].get<size_t>()

@@ -11,6 +11,16 @@ namespace {
 
 using CliReplace = Cli;
 
+// The polycube of tools/data as the gmr binary reads it (converted to gmr.gmap JSON).
+GMapFile load_voxels_map() {
+  const fs::path tmp = fs::temp_directory_path() / "gmr_cli_replace_polycube.json";
+  const std::string cmd = q(GMR_BIN) + " convert " + q(tools_data("polycube.voxels.json")) + " " + q(tmp) + " >/dev/null";
+  if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gmr convert failed");
+  GMapFile f = io::read_gmap_json_file(tmp);
+  fs::remove(tmp);
+  return f;
+}
+
 fs::path patterns(const std::string& set) { return tools_data("patterns/" + set); }
 
 TEST_F(CliReplace, SubdividesTheCubeFacesWithTheConformalSet) {
@@ -57,6 +67,24 @@ TEST_F(CliReplace, OrientedModeOnTheTetrahedron) {
   EXPECT_TRUE(is_valid(f.map));
   EXPECT_EQ(f.map.size(), 96u);
   EXPECT_EQ(count_cells(f.map, 2), 12u);
+}
+
+// Hexahedral subdivision of a polycube in two calls: faces (after the e-pattern), then volumes.
+TEST_F(CliReplace, SubdividesAPolycubeFacesThenVolumes) {
+  const fs::path faces = dir / "out" / "faces.json", volumes = dir / "out" / "volumes.json";
+  const GMapFile in = load_voxels_map();
+  const auto c = count_all_cells(in.map);
+  Result r = run("query-replace " + q(patterns("hex-subdivision")) + " " + q(tools_data("polycube.voxels.json")) +
+                 " --split-edges 2 --flag-all --json -o " + q(faces));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["matched"]["split4"], c[2]);
+  r = run("query-replace " + q(patterns("hex-subdivision")) + " " + q(faces) + " --cells 3 --json -o " + q(volumes));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["matched"]["hex8"], c[3]);
+  const GMapFile f = io::read_gmap_json_file(volumes);
+  EXPECT_TRUE(is_valid(f.map));
+  EXPECT_EQ(count_cells(f.map, 3), 8 * c[3]);
+  EXPECT_EQ(count_cells(f.map, 0), c[0] + c[1] + c[2] + c[3]);
 }
 
 TEST_F(CliReplace, BadInputsExitTwoAndLeaveNoOutput) {

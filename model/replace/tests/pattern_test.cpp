@@ -81,6 +81,25 @@ TEST(PatternFolder, RejectsNonPatternsByName) {
   EXPECT_THROW(load_patterns(empty.path), Error);
 }
 
+// E9 of the paper's Fig. 4: a boundary automorphism that does not extend to the interior. The
+// two-adjacent-split pattern has a mirror symmetry of its boundary (through the corner between the
+// split edges) that its interior (a triangle on one side only) does not share.
+TEST(PatternStore, AmbiguousPatternsAreThoseWithNonExtendingBoundaryAutomorphisms) {
+  for (Mode mode : {Mode::Unoriented, Mode::Oriented}) {
+    PatternStore s(mode);
+    for (auto& p : load_patterns(testing::patterns_dir("conformal-faces"))) s.add(std::move(p));
+    s.add(testing::pattern_file("hex-subdivision", "hex8"));
+    s.add(testing::pattern_file("tet-to-hex", "tet4"));
+    for (size_t i = 0; i < s.patterns().size(); ++i) {
+      const bool expected = mode == Mode::Unoriented && s.patterns()[i].name == "split2-adjacent";
+      EXPECT_EQ(s.entry(i).ambiguous, expected) << s.patterns()[i].name << " " << to_string(mode);
+      if (s.patterns()[i].name == "split2-adjacent") {
+        EXPECT_EQ(s.entry(i).automorphisms, mode == Mode::Unoriented ? 2u : 1u);
+      }
+    }
+  }
+}
+
 TEST(PatternStore, KeysHoldSeveralPatternsAndSeparateCellDimensions) {
   PatternStore s(Mode::Unoriented);
   s.add(testing::pattern_file("conformal-faces", "split4"));
