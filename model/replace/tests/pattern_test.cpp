@@ -81,7 +81,7 @@ TEST(PatternFolder, RejectsNonPatternsByName) {
   EXPECT_THROW(load_patterns(empty.path), Error);
 }
 
-// E9 of the paper's Fig. 4: a boundary automorphism that does not extend to the interior. The
+// The paper's Fig. 4 phenomenon: a boundary automorphism that does not extend to the interior. The
 // two-adjacent-split pattern has a mirror symmetry of its boundary (through the corner between the
 // split edges) that its interior (a triangle on one side only) does not share.
 TEST(PatternStore, AmbiguousPatternsAreThoseWithNonExtendingBoundaryAutomorphisms) {

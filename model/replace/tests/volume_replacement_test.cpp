@@ -19,7 +19,7 @@ PatternStore folder_store(const std::string& set, Mode mode) {
   return s;
 }
 
-// Every dart flagged (E7 as in the paper's code: the new cells' corners become the next level's).
+// Every dart flagged: the new cells' corners become the next level's (docs/query-replace.md, Flags).
 void flag_all(FlaggedMap& m) { m.flag.assign(m.map.capacity(), 1); }
 
 // e-pattern (split in 2), then faces, then volumes; validity after every replacement.
