@@ -1,5 +1,7 @@
 #include "model/replace/configurations.hpp"
 
+#include <algorithm>
+
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/replace/edge_split.hpp"
@@ -41,7 +43,78 @@ std::vector<Dart> polygon_edges(const GMap& g) {
 
 }  // namespace
 
-std::vector<std::string> configuration_generators() { return {"square-edges", "triangle-edges", "hex-edges"}; }
+namespace {
+
+// The cube's faces as corner cycles (corners numbered by coordinate bits).
+const std::vector<std::vector<uint32_t>> kHexFaces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                                      {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+
+// hex-conformal: every non-empty set of split edges, and every subset of the faces whose 4 edges
+// are split cut into 4 quads, built directly as a face list: corners 0..7, edge midpoints 8..19
+// (cube_edges() order), face centres 20..25. A dart is flagged iff its vertex is a corner and its
+// edge lies on a cube edge (docs/query-replace.md, Flags).
+ConfigurationSet hex_conformal() {
+  const auto edges = cube_edges();
+  auto edge_index = [&](uint32_t a, uint32_t b) {
+    for (size_t e = 0; e < edges.size(); ++e)
+      if ((edges[e][0] == int(a) && edges[e][1] == int(b)) || (edges[e][0] == int(b) && edges[e][1] == int(a)))
+        return e;
+    throw Error(ErrorCode::Range, "not a cube edge");
+  };
+  ConfigurationSet set;
+  set.generator = "hex-conformal";
+  set.cell_dim = 3;
+  for (uint32_t mask = 1; mask < (1u << 12); ++mask) {
+    std::vector<uint32_t> full;  // faces whose 4 edges are split
+    for (uint32_t f = 0; f < 6; ++f) {
+      bool all = true;
+      for (size_t i = 0; i < 4; ++i) all &= (mask >> edge_index(kHexFaces[f][i], kHexFaces[f][(i + 1) % 4]) & 1) != 0;
+      if (all) full.push_back(f);
+    }
+    for (uint32_t cut = 0; cut < (1u << full.size()); ++cut) {
+      std::vector<std::vector<uint32_t>> faces;
+      std::vector<int> cut_faces;
+      for (uint32_t f = 0; f < 6; ++f) {
+        const auto& c = kHexFaces[f];
+        const auto pos = std::find(full.begin(), full.end(), f);
+        const bool is_cut = pos != full.end() && (cut >> (pos - full.begin()) & 1);
+        auto mid = [&](size_t i) { return static_cast<uint32_t>(8 + edge_index(c[i], c[(i + 1) % 4])); };
+        if (is_cut) {
+          cut_faces.push_back(static_cast<int>(f));
+          for (size_t i = 0; i < 4; ++i) faces.push_back({c[i], mid(i), 20 + f, mid((i + 3) % 4)});
+        } else {
+          std::vector<uint32_t> poly;
+          for (size_t i = 0; i < 4; ++i) {
+            poly.push_back(c[i]);
+            if (mask >> (mid(i) - 8) & 1) poly.push_back(mid(i));
+          }
+          faces.push_back(poly);
+        }
+      }
+      Configuration conf;
+      std::vector<uint32_t> vertex;
+      conf.map.map = surface_from_faces(faces, 26, {}, &vertex);
+      conf.map.resize_flags();
+      const GMap& g = conf.map.map;
+      g.for_each_dart([&](Dart d) {
+        const uint32_t v = vertex[d], w = vertex[g.alpha(0, d)];
+        const bool on_edge = w < 8 ? true : (w < 20 && (edges[w - 8][0] == int(v) || edges[w - 8][1] == int(v)));
+        conf.map.flag[d] = v < 8 && on_edge ? 1 : 0;
+      });
+      for (int e = 0; e < 12; ++e)
+        if (mask >> e & 1) conf.split.push_back(e);
+      for (int f : cut_faces) conf.split.push_back(100 + f);  // faces cut in 4: 100 + face index
+      set.configurations.push_back(std::move(conf));
+    }
+  }
+  return set;
+}
+
+}  // namespace
+
+std::vector<std::string> configuration_generators() {
+  return {"square-edges", "triangle-edges", "hex-edges", "hex-conformal"};
+}
 
 std::vector<std::array<int, 2>> cube_edges() {
   std::vector<std::array<int, 2>> e;
@@ -56,6 +129,7 @@ ConfigurationSet generate_configurations(std::string_view generator) {
     const GMap g = make_polygon(generator == "square-edges" ? 4 : 3);
     return subsets(std::string(generator), 2, g, polygon_edges(g));
   }
+  if (generator == "hex-conformal") return hex_conformal();
   if (generator == "hex-edges") {
     std::vector<uint32_t> vertex;
     const GMap g = surface_from_faces({{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}},

@@ -5,7 +5,10 @@
 //    refinement's faces, §7.3: 15 configurations);
 //  * triangle-edges: the same for a triangle (7 configurations);
 //  * hex-edges: a hexahedron (the cube's surface as a 2-G-map volume) with a non-empty set of its
-//    12 edges split in 2 (4095 configurations).
+//    12 edges split in 2 (4095 configurations);
+//  * hex-conformal: a hexahedron with a non-empty set of split edges, and any subset of its faces
+//    whose 4 edges are split already cut into 4 quads (the configurations of conformal refinement,
+//    §7.3: 6209). `split` lists the split edges, then 100 + f for each cut face f.
 // Edges are numbered: polygons in cyclic order from dart 0; the cube by its vertex pairs (a, b),
 // a < b, vertices numbered by coordinate bits x + 2y + 4z, in increasing order.
 #pragma once

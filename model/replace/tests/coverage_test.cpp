@@ -153,5 +153,59 @@ TEST(Coverage, HexEdgesClassesMatchCubeSymmetryOrbits) {
   EXPECT_EQ(reps.size(), orbits3.size());
 }
 
+// The conformal set of hexahedra (split edges + faces already cut in 4): the paper's 325 classes in
+// oriented mode, cross-checked by the orbits of the cube's groups acting on (edges, cut faces).
+TEST(Coverage, HexConformalClassesAreThePapers325InOrientedMode) {
+  const ConfigurationSet set = generate_configurations("hex-conformal");
+  const std::vector<std::vector<uint32_t>> faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                                    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& c : set.configurations) ASSERT_TRUE(is_valid(c.map.map));
+  // Orbits of (edge mask, cut-face mask) pairs; faces permuted through their corner sets.
+  auto orbits = [&](bool reflections) {
+    const auto group = cube_group(reflections);
+    const auto edges = cube_edges();
+    std::set<uint64_t> canon;
+    for (const auto& c : set.configurations) {
+      uint32_t em = 0, fm = 0;
+      for (int x : c.split) (x < 100 ? em : fm) |= 1u << (x < 100 ? x : x - 100);
+      uint64_t best = UINT64_MAX;
+      for (const auto& g : group) {
+        // The vertex map of g, read back from its action on edges (each corner is the common end
+        // of its three edges' images).
+        std::array<int, 8> vmap{};
+        for (int v = 0; v < 8; ++v) {
+          std::array<int, 8> count{};
+          for (size_t e = 0; e < 12; ++e)
+            if (edges[e][0] == v || edges[e][1] == v) {
+              ++count[edges[g[e]][0]];
+              ++count[edges[g[e]][1]];
+            }
+          vmap[v] = static_cast<int>(std::max_element(count.begin(), count.end()) - count.begin());
+        }
+        uint32_t ie = 0, ifm = 0;
+        for (int e = 0; e < 12; ++e)
+          if (em >> e & 1) ie |= 1u << g[e];
+        for (int f = 0; f < 6; ++f)
+          if (fm >> f & 1) {
+            std::set<uint32_t> img;
+            for (uint32_t v : faces[f]) img.insert(static_cast<uint32_t>(vmap[v]));
+            for (int h = 0; h < 6; ++h)
+              if (std::set<uint32_t>(faces[h].begin(), faces[h].end()) == img) ifm |= 1u << h;
+          }
+        best = std::min(best, uint64_t(ie) << 6 | ifm);
+      }
+      canon.insert(best);
+    }
+    return canon.size();
+  };
+  PatternStore none_u(Mode::Unoriented), none_o(Mode::Oriented);
+  const CoverageReport u = check_coverage(none_u, set), o = check_coverage(none_o, set);
+  EXPECT_EQ(o.classes, orbits(false));
+  EXPECT_EQ(u.classes, orbits(true));
+  EXPECT_EQ(o.classes, 325u);
+  EXPECT_EQ(u.classes, 226u);
+  EXPECT_EQ(set.configurations.size(), 6209u);
+}
+
 }  // namespace
 }  // namespace gmr::replace
