@@ -106,7 +106,7 @@ void register_patterns(CLI::App& app) {
   sub->require_subcommand(1);
   CLI::App* check = sub->add_subcommand("check", "Duplicates and missing configurations of a pattern set");
   check->add_option("folder", args->folder, "Folder of pattern files")->required();
-  check->add_option("--configurations", args->generator, "Configuration generator (square-edges, triangle-edges, hex-edges)");
+  check->add_option("--configurations", args->generator, "Configuration generator (square-edges, triangle-edges, hex-edges, hex-conformal, marching-cubes)");
   check->add_flag("--oriented", args->oriented, "Verdict in oriented mode (default: unoriented)");
   check->add_flag("--json", args->json, "Print JSON");
   set_action(check, [args] { return run_check(*args); });

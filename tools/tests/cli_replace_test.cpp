@@ -119,6 +119,17 @@ TEST_F(CliReplace, PatternsCheckCoverageVerdicts) {
                    "square-edges");
 }
 
+TEST_F(CliReplace, HelpAndTheMarchingCubesClassCounts) {
+  EXPECT_EQ(run("query-replace --help").code, 0);
+  EXPECT_EQ(run("patterns check --help").code, 0);
+  const Result r = run("patterns check " + q(patterns("hex-subdivision")) + " --configurations marching-cubes --json");
+  EXPECT_EQ(r.code, 1) << r.err;  // no marching-cubes pattern in this set
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["oriented"]["classes"], 29);
+  EXPECT_EQ(j["unoriented"]["classes"], 26);
+  EXPECT_EQ(j["oriented"]["configurations"], 654);
+}
+
 TEST_F(CliReplace, PatternsCheckReportsDuplicates) {
   const fs::path set = dir / "dups";
   fs::create_directories(set);

@@ -205,6 +205,32 @@ TEST(Coverage, HexConformalClassesAreThePapers325InOrientedMode) {
   EXPECT_EQ(o.classes, 325u);
   EXPECT_EQ(u.classes, 226u);
   EXPECT_EQ(set.configurations.size(), 6209u);
+  // The generated boundaries carry the pattern files' flag convention: the 2x2x2 v-pattern covers
+  // exactly the configuration with every edge split and every face cut.
+  const CoverageReport h = coverage("hex-subdivision", set, Mode::Oriented);
+  EXPECT_EQ(h.covering, (std::vector<size_t>{1, 0}));  // hex8, split4 (a face pattern)
+  EXPECT_EQ(h.missing.size(), h.classes - 1);
+}
+
+// Marching cubes: the paper's 29 v-pattern boundaries in oriented mode; 26 unoriented (3 chiral
+// pairs merge). Cross-check without signatures: pairwise isomorphism with flags (core Theorem 1
+// test) gives the unoriented count.
+TEST(Coverage, MarchingCubesBoundariesAreThePapers29) {
+  const ConfigurationSet set = generate_configurations("marching-cubes");
+  EXPECT_EQ(set.configurations.size(), 654u);
+  for (const auto& c : set.configurations) ASSERT_TRUE(is_valid(c.map.map));
+  PatternStore none_u(Mode::Unoriented), none_o(Mode::Oriented);
+  const CoverageReport u = check_coverage(none_u, set), o = check_coverage(none_o, set);
+  EXPECT_EQ(o.classes, 29u);
+  EXPECT_EQ(u.classes, 26u);
+  std::vector<const Configuration*> reps;
+  for (const auto& c : set.configurations) {
+    bool found = false;
+    for (const Configuration* r : reps)
+      if (!found && is_isomorphic(c.map.map, r->map.map, &c.map.flag, &r->map.flag)) found = true;
+    if (!found) reps.push_back(&c);
+  }
+  EXPECT_EQ(reps.size(), u.classes);
 }
 
 }  // namespace
