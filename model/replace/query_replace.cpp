@@ -15,7 +15,8 @@ size_t QueryReplaceReport::replaced() const {
 }
 
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
-                                 const std::function<void()>& after_each) {
+                                 const std::function<void()>& after_each,
+                                 const std::function<void(size_t, size_t)>& progress) {
   GMap& g = target.map;
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
@@ -37,7 +38,10 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   const OrbitType cells = cell_type(g, cell_dim);
   const std::vector<Dart> reps = orbit_representatives(g, cells);
   r.cells = reps.size();
+  size_t done = 0;
   for (Dart rep : reps) {
+    if (progress && done % 4096 == 0) progress(done, reps.size());
+    ++done;
     const BoundaryGraph c = cell_boundary(g, cell_dim, rep, target.flag, positive);
     StoreEntry ce;
     const Word key = store_key(c, cell_dim, store.mode(), &ce);
@@ -57,6 +61,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     if (after_each) after_each();
     ++r.matched[pe.pattern];  // the next cells' darts are not touched: no new darts to orient
   }
+  if (progress) progress(reps.size(), reps.size());
   return r;
 }
 

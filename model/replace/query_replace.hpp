@@ -30,8 +30,10 @@ struct QueryReplaceReport {
 
 // Throws Error(InvalidMap) when the target is not a valid G-map of dimension cell_dim or
 // cell_dim + 1 (or, in oriented mode, not orientable).
-// after_each (optional) runs after every replacement (tests assert validity there).
+// after_each (optional) runs after every replacement (tests assert validity there); progress
+// (optional) receives (cells done, cells) every 4096 cells and at the end.
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
-                                 const std::function<void()>& after_each = {});
+                                 const std::function<void()>& after_each = {},
+                                 const std::function<void(size_t, size_t)>& progress = {});
 
 }  // namespace gmr::replace

@@ -3,6 +3,8 @@
 // 2022; docs/query-replace.md). Cells that match no pattern are left untouched and counted.
 // Options: --oriented (start darts in D+ only), --split-edges K (the e-pattern: every edge split in
 // K first), --flag-all (flag every input dart: the corners of a polyhedral input).
+#include <unistd.h>
+
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -37,7 +39,14 @@ int run_query_replace(const QueryReplaceArgs& a) {
       replace::split_edge(m, e, a.split_edges);
       ++split;
     }
-  const replace::QueryReplaceReport r = replace::query_replace(m, store, a.cells);
+  std::function<void(size_t, size_t)> progress;
+  if (isatty(STDERR_FILENO) != 0)  // progress on a terminal only, quiet when piped
+    progress = [](size_t k, size_t n) {
+      if (n < 4096) return;
+      std::cerr << "\rgmr query-replace: " << k << "/" << n << " cells" << std::flush;
+      if (k == n) std::cerr << "\n";
+    };
+  const replace::QueryReplaceReport r = replace::query_replace(m, store, a.cells, {}, progress);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   save_map(replace::to_gmap_file(m), a.output, out_format);
   const char* cell = a.cells == 2 ? "faces" : "volumes";
