@@ -63,6 +63,10 @@ int run_query_replace(const QueryReplaceArgs& a) {
     j["unmatched"] = r.unmatched.size();
     j["unmatched_darts"] = r.unmatched;
     j["ambiguous_keys"] = r.ambiguous_keys;
+    nlohmann::ordered_json amb = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < r.matched.size(); ++i)
+      if (store.entry(i).ambiguous) amb.push_back(store.patterns()[i].name);
+    j["ambiguous_patterns"] = amb;
     j["darts"] = m.map.size();
     j["time_ms"] = ms;
     j["output"] = a.output;
@@ -74,7 +78,9 @@ int run_query_replace(const QueryReplaceArgs& a) {
   if (split) std::cout << " (" << split << " edges split in " << a.split_edges << " first)";
   std::cout << "; " << m.map.size() << " darts; " << ms << " ms\n";
   for (size_t i = 0; i < r.matched.size(); ++i)
-    std::cout << "  " << store.patterns()[i].name << ": " << r.matched[i] << "\n";
+    std::cout << "  " << store.patterns()[i].name << ": " << r.matched[i]
+              << (store.entry(i).ambiguous ? " (ambiguous: a boundary symmetry its interior lacks; tie-break applied)" : "")
+              << "\n";
   if (!r.unmatched.empty()) {
     std::cout << "  unmatched " << cell << " (a dart of each):";
     for (size_t i = 0; i < r.unmatched.size() && i < 20; ++i) std::cout << " " << r.unmatched[i];

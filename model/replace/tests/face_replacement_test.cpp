@@ -147,6 +147,51 @@ TEST(FaceReplacement, UnmatchedFacesAreReportedAndKept) {
   EXPECT_EQ(count_cells(m.map, 2), 6u - 2 + 2 * 3);
 }
 
+// Every subset of split edges of a cube: the conformal set replaces exactly the faces with a split
+// edge (each face's configuration is one of the 5 classes, applied through any automorphism or
+// reflection), and the result stays valid after each replacement, in both modes.
+TEST(FaceReplacement, ConformalSetOnEveryEdgeSubsetOfACube) {
+  std::vector<Pattern> ps = load_patterns(testing::patterns_dir("conformal-faces"));
+  for (Mode mode : {Mode::Unoriented, Mode::Oriented}) {
+    const PatternStore store = store_of(mode, ps);
+    for (uint32_t mask = 1; mask < (1u << 12); mask += 37) {
+      FlaggedMap m = all_flagged(make_cube(2));
+      const std::vector<Dart> edges = orbit_representatives(m.map, cell_type(m.map, 1));
+      for (size_t e = 0; e < edges.size(); ++e)
+        if (mask >> e & 1) split_edge(m, edges[e], 2);
+      size_t touched = 0;  // faces with a split edge: more than 8 darts
+      for (Dart f : orbit_representatives(m.map, cell_type(m.map, 2)))
+        touched += orbit(m.map, OrbitType{0, 1}, f).size() > 8;
+      const QueryReplaceReport r = query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); });
+      EXPECT_EQ(r.replaced(), touched) << mask;
+      EXPECT_EQ(r.unmatched.size(), 6 - touched) << mask;
+      EXPECT_EQ(euler_characteristic(m.map), 2);
+    }
+  }
+}
+
+// An open surface (2-free darts on its border) and a map with deleted darts.
+TEST(FaceReplacement, OpenGridAndMapWithHoles) {
+  FlaggedMap m = all_flagged(make_grid(2, 2));
+  split_all_edges(m, 2);
+  const PatternStore store = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
+  EXPECT_EQ(query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }).replaced(), 4u);
+  EXPECT_EQ(count_cells(m.map, 2), 16u);
+  // Deleted darts leave holes in the index range: build a square after a deleted component.
+  GMap g(2);
+  const Dart junk = g.add_dart();
+  GMap sq = make_polygon(4);
+  const Dart base = g.add_darts(sq.size());
+  sq.for_each_dart([&](Dart x) {
+    for (int i = 0; i <= 2; ++i) g.set_alpha(i, base + x, base + sq.alpha(i, x));
+  });
+  g.remove_dart(junk);
+  FlaggedMap h = all_flagged(std::move(g));
+  split_all_edges(h, 2);
+  EXPECT_EQ(query_replace(h, store, 2, [&] { ASSERT_TRUE(is_valid(h.map)); }).replaced(), 1u);
+  EXPECT_EQ(count_cells(h.map, 2), 4u);
+}
+
 TEST(FaceReplacement, RefusesInvalidTargetsAndWrongDimensions) {
   FlaggedMap m = all_flagged(make_cube(2));
   m.map.set_alpha(0, 0, 5);  // breaks the involution
