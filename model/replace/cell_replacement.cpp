@@ -1,8 +1,43 @@
 #include "model/replace/cell_replacement.hpp"
 
 #include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/position.hpp"
 
 namespace gmr::replace {
+
+namespace {
+
+// §5.2: a copied dart at a boundary vertex takes the target's position of that vertex; at an
+// interior vertex, the pattern's mean value coordinates applied to the target's boundary positions
+// (the origin when the pattern has no geometry).
+void place_interior(FlaggedMap& target, const Pattern& p, const std::vector<Dart>& f, const std::vector<Dart>& copy,
+                    const std::vector<Dart>& mirror) {
+  const GMap& q = p.map.map;
+  const OrbitType vertex = vertex_orbit_type(q);
+  std::vector<Vec3> at(q.capacity(), Vec3{0, 0, 0});
+  for (const InteriorVertex& v : p.interior_vertices) {
+    Vec3 x{0, 0, 0};
+    for (const auto& [b, w] : v.weights)
+      for (int c = 0; c < 3; ++c) x[c] += w * target.position[f[b]][c];
+    for (Dart y : orbit(q, vertex, v.dart)) at[y] = x;
+  }
+  for (Dart rep : orbit_representatives(q, vertex)) {
+    const std::vector<Dart> darts = orbit(q, vertex, rep);
+    for (Dart y : darts)
+      if (f[y] != kNoDart) {
+        for (Dart z : darts) at[z] = target.position[f[y]];
+        break;
+      }
+  }
+  q.for_each_dart([&](Dart x) {
+    if (copy[x] == kNoDart) return;
+    target.position[copy[x]] = at[x];
+    if (!mirror.empty()) target.position[mirror[x]] = at[x];
+  });
+}
+
+}  // namespace
 
 size_t replace_cell(FlaggedMap& target, const Pattern& p, const std::vector<Dart>& f) {
   GMap& g = target.map;
@@ -44,6 +79,7 @@ size_t replace_cell(FlaggedMap& target, const Pattern& p, const std::vector<Dart
     target.flag[copy[x]] = x < p.map.flag.size() ? p.map.flag[x] : 0;
     if (shared) target.flag[mirror[x]] = target.flag[copy[x]];
   });
+  if (target.positioned()) place_interior(target, p, f, copy, mirror);
   return p.interior * (shared ? 2 : 1);
 }
 

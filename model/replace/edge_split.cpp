@@ -25,6 +25,14 @@ size_t split_edge(FlaggedMap& m, Dart d, unsigned k) {
     g.link(0, x, first);
     for (Dart s = 0; s + 1 < len; ++s) g.link(s % 2 == 0 ? 1 : 0, first + s, first + s + 1);
     g.link(0, first + len - 1, y);
+    if (m.positioned()) {  // vertex t (1..k-1) at t/k from x's vertex
+      m.position.resize(g.capacity(), Vec3{0, 0, 0});
+      const Vec3 a = m.position[x], b = m.position[y];
+      for (Dart s = 0; s < len; ++s) {
+        const double t = double(s / 2 + 1) / k;
+        m.position[first + s] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+      }
+    }
   }
   for (Dart x : edge) {
     const auto [fx, dx] = chain.at(x);

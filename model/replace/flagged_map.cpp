@@ -1,6 +1,8 @@
 #include "model/replace/flagged_map.hpp"
 
 #include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/position.hpp"
 
 namespace gmr::replace {
 
@@ -11,7 +13,14 @@ size_t FlaggedMap::flagged() const {
 }
 
 FlaggedMap flagged_map(const GMapFile& f, const std::string& where) {
-  FlaggedMap m{f.map, {}};
+  FlaggedMap m{f.map, {}, {}};
+  if (const JsonEmbedding* pe = f.find(kPositionName)) {
+    const PositionEmbedding pos = position_from_json(f.map, *pe);
+    m.position.assign(f.map.capacity(), Vec3{0, 0, 0});
+    f.map.for_each_dart([&](Dart d) {
+      if (pos.has(d)) m.position[d] = pos.get(d);
+    });
+  }
   m.resize_flags();
   const JsonEmbedding* e = f.find(kFlagEmbedding);
   if (!e) return m;
@@ -40,6 +49,11 @@ GMapFile to_gmap_file(const FlaggedMap& m) {
     e.set_dart(m.map, d, v <= 1 ? nlohmann::json(v == 1) : nlohmann::json(v));
   });
   f.embeddings.push_back(std::move(e));
+  if (m.positioned()) {
+    PositionEmbedding pos(kPositionName, vertex_orbit_type(m.map));
+    for (Dart v : orbit_representatives(m.map, vertex_orbit_type(m.map))) pos.set(m.map, v, m.position[v]);
+    f.embeddings.push_back(position_to_json(m.map, pos));
+  }
   return f;
 }
 

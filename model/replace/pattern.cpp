@@ -39,6 +39,7 @@ Pattern make_pattern(std::string name, FlaggedMap m) {
   p.boundary = pattern_boundary(g, m.flag, p.positive);
   if (!is_connected(p.boundary))
     reject(n == 2 ? "the boundary is not one cycle (not a disc)" : "the boundary is not one connected surface");
+  if (m.positioned() && !p.positive.empty()) p.interior_vertices = mean_value_coordinates(g, m.position, p.positive);
   p.map = std::move(m);
   return p;
 }

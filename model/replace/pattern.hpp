@@ -11,6 +11,7 @@
 
 #include "model/replace/boundary_graph.hpp"
 #include "model/replace/flagged_map.hpp"
+#include "model/replace/interior_geometry.hpp"
 
 namespace gmr::replace {
 
@@ -21,6 +22,8 @@ struct Pattern {
   std::vector<uint8_t> positive;  // orientation classes; empty when the pattern is not orientable
   BoundaryGraph boundary;         // the query
   size_t interior = 0;            // darts that are not n-free
+  // Mean value coordinates of the interior vertices (empty without positions or orientation).
+  std::vector<InteriorVertex> interior_vertices;
 
   const char* kind() const { return cell_dim == 2 ? "f-pattern" : "v-pattern"; }
 };

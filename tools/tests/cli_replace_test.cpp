@@ -38,6 +38,9 @@ TEST_F(CliReplace, SubdividesTheCubeFacesWithTheConformalSet) {
   // The result, with its flags, is the boundary of the 2x2x2 pattern: signed by `gmr signature`.
   EXPECT_EQ(run("signature " + q(out) + " --flags flag").code, 0);
   EXPECT_EQ(run("validate " + q(out)).code, 0);
+  // Positions are carried (face centres by mean value coordinates): the result converts to OFF.
+  ASSERT_NE(f.find("position"), nullptr);
+  EXPECT_EQ(run("convert " + q(out) + " " + q(dir / "out" / "cube.off")).code, 0);
 }
 
 TEST_F(CliReplace, UnflaggedFacesDoNotMatchFlaggedPatternsAndAreReported) {

@@ -197,7 +197,7 @@ TEST(FaceReplacement, RefusesInvalidTargetsAndWrongDimensions) {
   m.map.set_alpha(0, 0, 5);  // breaks the involution
   const PatternStore store = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
   EXPECT_THROW(query_replace(m, store, 2), Error);
-  FlaggedMap one{GMap(1), {}};
+  FlaggedMap one{GMap(1), {}, {}};
   EXPECT_THROW(query_replace(one, store, 2), Error);
 }
 

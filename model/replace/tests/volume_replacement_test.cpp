@@ -58,7 +58,7 @@ TEST(VolumePatterns, BoundaryAutomorphismsOfTheHexAndTetPatterns) {
 
 TEST(VolumeReplacement, TetrahedronToFourHexahedra) {
   for (Mode mode : {Mode::Unoriented, Mode::Oriented}) {
-    FlaggedMap m{lift(make_tetrahedron(2), 3), {}};
+    FlaggedMap m{lift(make_tetrahedron(2), 3), {}, {}};
     flag_all(m);
     const auto c = count_all_cells(m.map);
     const auto [f, v] = refine(m, folder_store("tet-to-hex", mode));
@@ -76,7 +76,7 @@ TEST(VolumeReplacement, TetrahedronToFourHexahedra) {
 // Alg. 5 without the geometric selection: every hexahedron of a polycube refined, two levels.
 TEST(VolumeReplacement, HexahedralSubdivisionOfAPolycubeOverTwoLevels) {
   const std::vector<Voxel> voxels{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}};
-  FlaggedMap m{make_polycube(voxels), {}};
+  FlaggedMap m{make_polycube(voxels), {}, {}};
   const PatternStore store = folder_store("hex-subdivision", Mode::Unoriented);
   const long long euler = euler_characteristic(m.map);
   size_t volumes = voxels.size();
@@ -98,7 +98,7 @@ TEST(VolumeReplacement, HexahedralSubdivisionOfAPolycubeOverTwoLevels) {
 
 // Without flags on the target, the flagged v-pattern matches nothing: volumes are reported.
 TEST(VolumeReplacement, UnflaggedVolumesAreLeftUntouched) {
-  FlaggedMap m{lift(make_cube(2), 3), {}};
+  FlaggedMap m{lift(make_cube(2), 3), {}, {}};
   flag_all(m);
   split_all_edges(m, 2);
   const PatternStore store = folder_store("hex-subdivision", Mode::Unoriented);
