@@ -76,5 +76,40 @@ TEST(InteriorGeometry, VolumePatternsReproduceAffineMaps) {
   EXPECT_EQ(grid_points(m), 27u);  // and the cube's centre
 }
 
+// Any tetrahedron is an affine image of the pattern's: the new vertices are the edge midpoints,
+// the face centroids and the centroid (Fig. 16).
+TEST(InteriorGeometry, TetrahedronToHexahedraPlacesCentroids) {
+  const std::vector<Vec3> corner = {{0.3, -1, 2}, {4, 0.5, 1}, {1, 3, -0.5}, {0.5, 1, 5}};
+  FlaggedMap m{lift(surface_from_faces({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, 4), 3), {}, {}};
+  std::vector<uint32_t> vertex;
+  surface_from_faces({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, 4, {}, &vertex);
+  m.flag.assign(m.map.capacity(), 1);
+  m.position.resize(m.map.capacity());
+  m.map.for_each_dart([&](Dart d) { m.position[d] = corner[vertex[d]]; });
+  testing::split_all_edges(m, 2);
+  PatternStore store(Mode::Unoriented);
+  for (auto& p : load_patterns(testing::patterns_dir("tet-to-hex"))) store.add(std::move(p));
+  query_replace(m, store, 2);
+  EXPECT_EQ(query_replace(m, store, 3).replaced(), 1u);
+  // Expected points: centroids of every non-empty subset of corners (1: corners, 2: midpoints, ...).
+  std::vector<Vec3> expected;
+  for (int s = 1; s < 16; ++s) {
+    Vec3 c{0, 0, 0};
+    const int k = __builtin_popcount(static_cast<unsigned>(s));
+    for (int v = 0; v < 4; ++v)
+      if (s >> v & 1)
+        for (int i = 0; i < 3; ++i) c[i] += corner[v][i] / k;
+    expected.push_back(c);
+  }
+  const auto reps = orbit_representatives(m.map, vertex_orbit_type(m.map));
+  EXPECT_EQ(reps.size(), 15u);
+  for (Dart v : reps) {
+    bool found = false;
+    for (const Vec3& e : expected)
+      found |= std::abs(e[0] - m.position[v][0]) + std::abs(e[1] - m.position[v][1]) + std::abs(e[2] - m.position[v][2]) < 1e-9;
+    EXPECT_TRUE(found) << "vertex of dart " << v;
+  }
+}
+
 }  // namespace
 }  // namespace gmr::replace
