@@ -60,7 +60,8 @@ std::vector<InteriorVertex> mean_value_coordinates(const GMap& p, const std::vec
       v.weights.emplace_back(d, w);
       total += w;
     };
-    if (n == 2) {  // Floater's mean value coordinates of the boundary polygon
+    if (n == 2) {  // Floater's mean value coordinates of the boundary polygon (unsigned angles:
+                   // exact when x sees the whole boundary, docs/query-replace.md)
       const auto& poly = polys.front();
       const size_t k = poly.size();
       std::vector<double> tan_half(k), len(k);
