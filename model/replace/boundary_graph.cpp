@@ -1,6 +1,5 @@
 #include "model/replace/boundary_graph.hpp"
 
-#include <unordered_map>
 
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
@@ -19,12 +18,21 @@ Dart boundary_successor(const GMap& g, int i, Dart d) {
 
 namespace {
 
-// Fills nbr from a local index and a per-dart neighbour function.
+// Fills nbr from a local index and a per-dart neighbour function. The dart -> local index table
+// is a per-thread array indexed by dart, reset after use (no hashing, no per-cell allocation).
 template <class Nbr>
-void fill(BoundaryGraph& b, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive, Nbr nbr) {
-  std::unordered_map<Dart, uint32_t> local;
-  local.reserve(b.dart.size() * 2);
-  for (uint32_t k = 0; k < b.size(); ++k) local.emplace(b.dart[k], k);
+void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive,
+          Nbr nbr) {
+  thread_local std::vector<uint32_t> local;
+  if (local.size() < capacity) local.resize(capacity, UINT32_MAX);
+  for (uint32_t k = 0; k < b.size(); ++k) local[b.dart[k]] = k;
+  struct Reset {
+    std::vector<uint32_t>& local;
+    const std::vector<Dart>& darts;
+    ~Reset() {
+      for (Dart d : darts) local[d] = UINT32_MAX;
+    }
+  } reset{local, b.dart};
   b.nbr.resize(size_t(b.size()) * b.arity);
   b.flag.resize(b.size());
   b.positive.resize(b.size());
@@ -33,10 +41,10 @@ void fill(BoundaryGraph& b, const std::vector<uint32_t>& flag, const std::vector
     b.flag[k] = d < flag.size() ? flag[d] : 0;
     b.positive[k] = positive.empty() ? 1 : positive[d];
     for (int j = 0; j < b.arity; ++j) {
-      const auto it = local.find(nbr(d, j));
-      if (it == local.end())
+      const Dart y = nbr(d, j);
+      if (y >= capacity || local[y] == UINT32_MAX)
         throw Error(ErrorCode::InvalidMap, "boundary neighbour outside the boundary", "dart " + std::to_string(d));
-      b.nbr[size_t(k) * b.arity + j] = it->second;
+      b.nbr[size_t(k) * b.arity + j] = local[y];
     }
   }
 }
@@ -48,7 +56,7 @@ BoundaryGraph cell_boundary(const GMap& g, int i, Dart d, const std::vector<uint
   BoundaryGraph b;
   b.arity = i;
   b.dart = orbit(g, OrbitType::range(0, i - 1), d);
-  fill(b, flag, positive, [&](Dart x, int j) { return g.alpha(j, x); });
+  fill(b, g.capacity(), flag, positive, [&](Dart x, int j) { return g.alpha(j, x); });
   return b;
 }
 
@@ -60,7 +68,7 @@ BoundaryGraph pattern_boundary(const GMap& p, const std::vector<uint32_t>& flag,
   p.for_each_dart([&](Dart d) {
     if (p.is_free(n, d)) b.dart.push_back(d);
   });
-  fill(b, flag, positive, [&](Dart x, int j) { return j < n - 1 ? p.alpha(j, x) : boundary_successor(p, n - 1, x); });
+  fill(b, p.capacity(), flag, positive, [&](Dart x, int j) { return j < n - 1 ? p.alpha(j, x) : boundary_successor(p, n - 1, x); });
   return b;
 }
 
