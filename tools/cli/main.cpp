@@ -24,14 +24,14 @@
   X(info)                  \
   X(validate)              \
   X(convert)               \
+  X(query_replace)         \
+  X(patterns)              \
   X(dot)                   \
   X(signature)             \
   X(check)                 \
   X(apply)                 \
   X(fold)                  \
   X(infer)                 \
-  X(query_replace)         \
-  X(patterns)              \
   X(demo)
 // ========================================================================================
 
