@@ -24,6 +24,8 @@
   X(info)                  \
   X(validate)              \
   X(convert)               \
+  X(query_replace)         \
+  X(patterns)              \
   X(dot)                   \
   X(signature)             \
   X(check)                 \

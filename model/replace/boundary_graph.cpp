@@ -1,0 +1,96 @@
+#include "model/replace/boundary_graph.hpp"
+
+
+#include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+
+namespace gmr::replace {
+
+Dart boundary_successor(const GMap& g, int i, Dart d) {
+  Dart x = g.alpha(i, d);
+  for (size_t steps = 0; !g.is_free(i + 1, x); ++steps) {
+    if (steps > g.capacity())
+      throw Error(ErrorCode::InvalidMap, "no boundary successor (the fan does not close)", "dart " + std::to_string(d));
+    x = g.alpha(i, g.alpha(i + 1, x));
+  }
+  return x;
+}
+
+namespace {
+
+// Fills nbr from a local index and a per-dart neighbour function. The dart -> local index table
+// is a per-thread array indexed by dart, reset after use (no hashing, no per-cell allocation).
+template <class Nbr>
+void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive,
+          Nbr nbr) {
+  thread_local std::vector<uint32_t> local;
+  if (local.size() < capacity) local.resize(capacity, UINT32_MAX);
+  for (uint32_t k = 0; k < b.size(); ++k) local[b.dart[k]] = k;
+  struct Reset {
+    std::vector<uint32_t>& local;
+    const std::vector<Dart>& darts;
+    ~Reset() {
+      for (Dart d : darts) local[d] = UINT32_MAX;
+    }
+  } reset{local, b.dart};
+  b.nbr.resize(size_t(b.size()) * b.arity);
+  b.flag.resize(b.size());
+  b.positive.resize(b.size());
+  for (uint32_t k = 0; k < b.size(); ++k) {
+    const Dart d = b.dart[k];
+    b.flag[k] = d < flag.size() ? flag[d] : 0;
+    b.positive[k] = positive.empty() ? 1 : positive[d];
+    for (int j = 0; j < b.arity; ++j) {
+      const Dart y = nbr(d, j);
+      if (y >= capacity || local[y] == UINT32_MAX)
+        throw Error(ErrorCode::InvalidMap, "boundary neighbour outside the boundary", "dart " + std::to_string(d));
+      b.nbr[size_t(k) * b.arity + j] = local[y];
+    }
+  }
+}
+
+}  // namespace
+
+BoundaryGraph cell_boundary(const GMap& g, int i, Dart d, const std::vector<uint32_t>& flag,
+                            const std::vector<uint8_t>& positive) {
+  BoundaryGraph b;
+  b.arity = i;
+  b.dart = orbit(g, OrbitType::range(0, i - 1), d);
+  fill(b, g.capacity(), flag, positive, [&](Dart x, int j) { return g.alpha(j, x); });
+  return b;
+}
+
+BoundaryGraph pattern_boundary(const GMap& p, const std::vector<uint32_t>& flag,
+                               const std::vector<uint8_t>& positive) {
+  const int n = p.dimension();
+  BoundaryGraph b;
+  b.arity = n;
+  p.for_each_dart([&](Dart d) {
+    if (p.is_free(n, d)) b.dart.push_back(d);
+  });
+  fill(b, p.capacity(), flag, positive, [&](Dart x, int j) { return j < n - 1 ? p.alpha(j, x) : boundary_successor(p, n - 1, x); });
+  return b;
+}
+
+bool is_connected(const BoundaryGraph& b) {
+  if (b.size() == 0) return true;
+  std::vector<uint8_t> seen(b.size(), 0);
+  std::vector<uint32_t> stack{0};
+  seen[0] = 1;
+  uint32_t count = 1;
+  while (!stack.empty()) {
+    const uint32_t k = stack.back();
+    stack.pop_back();
+    for (int j = 0; j < b.arity; ++j) {
+      const uint32_t y = b.neighbour(k, j);
+      if (!seen[y]) {
+        seen[y] = 1;
+        ++count;
+        stack.push_back(y);
+      }
+    }
+  }
+  return count == b.size();
+}
+
+}  // namespace gmr::replace

@@ -1,0 +1,16 @@
+// e-patterns (Damiand & Nivoliers 2022 §4.1): split an edge into k edges. In a G-map every dart
+// pair (d, alpha_0 d) of the edge's <0,2,...,n>-orbit gets 2(k-1) new darts in a chain
+// d - a_1 - b_1 - ... - b_{k-1} - alpha_0 d (alpha_0 and alpha_1 alternating); alpha_j for j >= 2
+// links the chains as it links their end darts. Old darts keep their vertex and their flag (the
+// paper's split convention read for G-maps); new darts are unflagged. With positions, the new
+// vertices are evenly spaced along the segment.
+#pragma once
+#include "model/replace/flagged_map.hpp"
+
+namespace gmr::replace {
+
+// Splits the edge of d into k >= 1 edges (k = 1: nothing). Throws Error(InvalidMap) when a dart
+// of the edge is 0-free. Returns the number of darts added.
+size_t split_edge(FlaggedMap& m, Dart d, unsigned k);
+
+}  // namespace gmr::replace

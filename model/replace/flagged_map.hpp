@@ -1,0 +1,37 @@
+// A map with dart flags (Damiand & Nivoliers 2022 §3, §4.3.2): flags are optional dart marks that
+// matched darts must share. In files, flags are the embedding "flag" on the orbit type <> (one
+// value per dart): true or a positive integer flags the dart, false, 0 or no value leave it
+// unflagged. Vertex positions (the embedding "position", position.hpp) are carried when present;
+// other embeddings are not.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "model/core/gmap_file.hpp"
+#include "model/core/vec3.hpp"
+
+namespace gmr::replace {
+
+inline constexpr const char* kFlagEmbedding = "flag";
+
+struct FlaggedMap {
+  GMap map{2};
+  std::vector<uint32_t> flag;  // indexed by dart, 0: unflagged (sized to map.capacity())
+  std::vector<Vec3> position;  // per dart (its vertex's position); empty: no geometry
+
+  bool positioned() const { return !position.empty(); }
+  void resize_flags() {
+    flag.resize(map.capacity(), 0);
+    if (positioned()) position.resize(map.capacity(), Vec3{0, 0, 0});
+  }
+  size_t flagged() const;
+};
+
+// Reads the flags of a gmr.gmap content; throws Error(Schema) at `where` for an embedding "flag"
+// on another orbit type or with a value that is not a boolean or a non-negative integer.
+FlaggedMap flagged_map(const GMapFile& f, const std::string& where = {});
+// The map with its flags as the embedding "flag" (every dart gets a value: false when unflagged)
+// and its positions, if any.
+GMapFile to_gmap_file(const FlaggedMap& m);
+
+}  // namespace gmr::replace

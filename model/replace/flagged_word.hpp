@@ -1,0 +1,44 @@
+// Flagged BFS words and signatures of boundary graphs (Damiand & Nivoliers 2022, Alg. 1 and
+// Defs. 3–5, lifted to G-maps; flags §4.3.2):
+//  * labels: the start dart gets 1; darts are taken in label order and, for j = 0..m, the
+//    neighbour y = nbr_j(x) is labelled when new (a free dart's loop emits its own label);
+//  * the word lists, per dart in label order, its flag and then the labels of its m+1 neighbours
+//    (length (m+2)|B|). The whole sequence, flags included, is minimised: minimising the unflagged
+//    word first and appending the flags of an arbitrary tied start would not be canonical;
+//  * start darts: the flagged darts if any dart is flagged (the set is invariant under
+//    isomorphisms, so the minimum stays canonical), else all darts; in oriented mode, only those
+//    in D+ (the paper's orientation-preserving isomorphisms of 3-maps). Unoriented mode compares
+//    G-maps up to any isomorphism, reflections included;
+//  * the number of start darts reaching the minimum is the number of automorphisms (preserving
+//    flags, and orientation in oriented mode); ties are broken by the first start in local order.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "model/core/signature.hpp"
+#include "model/replace/boundary_graph.hpp"
+
+namespace gmr::replace {
+
+enum class Mode { Unoriented, Oriented };
+const char* to_string(Mode m);
+
+// W(B, s) with flags (with_flags) or without them (the unflagged words of Alg. 1).
+Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags = true);
+// The local darts in label order from `start` (order[k] has label k+1).
+std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start);
+
+struct CellSignature {
+  Word word;                   // the minimal word (empty for an empty graph)
+  uint32_t start = 0;          // local index of the first start dart reaching it
+  uint32_t automorphisms = 0;  // number of start darts reaching it
+};
+// Words longer than 2^32-1 labels cannot occur: labels are uint32 (Error(Range) beyond).
+CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_flags = true);
+
+struct WordHash {
+  size_t operator()(const Word& w) const noexcept;
+};
+
+}  // namespace gmr::replace

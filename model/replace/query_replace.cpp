@@ -1,0 +1,68 @@
+#include "model/replace/query_replace.hpp"
+
+#include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/validity.hpp"
+#include "model/replace/cell_replacement.hpp"
+#include "model/replace/orientation.hpp"
+
+namespace gmr::replace {
+
+size_t QueryReplaceReport::replaced() const {
+  size_t n = 0;
+  for (size_t m : matched) n += m;
+  return n;
+}
+
+QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
+                                 const std::function<void()>& after_each,
+                                 const std::function<void(size_t, size_t)>& progress) {
+  GMap& g = target.map;
+  const int n = g.dimension();
+  if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
+  if (cell_dim != 2 && cell_dim != 3) throw Error(ErrorCode::Usage, "cells are faces (2) or volumes (3)", "--cells");
+  if (n != cell_dim && n != cell_dim + 1)
+    throw Error(ErrorCode::InvalidMap, std::to_string(cell_dim) + "-cells are replaced in " + std::to_string(cell_dim) +
+                                           "- or " + std::to_string(cell_dim + 1) + "-G-maps, not in a " +
+                                           std::to_string(n) + "-G-map");
+  const ValidityReport v = check_validity(g, 1);
+  if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + v.violations.front().describe());
+  target.resize_flags();
+  QueryReplaceReport r;
+  r.mode = store.mode();
+  r.cell_dim = cell_dim;
+  r.matched.assign(store.patterns().size(), 0);
+  std::vector<uint8_t> positive;
+  if (store.mode() == Mode::Oriented) positive = orientation_classes(g);
+  // A face of a 3-G-map is a <0,1,3>-orbit; a volume a <0,1,2>-orbit; faces of 2-G-maps <0,1>.
+  const OrbitType cells = cell_type(g, cell_dim);
+  const std::vector<Dart> reps = orbit_representatives(g, cells);
+  r.cells = reps.size();
+  size_t done = 0;
+  for (Dart rep : reps) {
+    if (progress && done % 4096 == 0) progress(done, reps.size());
+    ++done;
+    const BoundaryGraph c = cell_boundary(g, cell_dim, rep, target.flag, positive);
+    StoreEntry ce;
+    const Word key = store_key(c, cell_dim, store.mode(), &ce);
+    const std::vector<StoreEntry>* hits = store.find(key);
+    if (!hits) {
+      r.unmatched.push_back(rep);
+      continue;
+    }
+    if (hits->size() > 1) ++r.ambiguous_keys;
+    const StoreEntry& pe = hits->front();
+    const Pattern& p = store.patterns()[pe.pattern];
+    const std::vector<uint32_t> oc = boundary_labeling(c, ce.start);
+    const std::vector<uint32_t> op = boundary_labeling(p.boundary, pe.start);
+    std::vector<Dart> f(p.map.map.capacity(), kNoDart);
+    for (size_t k = 0; k < op.size(); ++k) f[p.boundary.dart[op[k]]] = c.dart[oc[k]];
+    r.darts_added += replace_cell(target, p, f);
+    if (after_each) after_each();
+    ++r.matched[pe.pattern];  // the next cells' darts are not touched: no new darts to orient
+  }
+  if (progress) progress(reps.size(), reps.size());
+  return r;
+}
+
+}  // namespace gmr::replace

@@ -1,0 +1,39 @@
+// The query-replace driver (Damiand & Nivoliers 2022 §4, §6.3): every i-cell of the target
+// (faces for i = 2, volumes for i = 3) is signed in the store's mode and looked up; a cell whose
+// key is in the store has its interior replaced (cell_replacement.hpp) through the isomorphism f
+// read off the two minimal words (the k-th labelled darts correspond); other cells are left
+// untouched and reported. The cells are those of the input map (collected before any
+// replacement), so each is replaced at most once. A face of a 3-G-map is signed on the half-face
+// of its smallest dart.
+// Ties (several minimal start darts, i.e. boundary automorphisms) are broken by the first start in
+// the cell's traversal order; a key holding several patterns uses the first one.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/replace/flagged_map.hpp"
+#include "model/replace/pattern_store.hpp"
+
+namespace gmr::replace {
+
+struct QueryReplaceReport {
+  Mode mode = Mode::Unoriented;
+  int cell_dim = 2;
+  size_t cells = 0;                      // cells examined
+  std::vector<size_t> matched;           // per pattern of the store
+  std::vector<Dart> unmatched;           // one dart of each cell left untouched
+  size_t ambiguous_keys = 0;             // matches whose key held several patterns
+  size_t darts_added = 0;
+  size_t replaced() const;
+};
+
+// Throws Error(InvalidMap) when the target is not a valid G-map of dimension cell_dim or
+// cell_dim + 1 (or, in oriented mode, not orientable).
+// after_each (optional) runs after every replacement (tests assert validity there); progress
+// (optional) receives (cells done, cells) every 4096 cells and at the end.
+QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
+                                 const std::function<void()>& after_each = {},
+                                 const std::function<void(size_t, size_t)>& progress = {});
+
+}  // namespace gmr::replace

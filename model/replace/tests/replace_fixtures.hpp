@@ -1,0 +1,38 @@
+// Shared helpers of the query-replace tests: pattern files from tools/data/patterns and flagged
+// builders.
+#pragma once
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "model/core/builders.hpp"
+#include "model/core/orbit.hpp"
+#include "model/replace/edge_split.hpp"
+#include "model/replace/pattern_folder.hpp"
+#include "model/testing/source_tree.hpp"
+
+namespace gmr::replace::testing {
+
+inline std::filesystem::path patterns_dir(const std::string& set) {
+  return std::filesystem::path(::gmr::testing::source_path("tools/data/patterns")) / set;
+}
+inline Pattern pattern_file(const std::string& set, const std::string& name) {
+  Pattern p = load_pattern(patterns_dir(set) / (name + ".json"));
+  p.name = name;
+  return p;
+}
+
+// Every dart flagged: each dart of a polyhedron built by the builders is at a corner and on an
+// original edge (Damiand & Nivoliers §7: inputs flagged at their corners).
+inline FlaggedMap all_flagged(GMap g) {
+  FlaggedMap m{std::move(g), {}, {}};
+  m.flag.assign(m.map.capacity(), 1);
+  return m;
+}
+
+// Splits every edge of m in k.
+inline void split_all_edges(FlaggedMap& m, unsigned k) {
+  for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, k);
+}
+
+}  // namespace gmr::replace::testing
