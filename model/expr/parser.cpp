@@ -15,6 +15,12 @@ class Parser {
   Parser(std::string_view text, const std::string& where) : t_(text), where_(where) {}
 
   std::unique_ptr<Expr> run() {
+    // Bounds that keep the recursive descent, the tree's destruction and its evaluation within
+    // the stack on hostile input: the length bounds the depth of left-nested operator chains.
+    if (t_.size() > kMaxExpressionLength)
+      fail("expression of " + std::to_string(t_.size()) + " characters, longer than " +
+               std::to_string(kMaxExpressionLength),
+           0);
     skip();
     if (pos_ >= t_.size()) fail("empty expression");
     auto e = sum();
@@ -24,6 +30,19 @@ class Parser {
   }
 
  private:
+  // One level of unary operators or parentheses (every nesting passes through unary()).
+  struct NestingGuard {
+    Parser& p;
+    explicit NestingGuard(Parser& parser) : p(parser) {
+      if (++p.depth_ > kMaxExpressionNesting)
+        p.fail("nesting deeper than " + std::to_string(kMaxExpressionNesting) + " levels");
+    }
+    ~NestingGuard() { --p.depth_; }
+    NestingGuard(const NestingGuard&) = delete;
+    NestingGuard& operator=(const NestingGuard&) = delete;
+  };
+  size_t depth_ = 0;
+
   [[noreturn]] void fail(const std::string& msg, size_t at = SIZE_MAX) const {
     const size_t col = (at == SIZE_MAX ? pos_ : at) + 1;
     throw Error(ErrorCode::Parse, msg, (where_.empty() ? "" : where_ + ", ") + "column " + std::to_string(col));
@@ -104,6 +123,7 @@ class Parser {
     }
   }
   std::unique_ptr<Expr> unary() {
+    const NestingGuard guard(*this);
     skip();
     const size_t at = pos_;
     if (accept('-')) {

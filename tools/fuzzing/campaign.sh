@@ -11,7 +11,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 seconds="${1:-60}"; shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(gmap_json rule_json voxels off obj jme orbit_type match)
+[ ${#targets[@]} -gt 0 ] || targets=(gmap_json rule_json voxels off obj jme expression orbit_type match)
 build="$root/build-fuzz" out="$root/out/fuzz/parsers"
 export CCACHE_BASEDIR="$root"
 if [ ! -f "$build/CMakeCache.txt" ]; then
@@ -28,11 +28,11 @@ seeds_of() {
     voxels) ls "$root"/tools/data/*.voxels.json ;;
     off) ls "$root"/tools/data/*.off "$root"/model/io/tests/data/*.off ;;
     jme) ls "$root"/tools/data/jerboa/*.jme ;;
-    obj|orbit_type|match) ls "$root"/tools/fuzzing/seeds/"$1"/* ;;
+    obj|expression|orbit_type|match) ls "$root"/tools/fuzzing/seeds/"$1"/* ;;
   esac
   find "$root/tools/fuzzing/corpus/$1" -type f ! -name .keep
 }
-dict_of() { case "$1" in gmap_json|rule_json|voxels) echo json ;; off) echo off ;; obj) echo obj ;; jme) echo xml ;; *) echo orbit ;; esac; }
+dict_of() { case "$1" in gmap_json|rule_json|voxels) echo json ;; off) echo off ;; obj) echo obj ;; jme) echo xml ;; expression) echo expression ;; *) echo orbit ;; esac; }
 echo "| target | executions | seconds | crashes | leaks | timeouts | out of memory |" >"$out/summary.md"
 echo "|---|---|---|---|---|---|---|" >>"$out/summary.md"
 json="["

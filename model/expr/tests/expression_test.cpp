@@ -89,6 +89,30 @@ TEST(ExpressionParser, ErrorsNameTheColumn) {
   EXPECT_EQ(loc("[n0.position | x on <0>/<1>(n0)]"), "rule r, R node n1, embedding position, column 18");
 }
 
+TEST(ExpressionParser, HostileInputStaysWithinTheLimits) {
+  // Deep parentheses and unary chains: refused at the nesting limit, not a stack overflow.
+  const std::string deep = std::string(2000, '(') + "1" + std::string(2000, ')');
+  try {
+    parse_expression(deep, "deep");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("nesting deeper than 100"), std::string::npos) << e.message();
+  }
+  EXPECT_THROW(parse_expression(std::string(5000, '-') + "1"), Error);
+  // Long operator chains (a left-nested tree as deep as the chain) are bounded by the length.
+  std::string chain = "1";
+  while (chain.size() + 2 <= kMaxExpressionLength) chain += "+1";
+  EXPECT_NO_THROW(parse_expression(chain));
+  try {
+    parse_expression(chain + "+1+1");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(e.message().find("longer than 4096"), std::string::npos) << e.message();
+  }
+  const std::string nested = std::string(kMaxExpressionNesting - 1, '(') + "1" + std::string(kMaxExpressionNesting - 1, ')');
+  EXPECT_NO_THROW(parse_expression(nested));
+}
+
 TEST(ExpressionTypes, AffineMassesPointsAndVectors) {
   EXPECT_EQ(type_of("n0.position", ValueType::Point).str(), "point");
   EXPECT_EQ(type_of("0.25 * n0.position + 0.75 * n1.position", ValueType::Point).str(), "point");
