@@ -4,24 +4,12 @@
 #include <cmath>
 
 #include "model/io/atomic_write.hpp"
+#include "model/io/line_tokens.hpp"
 #include "model/io/off.hpp"
 
 namespace gmr::io {
 
 namespace {
-
-std::vector<std::string_view> split_tokens(std::string_view line) {
-  std::vector<std::string_view> tokens;
-  size_t p = 0;
-  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; };
-  while (p < line.size()) {
-    while (p < line.size() && space(line[p])) ++p;
-    const size_t q = p;
-    while (p < line.size() && !space(line[p])) ++p;
-    if (p > q) tokens.push_back(line.substr(q, p - q));
-  }
-  return tokens;
-}
 
 bool is_dropped_statement(std::string_view k) {
   static constexpr std::string_view kDropped[] = {
@@ -45,11 +33,10 @@ FaceList parse_obj(std::string_view text, const std::string& source, FaceLines* 
   while (pos < text.size()) {
     size_t end = text.find('\n', pos);
     if (end == std::string_view::npos) end = text.size();
-    std::string_view raw = text.substr(pos, end - pos);
+    const std::string_view raw = text.substr(pos, end - pos);
     pos = end + 1;
     ++number;
-    if (const size_t hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
-    const std::vector<std::string_view> t = split_tokens(raw);
+    const std::vector<std::string_view> t = line_tokens(raw);
     if (t.empty()) continue;
     if (t[0] == "v") {
       if (t.size() != 4 && t.size() != 5 && t.size() != 7)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "model/io/atomic_write.hpp"
+#include "model/io/line_tokens.hpp"
 #include "model/io/read_file.hpp"
 
 namespace gmr::io {
@@ -23,20 +24,11 @@ class OffLexer {
     while (pos_ < text_.size()) {
       size_t end = text_.find('\n', pos_);
       if (end == std::string_view::npos) end = text_.size();
-      std::string_view raw = text_.substr(pos_, end - pos_);
+      const std::string_view raw = text_.substr(pos_, end - pos_);
       pos_ = end + 1;
       ++number_;
-      if (auto hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
       line.number = number_;
-      line.tokens.clear();
-      size_t p = 0;
-      auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; };
-      while (p < raw.size()) {
-        while (p < raw.size() && is_space(raw[p])) ++p;
-        const size_t q = p;
-        while (p < raw.size() && !is_space(raw[p])) ++p;
-        if (p > q) line.tokens.push_back(raw.substr(q, p - q));
-      }
+      line.tokens = line_tokens(raw);
       if (!line.tokens.empty()) return true;
     }
     return false;
