@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates docs/architecture.svg: the module graph of the gmr libraries and the gmr binary, read
-# from CMake (`cmake --graphviz`) and laid out by Graphviz's dot. Tests, layering checks and
+# from CMake (`cmake --graphviz`) and laid out by Graphviz's dot. Tests, proofs, fuzz targets,
+# condition plug-ins, benchmarks, layering checks and
 # third-party targets are left out; an arrow A -> B means "A links B" (A may use B).
 # Usage: tools/architecture.sh [build dir, default build/]
 set -euo pipefail
@@ -16,7 +17,7 @@ text = open(src).read()
 label = dict(re.findall(r'"(node\d+)" \[ label = "([^"]+)"', text))
 def keep(name):
     return (name == "gmr" or name.startswith("gmr_")) and not re.search(
-        r"_test$|_layering$|_cgal_test$|_slow_test$|^gmr_warnings$|^gmr_proptest", name)
+        r"_test$|_layering$|_cgal_test$|_slow_test$|^gmr_warnings$|^gmr_proptest|^gmr_fuzz_|^gmr_proofs|^gmr_plugin|^gmr_bench", name)
 edges = set()
 for a, b in re.findall(r'"(node\d+)" -> "(node\d+)"', text):
     if keep(label[a]) and keep(label[b]):
