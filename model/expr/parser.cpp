@@ -148,8 +148,9 @@ class Parser {
       }
     }
     OrbitType o(dims);
-    if (__builtin_popcount(o.mask()) != static_cast<int>(dims.size()) ||
-        std::any_of(dims.begin(), dims.end(), [](int d) { return d >= kMaxDim; }))
+    // The range first: mask() shifts by each dimension.
+    if (std::any_of(dims.begin(), dims.end(), [](int d) { return d < 0 || d >= kMaxDim; }) ||
+        __builtin_popcount(o.mask()) != static_cast<int>(dims.size()))
       fail("the orbit type " + o.str() + " repeats a dimension or is out of range", at);
     return o;
   }

@@ -111,6 +111,9 @@ TEST(ExpressionParser, HostileInputStaysWithinTheLimits) {
   }
   const std::string nested = std::string(kMaxExpressionNesting - 1, '(') + "1" + std::string(kMaxExpressionNesting - 1, ')');
   EXPECT_NO_THROW(parse_expression(nested));
+  // A dimension far out of range in an orbit type (found by the fuzzer: a shift by 99999999).
+  EXPECT_THROW(parse_expression("<0,99999999>_position(n0)"), Error);
+  EXPECT_THROW(parse_expression("[n0.position | x in <1,2>/<0,2147483647>(n0)]"), Error);
 }
 
 TEST(ExpressionTypes, AffineMassesPointsAndVectors) {
