@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "model/core/word_comparison.hpp"
 #include "model/core/orbit.hpp"
 
 namespace gmr {
@@ -27,17 +28,8 @@ int stream_word(const GMap& g, Dart d, const std::vector<uint32_t>* flags, const
   order.clear();
   order.push_back(d);
   label[d] = 1;
-  size_t pos = 0;
-  int cmp = 0;
-  auto emit = [&](uint32_t x) {
-    if (out) out->push_back(x);
-    if (best && cmp == 0) {
-      if (pos >= best->size()) cmp = 1;
-      else if (x != (*best)[pos]) cmp = x < (*best)[pos] ? -1 : 1;
-    }
-    ++pos;
-  };
-  for (size_t k = 0; k < order.size() && cmp <= 0; ++k) {
+  WordComparison word(best, out);
+  for (size_t k = 0; k < order.size() && word.so_far() <= 0; ++k) {
     const Dart v = order[k];
     for (int i = lo; i <= n; ++i) {
       const Dart w = g.alpha(i, v);
@@ -45,12 +37,12 @@ int stream_word(const GMap& g, Dart d, const std::vector<uint32_t>* flags, const
         order.push_back(w);
         label[w] = static_cast<uint32_t>(order.size());
       }
-      emit(label[w]);
+      word.emit(label[w]);
     }
   }
-  if (flags && cmp <= 0)
-    for (size_t k = 0; k < order.size(); ++k) emit((*flags)[order[k]]);
-  if (best && cmp == 0 && pos < best->size()) cmp = -1;
+  if (flags && word.so_far() <= 0)
+    for (size_t k = 0; k < order.size(); ++k) word.emit((*flags)[order[k]]);
+  const int cmp = word.result();
   for (Dart v : order) label[v] = 0;
   return cmp;
 }

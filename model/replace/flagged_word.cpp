@@ -1,6 +1,7 @@
 #include "model/replace/flagged_word.hpp"
 
 #include "model/core/error.hpp"
+#include "model/core/word_comparison.hpp"
 
 namespace gmr::replace {
 
@@ -15,29 +16,20 @@ int stream_word(const BoundaryGraph& b, uint32_t start, bool with_flags, const W
   order.clear();
   order.push_back(start);
   label[start] = 1;
-  size_t pos = 0;
-  int cmp = 0;
-  auto emit = [&](uint32_t x) {
-    if (out) out->push_back(x);
-    if (best && cmp == 0) {
-      if (pos >= best->size()) cmp = 1;
-      else if (x != (*best)[pos]) cmp = x < (*best)[pos] ? -1 : 1;
-    }
-    ++pos;
-  };
-  for (size_t k = 0; k < order.size() && (cmp == 0 || out); ++k) {
+  WordComparison word(best, out);
+  for (size_t k = 0; k < order.size() && (word.so_far() == 0 || out); ++k) {
     const uint32_t x = order[k];
-    if (with_flags) emit(b.flag[x]);
+    if (with_flags) word.emit(b.flag[x]);
     for (int j = 0; j < b.arity; ++j) {
       const uint32_t y = b.neighbour(x, j);
       if (!label[y]) {
         order.push_back(y);
         label[y] = static_cast<uint32_t>(order.size());
       }
-      emit(label[y]);
+      word.emit(label[y]);
     }
   }
-  if (best && cmp == 0 && pos < best->size()) cmp = -1;
+  const int cmp = word.result();
   for (uint32_t v : order) label[v] = 0;
   return cmp;
 }
