@@ -5,8 +5,11 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/tools/setup.sh"
-# ccache keys on paths relative to the checkout, so a fresh clone reuses the cache.
-export CCACHE_BASEDIR="$root"
+# ccache keys on paths relative to the checkout, so a fresh clone reuses the cache. With debug
+# information (the sanitizer build) ccache would also key on the working directory, that is on the
+# checkout's path: NOHASHDIR turns that off (the debug information then names the directory of the
+# build that filled the cache, which only matters to a debugger).
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 # The test code uses precompiled headers (CMakeLists.txt, gmr_pch); ccache caches their users only
 # with this sloppiness.
 export CCACHE_SLOPPINESS="pch_defines,time_macros${CCACHE_SLOPPINESS:+,$CCACHE_SLOPPINESS}"

@@ -172,11 +172,4 @@ void print_violations(const ValidityReport& r) {
 
 void print_json(const nlohmann::ordered_json& j) { std::cout << dump_json(j) << std::flush; }
 
-std::string default_data_dir() {
-  // From the checkout's root (as the README runs gmr), else the source tree gmr was built from.
-  std::error_code ec;
-  if (std::filesystem::is_directory("tools/data/rules", ec)) return "tools/data";
-  return GMR_DATA_DIR;
-}
-
 }  // namespace gmr::cli

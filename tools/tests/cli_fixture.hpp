@@ -17,6 +17,7 @@ namespace fs = std::filesystem;
 
 inline std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
+inline std::string gmr_bin() { return gmr::testing::build_artifact("GMR_BIN"); }
 inline fs::path source_dir() { return gmr::testing::source_path("."); }
 inline fs::path test_data(const std::string& name) { return source_dir() / "model/io/tests/data" / name; }
 inline fs::path tools_data(const std::string& name) { return source_dir() / "tools/data" / name; }
@@ -37,7 +38,7 @@ class Cli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir); }
 
   Result run(const std::string& args, const std::string& stdin_file = "") {
-    const std::string cmd = q(GMR_BIN) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") +
+    const std::string cmd = q(gmr_bin()) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") +
                             (stdin_file.empty() ? " </dev/null" : " <" + q(stdin_file));
     const int status = std::system(cmd.c_str());
     Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, gmr::io::read_text_file(dir / "stdout"), gmr::io::read_text_file(dir / "stderr")};

@@ -14,7 +14,7 @@ using CliReplace = Cli;
 // The polycube of tools/data as the gmr binary reads it (converted to gmr.gmap JSON).
 GMapFile load_voxels_map() {
   const fs::path tmp = fs::temp_directory_path() / "gmr_cli_replace_polycube.json";
-  const std::string cmd = q(GMR_BIN) + " convert " + q(tools_data("polycube.voxels.json")) + " " + q(tmp) + " >/dev/null";
+  const std::string cmd = q(gmr_bin()) + " convert " + q(tools_data("polycube.voxels.json")) + " " + q(tmp) + " >/dev/null";
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gmr convert failed");
   GMapFile f = io::read_gmap_json_file(tmp);
   fs::remove(tmp);

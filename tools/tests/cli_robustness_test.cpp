@@ -88,7 +88,7 @@ TEST_F(Cli, PositionValuesAreValidated) {
 TEST_F(Cli, WriteErrorsOnStandardOutputFail) {
   for (const std::string& cmd : {"info " + q(tools_data("cube.off")), "convert " + q(tools_data("cube.off")) + " - --to json",
                                 "dot " + q(tools_data("cube.off"))}) {
-    const int status = std::system((q(GMR_BIN) + " " + cmd + " >/dev/full 2>" + q(dir / "stderr")).c_str());
+    const int status = std::system((q(gmr_bin()) + " " + cmd + " >/dev/full 2>" + q(dir / "stderr")).c_str());
     EXPECT_EQ(WEXITSTATUS(status), 2) << cmd;
     EXPECT_NE(gmr::io::read_text_file(dir / "stderr").find("standard output: write failed"), std::string::npos) << cmd;
   }
@@ -213,7 +213,7 @@ TEST_F(Cli, OffVariantsOfCgalDataAreRead) {
 
 TEST_F(Cli, InputSizeAndDartLimitsFailFast) {
   auto run_with = [&](const std::string& env, const std::string& args) {
-    const int status = std::system((env + " " + q(GMR_BIN) + " " + args + " >/dev/null 2>" + q(dir / "stderr")).c_str());
+    const int status = std::system((env + " " + q(gmr_bin()) + " " + args + " >/dev/null 2>" + q(dir / "stderr")).c_str());
     return std::make_pair(WEXITSTATUS(status), gmr::io::read_text_file(dir / "stderr"));
   };
   auto [code, err] = run_with("GMR_MAX_DARTS=40", "info " + q(tools_data("cube.off")));

@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 fs::path source_dir() { return gmr::testing::source_path("."); }
+std::string gmr_bin() { return gmr::testing::build_artifact("GMR_BIN"); }
 struct Result {
   int code;
   std::string out, err;
@@ -32,7 +33,7 @@ class CliVerify : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir); }
   Result run(const std::string& args) {
-    const std::string cmd = q(GMR_BIN) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") + " </dev/null";
+    const std::string cmd = q(gmr_bin()) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") + " </dev/null";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, gmr::io::read_text_file(dir / "stdout"),
             gmr::io::read_text_file(dir / "stderr")};
@@ -96,7 +97,7 @@ TEST_F(CliVerify, ValidateConditionThesisExits0) {
 }
 
 TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
-  const Result r = run(std::string("validate-condition --plugin ") + q(GMR_CRASHING_PLUGIN) + " --labels 0 --max-nodes 2");
+  const Result r = run(std::string("validate-condition --plugin ") + q(gmr::testing::build_artifact("GMR_PLUGIN_DIR") + "/libcrashing_condition.so") + " --labels 0 --max-nodes 2");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("crashing_condition"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("while evaluating rule rule"), std::string::npos) << r.err;

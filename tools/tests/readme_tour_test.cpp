@@ -51,7 +51,7 @@ TEST_F(Cli, ReadmeTourRunsAsWritten) {
     if (entry.is_directory() && entry.path().filename().string()[0] != '.' &&
         entry.path().filename() != "build" && entry.path().filename() != "out")
       fs::create_directory_symlink(entry.path(), dir / entry.path().filename());
-  const std::string path = fs::path(GMR_BIN).parent_path().string();
+  const std::string path = fs::path(gmr_bin()).parent_path().string();
   for (const TourLine& t : lines) {
     const std::string cmd = "cd " + q(dir) + " && PATH=" + q(path) + ":\"$PATH\" " + t.command + " >" +
                             q(dir / "stdout") + " 2>" + q(dir / "stderr");

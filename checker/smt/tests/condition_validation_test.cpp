@@ -12,6 +12,7 @@
 #include "checker/smt/condition_validation.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "model/core/error.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::smt;
@@ -37,7 +38,7 @@ ValidationReport run(const std::string& name, int n, MapKind kind, std::vector<i
 
 size_t nodes(const Rule& r) { return r.left().num_nodes() + r.added_nodes().size(); }
 
-std::string plugin(const std::string& stem) { return std::string(GMR_PLUGIN_DIR) + "/lib" + stem + ".so"; }
+std::string plugin(const std::string& stem) { return gmr::testing::build_artifact("GMR_PLUGIN_DIR") + "/lib" + stem + ".so"; }
 }  // namespace
 
 TEST(ConditionValidation, ThesisConjunctionIsCheckRule) {
