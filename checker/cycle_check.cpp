@@ -157,15 +157,15 @@ bool on_alternating_cycle(const DGraph& g, ArcId a, int i, int j) {
   return walk(e.tgt, e.label == i ? j : i, 1);
 }
 
-std::vector<OptimalPath> optimal_paths(const Rule& r, bool right, int i, int j) {
-  const DGraph& g = r.side(right);
+std::vector<OptimalPath> optimal_paths(const Rule& r, Side side, int i, int j) {
+  const DGraph& g = r.side(side);
   if (!combinatorial_on(g, i, j))
     throw Error(ErrorCode::Usage, "optimal paths need a side with at most one i- and j-arc per node",
-                right ? "right" : "left");
-  const ElemStatus changed = right ? ElemStatus::Added : ElemStatus::Deleted;
+                side == Side::R ? "right" : "left");
+  const ElemStatus changed = side == Side::R ? ElemStatus::Added : ElemStatus::Deleted;
   std::vector<bool> in(g.num_arc_slots(), false);
   for (ArcId a = 0; a < g.num_arc_slots(); ++a)
-    in[a] = g.arc_alive(a) && (g.arc(a).label == i || g.arc(a).label == j) && r.arc_status(right, a) == changed;
+    in[a] = g.arc_alive(a) && (g.arc(a).label == i || g.arc(a).label == j) && r.arc_status(side, a) == changed;
   auto other = [&](int l) { return l == i ? j : i; };
   auto succ = [&](ArcId a) -> ArcId {
     for (ArcId b : g.out_arcs(g.arc(a).tgt))
@@ -223,7 +223,8 @@ bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, 
                              int i, int j, std::vector<Diagnostic>& out) {
   bool ok = true;
   const DGraph &L = r.left(), &R = r.right();
-  for (bool right : {false, true}) {
+  for (Side side : {Side::L, Side::R}) {
+    const bool right = side == Side::R;
     const auto& mine = right ? PR : PL;
     const auto& theirs = right ? PL : PR;
     const DGraph& g = right ? R : L;
@@ -238,13 +239,13 @@ bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, 
                    .condition = "C",
                    .i = i,
                    .j = j,
-                   .side = graph::side_of(right),
+                   .side = side,
                    .path = path_names(g, p)};
       d.message = "the (" + lbl(i) + "," + lbl(j) + ")-optimal path " + g.name(p.source) + " ~" + word_text(p.word) + "~> " +
-                  g.name(p.target) + " of " + (right ? "R" : "L") + " has " + std::to_string(partners) +
-                  " coherent optimal paths in " + (right ? "L" : "R") + "; exactly one is required (Defs. 39, 40.1)";
+                  g.name(p.target) + " of " + to_string(side) + " has " + std::to_string(partners) +
+                  " coherent optimal paths in " + to_string(other(side)) + "; exactly one is required (Defs. 39, 40.1)";
       d.nodes = {g.name(p.source), g.name(p.target)};
-      for (ArcId a : p.arcs) d.arcs.push_back(r.arc_str(right, a));
+      for (ArcId a : p.arcs) d.arcs.push_back(r.arc_str(side, a));
       out.push_back(std::move(d));
     }
   }
@@ -277,7 +278,7 @@ bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& 
                    "-arc in R is neither on an " + lbl(i) + lbl(j) + lbl(i) + lbl(j) + "-cycle nor on an (" + lbl(i) + "," +
                    lbl(j) + ")-optimal path (Def. 40.2)";
       for (ArcId a : R.out_arcs(w))
-        if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(true, a));
+        if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(Side::R, a));
       out.push_back(std::move(dg));
     }
   }
@@ -289,7 +290,7 @@ bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& 
       dg.message = "added node " + R.name(w) + " is not the source of a " + lbl(d) + "-arc on an " + lbl(i) + lbl(j) + lbl(i) +
                    lbl(j) + "-cycle or on an (" + lbl(i) + "," + lbl(j) + ")-optimal path of R (Def. 40.3)";
       for (ArcId a : R.out_arcs(w))
-        if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(true, a));
+        if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(Side::R, a));
       out.push_back(std::move(dg));
     }
   }
@@ -316,7 +317,7 @@ bool check_cycle_as_written(const Rule& r, int i, int j, std::vector<Diagnostic>
                        "-arcs on one side (the rule fails Def. 35 or I_r)"});
     return true;
   }
-  const auto PL = optimal_paths(r, false, i, j), PR = optimal_paths(r, true, i, j);
+  const auto PL = optimal_paths(r, Side::L, i, j), PR = optimal_paths(r, Side::R, i, j);
   const bool coherent = check_coherent_partners(r, PL, PR, i, j, out);
   const bool covered = check_rewired_nodes_covered(r, PR, i, j, out);
   return coherent && covered;

@@ -1,5 +1,7 @@
 #include "checker/diagnostic.hpp"
 
+#include <algorithm>
+
 namespace gmr::checker {
 
 const char* to_string(Severity s) {
@@ -26,10 +28,16 @@ std::string Diagnostic::condition_str() const {
 
 std::string Diagnostic::side_str() const { return side ? to_string(*side) : ""; }
 
-bool CheckReport::ok() const {
-  for (const auto& d : diagnostics)
-    if (d.severity == Severity::Error) return false;
-  return true;
+bool CheckReport::ok() const { return errors() == 0; }
+
+size_t CheckReport::errors() const {
+  return static_cast<size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                           [](const Diagnostic& d) { return d.severity == Severity::Error; }));
+}
+
+size_t CheckReport::warnings() const {
+  return static_cast<size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                           [](const Diagnostic& d) { return d.severity == Severity::Warning; }));
 }
 
 bool CheckReport::holds(const std::string& condition) const {
@@ -59,8 +67,17 @@ std::string to_text(const Diagnostic& d) {
   return s;
 }
 
-std::string to_text(const CheckReport& r) {
-  std::string s = "rule" + (r.rule_name.empty() ? std::string() : " " + r.rule_name) + " (" + to_string(r.kind) + ", n=" +
+// One line of a scheme report: "error C-word [C(0,2)] L a,b arc a -1- b: message".
+static std::string scheme_line(const Diagnostic& d) {
+  std::string s = std::string(to_string(d.severity)) + " " + d.code + " [" + d.condition_str() + "]";
+  if (d.side) s += std::string(" ") + to_string(*d.side);
+  if (!d.nodes.empty()) s += " " + join(d.nodes, ",");
+  for (const auto& a : d.arcs) s += " arc " + a;
+  return s + ": " + d.message;
+}
+
+static std::string rule_text(const CheckReport& r) {
+  std::string s = "rule" + (r.rule.empty() ? std::string() : " " + r.rule) + " (" + to_string(r.kind) + ", n=" +
                   std::to_string(r.n) + "): " + (r.ok() ? "all conditions hold" : "some conditions fail") + "\n";
   s += "conditions:";
   for (const auto& [c, h] : r.conditions) s += " " + c + (h ? "=ok" : "=FAIL");
@@ -68,6 +85,19 @@ std::string to_text(const CheckReport& r) {
   for (const auto& d : r.diagnostics) s += to_text(d) + "\n";
   return s;
 }
+
+static std::string scheme_text(const CheckReport& r) {
+  std::string s = "rule " + (r.rule.empty() ? std::string("(unnamed)") : r.rule) + ": " +
+                  (r.ok() ? "accepted" : "rejected") + " (" + std::to_string(r.errors()) + " error(s), " +
+                  std::to_string(r.warnings()) + " warning(s))\n";
+  s += "  conditions:";
+  for (const auto& [c, ok] : r.conditions) s += " " + c + (ok ? "=ok" : "=FAIL");
+  s += "\n";
+  for (const auto& d : r.diagnostics) s += "  " + scheme_line(d) + "\n";
+  return s;
+}
+
+std::string to_text(const CheckReport& r) { return r.subject == CheckSubject::Rule ? rule_text(r) : scheme_text(r); }
 
 nlohmann::ordered_json to_json(const Diagnostic& d) {
   nlohmann::ordered_json j;
@@ -96,10 +126,18 @@ nlohmann::ordered_json check_document(const char* subject, bool ok) {
 }
 
 nlohmann::ordered_json to_json(const CheckReport& r) {
-  nlohmann::ordered_json j = check_document("rule", r.ok());
-  if (!r.rule_name.empty()) j["rule"] = r.rule_name;
-  j["map"] = r.kind == MapKind::OMap ? "omap" : "gmap";
-  j["n"] = r.n;
+  const bool scheme = r.subject == CheckSubject::Scheme;
+  nlohmann::ordered_json j = check_document(scheme ? "scheme" : "rule", r.ok());
+  if (scheme) {
+    j["rule"] = r.rule;
+    j["verdict"] = r.ok() ? "accepted" : "rejected";
+    j["errors"] = r.errors();
+    j["warnings"] = r.warnings();
+  } else {
+    if (!r.rule.empty()) j["rule"] = r.rule;
+    j["map"] = r.kind == MapKind::OMap ? "omap" : "gmap";
+    j["n"] = r.n;
+  }
   j["conditions"] = nlohmann::ordered_json::object();
   for (const auto& [c, h] : r.conditions) j["conditions"][c] = h;
   j["diagnostics"] = nlohmann::ordered_json::array();

@@ -74,13 +74,23 @@ struct Diagnostic {
   std::string side_str() const;       // "L", "R" or ""
 };
 
+// What a report is about: a concrete rule (check_rule, rule_check.hpp) or a rule scheme
+// (check_scheme, scheme_checker.hpp). Both checkers fill the same report; its text and JSON follow
+// the subject (docs/check-format.md).
+enum class CheckSubject : uint8_t { Rule, Scheme };
+
 struct CheckReport {
-  std::string rule_name;
-  MapKind kind = MapKind::GMap;
+  CheckSubject subject = CheckSubject::Rule;
+  std::string rule;               // the rule's name
+  MapKind kind = MapKind::GMap;   // concrete rules: the kind and dimension of the maps
   int n = 0;
   std::vector<Diagnostic> diagnostics;
-  std::vector<std::pair<std::string, bool>> conditions;  // in checking order: "combinatorial", "I(0)", ...
-  bool ok() const;
+  // In checking order. Concrete rules: "combinatorial", "I(0)", ..., "O(0)", ..., "C(0,2)", ...;
+  // schemes: "structure", "hooks", "I(0)", "O(0)", "C(0,2)", ...
+  std::vector<std::pair<std::string, bool>> conditions;
+  bool ok() const;  // no error
+  size_t errors() const;
+  size_t warnings() const;
   bool holds(const std::string& condition) const;  // false if absent
   size_t count(const std::string& code) const;
 };

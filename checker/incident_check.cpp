@@ -17,9 +17,9 @@ std::vector<ArcId> arcs_with(const DGraph& g, const std::vector<ArcId>& ids, int
   return out;
 }
 
-std::vector<std::string> arc_strs(const Rule& r, bool right, const std::vector<ArcId>& ids) {
+std::vector<std::string> arc_strs(const Rule& r, Side side, const std::vector<ArcId>& ids) {
   std::vector<std::string> s;
-  for (ArcId a : ids) s.push_back(r.arc_str(right, a));
+  for (ArcId a : ids) s.push_back(r.arc_str(side, a));
   return s;
 }
 
@@ -42,8 +42,8 @@ bool weak(const Rule& r, int i, std::vector<Diagnostic>& out, const char* cond) 
       d.message = "preserved node " + L.name(v) + " has " + count_str(l.size(), what, i) + " in L but " +
                   count_str(rr.size(), what, i) + " in R (Def. 33.1)";
       d.nodes = {L.name(v)};
-      d.arcs = arc_strs(r, false, l);
-      for (auto& s : arc_strs(r, true, rr)) d.arcs.push_back(s);
+      d.arcs = arc_strs(r, Side::L, l);
+      for (auto& s : arc_strs(r, Side::R, rr)) d.arcs.push_back(s);
       out.push_back(std::move(d));
     }
   }
@@ -55,8 +55,8 @@ bool weak(const Rule& r, int i, std::vector<Diagnostic>& out, const char* cond) 
     d.message = "added node " + R.name(w) + " is the source of " + count_str(o.size(), "outgoing", i) + " and the target of " +
                 count_str(in.size(), "incoming", i) + " in R; exactly one each is required (Def. 33.2)";
     d.nodes = {R.name(w)};
-    d.arcs = arc_strs(r, true, o);
-    for (auto& s : arc_strs(r, true, in))
+    d.arcs = arc_strs(r, Side::R, o);
+    for (auto& s : arc_strs(r, Side::R, in))
       if (std::find(d.arcs.begin(), d.arcs.end(), s) == d.arcs.end()) d.arcs.push_back(s);
     out.push_back(std::move(d));
   }
@@ -79,7 +79,7 @@ bool check_combinatorial(const Rule& r, std::vector<Diagnostic>& out) {
         d.message = "node " + L.name(v) + " is the " + (dir ? "target" : "source") + " of " + std::to_string(arcs.size()) +
                     " " + std::to_string(i) + "-arcs in L; no injective match into a combinatorial graph exists (Def. 35)";
         d.nodes = {L.name(v)};
-        d.arcs = arc_strs(r, false, arcs);
+        d.arcs = arc_strs(r, Side::L, arcs);
         out.push_back(std::move(d));
       }
     }
@@ -101,8 +101,8 @@ bool check_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) {
                 count_str(in.size(), "incoming", i) +
                 " in L; exactly one each is required, else a match leaves dangling arcs (Def. 34, Fact 1)";
     d.nodes = {L.name(v)};
-    d.arcs = arc_strs(r, false, o);
-    for (auto& s : arc_strs(r, false, in))
+    d.arcs = arc_strs(r, Side::L, o);
+    for (auto& s : arc_strs(r, Side::L, in))
       if (std::find(d.arcs.begin(), d.arcs.end(), s) == d.arcs.end()) d.arcs.push_back(s);
     out.push_back(std::move(d));
   }

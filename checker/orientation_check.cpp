@@ -8,34 +8,33 @@ using namespace gmr::rewrite;
 
 bool check_non_orientation(const Rule& r, int i, std::vector<Diagnostic>& out) {
   bool ok = true;
-  for (bool right : {false, true}) {
-    const DGraph& g = r.side(right);
-    const ElemStatus changed = right ? ElemStatus::Added : ElemStatus::Deleted;
-    const char* side = right ? "R" : "L";
+  for (Side side : {Side::L, Side::R}) {
+    const DGraph& g = r.side(side);
+    const ElemStatus changed = side == Side::R ? ElemStatus::Added : ElemStatus::Deleted;
     for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
-      if (!g.arc_alive(a) || g.arc(a).label != i || r.arc_status(right, a) != changed) continue;
+      if (!g.arc_alive(a) || g.arc(a).label != i || r.arc_status(side, a) != changed) continue;
       const Arc& e = g.arc(a);
       std::vector<ArcId> rev;
       for (ArcId b : g.out_arcs(e.tgt))
         if (g.arc(b).label == i && g.arc(b).tgt == e.src) rev.push_back(b);
       Diagnostic d{.condition = "O",
                    .i = i,
-                   .side = graph::side_of(right),
+                   .side = side,
                    .nodes = {g.name(e.src), g.name(e.tgt)},
-                   .arcs = {r.arc_str(right, a)}};
-      const std::string what = std::string(to_string(changed)) + " arc " + r.arc_str(right, a);
+                   .arcs = {r.arc_str(side, a)}};
+      const std::string what = std::string(to_string(changed)) + " arc " + r.arc_str(side, a);
       if (rev.empty()) {
         d.code = "O-no-reverse";
-        d.message = "the " + what + " has no reverse " + std::to_string(i) + "-arc in " + side + " (Def. 37)";
+        d.message = "the " + what + " has no reverse " + std::to_string(i) + "-arc in " + to_string(side) + " (Def. 37)";
       } else if (rev.size() > 1) {
         d.code = "O-several-reverses";
         d.message = "the " + what + " has " + std::to_string(rev.size()) + " reverse arcs; a unique one is required (Def. 37)";
-        for (ArcId b : rev) d.arcs.push_back(r.arc_str(right, b));
-      } else if (r.arc_status(right, rev[0]) != changed) {
+        for (ArcId b : rev) d.arcs.push_back(r.arc_str(side, b));
+      } else if (r.arc_status(side, rev[0]) != changed) {
         d.code = "O-status-mismatch";
-        d.message = "the " + what + " has the " + to_string(r.arc_status(right, rev[0])) + " reverse " +
-                    r.arc_str(right, rev[0]) + "; both must be " + to_string(changed) + " (Def. 37)";
-        d.arcs.push_back(r.arc_str(right, rev[0]));
+        d.message = "the " + what + " has the " + to_string(r.arc_status(side, rev[0])) + " reverse " +
+                    r.arc_str(side, rev[0]) + "; both must be " + to_string(changed) + " (Def. 37)";
+        d.arcs.push_back(r.arc_str(side, rev[0]));
       } else {
         continue;
       }

@@ -6,7 +6,7 @@ using namespace gmr::rewrite;
 
 CheckReport check_rule(const Rule& r, bool model_completion) {
   CheckReport rep;
-  rep.rule_name = r.name();
+  rep.rule = r.name();
   rep.kind = r.kind();
   rep.n = r.dimension();
   auto& d = rep.diagnostics;

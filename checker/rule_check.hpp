@@ -74,7 +74,7 @@ struct OptimalPath {
 };
 // (i,j)-optimal paths of L (right = false) or R of r, which must be combinatorial on i and j on
 // that side (else Error(Usage)). r is used as given (complete it first).
-std::vector<OptimalPath> optimal_paths(const Rule& r, bool right, int i, int j);
+std::vector<OptimalPath> optimal_paths(const Rule& r, graph::Side side, int i, int j);
 // True iff the arc lies on an ijij-cycle of its side (any rotation).
 bool on_alternating_cycle(const DGraph& g, ArcId a, int i, int j);
 

@@ -12,24 +12,6 @@ namespace gmr::checker {
 using namespace gmr::scheme;
 using words::RewritingSystem;
 
-bool SchemeCheckReport::ok() const { return errors() == 0; }
-size_t SchemeCheckReport::errors() const {
-  return std::count_if(diagnostics.begin(), diagnostics.end(),
-                       [](const auto& d) { return d.severity == Severity::Error; });
-}
-size_t SchemeCheckReport::warnings() const {
-  return std::count_if(diagnostics.begin(), diagnostics.end(),
-                       [](const auto& d) { return d.severity == Severity::Warning; });
-}
-size_t SchemeCheckReport::count(const std::string& code) const {
-  return std::count_if(diagnostics.begin(), diagnostics.end(), [&](const auto& d) { return d.code == code; });
-}
-bool SchemeCheckReport::holds(const std::string& c) const {
-  for (const auto& [name, ok] : conditions)
-    if (name == c) return ok;
-  return false;
-}
-
 std::vector<int> gmap_word_normal_form(int n, const std::vector<int>& w) {
   std::vector<int> out;
   for (const words::Letter& l : RewritingSystem::gmap(n).normal_form(words::word_of_dims(w))) out.push_back(l.dim);
@@ -47,9 +29,13 @@ struct CoreArc {
 
 class Checker {
  public:
-  Checker(const RuleScheme& s, const SchemeCheckOptions& opt) : s_(s), opt_(opt) { rep_.rule = s.name; }
+  Checker(const RuleScheme& s, const SchemeCheckOptions& opt) : s_(s), opt_(opt) {
+    rep_.subject = CheckSubject::Scheme;
+    rep_.rule = s.name;
+    rep_.n = s.dimension;
+  }
 
-  SchemeCheckReport run() {
+  CheckReport run() {
     const bool structure_ok = structure();
     rep_.conditions.emplace_back("structure", structure_ok);
     rep_.conditions.emplace_back("hooks", hooks());
@@ -83,8 +69,7 @@ class Checker {
                                           .message = std::move(msg)});
     return rep_.diagnostics.back();
   }
-  const GraphScheme& side(bool right) const { return right ? s_.right : s_.left; }
-  static const char* tag(bool right) { return right ? "R" : "L"; }
+  const GraphScheme& side(Side r) const { return r == Side::R ? s_.right : s_.left; }
 
   // ---------------------------------------------------------------------------------------------
   bool structure() {
@@ -100,25 +85,25 @@ class Checker {
               " without `_`");
       ok = false;
     }
-    for (bool r : {false, true}) {
+    for (Side r : graph::kSides) {
       const GraphScheme& g = side(r);
       std::map<std::string, int> names;
       for (uint32_t v = 0; v < g.size(); ++v) {
         const SchemeNode& nd = g.nodes[v];
         if (++names[nd.name] == 2) {
-          add("S-duplicate-name", Severity::Error, "structure", graph::side_of(r), {nd.name},
-              "two nodes named " + nd.name + " in " + tag(r));
+          add("S-duplicate-name", Severity::Error, "structure", r, {nd.name},
+              "two nodes named " + nd.name + " in " + to_string(r));
           ok = false;
         }
         if (nd.label.size() != s_.orbit.size()) {
-          add("S-label-arity", Severity::Error, "structure", graph::side_of(r), {nd.name},
+          add("S-label-arity", Severity::Error, "structure", r, {nd.name},
               "label " + nd.label.str() + " has arity " + std::to_string(nd.label.size()) + ", the orbit type " +
                   s_.orbit.str() + " has " + std::to_string(s_.orbit.size()));
           ok = false;
         }
         for (int x : nd.label.dims())
           if (x != OrbitType::kHole && (x < 0 || x > n)) {
-            add("S-dim-range", Severity::Error, "structure", graph::side_of(r), {nd.name},
+            add("S-dim-range", Severity::Error, "structure", r, {nd.name},
                 "label " + nd.label.str() + " uses dimension " + std::to_string(x) + " outside 0.." +
                     std::to_string(n));
             ok = false;
@@ -126,12 +111,12 @@ class Checker {
       }
       for (const auto& e : g.arcs) {
         if (e.a >= g.size() || e.b >= g.size()) {
-          add("S-dim-range", Severity::Error, "structure", graph::side_of(r), {}, "arc end out of range");
+          add("S-dim-range", Severity::Error, "structure", r, {}, "arc end out of range");
           ok = false;
           continue;
         }
         if (e.dim < 0 || e.dim > n) {
-          auto& d = add("S-dim-range", Severity::Error, "structure", graph::side_of(r),
+          auto& d = add("S-dim-range", Severity::Error, "structure", r,
                         {g.nodes[e.a].name, g.nodes[e.b].name},
                         "arc dimension " + std::to_string(e.dim) + " outside 0.." + std::to_string(n));
           d.arcs = {arc_text(g, e)};
@@ -143,10 +128,10 @@ class Checker {
         for (int d = 0; d <= n; ++d) {
           const size_t c = g.count_arcs(v, d);
           if (c > 1) {
-            add("S-dim-twice", Severity::Error, "structure", graph::side_of(r), {g.nodes[v].name},
+            add("S-dim-twice", Severity::Error, "structure", r, {g.nodes[v].name},
                 "dimension " + std::to_string(d) + " is used " + std::to_string(c) + " times at " +
                     node_label_text(g.nodes[v]) + " (label positions and explicit arcs)" +
-                    (r ? "" : ": no match into a G-map exists (E1)"));
+                    (r == Side::R ? "" : ": no match into a G-map exists (E1)"));
             ok = false;
           }
         }
@@ -254,7 +239,7 @@ class Checker {
 
   // ---------------------------------------------------------------------------------------------
   // (i,j)-core of a side.
-  std::vector<std::array<CoreArc, 2>> core(bool r, int i, int j) const {
+  std::vector<std::array<CoreArc, 2>> core(Side r, int i, int j) const {
     const GraphScheme& g = side(r);
     std::vector<std::array<CoreArc, 2>> out(g.size());
     const int lab[2] = {i, j};
@@ -281,21 +266,21 @@ class Checker {
     std::vector<Path> paths;
   };
 
-  // Is `this_arc` (an out-arc on side this_right, towards the node named tgt_name) preserved, i.e.
+  // Is `this_arc` (an out-arc on side `this_side`, towards the node named tgt_name) preserved, i.e.
   // is `other_arc` (the same node's out-arc with the same label on the other side) the same arc:
   // same letter and a target of the same name, the target name being read on the other side.
-  bool same_arc(const CoreArc& other_arc, const std::string& tgt_name, const CoreArc& this_arc, bool this_right) const {
+  bool same_arc(const CoreArc& other_arc, const std::string& tgt_name, const CoreArc& this_arc, Side this_side) const {
     return other_arc.exists && this_arc.exists && other_arc.letter == this_arc.letter &&
-           side(!this_right).nodes[other_arc.target].name == tgt_name;
+           side(other(this_side)).nodes[other_arc.target].name == tgt_name;
   }
 
   // C_S(i,j) is evaluated on simple (i,j)-cores only: a node with two i- or j-arcs (already an
   // S-dim-twice error) is reported as C-skipped. Returns true when skipped.
   bool has_branching(int i, int j, const std::string& cond) {
-    for (bool r : {false, true})
+    for (Side r : graph::kSides)
       for (uint32_t v = 0; v < side(r).size(); ++v)
         if (side(r).count_arcs(v, i) > 1 || side(r).count_arcs(v, j) > 1) {
-          add("C-skipped", Severity::Note, cond, graph::side_of(r), {side(r).nodes[v].name},
+          add("C-skipped", Severity::Note, cond, r, {side(r).nodes[v].name},
               cond + " not evaluated: a node has two " + std::to_string(i) + "- or " + std::to_string(j) + "-arcs");
           return true;
         }
@@ -306,19 +291,20 @@ class Checker {
   // arc is preserved iff the same node has an arc with the same label, letter and target name on the
   // other side (Def. 46).
   void cores_and_changed_arcs(SideData (&sd)[2], int i, int j) const {
-    for (int r = 0; r < 2; ++r) sd[r].core = core(r == 1, i, j);
-    for (int r = 0; r < 2; ++r) {
-      const GraphScheme& g = side(r == 1);
-      sd[r].changed.assign(g.size(), {false, false});
-      sd[r].on_cycle.assign(g.size(), {false, false});
-      sd[r].on_path.assign(g.size(), {false, false});
+    for (Side r : graph::kSides) sd[index_of(r)].core = core(r, i, j);
+    for (Side r : graph::kSides) {
+      const GraphScheme& g = side(r);
+      sd[index_of(r)].changed.assign(g.size(), {false, false});
+      sd[index_of(r)].on_cycle.assign(g.size(), {false, false});
+      sd[index_of(r)].on_path.assign(g.size(), {false, false});
       for (uint32_t v = 0; v < g.size(); ++v) {
-        auto other = r == 0 ? s_.right_of(v) : s_.left_of(v);
+        const auto counterpart = r == Side::L ? s_.right_of(v) : s_.left_of(v);
         for (int k = 0; k < 2; ++k) {
-          const CoreArc& a = sd[r].core[v][k];
+          const CoreArc& a = sd[index_of(r)].core[v][k];
           if (!a.exists) continue;
-          const bool preserved = other && same_arc(sd[1 - r].core[*other][k], g.nodes[a.target].name, a, r == 1);
-          sd[r].changed[v][k] = !preserved;
+          const bool preserved =
+              counterpart && same_arc(sd[index_of(other(r))].core[*counterpart][k], g.nodes[a.target].name, a, r);
+          sd[index_of(r)].changed[v][k] = !preserved;
         }
       }
     }
@@ -330,9 +316,9 @@ class Checker {
     const int lab[2] = {i, j};
     bool ok = true;
     std::set<std::string> reported;
-    for (int r = 0; r < 2; ++r) {
-      const GraphScheme& g = side(r == 1);
-      const auto& c = sd[r].core;
+    for (Side r : graph::kSides) {
+      const GraphScheme& g = side(r);
+      const auto& c = sd[index_of(r)].core;
       for (uint32_t v = 0; v < g.size(); ++v)
         for (int k0 = 0; k0 < 2; ++k0) {
           // Walk alternately from v, first label k0, until return at an even step or dead end.
@@ -359,8 +345,8 @@ class Checker {
           if (steps != 2 && steps != 4) {
             std::vector<std::string> key = names;
             std::sort(key.begin(), key.end());
-            if (reported.insert("len" + std::to_string(r) + join(key)).second) {
-              auto& d = add("C-cycle-length", Severity::Error, cond, graph::side_of(r == 1), names,
+            if (reported.insert("len" + std::string(to_string(r)) + join(key)).second) {
+              auto& d = add("C-cycle-length", Severity::Error, cond, r, names,
                             "alternating (" + std::to_string(i) + "," + std::to_string(j) + ")-cycle of length " +
                                 std::to_string(steps) + " through " + join(names) +
                                 " (E10): its instances cannot be ijij-cycles");
@@ -374,7 +360,7 @@ class Checker {
           x = v;
           k = k0;
           for (int t = 0; t < 4; ++t) {
-            sd[r].on_cycle[x][k] = true;
+            sd[index_of(r)].on_cycle[x][k] = true;
             if (c[x][k].letter >= 0) word.push_back(c[x][k].letter);
             x = c[x][k].target;
             k = 1 - k;
@@ -382,8 +368,8 @@ class Checker {
           if (!gmap_word_normal_form(s_.dimension, word).empty()) {
             std::vector<std::string> key = names;
             std::sort(key.begin(), key.end());
-            if (reported.insert("word" + std::to_string(r) + join(key)).second) {
-              auto& d = add("C-cycle-word", Severity::Error, cond, graph::side_of(r == 1), names,
+            if (reported.insert("word" + std::string(to_string(r)) + join(key)).second) {
+              auto& d = add("C-cycle-word", Severity::Error, cond, r, names,
                             "the (" + std::to_string(lab[k0]) + "," + std::to_string(lab[1 - k0]) +
                                 ")-cycle through " + join(names) + " reads the word " + word_text(word) +
                                 ", whose normal form " + word_text(gmap_word_normal_form(s_.dimension, word)) +
@@ -401,9 +387,9 @@ class Checker {
   // overlapping, not made of cycle arcs only. Marks the arcs on optimal paths.
   void collect_optimal_paths(SideData (&sd)[2], int i, int j) const {
     const int lab[2] = {i, j};
-    for (int r = 0; r < 2; ++r) {
-      const auto& c = sd[r].core;
-      const auto& ch = sd[r].changed;
+    for (Side r : graph::kSides) {
+      const auto& c = sd[index_of(r)].core;
+      const auto& ch = sd[index_of(r)].changed;
       const size_t nv = c.size();
       auto has_pred = [&](uint32_t v, int k) {
         // in-arc of v with the other label = reverse of the out-arc (v, 1-k)
@@ -430,10 +416,10 @@ class Checker {
           }
           p.tgt = x;
           bool all_on_cycles = true;
-          for (auto [y, l] : p.arcs) all_on_cycles = all_on_cycles && sd[r].on_cycle[y][l];
+          for (auto [y, l] : p.arcs) all_on_cycles = all_on_cycles && sd[index_of(r)].on_cycle[y][l];
           if (all_on_cycles) continue;
-          for (auto [y, l] : p.arcs) sd[r].on_path[y][l] = true;
-          sd[r].paths.push_back(std::move(p));
+          for (auto [y, l] : p.arcs) sd[index_of(r)].on_path[y][l] = true;
+          sd[index_of(r)].paths.push_back(std::move(p));
         }
     }
   }
@@ -442,32 +428,32 @@ class Checker {
   // on the other side (E8) and their W-words are congruent (E9).
   bool check_strong_coherence(const SideData (&sd)[2], int i, int j, const std::string& cond) {
     bool ok = true;
-    for (int r = 0; r < 2; ++r) {
-      const GraphScheme& g = side(r == 1);
-      const GraphScheme& h = side(r == 0);
-      for (const auto& p : sd[r].paths) {
+    for (Side r : graph::kSides) {
+      const GraphScheme& g = side(r);
+      const GraphScheme& h = side(other(r));
+      for (const auto& p : sd[index_of(r)].paths) {
         std::vector<const SideData::Path*> partners;
-        for (const auto& q : sd[1 - r].paths)
+        for (const auto& q : sd[index_of(other(r))].paths)
           if (h.nodes[q.src].name == g.nodes[p.src].name && h.nodes[q.tgt].name == g.nodes[p.tgt].name &&
               q.labels == p.labels)
             partners.push_back(&q);
         std::vector<std::string> names{g.nodes[p.src].name};
-        for (size_t t = 0; t < p.arcs.size(); ++t) names.push_back(g.nodes[c_target(sd[r], p.arcs[t])].name);
+        for (size_t t = 0; t < p.arcs.size(); ++t) names.push_back(g.nodes[c_target(sd[index_of(r)], p.arcs[t])].name);
         std::string lw;
         for (int l : p.labels) lw += std::to_string(l);
         const std::string what = "the (" + std::to_string(i) + "," + std::to_string(j) + ")-optimal path " +
-                                 join(names) + " of " + tag(r == 1) + " (labels " + lw + ")";
+                                 join(names) + " of " + to_string(r) + " (labels " + lw + ")";
         if (partners.size() != 1) {
-          auto& d = add(partners.empty() ? "C-incoherent" : "C-ambiguous", Severity::Error, cond, graph::side_of(r == 1),
+          auto& d = add(partners.empty() ? "C-incoherent" : "C-ambiguous", Severity::Error, cond, r,
                         {g.nodes[p.src].name, g.nodes[p.tgt].name},
-                        what + (partners.empty() ? " has no coherent optimal path in " + std::string(tag(r == 0))
+                        what + (partners.empty() ? " has no coherent optimal path in " + std::string(to_string(other(r)))
                                                  : " has " + std::to_string(partners.size()) +
-                                                       " coherent optimal paths in " + tag(r == 0)) +
+                                                       " coherent optimal paths in " + to_string(other(r))) +
                             " (E8): some instance of an ijij-cycle through it is broken");
           d.path = names;
           ok = false;
         } else if (gmap_word_normal_form(s_.dimension, p.word) != gmap_word_normal_form(s_.dimension, partners[0]->word)) {
-          auto& d = add("C-word", Severity::Error, cond, graph::side_of(r == 1), {g.nodes[p.src].name, g.nodes[p.tgt].name},
+          auto& d = add("C-word", Severity::Error, cond, r, {g.nodes[p.src].name, g.nodes[p.tgt].name},
                         what + " reads the word " + word_text(p.word) + ", its partner " + word_text(partners[0]->word) +
                             ": not congruent (E9), the instances end at different darts");
           d.path = names;
@@ -535,51 +521,11 @@ class Checker {
 
   const RuleScheme& s_;
   SchemeCheckOptions opt_;
-  SchemeCheckReport rep_;
+  CheckReport rep_;
 };
 
 }  // namespace
 
-SchemeCheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt) { return Checker(s, opt).run(); }
-
-static std::string join_names(const std::vector<std::string>& v) {
-  std::string s;
-  for (size_t k = 0; k < v.size(); ++k) s += (k ? "," : "") + v[k];
-  return s;
-}
-
-// One line of the scheme report: "error C-word [C(0,2)] L a,b arc a -1- b: message".
-static std::string scheme_line(const Diagnostic& d) {
-  std::string s = std::string(to_string(d.severity)) + " " + d.code + " [" + d.condition_str() + "]";
-  if (d.side) s += std::string(" ") + to_string(*d.side);
-  if (!d.nodes.empty()) s += " " + join_names(d.nodes);
-  for (const auto& a : d.arcs) s += " arc " + a;
-  return s + ": " + d.message;
-}
-
-std::string to_text(const SchemeCheckReport& r) {
-  std::string s = "rule " + (r.rule.empty() ? std::string("(unnamed)") : r.rule) + ": " +
-                  (r.ok() ? "accepted" : "rejected") + " (" + std::to_string(r.errors()) + " error(s), " +
-                  std::to_string(r.warnings()) + " warning(s))\n";
-  s += "  conditions:";
-  for (const auto& [c, ok] : r.conditions) s += " " + c + (ok ? "=ok" : "=FAIL");
-  s += "\n";
-  for (const auto& d : r.diagnostics) s += "  " + scheme_line(d) + "\n";
-  return s;
-}
-
-nlohmann::ordered_json to_json(const SchemeCheckReport& r) {
-  nlohmann::ordered_json j = check_document("scheme", r.ok());
-  j["rule"] = r.rule;
-  j["verdict"] = r.ok() ? "accepted" : "rejected";
-  j["errors"] = r.errors();
-  j["warnings"] = r.warnings();
-  nlohmann::ordered_json c = nlohmann::ordered_json::object();
-  for (const auto& [name, ok] : r.conditions) c[name] = ok;
-  j["conditions"] = c;
-  j["diagnostics"] = nlohmann::ordered_json::array();
-  for (const auto& d : r.diagnostics) j["diagnostics"].push_back(to_json(d));
-  return j;
-}
+CheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt) { return Checker(s, opt).run(); }
 
 }  // namespace gmr::checker

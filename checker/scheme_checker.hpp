@@ -67,31 +67,16 @@
 namespace gmr::checker {
 using scheme::RuleScheme;
 
-
-struct SchemeCheckReport {
-  std::string rule;
-  std::vector<Diagnostic> diagnostics;  // condition "structure", "hooks", "I(d)", "C(i,j)"
-  std::vector<std::pair<std::string, bool>> conditions;  // "structure", "hooks", "I(0)", "O(0)", "C(0,2)"
-  bool ok() const;  // no error
-  size_t errors() const;
-  size_t warnings() const;
-  size_t count(const std::string& code) const;
-  bool holds(const std::string& condition) const;
-};
-
 struct SchemeCheckOptions {
   bool algorithm3_strict = false;  // Algorithm 3 literally (see above)
   bool embeddings = true;          // the embedding checks (embedding_check.hpp); false: topology only
 };
 
-SchemeCheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt = {});
+// The report of a scheme (subject Scheme; its text and gmr.check JSON: diagnostic.hpp).
+CheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt = {});
 
 // Normal form of a G-map word of dimension n (letters = dimensions) under R_{N,E} for G-maps
 // (Def. 52: ii -> ε, ji -> ij for j >= i+2): RewritingSystem::gmap(n).normal_form.
 std::vector<int> gmap_word_normal_form(int n, const std::vector<int>& w);
-
-std::string to_text(const SchemeCheckReport& r);
-// A gmr.check document (docs/check-format.md) with subject "scheme".
-nlohmann::ordered_json to_json(const SchemeCheckReport& r);
 
 }  // namespace gmr::checker

@@ -26,7 +26,7 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::inference {
-using checker::SchemeCheckReport;
+using checker::CheckReport;
 using scheme::RuleScheme;
 
 enum class RuleVerdict { Accepted, NoHook, Inconsistent };
@@ -36,7 +36,7 @@ struct InferredRule {
   RuleScheme scheme;
   RuleVerdict verdict = RuleVerdict::Accepted;
   std::string reason;          // empty when accepted
-  SchemeCheckReport check;     // the checker's report (empty for NoHook)
+  CheckReport check;     // the checker's report (empty for NoHook)
   // Darts (origin ids in the before / after map) of each node, indexed like scheme.left/right
   // nodes, darts[b] for orbit dart b.
   std::vector<std::vector<Dart>> left_darts, right_darts;

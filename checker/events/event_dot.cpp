@@ -32,10 +32,10 @@ std::vector<draw::DotHighlight> dot_highlights(const scheme::RuleScheme& s, cons
     // Creations on R only; deletions, splits, merges and modifications on both sides.
     if (e.kind != PatternEventKind::Creation)
       for (uint32_t c : e.left)
-        for (uint32_t m : t.left.nodes[c]) out.push_back({"L", s.left.nodes[m].name, code(e), text, certain});
+        for (uint32_t m : t.left.nodes[c]) out.push_back({graph::Side::L, s.left.nodes[m].name, code(e), text, certain});
     if (e.kind != PatternEventKind::Deletion)
       for (uint32_t c : e.right)
-        for (uint32_t m : t.right.nodes[c]) out.push_back({"R", s.right.nodes[m].name, code(e), text, certain});
+        for (uint32_t m : t.right.nodes[c]) out.push_back({graph::Side::R, s.right.nodes[m].name, code(e), text, certain});
   }
   return out;
 }

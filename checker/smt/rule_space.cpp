@@ -85,9 +85,9 @@ rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, 
 
 std::string rule_text(const rewrite::Rule& r) {
   std::string s;
-  for (bool right : {false, true}) {
-    const DGraph& g = r.side(right);
-    s += right ? " => R {" : "L {";
+  for (graph::Side side : graph::kSides) {
+    const DGraph& g = r.side(side);
+    s += side == graph::Side::R ? " => R {" : "L {";
     for (Node v = 0; v < g.num_nodes(); ++v) s += (v ? " " : "") + g.name(v);
     s += ";";
     for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a)

@@ -41,7 +41,7 @@ TEST(DotOverlay, SchemeDiagnostics) {
   EXPECT_TRUE(dot_highlights(check_scheme(s)).empty());
   // Drop the 1-arc of the added node n2: it breaks incident arcs I_S(1) at n1 and n2.
   s.right.arcs.erase(s.right.arcs.begin() + 1);
-  const SchemeCheckReport rep = check_scheme(s);
+  const CheckReport rep = check_scheme(s);
   ASSERT_FALSE(rep.ok());
   RuleDotOptions opt;
   opt.highlights = dot_highlights(rep);

@@ -21,9 +21,9 @@ std::filesystem::path root() {
   return std::filesystem::path(s ? s : ".");
 }
 
-SchemeCheckReport check_file(const std::filesystem::path& p) { return check_scheme(io::read_scheme_file(p)); }
+CheckReport check_file(const std::filesystem::path& p) { return check_scheme(io::read_scheme_file(p)); }
 
-const Diagnostic* find(const SchemeCheckReport& r, const std::string& code) {
+const Diagnostic* find(const CheckReport& r, const std::string& code) {
   for (const auto& d : r.diagnostics)
     if (d.code == code) return &d;
   return nullptr;
@@ -34,14 +34,14 @@ const Diagnostic* find(const SchemeCheckReport& r, const std::string& code) {
 TEST(EmbeddingCheck, SubdivisionSchemesAreAccepted) {
   for (const char* f : {"quad_subdivision", "loop_subdivision", "sqrt3_subdivision", "doo_sabin_subdivision",
                         "vertex_insertion", "face_triangulation"}) {
-    const SchemeCheckReport r = check_file(root() / "tools/data/rules" / (std::string(f) + ".json"));
+    const CheckReport r = check_file(root() / "tools/data/rules" / (std::string(f) + ".json"));
     EXPECT_TRUE(r.holds("embeddings")) << f;
     EXPECT_TRUE(r.ok()) << f;
   }
 }
 
 TEST(EmbeddingCheck, TwoTermsInOneClass) {
-  const SchemeCheckReport r = check_file(root() / "checker/tests/data/embeddings/edge_point_two_terms.json");
+  const CheckReport r = check_file(root() / "checker/tests/data/embeddings/edge_point_two_terms.json");
   EXPECT_FALSE(r.holds("embeddings"));
   const Diagnostic* d = find(r, "E-orbit-terms");
   ASSERT_NE(d, nullptr);
@@ -49,7 +49,7 @@ TEST(EmbeddingCheck, TwoTermsInOneClass) {
 }
 
 TEST(EmbeddingCheck, AddedOrbitWithoutValue) {
-  const SchemeCheckReport r = check_file(root() / "checker/tests/data/embeddings/face_point_without_value.json");
+  const CheckReport r = check_file(root() / "checker/tests/data/embeddings/face_point_without_value.json");
   const Diagnostic* d = find(r, "E-no-value");
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->nodes, (std::vector<std::string>{"n3"}));
@@ -57,7 +57,7 @@ TEST(EmbeddingCheck, AddedOrbitWithoutValue) {
 }
 
 TEST(EmbeddingCheck, MergedOrbitsWithoutExpression) {
-  const SchemeCheckReport r = check_file(root() / "checker/tests/data/embeddings/sew2_positions.json");
+  const CheckReport r = check_file(root() / "checker/tests/data/embeddings/sew2_positions.json");
   const Diagnostic* d = find(r, "E-merge");
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->nodes, (std::vector<std::string>{"n0", "n1"}));
@@ -74,7 +74,7 @@ TEST(EmbeddingCheck, TypeErrorsNameTheColumn) {
                         "arcs": [{"nodes": ["n0", "n1"], "label": 0}]}})json");
   scheme::RuleScheme bad = s;
   bad.right.nodes[1].expressions.push_back({"position", "n0.position + n0@0.position", {}, {}});
-  const SchemeCheckReport r = check_scheme(bad);
+  const CheckReport r = check_scheme(bad);
   const Diagnostic* d = find(r, "E-expression");
   ASSERT_NE(d, nullptr);
   EXPECT_NE(d->message.find("column 1: the expression is an affine combination of mass 2"), std::string::npos)
@@ -92,7 +92,7 @@ TEST(EmbeddingCheck, UntranslatedJerboaExpressionsAreWarnings) {
   const io::JmeModeler m = io::read_jme_file(root() / "tools/data/jerboa/JerboaTrackingOrbit.jme");
   size_t unsupported = 0, type_errors = 0;
   for (const auto& s : m.rules) {
-    const SchemeCheckReport r = check_scheme(s);
+    const CheckReport r = check_scheme(s);
     unsupported += r.count("E-unsupported");
     type_errors += r.count("E-expression");
   }

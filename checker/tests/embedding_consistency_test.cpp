@@ -58,7 +58,7 @@ TEST(EmbeddingConsistency, AcceptedSchemesGiveConsistentResults) {
     Rng rng(seed);
     scheme::RuleScheme s = random_scheme(rng);
     add_random_expressions(rng, s);
-    const checker::SchemeCheckReport rep = checker::check_scheme(s);
+    const checker::CheckReport rep = checker::check_scheme(s);
     if (!rep.ok() || rep.count("E-merge-instances") > 0) continue;
     ++accepted;
     const scheme::SchemeEngine engine(s);

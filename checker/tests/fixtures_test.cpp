@@ -102,7 +102,7 @@ TEST(Fixtures, F4_Fig318_CycleCondition) {
   // fecb by a preserved 3-arc b-f, which puts it on a 1313-cycle: after completion it is no longer
   // optimal, and C_r(1,3) fails through R's unpaired f-1-c, e-1-b and the rewired c, e.
   bool fecb = false;
-  for (const auto& p : optimal_paths(r, false, 1, 3))
+  for (const auto& p : optimal_paths(r, graph::Side::L, 1, 3))
     if (r.left().name(p.source) == "f" && r.left().name(p.target) == "b" && p.word == std::vector<int>{1, 3, 1}) fecb = true;
   EXPECT_TRUE(fecb) << "the (1,3)-optimal path fecb of Ex. 39";
   std::vector<Diagnostic> d;
@@ -118,7 +118,7 @@ TEST(Fixtures, F4_Fig318_CycleCondition) {
   EXPECT_EQ(rewired, 2u);
   EXPECT_FALSE(I(r, 3));  // as printed: the figure has no 3-loops on c and e
   // Optimal paths of Ex. 39: in L only f-e-h and h-e-f are (1,2)-optimal.
-  const auto pl = optimal_paths(ij_complete(r, 1, 2), false, 1, 2);
+  const auto pl = optimal_paths(ij_complete(r, 1, 2), graph::Side::L, 1, 2);
   ASSERT_EQ(pl.size(), 2u);
   const Rule r3 = load("F4_fig318_flip_3loops");
   EXPECT_TRUE(I(r3, 3));
@@ -138,14 +138,14 @@ TEST(Fixtures, F5_Fig319a_SewAndUnsew) {
     EXPECT_TRUE(v.preserves);
   }
   // L of the sewing rule has no (0,2)-optimal path (every node on a 0202-cycle of loops).
-  EXPECT_TRUE(optimal_paths(load("F5_fig319a_sew"), false, 0, 2).empty());
+  EXPECT_TRUE(optimal_paths(load("F5_fig319a_sew"), graph::Side::L, 0, 2).empty());
 }
 
 TEST(Fixtures, F6_Fig319b_Partial) {
   const Rule r = load("F6_fig319b_partial");
   const CheckReport rep = check_rule(r);
   EXPECT_TRUE(rep.ok()) << to_text(rep);
-  EXPECT_EQ(optimal_paths(r, false, 0, 2).size(), 2u);  // a-b-c and c-b-a
+  EXPECT_EQ(optimal_paths(r, graph::Side::L, 0, 2).size(), 2u);  // a-b-c and c-b-a
   const SemanticVerdict v = semantic_verdict(r, map_family(2, MapKind::GMap, 4));
   EXPECT_TRUE(v.applicable());
   EXPECT_TRUE(v.preserves);

@@ -50,7 +50,7 @@ TEST(SchemeChecker, WordNormalForm) {
 
 TEST(SchemeChecker, ReferenceSchemesAccepted) {
   for (const RuleScheme& r : {quad_subdivision(), vertex_insertion(), sew2()}) {
-    SchemeCheckReport rep = check_scheme(r);
+    CheckReport rep = check_scheme(r);
     EXPECT_TRUE(rep.ok()) << to_text(rep);
     EXPECT_TRUE(rep.holds("C(0,2)")) << to_text(rep);
     EXPECT_TRUE(rep.holds("I(1)"));
@@ -61,7 +61,7 @@ TEST(SchemeChecker, ReferenceSchemesAccepted) {
 TEST(SchemeChecker, IncidentArcs) {
   RuleScheme r = vertex_insertion();
   r.right.nodes[1].label = OrbitType::parse("<_,2>");  // added n1 without 1-arc
-  SchemeCheckReport rep = check_scheme(r);
+  CheckReport rep = check_scheme(r);
   EXPECT_EQ(rep.count("I-added-node"), 1u) << to_text(rep);
   EXPECT_FALSE(rep.holds("I(1)"));
   EXPECT_EQ(rep.diagnostics[0].nodes, std::vector<std::string>{"n1"});
@@ -104,7 +104,7 @@ TEST(SchemeChecker, StructureAndHooks) {
   EXPECT_EQ(check_scheme(r).count("S-duplicate-name"), 1u);
   r = vertex_insertion();
   r.right.nodes[1].label = OrbitType::parse("<0,2>");  // 0 by label and by the explicit arc
-  SchemeCheckReport rep = check_scheme(r);
+  CheckReport rep = check_scheme(r);
   EXPECT_EQ(rep.count("S-dim-twice"), 1u) << to_text(rep);
   r = vertex_insertion();
   r.orbit = OrbitType::parse("<0,1>");
@@ -128,7 +128,7 @@ TEST(SchemeChecker, CycleIncoherentPath) {
   r.right.add_arc("n0", "n1", 0);
   r.right.add_arc("n1", "n1", 2);
   r.hooks = {"n0"};
-  SchemeCheckReport rep = check_scheme(r);
+  CheckReport rep = check_scheme(r);
   EXPECT_TRUE(rep.holds("I(0)") && rep.holds("I(1)") && rep.holds("I(2)")) << to_text(rep);
   EXPECT_FALSE(rep.holds("C(0,2)"));
   EXPECT_GE(rep.count("C-incoherent"), 2u) << to_text(rep);
@@ -137,7 +137,7 @@ TEST(SchemeChecker, CycleIncoherentPath) {
 TEST(SchemeChecker, CycleWordAndLength) {
   RuleScheme r = vertex_insertion();
   r.right.nodes[1].label = OrbitType::parse("<2,1>");  // n1's 2-loop reads letter 0: cycle word 20
-  SchemeCheckReport rep = check_scheme(r);
+  CheckReport rep = check_scheme(r);
   EXPECT_GE(rep.count("C-cycle-word"), 1u) << to_text(rep);
   // F7 (Fig. 4.24b), E9: coherent partners with words 1 and 11 (here: ε vs 02, labels 0,2).
   // A hexagonal alternating (0,2)-cycle: E10.
@@ -165,7 +165,7 @@ TEST(SchemeChecker, CycleWordNotCongruent) {
   r.left.add_node("n0", OrbitType::parse("<0,2>"));
   r.right.add_node("n0", OrbitType::parse("<2,0>"));  // 0 and 2 links exchanged inside the orbit
   r.hooks = {"n0"};
-  SchemeCheckReport rep = check_scheme(r);
+  CheckReport rep = check_scheme(r);
   // Both loops are deleted and re-added with other words; every node stays on a 0202 cycle
   // (words 0·2·0·2 and 2·0·2·0 both reduce to ε), so the scheme is accepted: exchanging the
   // 0- and 2-links of an edge orbit keeps a G-map.
@@ -174,11 +174,11 @@ TEST(SchemeChecker, CycleWordNotCongruent) {
 
 TEST(SchemeChecker, DefinitionVersusLiteralAlgorithm3) {
   const RuleScheme r = identity_on_0_scheme();
-  SchemeCheckReport def40 = check_scheme(r);
+  CheckReport def40 = check_scheme(r);
   EXPECT_TRUE(def40.ok()) << to_text(def40);
   SchemeCheckOptions strict;
   strict.algorithm3_strict = true;
-  SchemeCheckReport alg3 = check_scheme(r, strict);
+  CheckReport alg3 = check_scheme(r, strict);
   EXPECT_FALSE(alg3.ok());
   EXPECT_EQ(alg3.count("C-preserved-node"), 2u) << to_text(alg3);  // a and b: preserved 0-arcs
   // The quad subdivision is accepted by both readings.
@@ -193,7 +193,7 @@ TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
   SchemeCheckOptions topology;  // the topological verdict (embeddings: embedding_check_test.cpp)
   topology.embeddings = false;
   for (const auto& r : m.rules) {
-    SchemeCheckReport rep = check_scheme(r, topology);
+    CheckReport rep = check_scheme(r, topology);
     verdict[r.name] = rep.ok();
     accepted += rep.ok();
   }
@@ -207,7 +207,7 @@ TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
 // A scheme report is a gmr.check document (docs/check-format.md) with subject "scheme".
 TEST(SchemeChecker, JsonIsAGmrCheckDocument) {
   RuleScheme r = identity_on_0_scheme();
-  const SchemeCheckReport rep = check_scheme(r);
+  const CheckReport rep = check_scheme(r);
   const auto j = to_json(rep);
   EXPECT_EQ(j["format"], "gmr.check");
   EXPECT_EQ(j["version"], 1);

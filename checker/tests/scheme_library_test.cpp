@@ -53,7 +53,7 @@ TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
     ++count;
     RuleScheme r = read_scheme_file(e.path());
     EXPECT_EQ(r.name, e.path().stem().string());
-    SchemeCheckReport rep = check_scheme(r);
+    CheckReport rep = check_scheme(r);
     EXPECT_TRUE(rep.ok()) << to_text(rep);
     EXPECT_EQ(rep.warnings(), 0u) << to_text(rep);
     // The literal Algorithm 3 also rejects preserved nodes whose PRESERVED 0-arc is

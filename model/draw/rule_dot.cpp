@@ -15,7 +15,7 @@ namespace {
 
 std::string quote(const std::string& s) { return nlohmann::json(s).dump(); }
 
-std::string node_id(bool right, size_t v) { return (right ? "R" : "L") + std::to_string(v); }
+std::string node_id(Side side, size_t v) { return to_string(side) + std::to_string(v); }
 
 std::string graph_header(const std::string& kind, const std::string& name, const RuleDotOptions& opt, int n) {
   std::string out = "digraph " + quote(opt.name.empty() ? (name.empty() ? std::string("rule") : name) : opt.name) + " {\n";
@@ -29,17 +29,17 @@ std::string graph_header(const std::string& kind, const std::string& name, const
 // A node statement: role, hook, highlights. A highlighted node is filled, its tooltip lists
 // "code: message" lines, and a note node (shape=note, the codes) is attached to it by a dotted edge:
 // Graphviz places xlabels poorly in clusters, a note stays next to its node.
-std::string node_stmt(const std::string& id, const std::string& label, bool right, const std::string& name, int role,
-                      bool hook, const std::vector<DotHighlight>& hl) {
+std::string node_stmt(const std::string& id, const std::string& label, Side side, const std::string& name,
+                      ElemStatus role, bool hook, const std::vector<DotHighlight>& hl) {
   std::vector<std::string> style;
   std::string a = "label=" + quote(label);
-  if (role == 1) style.push_back("dashed");  // deleted
-  if (role == 2) style.push_back("bold");    // added
+  if (role == ElemStatus::Deleted) style.push_back("dashed");
+  if (role == ElemStatus::Added) style.push_back("bold");
   if (hook) a += ", peripheries=2";
   std::string codes, messages;
   bool any = false, error = false;
   for (const auto& h : hl) {
-    if (h.node != name || !(h.side.empty() || h.side == (right ? "R" : "L"))) continue;
+    if (h.node != name || (h.side && *h.side != side)) continue;
     any = true;
     error = error || h.error;
     if (!h.code.empty() && ("\n" + codes + "\n").find("\n" + h.code + "\n") == std::string::npos)
@@ -71,8 +71,8 @@ std::string arc_attrs(int dim, bool changed) {
   return a;
 }
 
-std::string cluster_open(bool right) {
-  return std::string("  subgraph cluster_") + (right ? "R" : "L") + " {\n    label=\"" + (right ? "R" : "L") +
+std::string cluster_open(Side side) {
+  return std::string("  subgraph cluster_") + to_string(side) + " {\n    label=\"" + to_string(side) +
          "\";\n    color=gray;\n";
 }
 
@@ -82,20 +82,18 @@ std::string to_dot(const Rule& r, const RuleDotOptions& opt) {
   std::string out = graph_header(std::string("concrete ") + (r.kind() == MapKind::OMap ? "O-map" : "G-map") + " rule",
                                  r.name(), opt, r.dimension());
   out += "  node [shape=circle, width=0.4];\n";
-  for (bool right : {false, true}) {
-    const DGraph& g = r.side(right);
-    out += cluster_open(right);
-    for (Node v = 0; v < g.num_nodes(); ++v) {
-      const int role = r.node_status(right, v) == ElemStatus::Preserved ? 0 : right ? 2 : 1;
-      out += node_stmt(node_id(right, v), g.node_str(v), right, g.name(v), role, false, opt.highlights);
-    }
+  for (Side side : kSides) {
+    const DGraph& g = r.side(side);
+    out += cluster_open(side);
+    for (Node v = 0; v < g.num_nodes(); ++v)
+      out += node_stmt(node_id(side, v), g.node_str(v), side, g.name(v), r.node_status(side, v), false, opt.highlights);
     // Opposite arcs of one label are drawn as one undirected edge; the others are directed.
     std::vector<bool> drawn(g.num_arc_slots(), false);
     for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
       if (!g.arc_alive(a) || drawn[a]) continue;
       drawn[a] = true;
       const Arc& arc = g.arc(a);
-      const bool changed = r.arc_status(right, a) != ElemStatus::Preserved;
+      const bool changed = r.arc_status(side, a) != ElemStatus::Preserved;
       std::string attrs = arc_attrs(arc.label, changed);
       bool paired = arc.src == arc.tgt;
       if (!paired) {
@@ -110,14 +108,14 @@ std::string to_dot(const Rule& r, const RuleDotOptions& opt) {
         }
       }
       if (paired) attrs += ", dir=none";
-      out += "    " + node_id(right, arc.src) + " -> " + node_id(right, arc.tgt) + " [" + attrs + "];\n";
+      out += "    " + node_id(side, arc.src) + " -> " + node_id(side, arc.tgt) + " [" + attrs + "];\n";
     }
     out += "  }\n";
   }
   if (opt.kappa)
     for (Node v = 0; v < r.left().num_nodes(); ++v)
       if (auto w = r.right_of(v))
-        out += "  " + node_id(false, v) + " -> " + node_id(true, *w) + " [color=" + kDotKappaColour +
+        out += "  " + node_id(Side::L, v) + " -> " + node_id(Side::R, *w) + " [color=" + kDotKappaColour +
                ", style=dashed, constraint=false, label=<&kappa;>, fontcolor=" + kDotKappaColour + "];\n";
   out += "}\n";
   return out;
@@ -129,13 +127,13 @@ std::string to_dot(const RuleScheme& s, const RuleDotOptions& opt) {
   std::vector<bool> hook(s.left.size(), false);
   for (const auto& h : s.hooks)
     if (auto v = s.left.find(h)) hook[*v] = true;
-  for (bool right : {false, true}) {
+  for (Side side : kSides) {
+    const bool right = side == Side::R;
     const GraphScheme& g = right ? s.right : s.left;
-    out += cluster_open(right);
+    out += cluster_open(side);
     for (uint32_t v = 0; v < g.size(); ++v) {
       const NodeRole role = right ? s.role_right(v) : s.role_left(v);
-      const int r = role == NodeRole::Preserved ? 0 : role == NodeRole::Deleted ? 1 : 2;
-      out += node_stmt(node_id(right, v), node_label_text(g.nodes[v]), right, g.nodes[v].name, r, !right && hook[v],
+      out += node_stmt(node_id(side, v), node_label_text(g.nodes[v]), side, g.nodes[v].name, role, !right && hook[v],
                        opt.highlights);
     }
     const GraphScheme& other = right ? s.left : s.right;
@@ -147,7 +145,7 @@ std::string to_dot(const RuleScheme& s, const RuleDotOptions& opt) {
         kept = std::any_of(other.arcs.begin(), other.arcs.end(), [&](const SchemeArc& x) {
           return x.dim == arc.dim && ((x.a == *oa && x.b == *ob) || (x.a == *ob && x.b == *oa));
         });
-      out += "    " + node_id(right, arc.a) + " -> " + node_id(right, arc.b) + " [" + arc_attrs(arc.dim, !kept) + "];\n";
+      out += "    " + node_id(side, arc.a) + " -> " + node_id(side, arc.b) + " [" + arc_attrs(arc.dim, !kept) + "];\n";
     }
     out += "  }\n";
   }

@@ -18,6 +18,7 @@
 // SVG viewers), and a note node "<id>_note" (shape=note) listing the codes is attached to it. The conversion from checker reports is in
 // checker/dot_overlay.hpp (the model does not depend on the checker).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,11 +26,12 @@
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::draw {
+using graph::Side;
 using rewrite::Rule;
 using scheme::RuleScheme;
 
 struct DotHighlight {
-  std::string side;     // "L", "R", or "" for a node of that name on either side
+  std::optional<Side> side;  // nullopt: a node of that name on either side
   std::string node;     // node name
   std::string code;     // short text shown in the note next to the node, e.g. "I-added-node"
   std::string message;  // tooltip

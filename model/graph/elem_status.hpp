@@ -21,9 +21,11 @@ inline const char* to_string(ElemStatus s) {
 // The left-hand side L or the right-hand side R of a rule.
 enum class Side : uint8_t { L, R };
 
+inline constexpr Side kSides[] = {Side::L, Side::R};
+
 inline const char* to_string(Side s) { return s == Side::L ? "L" : "R"; }
 inline Side other(Side s) { return s == Side::L ? Side::R : Side::L; }
-inline Side side_of(bool right) { return right ? Side::R : Side::L; }
-inline bool is_right(Side s) { return s == Side::R; }
+// 0 for L, 1 for R: the index of a side in per-side arrays.
+inline constexpr unsigned index_of(Side s) { return s == Side::L ? 0 : 1; }
 
 }  // namespace gmr::graph

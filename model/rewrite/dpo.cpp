@@ -30,7 +30,7 @@ void check_match(const Rule& r, const DGraph& G, const Match& m) {
   for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
     if (!L.arc_alive(a)) continue;
     const ArcId b = m.arc[a];
-    const std::string loc = "match of arc " + r.arc_str(false, a);
+    const std::string loc = "match of arc " + r.arc_str(Side::L, a);
     if (b >= G.num_arc_slots() || !G.arc_alive(b)) throw Error(ErrorCode::Usage, "image is not an arc of G", loc);
     if (aused[b]) throw Error(ErrorCode::Usage, "match is not injective on arcs", loc);
     aused[b] = true;
@@ -316,7 +316,7 @@ std::vector<Node> check_map_match(const Rule& r, const GMap& g, const std::vecto
     if (!L.arc_alive(a)) continue;
     const Arc& e = L.arc(a);
     if (g.alpha(e.label, match[e.src]) != match[e.tgt])
-      throw Error(ErrorCode::Usage, "the arc has no image in the map", "match of arc " + r.arc_str(false, a));
+      throw Error(ErrorCode::Usage, "the arc has no image in the map", "match of arc " + r.arc_str(Side::L, a));
   }
   // In a map each dart has one i-arc out; two arcs of L from one node with one label cannot both
   // be matched (injective on arcs): reject parallel duplicates.

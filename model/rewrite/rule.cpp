@@ -103,10 +103,10 @@ std::vector<Node> Rule::added_nodes() const {
   return out;
 }
 
-std::string Rule::arc_str(bool right, ArcId a) const {
-  const DGraph& g = side(right);
+std::string Rule::arc_str(Side s, ArcId a) const {
+  const DGraph& g = side(s);
   const Arc& e = g.arc(a);
-  return g.node_str(e.src) + " -" + std::to_string(e.label) + "-> " + g.node_str(e.tgt) + (right ? " (R)" : " (L)");
+  return g.node_str(e.src) + " -" + std::to_string(e.label) + "-> " + g.node_str(e.tgt) + " (" + to_string(s) + ")";
 }
 
 JointRepresentation to_joint(const Rule& r) {

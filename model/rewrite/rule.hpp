@@ -29,6 +29,7 @@ using graph::DGraph;
 using graph::Node;
 
 using graph::ElemStatus;
+using graph::Side;
 
 class Rule {
  public:
@@ -46,7 +47,7 @@ class Rule {
 
   const DGraph& left() const { return L_; }
   const DGraph& right() const { return R_; }
-  const DGraph& side(bool right) const { return right ? R_ : L_; }
+  const DGraph& side(Side s) const { return s == Side::R ? R_ : L_; }
 
   // Node correspondence of the interface (nullopt: deleted, resp. added).
   std::optional<Node> right_of(Node l) const;
@@ -58,15 +59,15 @@ class Rule {
   std::optional<ArcId> left_arc_of(ArcId r) const;
   ElemStatus left_arc_status(ArcId l) const { return la_to_ra_[l] ? ElemStatus::Preserved : ElemStatus::Deleted; }
   ElemStatus right_arc_status(ArcId r) const { return ra_to_la_[r] ? ElemStatus::Preserved : ElemStatus::Added; }
-  ElemStatus arc_status(bool right, ArcId a) const { return right ? right_arc_status(a) : left_arc_status(a); }
-  ElemStatus node_status(bool right, Node v) const { return right ? right_node_status(v) : left_node_status(v); }
+  ElemStatus arc_status(Side s, ArcId a) const { return s == Side::R ? right_arc_status(a) : left_arc_status(a); }
+  ElemStatus node_status(Side s, Node v) const { return s == Side::R ? right_node_status(v) : left_node_status(v); }
 
   std::vector<Node> preserved_nodes() const;  // left ids
   std::vector<Node> deleted_nodes() const;    // left ids
   std::vector<Node> added_nodes() const;      // right ids
 
   // "a -0-> b" with the side tag, for messages.
-  std::string arc_str(bool right, ArcId a) const;
+  std::string arc_str(Side s, ArcId a) const;
 
  private:
   void deduce();

@@ -20,7 +20,7 @@ Verdict verdict_of(const RuleInput& in, bool embeddings) {
   Verdict v;
   const std::vector<Diagnostic>* diagnostics = nullptr;
   CheckReport concrete;
-  SchemeCheckReport scheme;
+  CheckReport scheme;
   if (in.is_scheme()) {
     scheme = check_scheme(*in.scheme, {.embeddings = embeddings});
     v.rule = in.scheme->name;

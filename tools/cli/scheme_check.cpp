@@ -19,7 +19,7 @@ using namespace gmr::checker;
 namespace {
 
 // "C-cycle-word x2, I-deleted-node" — the distinct error/warning codes of a report.
-std::string code_summary(const SchemeCheckReport& r) {
+std::string code_summary(const CheckReport& r) {
   std::map<std::string, size_t> n;
   std::vector<std::string> order;
   for (const auto& d : r.diagnostics) {
@@ -43,7 +43,7 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
     const nlohmann::json doc = parse_json(text, path);
     if (rule_document_kind(doc, path) != "scheme") return std::nullopt;
     const RuleScheme s = scheme_from_json(doc, path);
-    const SchemeCheckReport rep = check_scheme(s, opt);
+    const CheckReport rep = check_scheme(s, opt);
     if (json) {
       auto j = to_json(rep);
       j["file"] = path;
@@ -54,7 +54,7 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
     return rep.ok() ? kExitOk : kExitNegative;
   }
   const JmeModeler m = read_jme_file(path);
-  std::vector<SchemeCheckReport> reps;
+  std::vector<CheckReport> reps;
   size_t accepted = 0;
   for (const auto& r : m.rules) {
     reps.push_back(check_scheme(r, opt));

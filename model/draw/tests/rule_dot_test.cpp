@@ -103,7 +103,7 @@ TEST(IoRuleDot, SchemeLabelsHooksLoops) {
 TEST(IoRuleDot, Highlights) {
   const RuleScheme sew = read_scheme_file(source("tools/data/rules/sew2.json"));
   RuleDotOptions opt;
-  opt.highlights = {{"R", "n1", "X-code", "a message", true}, {"", "n0", "W-code", "careful", false}};
+  opt.highlights = {{graph::Side::R, "n1", "X-code", "a message", true}, {std::nullopt, "n0", "W-code", "careful", false}};
   const std::string dot = to_dot(sew, opt);
   EXPECT_NE(dot.find("R1 [label=\"n1 <0>\", fillcolor=\"#ff9c9c\", tooltip=\"X-code: a message\", style=\"filled\"]"),
             std::string::npos)
