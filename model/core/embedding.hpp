@@ -56,6 +56,8 @@ class Embedding {
     grow(g);
     slot_[d] = s;
   }
+  // set_slot without sizing: d must be below the size reached by an earlier set_slot/set.
+  void set_slot_unchecked(Dart d, uint32_t s) { slot_[d] = s; }
   const T& value(uint32_t s) const { return values_[s]; }
   size_t num_values() const { return values_.size(); }
   const T& get(Dart d) const {
