@@ -51,6 +51,7 @@ class Embedding {
     values_.push_back(std::move(v));
     return static_cast<uint32_t>(values_.size() - 1);
   }
+  void reserve_values(size_t n) { values_.reserve(n); }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
   void set_slot(const GMap& g, Dart d, uint32_t s) {
     grow(g);

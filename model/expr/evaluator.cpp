@@ -40,6 +40,7 @@ Evaluator::Evaluator(const GMap& g, std::vector<EmbeddingSignature> sigs, std::v
 void Evaluator::memoise_collects(bool on) {
   memo_on_ = on;
   memos_.clear();
+  memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
 }
 
 Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collect) {
@@ -47,6 +48,7 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
   for (auto& m : memos_)
     if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
   memos_.push_back({call.function, mo, collect.embedding, std::vector<uint32_t>(g_.capacity(), kNone), {}});
+  memos_.back().values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
 }
 

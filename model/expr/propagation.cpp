@@ -99,6 +99,9 @@ void EmbeddingPropagation::before_rewrite(const GMap& g, const scheme::SchemeApp
           unite(parent_, static_cast<uint32_t>(a.a * sz + b), static_cast<uint32_t>(a.b * sz + b));
     std::vector<bool> done(nr * sz, false);
     auto& out = pending_[static_cast<size_t>(field_of_decl_[e])];
+    size_t with_expression = 0;
+    for (uint32_t v = 0; v < nr; ++v) with_expression += cs_.right[e][v] ? 1 : 0;
+    out.reserve(out.size() + with_expression * sz);  // an upper bound; untouched pages cost nothing
     for (uint32_t v = 0; v < nr; ++v) {
       const auto& x = cs_.right[e][v];
       if (!x) continue;
@@ -144,6 +147,7 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
     };
     // 2. computed values
     if (pending_.size() < m_.fields.size()) pending_.resize(m_.fields.size());
+    E.reserve_values(E.num_values() + pending_[fi].size());
     for (const Pending& p : pending_[fi]) {
       const Dart x = app.comatch[p.v * sz + p.b];
       if (vis.test(x)) {
