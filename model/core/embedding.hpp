@@ -51,11 +51,14 @@ class Embedding {
     values_.push_back(std::move(v));
     return static_cast<uint32_t>(values_.size() - 1);
   }
+  void reserve_values(size_t n) { values_.reserve(n); }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
   void set_slot(const GMap& g, Dart d, uint32_t s) {
     grow(g);
     slot_[d] = s;
   }
+  // set_slot without sizing: d must be below the size reached by an earlier set_slot/set.
+  void set_slot_unchecked(Dart d, uint32_t s) { slot_[d] = s; }
   const T& value(uint32_t s) const { return values_[s]; }
   size_t num_values() const { return values_.size(); }
   const T& get(Dart d) const {

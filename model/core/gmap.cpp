@@ -1,6 +1,8 @@
 #include "model/core/gmap.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <ranges>
 
 #include "model/core/error.hpp"
 
@@ -45,10 +47,12 @@ Dart GMap::add_darts(size_t k) {
     throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")");
   const Dart first = capacity();
   capacity_ += k;
+  // New darts are free (a loop at every dimension): written once, without a zero fill first.
+  const auto fresh = std::views::iota(first, static_cast<Dart>(capacity_));
   for (int i = lowest_dim(); i <= n_; ++i) {
     auto& l = link_[i];
-    l.resize(capacity_);
-    for (Dart d = first; d < capacity_; ++d) l[d] = d;
+    if (l.capacity() < capacity_) l.reserve(std::max(capacity_, 2 * l.size()));
+    l.insert(l.end(), fresh.begin(), fresh.end());
   }
   dead_.resize(capacity_);
   for (auto& m : marks_) m.resize(capacity_);

@@ -15,12 +15,41 @@ Val sub(const Val& a, const Val& b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a
 Val scale(const Val& a, double k) { return {a.x * k, a.y * k, a.z * k, a.w * k}; }
 using K = StaticType::Kind;
 
+// Whether two entries of v are equal: pairwise for the few pieces of a face or a vertex, sorted
+// (in `buffer`) beyond.
+bool has_duplicate(const std::vector<uint32_t>& v, std::vector<uint32_t>& buffer) {
+  if (v.size() <= 16) {
+    for (size_t i = 1; i < v.size(); ++i)
+      for (size_t j = 0; j < i; ++j)
+        if (v[i] == v[j]) return true;
+    return false;
+  }
+  buffer.assign(v.begin(), v.end());
+  std::sort(buffer.begin(), buffer.end());
+  return std::adjacent_find(buffer.begin(), buffer.end()) != buffer.end();
+}
+
 }  // namespace
 
 Evaluator::Evaluator(const GMap& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
     : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
   scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
   vals_.resize(kMaxNesting + 1);
+}
+
+void Evaluator::memoise_collects(bool on) {
+  memo_on_ = on;
+  memos_.clear();
+  memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
+}
+
+Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collect) {
+  const DimMask mo = collect.orbit.mask();
+  for (auto& m : memos_)
+    if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
+  memos_.push_back({call.function, mo, collect.embedding, std::vector<uint32_t>(g_.capacity(), kNone), {}});
+  memos_.back().values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
+  return &memos_.back();
 }
 
 Val Evaluator::from_storage(const Vec3& s, ValueType t) {
@@ -151,9 +180,7 @@ bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& 
   }
   for (Dart x : in_orbit) mark.unmark(x);  // every marked dart is in the <o>-orbit
   (void)marked;
-  std::vector<uint32_t> sorted = slots_;
-  std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+  if (has_duplicate(slots_, sorted_)) {
     pieces.clear();
     return false;
   }
@@ -204,12 +231,32 @@ Val Evaluator::eval(const Expr& e) {
       Val acc;
       size_t n = 0;
       if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) {
+        const Expr& arg = *e.args[0];
+        // A memoised collect (memoise_collects): its value is the one of its <o>-orbit.
+        const bool memo = memo_on_ && arg.op == Expr::Op::Collect && arg.word.empty() &&
+                          (arg.orbit.mask() & ~sigs_[static_cast<size_t>(arg.embedding)].orbit.mask()) != 0;
+        CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
+        if (cm) {
+          const Dart d = dart_of(arg.ref, arg);
+          if (cm->at[d] != kNone) return cm->values[cm->at[d]];
+        }
         // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
         std::vector<Val>& m = vals_[vars_.size()];
         m.clear();
-        members(*e.args[0], m);
+        members(arg, m);
         for (const Val& v : m) acc = add(acc, v);
         n = m.size();
+        if (cm) {
+          Val r = acc;
+          if (e.function == Function::Count) r = {static_cast<double>(n), 0, 0, 0};
+          else if (e.function == Function::Middle && n > 0) r = scale(acc, 1.0 / static_cast<double>(n));
+          if (e.function != Function::Middle || n > 0) {
+            // members() left the darts of the <o>-orbit in this depth's first scratch list.
+            const auto idx = static_cast<uint32_t>(cm->values.size());
+            cm->values.push_back(r);
+            for (Dart x : scratch_[3 * vars_.size()]) cm->at[x] = idx;
+          }
+        }
       } else {
         for (const auto& a : e.args) acc = add(acc, eval(*a));
         n = e.args.size();

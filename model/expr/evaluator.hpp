@@ -37,6 +37,14 @@ class Evaluator {
   // (mass of points and vectors). `where` locates errors.
   Val evaluate(const Expr& e, const Dart* node_darts, ValueType target, const std::string& where);
 
+  // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
+  // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
+  // the dart it is reached from (up to the order of the floating-point sum). Worth it when the
+  // expressions of one application visit most of the map: a table of capacity entries per
+  // (function, <o>, pi) is filled lazily (Catmull-Clark reads every face's barycentre from
+  // 2k + 1 places). The map must not change while it is on.
+  void memoise_collects(bool on);
+
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
   static Val from_storage(const Vec3& s, ValueType t);
@@ -57,8 +65,19 @@ class Evaluator {
   std::vector<Val> lets_;
   const std::string* where_ = nullptr;
   std::vector<std::vector<Dart>> scratch_;
-  std::vector<uint32_t> slots_;
+  std::vector<uint32_t> slots_, sorted_;
   std::vector<std::vector<Val>> vals_;  // multiset buffers per nesting depth
+  struct CollectMemo {
+    Function function;
+    DimMask orbit;
+    int embedding;
+    std::vector<uint32_t> at;  // per dart: index in values, or kNone
+    std::vector<Val> values;
+  };
+  static constexpr uint32_t kNone = UINT32_MAX;
+  CollectMemo* memo_for(const Expr& call, const Expr& collect);
+  bool memo_on_ = false;
+  std::vector<CollectMemo> memos_;
 };
 
 }  // namespace gmr::expr

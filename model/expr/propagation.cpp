@@ -77,6 +77,8 @@ void EmbeddingPropagation::before_rewrite(const GMap& g, const scheme::SchemeApp
   std::vector<const EmbeddingField*> fields;
   for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   Evaluator ev(g, cs_.embeddings, fields);
+  // An application covering much of the map reads the same collects from many places.
+  ev.memoise_collects(sz * 8 >= g.capacity());
   std::vector<Dart> node_darts(nl);
   for (size_t e = 0; e < cs_.embeddings.size(); ++e) {
     if (!cs_.has_expressions(e) || field_of_decl_[e] < 0) continue;
@@ -97,6 +99,9 @@ void EmbeddingPropagation::before_rewrite(const GMap& g, const scheme::SchemeApp
           unite(parent_, static_cast<uint32_t>(a.a * sz + b), static_cast<uint32_t>(a.b * sz + b));
     std::vector<bool> done(nr * sz, false);
     auto& out = pending_[static_cast<size_t>(field_of_decl_[e])];
+    size_t with_expression = 0;
+    for (uint32_t v = 0; v < nr; ++v) with_expression += cs_.right[e][v] ? 1 : 0;
+    out.reserve(out.size() + with_expression * sz);  // an upper bound; untouched pages cost nothing
     for (uint32_t v = 0; v < nr; ++v) {
       const auto& x = cs_.right[e][v];
       if (!x) continue;
@@ -128,8 +133,21 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
         for (uint32_t b = 0; b < sz; ++b) E.set_slot(g, app.comatch[v * sz + b], Embedding<Vec3>::kNoValue);
     ScopedMarker vis(g);
     touched_.clear();
+    touched_all_ = false;
+    // The marked darts are listed for unmarking until they are more than a 64th of the map;
+    // beyond, clearing the whole marker is cheaper (an application at every dart of a surface).
+    const size_t list_limit = g.capacity() / 64 + 16;
+    auto remember = [&](Dart y) {
+      if (touched_all_) return;
+      if (touched_.size() >= list_limit) {
+        touched_all_ = true;
+        return;
+      }
+      touched_.push_back(y);
+    };
     // 2. computed values
     if (pending_.size() < m_.fields.size()) pending_.resize(m_.fields.size());
+    E.reserve_values(E.num_values() + pending_[fi].size());
     for (const Pending& p : pending_[fi]) {
       const Dart x = app.comatch[p.v * sz + p.b];
       if (vis.test(x)) {
@@ -141,9 +159,10 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
         continue;
       }
       const uint32_t slot = E.add_value(p.value);
+      E.set_slot(g, x, slot);  // sizes the slot table once; the orbit's darts are below capacity
       visit_orbit_marked(g, mask, x, vis.id(), stack_, [&](Dart y) {
-        E.set_slot(g, y, slot);
-        touched_.push_back(y);
+        E.set_slot_unchecked(y, slot);
+        remember(y);
       });
     }
     // 3. inherited values
@@ -151,7 +170,7 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
       if (vis.test(x)) continue;
       orbit_darts_.clear();
       visit_orbit_marked(g, mask, x, vis.id(), stack_, [&](Dart y) { orbit_darts_.push_back(y); });
-      touched_.insert(touched_.end(), orbit_darts_.begin(), orbit_darts_.end());
+      for (Dart y : orbit_darts_) remember(y);
       uint32_t slot = Embedding<Vec3>::kNoValue;
       bool reported = false;
       for (Dart y : orbit_darts_) {
@@ -177,8 +196,10 @@ void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeAppl
       for (Dart y : orbit_darts_)
         if (E.slot(y) != slot) E.set_slot(g, y, slot);
     }
-    for (Dart y : touched_) vis.unmark(y);
-    vis.set_clean();
+    if (!touched_all_) {
+      for (Dart y : touched_) vis.unmark(y);
+      vis.set_clean();
+    }  // else the marker is cleared whole when released
   }
 }
 

@@ -61,6 +61,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver {
   size_t issue_count_ = 0, evaluations_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<Dart> stack_, touched_, orbit_darts_;
+  bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };
 
 // One application at the hook darts (scheme_engine.hpp), embeddings included.

@@ -1,5 +1,6 @@
 #include "model/scheme/scheme_engine.hpp"
 
+#include <ranges>
 #include <unordered_map>
 
 #include "model/core/error.hpp"
@@ -253,16 +254,17 @@ void SchemeEngine::place_right_darts(GMap& g, size_t s, SchemeApplication& res) 
   const size_t nr = s_.right.size();
   const std::vector<Dart>& M = res.match;
   std::vector<Dart>& T = res.comatch;
-  T.assign(nr * s, kNoDart);
+  T.clear();
+  T.reserve(nr * s);  // written once, node by node (no fill first)
   const Dart base = num_added_ > 0 ? g.add_darts(num_added_ * s) : 0;
   for (uint32_t v = 0; v < nr; ++v) {
-    Dart* Tv = &T[v * s];
     if (r_source_[v] != kAdded) {
       const Dart* Mv = &M[r_source_[v] * s];
-      for (uint32_t b = 0; b < s; ++b) Tv[b] = Mv[b];
+      T.insert(T.end(), Mv, Mv + s);
     } else {
       const Dart first = base + static_cast<Dart>(added_rank_[v] * s);
-      for (uint32_t b = 0; b < s; ++b) Tv[b] = first + b;
+      const auto fresh = std::views::iota(first, static_cast<Dart>(first + s));
+      T.insert(T.end(), fresh.begin(), fresh.end());
     }
   }
 }
