@@ -250,6 +250,8 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       {"loop_subdivision", make_polygon(3), 0, make_tetrahedron()},  // Loop topology: triangle -> 4
       {"quad_subdivision", make_polygon(4), 0, make_cube()},
       {"edge_triangulation", make_tetrahedron(), 0, make_prism(5)},
+      {"doo_sabin_subdivision", make_cube(), 0, make_prism(5)},
+      {"sqrt3_subdivision", make_tetrahedron(), 0, make_square_pyramid()},  // not all triangles: still applies
       {"face_triangulation", make_polygon(5), 1u << 2, make_polygon(7)},
       {"face_extrusion", make_polygon(4), 1u << 2, make_polygon(3)},
       {"vertex_insertion", make_free_edge(), 1u << 1, make_free_edge()},
@@ -372,12 +374,12 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
 }
 
 // Doo–Sabin iterations 1, 2, 3, each inferred directly from iteration 0 (thesis §7.4.3): the after
-// object is the cube subdivided k times by a Doo–Sabin scheme (tests/data/doo_sabin.json, accepted
-// by the checker); the engine keeps the ids of preserved darts, so the identity mapping relates
+// object is the cube subdivided k times by the library's Doo–Sabin scheme
+// (tools/data/rules/doo_sabin_subdivision.json); the engine keeps the ids of preserved darts, so the identity mapping relates
 // iteration 0 and iteration k. R has 4, 16, 64 nodes on the closed cube; iteration 1 is the scheme
 // itself; applied to a tetrahedron, the inferred iteration-k rule equals k Doo–Sabin steps.
 TEST(RuleInference, DooSabinIterationsFromIterationZero) {
-  const RuleScheme ds = read_scheme_file(data("doo_sabin.json"));
+  const RuleScheme ds = read_scheme_file(rule_file("doo_sabin_subdivision"));
   ASSERT_TRUE(check_scheme(ds).ok());
   const GMap cube = make_cube();
   GMap after = cube, tetra_k = make_tetrahedron();
@@ -403,12 +405,12 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
 }
 
 // Kobbelt √3 (thesis §7.4.2, a single-step rule with edge flips): inferred from a tetrahedron
-// (24 -> 72 darts) subdivided by a √3 scheme (tests/data/sqrt3.json, accepted by the checker):
-// L1 + R3, the scheme itself; applied to a closed triangle mesh (the cube with every face
+// (24 -> 72 darts) subdivided by the library's √3 scheme (tools/data/rules/sqrt3_subdivision.json):
+// L1 + R3, the library scheme itself (rule-scheme isomorphism); applied to a closed triangle mesh (the cube with every face
 // triangulated by the library's face triangulation) it triples the face count, and agrees with the
 // scheme (signatures).
 TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
-  const RuleScheme s3 = read_scheme_file(data("sqrt3.json"));
+  const RuleScheme s3 = read_scheme_file(rule_file("sqrt3_subdivision"));
   ASSERT_TRUE(check_scheme(s3).ok());
   const GMap tet = make_tetrahedron();
   const GMap after = applied(tet, s3, 0);

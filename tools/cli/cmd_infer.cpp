@@ -6,8 +6,9 @@
 // Prints the summary table (orbit type, start dart, nodes in L and R, outcome: fold failure by
 // name, checker verdict, duplicates merged) or, with --json, the same as JSON with the accepted
 // schemes. With -o DIR, writes atomically for every accepted rule k: DIR/rule_k.json (gmr.rule
-// scheme) and DIR/rule_k.dot (diagram), for every rule the checker rejected:
-// DIR/rejected_k.json and DIR/rejected_k.dot (diagnostics highlighted), and DIR/summary.txt.
+// scheme) and DIR/rule_k.dot and .svg (diagram, rendered by Graphviz), for every rule the checker
+// rejected: DIR/rejected_k.json and DIR/rejected_k.dot/.svg (diagnostics highlighted), and
+// DIR/summary.txt. Schemes of more than kMaxDrawnNodes nodes get no SVG (the summary says so).
 // Exit 0 when at least one rule is inferred, 1 when none is, 2 on bad input.
 #include <unistd.h>
 
@@ -19,6 +20,7 @@
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
 #include "model/core/error.hpp"
+#include "model/draw/render.hpp"
 #include "model/draw/rule_dot.hpp"
 #include "model/io/atomic_write.hpp"
 #include "model/io/scheme_json.hpp"
@@ -33,6 +35,10 @@ using namespace gmr::io;
 using namespace gmr::scheme;
 
 namespace {
+
+// Larger schemes (e.g. an inferred second Menger iteration, 400+ nodes) are left as DOT only:
+// Graphviz lays them out slowly and unreadably.
+constexpr size_t kMaxDrawnNodes = 300;
 
 struct InferArgs {
   std::string before, after, from, orbit, map, output, explicit_loops, cut_loops;
@@ -95,10 +101,21 @@ int run_infer(const InferArgs& a) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw Error(ErrorCode::Io, "cannot create the directory: " + ec.message(), a.output);
+    std::string not_drawn;
+    // The diagram as DOT, and as SVG (Graphviz) unless the scheme is too large to lay out usefully.
+    auto write_diagram = [&](const RuleScheme& s, const std::string& base, const std::string& dot) {
+      write_file_atomic(dir / (base + ".dot"), dot);
+      const size_t nodes = s.left.size() + s.right.size();
+      if (nodes <= kMaxDrawnNodes)
+        draw::render_dot_file(dot, draw::ImageFormat::Svg, dir / (base + ".svg"));
+      else
+        not_drawn += base + ".svg not drawn: " + std::to_string(nodes) + " nodes (more than " +
+                     std::to_string(kMaxDrawnNodes) + "; " + base + ".dot has the diagram)\n";
+    };
     for (size_t k = 0; k < res.rules.size(); ++k) {
       const std::string base = "rule_" + std::to_string(k);
       write_scheme_file(res.rules[k].scheme, dir / (base + ".json"));
-      write_file_atomic(dir / (base + ".dot"), to_dot(res.rules[k].scheme));
+      write_diagram(res.rules[k].scheme, base, to_dot(res.rules[k].scheme));
     }
     size_t r = 0;
     for (const auto& at : res.attempts) {
@@ -110,9 +127,9 @@ int run_infer(const InferArgs& a) {
       write_scheme_file(s, dir / (base + ".json"));
       RuleDotOptions dot;
       if (at.outcome == AttemptOutcome::Inconsistent) dot.highlights = dot_highlights(at.rejected->check);
-      write_file_atomic(dir / (base + ".dot"), to_dot(s, dot));
+      write_diagram(s, base, to_dot(s, dot));
     }
-    write_file_atomic(dir / "summary.txt", summary);
+    write_file_atomic(dir / "summary.txt", summary + not_drawn);
   }
   return res.rules.empty() ? kExitNegative : kExitOk;
 }
