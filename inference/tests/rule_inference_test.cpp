@@ -5,6 +5,7 @@
 #include "checker/scheme_checker.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/prior_cut.hpp"
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
 #include "inference/tests/inference_support.hpp"
@@ -234,7 +235,8 @@ TEST(DartMapping, OrbitPairsExpandByOrbitIsomorphism) {
 // applied to an example whose hook orbit is the whole object, then inferred back on the scheme's
 // orbit type with the identity mapping. Examples with free cells (a single polygon, a free edge)
 // carry loops on preserved darts, which the inferred rule would demand (thesis §7.6); the
-// posterior-cut loops of those dimensions give the library scheme back, up to isomorphism. The
+// posterior-cut loops of those dimensions give the library scheme back, up to isomorphism, and so
+// do the prior-cut loops (cut from the example before folding). The
 // result is also applied to another object and compared with the library's (signatures).
 TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
   struct Case {
@@ -281,7 +283,13 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       EXPECT_EQ(signature(mine), signature(theirs));
     }
     if (c.cut) {  // without the cut, the rule keeps its explicit loops: not the library's
+      // Prior-cut loops (prior_cut.hpp): the same loops cut from the example instead of the rule.
+      JointGraph cut = j;
+      EXPECT_GT(cut_prior_loops(cut, c.cut), 0u);
       opt.rule.cut_loops = 0;
+      const InferenceResult prior = infer_rules(cut, opt);
+      ASSERT_EQ(prior.rules.size(), 1u) << summary_text(prior);
+      EXPECT_TRUE(schemes_isomorphic(prior.rules[0].scheme, lib)) << scheme_to_json_text(prior.rules[0].scheme);
       const InferenceResult raw = infer_rules(j, opt);
       ASSERT_EQ(raw.rules.size(), 1u);
       EXPECT_FALSE(schemes_isomorphic(raw.rules[0].scheme, lib));

@@ -1,5 +1,5 @@
 // `gmr infer BEFORE AFTER [--orbit O | --all-orbits] [--map PAIRS.json] [-o DIR] [--json]
-//  [--explicit-loops 2] [--cut-loops 1,2] [--all-relabelings]`: rule inference by topological folding (thesis Ch. 7, inference/infer.hpp).
+//  [--explicit-loops 2] [--prior-cut-loops 1,2] [--cut-loops 1,2] [--all-relabelings]`: rule inference by topological folding (thesis Ch. 7, inference/infer.hpp).
 // The preserved darts are given by a gmr.mapping file (--map: dart pairs and orbit pairs,
 // inference/dart_mapping.hpp) or, by default, by identity on dart ids (darts alive in both maps).
 // Without --orbit every orbit type is tried (progress on standard error when it is a terminal).
@@ -19,6 +19,7 @@
 #include "checker/dot_overlay.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/prior_cut.hpp"
 #include "model/core/error.hpp"
 #include "model/draw/render.hpp"
 #include "model/draw/rule_dot.hpp"
@@ -41,7 +42,7 @@ namespace {
 constexpr size_t kMaxDrawnNodes = 300;
 
 struct InferArgs {
-  std::string before, after, from, orbit, map, output, explicit_loops, cut_loops;
+  std::string before, after, from, orbit, map, output, explicit_loops, prior_cut_loops, cut_loops;
   bool all_orbits = false, json = false, all_relabelings = false;
 };
 
@@ -57,6 +58,7 @@ int run_infer(const InferArgs& a) {
     if (e.code() != ErrorCode::Schema || a.map.empty()) throw;
     throw Error(ErrorCode::Schema, e.message(), a.map + ":$." + e.location());
   }
+  cut_prior_loops(j, parse_dimension_list(a.prior_cut_loops, g.map.dimension(), "--prior-cut-loops"));
   InferOptions opt;
   if (!a.orbit.empty()) opt.orbit = parse_orbit_option(a.orbit, "--orbit");
   opt.fold.loops.explicit_loops = parse_dimension_list(a.explicit_loops, g.map.dimension(), "--explicit-loops");
@@ -150,9 +152,11 @@ void register_infer(CLI::App& app) {
                   "Dimensions whose loops are always explicit arcs (conservative), e.g. 2 or 0,2 (default: implicit first)");
   sub->add_flag("--all-relabelings", args->all_relabelings,
                 "Fold every combination of consistent relabelings (thesis §7.6), not only the documented default choice");
+  sub->add_option("--prior-cut-loops", args->prior_cut_loops,
+                  "Prior-cut loops: before folding, remove loops of these dimensions that a preserved dart has before and after, e.g. 2");
   sub->add_option("--cut-loops", args->cut_loops,
                   "Posterior-cut loops: remove explicit loops of these dimensions present on both copies of a preserved node, e.g. 2");
-  sub->add_option("-o,--output", args->output, "Directory for rule_k.json/.dot, rejected_k.json/.dot and summary.txt");
+  sub->add_option("-o,--output", args->output, "Directory for rule_k.json/.dot/.svg, rejected_k.json/.dot/.svg and summary.txt");
   sub->add_flag("--json", args->json, "Print JSON (attempts and inferred schemes)");
   set_action(sub, [args] { return run_infer(*args); });
 }

@@ -414,6 +414,10 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   EXPECT_EQ(rule["left"]["nodes"].size(), 1u);
   EXPECT_EQ(rule["right"]["nodes"].size(), 4u);
   EXPECT_EQ(run("check " + q(dir / "out/q/rule_0.json")).code, 0);
+  // Prior-cut loops on a closed surface: nothing to cut, the same rule.
+  r = run("infer " + q(cube) + " " + q(sub) + " --orbit '<0,1,2>' --prior-cut-loops 0,1");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 rule(s) inferred"), std::string::npos) << r.out;
   // A scheme too large to lay out (<> on 192 + 768 darts: 960 nodes): DOT only, said in the summary.
   const fs::path sub2 = dir / "sub2.json";
   ASSERT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(sub) + " --hook 0 -o " + q(sub2)).code, 0);
@@ -447,6 +451,7 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   // Bad input: both orbit options, a mapping pairing one after dart twice.
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --orbit '<0>' --all-orbits", "--all-orbits");
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --cut-loops 3", "--cut-loops", "not a dimension");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --prior-cut-loops 3", "--prior-cut-loops", "not a dimension");
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --explicit-loops x", "--explicit-loops");
   // Every relabeling combination, with the loops of preserved nodes cut: still exactly one rule.
   r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit) + " --all-relabelings --cut-loops 2");
