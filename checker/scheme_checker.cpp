@@ -4,6 +4,8 @@
 #include <array>
 #include <map>
 #include <set>
+#include <string_view>
+#include <unordered_map>
 
 #include "checker/embedding_check.hpp"
 #include "model/words/word_rewriting.hpp"
@@ -33,6 +35,7 @@ class Checker {
     rep_.subject = CheckSubject::Scheme;
     rep_.rule = s.name;
     rep_.n = s.dimension;
+    index_nodes();
   }
 
   CheckReport run() {
@@ -52,7 +55,7 @@ class Checker {
       add("S-precondition", Severity::Warning, "structure", std::nullopt, {},
           "the Jerboa precondition is not evaluated; the verdict is about the topology only");
     for (uint32_t v = 0; v < s_.left.size(); ++v)
-      if (!s_.right_of(v) && !s_.left.nodes[v].expressions.empty())
+      if (!right_of(v) && !s_.left.nodes[v].expressions.empty())
         add("S-left-expression", Severity::Warning, "structure", Side::L, {s_.left.nodes[v].name},
             "embedding expression on a deleted node (ignored)");
     return std::move(rep_);
@@ -70,6 +73,50 @@ class Checker {
     return rep_.diagnostics.back();
   }
   const GraphScheme& side(Side r) const { return r == Side::R ? s_.right : s_.left; }
+
+  // Node tables built once, so that the checker stays linear in the size of the scheme (inferred
+  // schemes have thousands of nodes): the preserved counterpart of every node (by name), and the
+  // number of d-arcs at every node (GraphScheme::count_arcs: explicit arcs, a loop once, plus label
+  // positions), arcs with a node or dimension out of range left out (reported by structure()).
+  static constexpr uint32_t kNone = UINT32_MAX;
+  std::vector<uint32_t> counterpart_[2];
+  std::vector<uint32_t> arc_count_[2];
+  void index_nodes() {
+    const auto dims = static_cast<size_t>(std::max(s_.dimension, 0)) + 1;
+    std::unordered_map<std::string_view, uint32_t> right_index;
+    for (uint32_t v = 0; v < s_.right.size(); ++v) right_index.emplace(s_.right.nodes[v].name, v);
+    counterpart_[0].assign(s_.left.size(), kNone);
+    counterpart_[1].assign(s_.right.size(), kNone);
+    for (uint32_t v = 0; v < s_.left.size(); ++v)
+      if (auto it = right_index.find(s_.left.nodes[v].name); it != right_index.end()) {
+        counterpart_[0][v] = it->second;
+        if (counterpart_[1][it->second] == kNone) counterpart_[1][it->second] = v;  // the first, as find()
+      }
+    for (Side r : graph::kSides) {
+      const GraphScheme& g = side(r);
+      auto& count = arc_count_[index_of(r)];
+      count.assign(g.size() * dims, 0);
+      auto in_range = [&](int d) { return d >= 0 && static_cast<size_t>(d) < dims; };
+      for (const auto& e : g.arcs) {
+        if (!in_range(e.dim) || e.a >= g.size() || e.b >= g.size()) continue;
+        ++count[e.a * dims + static_cast<size_t>(e.dim)];
+        if (e.b != e.a) ++count[e.b * dims + static_cast<size_t>(e.dim)];
+      }
+      for (uint32_t v = 0; v < g.size(); ++v)
+        for (int x : g.nodes[v].label.dims())
+          if (in_range(x)) ++count[v * dims + static_cast<size_t>(x)];
+    }
+  }
+  std::optional<uint32_t> right_of(uint32_t v) const {
+    return counterpart_[0][v] == kNone ? std::nullopt : std::optional<uint32_t>(counterpart_[0][v]);
+  }
+  std::optional<uint32_t> left_of(uint32_t v) const {
+    return counterpart_[1][v] == kNone ? std::nullopt : std::optional<uint32_t>(counterpart_[1][v]);
+  }
+  size_t count_arcs(Side r, uint32_t v, int d) const {
+    const auto dims = static_cast<size_t>(std::max(s_.dimension, 0)) + 1;
+    return arc_count_[index_of(r)][v * dims + static_cast<size_t>(d)];
+  }
 
   // ---------------------------------------------------------------------------------------------
   bool structure() {
@@ -126,7 +173,7 @@ class Checker {
       if (!ok) continue;
       for (uint32_t v = 0; v < g.size(); ++v)
         for (int d = 0; d <= n; ++d) {
-          const size_t c = g.count_arcs(v, d);
+          const size_t c = count_arcs(r, v, d);
           if (c > 1) {
             add("S-dim-twice", Severity::Error, "structure", r, {g.nodes[v].name},
                 "dimension " + std::to_string(d) + " is used " + std::to_string(c) + " times at " +
@@ -197,14 +244,14 @@ class Checker {
     const std::string cond = "I(" + std::to_string(d) + ")";
     const std::string ds = std::to_string(d);
     for (uint32_t v = 0; v < s_.left.size(); ++v) {
-      const size_t cl = s_.left.count_arcs(v, d);
+      const size_t cl = count_arcs(Side::L, v, d);
       const std::string& nm = s_.left.nodes[v].name;
       if (cl > 1) {
         ok = false;  // reported as S-dim-twice
         continue;
       }
-      if (auto r = s_.right_of(v)) {
-        const size_t cr = s_.right.count_arcs(*r, d);
+      if (auto r = right_of(v)) {
+        const size_t cr = count_arcs(Side::R, *r, d);
         if (cr > 1) {
           ok = false;
           continue;
@@ -224,8 +271,8 @@ class Checker {
       }
     }
     for (uint32_t v = 0; v < s_.right.size(); ++v) {
-      if (s_.left_of(v)) continue;
-      const size_t cr = s_.right.count_arcs(v, d);
+      if (left_of(v)) continue;
+      const size_t cr = count_arcs(Side::R, v, d);
       if (cr == 0) {
         add("I-added-node", Severity::Error, cond, Side::R, {s_.right.nodes[v].name},
             "added node " + s_.right.nodes[v].name + " has no " + ds + "-arc in R (E4)");
@@ -243,13 +290,17 @@ class Checker {
     const GraphScheme& g = side(r);
     std::vector<std::array<CoreArc, 2>> out(g.size());
     const int lab[2] = {i, j};
+    // Label positions first, then explicit arcs in order (the last one wins, as in a per-node scan).
     for (uint32_t v = 0; v < g.size(); ++v)
-      for (int k = 0; k < 2; ++k) {
+      for (int k = 0; k < 2; ++k)
         for (size_t p = 0; p < g.nodes[v].label.size(); ++p)
           if (g.nodes[v].label[p] == lab[k]) out[v][k] = CoreArc{true, v, s_.orbit[p]};
-        for (const auto& e : g.arcs)
-          if (e.dim == lab[k] && (e.a == v || e.b == v)) out[v][k] = CoreArc{true, e.a == v ? e.b : e.a, -1};
-      }
+    for (const auto& e : g.arcs)
+      for (int k = 0; k < 2; ++k)
+        if (e.dim == lab[k]) {
+          out[e.a][k] = CoreArc{true, e.b, -1};
+          out[e.b][k] = CoreArc{true, e.a, -1};
+        }
     return out;
   }
 
@@ -279,7 +330,7 @@ class Checker {
   bool has_branching(int i, int j, const std::string& cond) {
     for (Side r : graph::kSides)
       for (uint32_t v = 0; v < side(r).size(); ++v)
-        if (side(r).count_arcs(v, i) > 1 || side(r).count_arcs(v, j) > 1) {
+        if (count_arcs(r, v, i) > 1 || count_arcs(r, v, j) > 1) {
           add("C-skipped", Severity::Note, cond, r, {side(r).nodes[v].name},
               cond + " not evaluated: a node has two " + std::to_string(i) + "- or " + std::to_string(j) + "-arcs");
           return true;
@@ -298,7 +349,7 @@ class Checker {
       sd[index_of(r)].on_cycle.assign(g.size(), {false, false});
       sd[index_of(r)].on_path.assign(g.size(), {false, false});
       for (uint32_t v = 0; v < g.size(); ++v) {
-        const auto counterpart = r == Side::L ? s_.right_of(v) : s_.left_of(v);
+        const auto counterpart = r == Side::L ? right_of(v) : left_of(v);
         for (int k = 0; k < 2; ++k) {
           const CoreArc& a = sd[index_of(r)].core[v][k];
           if (!a.exists) continue;
@@ -471,7 +522,7 @@ class Checker {
     const int lab[2] = {i, j};
     bool ok = true;
     for (uint32_t v = 0; v < s_.right.size(); ++v) {
-      auto l = s_.left_of(v);
+      auto l = left_of(v);
       for (int k = 0; k < 2; ++k) {
         bool concerned;
         if (l) {

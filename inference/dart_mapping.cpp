@@ -1,6 +1,7 @@
 #include "inference/dart_mapping.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "model/core/error.hpp"
 #include "model/io/json_reader.hpp"
@@ -100,12 +101,15 @@ std::string mapping_to_json_text(const DartMapping& m) {
 
 std::vector<std::pair<Dart, Dart>> expand_mapping(const GMap& before, const GMap& after,
                                                    const DartMapping& m) {
-  std::vector<std::pair<Dart, Dart>> out;
-  std::vector<std::string> where;
-  for (size_t k = 0; k < m.pairs.size(); ++k) {
-    out.push_back(m.pairs[k]);
-    where.push_back("pairs[" + std::to_string(k) + "]");
-  }
+  // Every pair with its source: pairs[s] for s < pairs.size(), else orbits[s - pairs.size()] (the
+  // place named in errors, formatted only when one is raised).
+  std::vector<std::pair<Dart, Dart>> out(m.pairs.begin(), m.pairs.end());
+  std::vector<uint32_t> source(out.size());
+  std::iota(source.begin(), source.end(), 0u);
+  auto where = [&](size_t k) {
+    const size_t s = source[k];
+    return s < m.pairs.size() ? "pairs[" + std::to_string(s) + "]" : "orbits[" + std::to_string(s - m.pairs.size()) + "]";
+  };
   for (size_t k = 0; k < m.orbits.size(); ++k) {
     const OrbitPair& o = m.orbits[k];
     const std::string at = "orbits[" + std::to_string(k) + "]";
@@ -122,27 +126,28 @@ std::vector<std::pair<Dart, Dart>> expand_mapping(const GMap& before, const GMap
                   at);
     for (auto p : *iso) {
       out.push_back(p);
-      where.push_back(at);
+      source.push_back(static_cast<uint32_t>(m.pairs.size() + k));
     }
   }
   std::vector<uint32_t> seen_b(before.capacity(), UINT32_MAX), seen_a(after.capacity(), UINT32_MAX);
   std::vector<std::pair<Dart, Dart>> uniq;
+  uniq.reserve(out.size());
   for (size_t k = 0; k < out.size(); ++k) {
     const auto [g, h] = out[k];
-    if (!before.alive(g)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(g) + " in the before map", where[k]);
-    if (!after.alive(h)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(h) + " in the after map", where[k]);
+    if (!before.alive(g)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(g) + " in the before map", where(k));
+    if (!after.alive(h)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(h) + " in the after map", where(k));
     const bool sb = seen_b[g] != UINT32_MAX, sa = seen_a[h] != UINT32_MAX;
     if (sb && sa && seen_b[g] == h) continue;  // the same pair twice (e.g. overlapping orbit pairs)
     if (sb)
       throw Error(ErrorCode::Schema,
                   "before dart " + std::to_string(g) + " is mapped twice (to " + std::to_string(seen_b[g]) +
                       " and " + std::to_string(h) + ")",
-                  where[k]);
+                  where(k));
     if (sa)
       throw Error(ErrorCode::Schema,
                   "after dart " + std::to_string(h) + " is the image of two darts (" + std::to_string(seen_a[h]) +
                       " and " + std::to_string(g) + ")",
-                  where[k]);
+                  where(k));
     seen_b[g] = h;
     seen_a[h] = g;
     uniq.emplace_back(g, h);
@@ -182,6 +187,7 @@ JointGraph joint_from_pair(const GMap& before, const GMap& after, const DartMapp
     if (!sa[h]) throw Error(ErrorCode::Schema, "after dart " + std::to_string(h) + " is mapped but not selected", "after_selection");
   }
   JointGraph j(n);
+  j.reserve(before.size() + after.size());
   std::vector<uint32_t> ib(before.capacity(), kUndefined), ia(after.capacity(), kUndefined);
   before.for_each_dart([&](Dart d) {
     if (sb[d]) ib[d] = j.add_dart(Side::L, d);

@@ -38,6 +38,15 @@ std::vector<OrbitType> all_orbit_types(int n) {
   return out;
 }
 
+std::vector<uint32_t> equivalent_starts(const FoldResult& f) {
+  std::vector<uint32_t> out;
+  for (const auto& n : f.nodes)
+    if (n.side == Side::L && !n.label.has_hole() && n.label.mask() == f.orbit.mask())
+      for (uint32_t x : n.darts)
+        if (x != kUndefined) out.push_back(x);
+  return out;
+}
+
 InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
   InferenceResult res;
   const std::vector<OrbitType> types = opt.orbit ? std::vector<OrbitType>{*opt.orbit} : all_orbit_types(j.dimension());
@@ -49,9 +58,7 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
     at.start = a;
     at.start_text = j.describe(a);
     marked[a] = 1;
-    if (!f.nodes.empty())
-      for (uint32_t x : f.nodes[0].darts)
-        if (x != kUndefined) marked[x] = 1;
+    for (uint32_t x : equivalent_starts(f)) marked[x] = 1;
     if (!f.ok()) {
       at.outcome = AttemptOutcome::FoldFailed;
       at.failure = f.failure;
@@ -60,11 +67,7 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
       res.attempts.push_back(std::move(at));
       return;
     }
-    for (const auto& n : f.nodes) {
-      (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
-      if (n.side == Side::L && !n.label.has_hole() && n.label.mask() == o.mask())
-        for (uint32_t x : n.darts) marked[x] = 1;
-    }
+    for (const auto& n : f.nodes) (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
     InferredRule r = rule_from_fold(f, j, "inferred_" + std::to_string(res.rules.size()), opt.rule);
     if (!r.accepted()) {
       at.outcome = r.verdict == RuleVerdict::NoHook ? AttemptOutcome::NoHook : AttemptOutcome::Inconsistent;

@@ -6,10 +6,16 @@
 // increasing index order that is not marked for <o>:
 //   fold(J, <o>, a) (fold.hpp) — or, with all_relabelings, every fold over the combinations of
 //   consistent relabelings (fold_all), each processed as below; then mark (a documented choice, the thesis leaving it open):
-//    * the whole hook orbit J<o>(a), after a success or a failure: instantiation does not depend on
-//      which dart of O is the start, so every dart of O would give the same answer;
-//    * after a success, also the darts of every L node whose decoration has no `_` and whose set is
-//      <o>: starting there roots the same rule at another hook;
+//    * the whole hook orbit J<o>(a): instantiation does not depend on which dart of O is the
+//      start, so every dart of O would give the same answer;
+//    * after a success or a failure, also the darts of every L node whose decoration has no `_`
+//      and whose set is <o> (equivalent_starts). After a success, starting there roots the same
+//      rule at another hook. After a failure, a scheme from such a start x would contain, through
+//      the explicit arcs of the fold's path from a to x read backwards, J<o>(a) as a node, and
+//      rooted there it would be a scheme from a, which folding (complete, App. C) did not find;
+//      the argument assumes that node's decoration full, and completeness_test.cpp checks the
+//      claim exhaustively on small maps. Each start is then folded about once per node class
+//      instead of once per orbit, which makes a failing orbit type cost about what one fold visits;
 //   a successful fold becomes a rule (rule_from_fold.hpp); an accepted rule is kept unless it is
 //   isomorphic (scheme_isomorphism.hpp, up to a permutation of positions) to one already kept, in
 //   which case it is counted as a duplicate of that one.
@@ -59,6 +65,11 @@ struct InferenceResult {
   std::vector<InferAttempt> attempts;
   bool truncated = false;  // all_relabelings: some start dart reached relabeling_limit
 };
+
+// The starts a fold makes redundant for its orbit type (the marking above, after a success or a
+// failure): the darts of every L node whose decoration has no `_` and has the set of <o>, the hook
+// orbit included (joint-graph darts).
+std::vector<uint32_t> equivalent_starts(const FoldResult& f);
 
 // Orbit types tried when none is given.
 std::vector<OrbitType> all_orbit_types(int n);

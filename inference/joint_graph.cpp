@@ -9,6 +9,13 @@ namespace gmr::inference {
 
 std::string dimension_text(int d) { return d == kKappa ? "κ" : std::to_string(d); }
 
+void JointGraph::reserve(size_t darts) {
+  for (auto& l : link_) l.reserve(darts);
+  kappa_.reserve(darts);
+  side_.reserve(darts);
+  origin_.reserve(darts);
+}
+
 uint32_t JointGraph::add_dart(Side side, Dart origin) {
   const auto x = static_cast<uint32_t>(side_.size());
   for (auto& l : link_) l.push_back(kUndefined);
@@ -33,6 +40,7 @@ std::string JointGraph::describe(uint32_t x) const {
 JointGraph joint_from_map(const GMap& g, JointIndex* index) {
   if (g.is_omap()) throw Error(ErrorCode::Usage, "topological folding works on G-maps, not O-maps");
   JointGraph j(g.dimension());
+  j.reserve(g.size());
   std::vector<uint32_t> idx(g.capacity(), kUndefined);
   g.for_each_dart([&](Dart d) { idx[d] = j.add_dart(Side::L, d); });
   g.for_each_dart([&](Dart d) {

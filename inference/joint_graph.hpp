@@ -39,6 +39,8 @@ class JointGraph {
   int dimension() const { return n_; }
   size_t size() const { return side_.size(); }
 
+  // Room for `darts` darts (no reallocation while they are added).
+  void reserve(size_t darts);
   // A new dart with every slot undefined.
   uint32_t add_dart(Side side, Dart origin);
   // Sets x –d– y in both directions (d in 0..n or kKappa); x == y is a loop.

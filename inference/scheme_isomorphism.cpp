@@ -4,6 +4,8 @@
 #include <deque>
 #include <map>
 #include <numeric>
+#include <string_view>
+#include <unordered_map>
 
 #include "model/core/error.hpp"
 
@@ -62,9 +64,12 @@ Joint joint_of(const RuleScheme& s, const std::vector<size_t>& perm) {
   };
   add_side(s.left, 0, "L");
   add_side(s.right, static_cast<uint32_t>(s.left.size()), "R");
+  // κ arcs: preserved nodes by name (RuleScheme::right_of, through an index: linear in the scheme).
+  std::unordered_map<std::string_view, uint32_t> right_index;
+  for (uint32_t v = 0; v < s.right.size(); ++v) right_index.emplace(s.right.nodes[v].name, v);
   for (uint32_t v = 0; v < s.left.size(); ++v)
-    if (auto r = s.right_of(v)) {
-      const auto w = static_cast<uint32_t>(s.left.size() + *r);
+    if (auto r = right_index.find(s.left.nodes[v].name); r != right_index.end()) {
+      const auto w = static_cast<uint32_t>(s.left.size() + r->second);
       j.nbr[v * j.slots + j.slots - 1] = w;
       j.nbr[w * j.slots + j.slots - 1] = v;
     }

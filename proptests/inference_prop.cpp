@@ -11,10 +11,14 @@
 //    node only when G is a single <o>-orbit; (2) free darts (loops) of G on preserved darts become
 //    explicit loops the rule demands (thesis §7.2.5; posterior-cut loops remove them); (3) where
 //    loops make several relabelings consistent, the documented first choice is taken
-//    (inference/relabeling.hpp), also when two dimensions link the same darts (degenerate maps).
+//    (inference/relabeling.hpp), also when two dimensions link the same darts (degenerate maps);
+//    (4) when S deletes its hook node and preserves nothing of G's component, κ(G,H) is not
+//    connected and nothing is inferred (a named failure: folding needs a connected J).
 //    Tested statement: when G is a single <o>-orbit and G and H have no free dart and no two
 //    dimensions linking a dart to the same neighbour, the inferred rule is S up to rule-scheme
-//    isomorphism.
+//    isomorphism, and applied to another random map at a dart where S applies it gives S's result
+//    up to isomorphism. Checked with the library schemes and with random schemes the checker
+//    accepts (random_schemes.hpp: arbitrary one-hook schemes and the copies family).
 #include <gtest/gtest.h>
 
 #include "inference/dart_mapping.hpp"
@@ -30,6 +34,9 @@
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 #include "proptests/library.hpp"
+#include "proptests/scheme_cases.hpp"
+#include "checker/scheme_checker.hpp"
+#include "model/core/error.hpp"
 
 using namespace gmr;
 using namespace gmr::prop;
@@ -66,28 +73,61 @@ bool is_simple(const GMap& g) {
   return true;
 }
 
-}  // namespace
-
-TEST(InferenceProps, FoldThenInstantiateIsTheInput) {
-  EXPECT_TRUE(check_property<MapCase>("fold_instantiate", gen_map_case(5), [](const MapCase& c) {
-    const GMap g = c.build();
-    RC_PRE(g.size() > 0u);
-    const auto darts = g.darts();
-    const Dart d = darts[*rc::gen::inRange<size_t>(0, darts.size())];
-    const OrbitType o = *gen_orbit_type(g.dimension());
-    JointIndex index;
-    const JointGraph j = joint_from_component(g, d, &index);
-    RC_LOG() << "map " << c.str() << ", fold on " << o.str() << " from dart " << d << "\n";
-    const FoldResult f = fold(j, o, index.before[d]);
-    RC_TAG(f.ok() ? "folded" : to_string(f.failure.kind));
-    if (o.size() == 0) RC_ASSERT(f.ok());
-    if (!f.ok()) return;
-    RC_LOG() << to_text(f, j);
-    RC_ASSERT(instantiation_mismatch(f, j) == "");
-    RC_ASSERT(f.nodes.size() * f.hook_orbit.size() == j.size());
-    RC_ASSERT(f.hook_orbit.size() == orbit(g, o, d).size());
-  }));
+// The round trip of S on the component of dart 0 of `whole` (see the header), then S and the
+// inferred rule applied to `other` at the same dart when S is the inferred rule's isomorphic
+// original: they agree (isomorphic results) wherever S applies.
+void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const GMap& whole, const GMap& other) {
+  RC_PRE(whole.size() > 0u);
+  const GMap g = component_map(whole, 0);
+  // The first dart, from a random offset, where the scheme applies.
+  const Dart offset = *rc::gen::inRange<Dart>(0, static_cast<Dart>(g.size()));
+  GMap after = g;
+  Dart h = kNoDart;
+  for (Dart k = 0; k < g.size() && h == kNoDart; ++k) {
+    const Dart cand = static_cast<Dart>((offset + k) % g.size());
+    if (engine.apply(after, {cand}).applied) h = cand;
+  }
+  RC_LOG() << "scheme " << s.name << " at " << h << "\n";
+  if (h == kNoDart) {
+    RC_TAG("not applicable");
+    return;
+  }
+  JointIndex index;
+  const JointGraph j = joint_from_pair(g, after, identity_mapping(g, after), &index);
+  const FoldResult f = fold(j, s.orbit, index.before[h]);
+  if (!f.ok()) {
+    RC_TAG(to_string(f.failure.kind));
+    return;
+  }
+  RC_ASSERT(instantiation_mismatch(f, j) == "");
+  const InferredRule r = rule_from_fold(f, j);
+  RC_TAG(to_string(r.verdict));
+  RC_LOG() << "inferred scheme:\n" << scheme_to_json_text(r.scheme) << "DOT:\n" << draw::to_dot(r.scheme);
+  if (!r.accepted()) return;
+  std::vector<Dart> hooks;
+  for (uint32_t k : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[k][0]);
+  auto [again, app2] = apply_scheme(g, r.scheme, hooks);
+  RC_ASSERT(app2.applied);
+  RC_ASSERT(is_isomorphic(again, after));
+  // G is a single <o>-orbit and G and H are simple (no free dart, no parallel links): L is one
+  // node, no loop adds an explicit arc, every relabeling is forced, and the inferred rule is S
+  // itself up to isomorphism; then both agree on another map wherever S applies.
+  if (orbit(g, s.orbit, h).size() == g.size() && is_simple(g) && is_simple(after)) {
+    RC_TAG("one orbit");
+    RC_ASSERT(schemes_isomorphic(r.scheme, s));
+    if (other.size() == 0u) return;
+    const Dart d = *rc::gen::inRange<Dart>(0, static_cast<Dart>(other.capacity()));
+    if (!other.alive(d)) return;
+    GMap by_s = other;
+    if (!engine.apply(by_s, {d}).applied) return;
+    auto [by_r, app3] = apply_scheme(other, r.scheme, {d});
+    RC_ASSERT(app3.applied);
+    RC_ASSERT(is_isomorphic(by_r, by_s));
+    RC_TAG("agrees elsewhere");
+  }
 }
+
+}  // namespace
 
 TEST(InferenceProps, InferredRuleReappliesToItsExample) {
   // Schemes of dimension 2 and 3 with one hook, accepted by the checker.
@@ -101,45 +141,33 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
   EXPECT_TRUE(check_property<MapCase>("infer_roundtrip", gen, [&](const MapCase& c) {
     const GMap whole = c.build();
     RC_PRE(whole.size() > 0u);
-    const GMap g = component_map(whole, 0);
-    const auto& lib = one_hook[g.dimension()];
+    const auto& lib = one_hook[whole.dimension()];
     const LibraryScheme& ls = scheme_library()[lib[*rc::gen::inRange<size_t>(0, lib.size())]];
-    // The first dart, from a random offset, where the scheme applies.
-    const Dart offset = *rc::gen::inRange<Dart>(0, static_cast<Dart>(g.size()));
-    GMap after = g;
-    Dart h = kNoDart;
-    for (Dart k = 0; k < g.size() && h == kNoDart; ++k) {
-      const Dart cand = static_cast<Dart>((offset + k) % g.size());
-      if (ls.engine->apply(after, {cand}).applied) h = cand;
-    }
-    RC_LOG() << "map " << c.str() << " (component of dart 0), scheme " << ls.scheme.name << " at " << h << "\n";
-    if (h == kNoDart) {
-      RC_TAG("not applicable");
-      return;
-    }
-    JointIndex index;
-    const JointGraph j = joint_from_pair(g, after, identity_mapping(g, after), &index);
-    const FoldResult f = fold(j, ls.scheme.orbit, index.before[h]);
-    if (!f.ok()) {
-      RC_TAG(to_string(f.failure.kind));
-      return;
-    }
-    RC_ASSERT(instantiation_mismatch(f, j) == "");
-    const InferredRule r = rule_from_fold(f, j);
-    RC_TAG(to_string(r.verdict));
-    RC_LOG() << "inferred scheme:\n" << scheme_to_json_text(r.scheme) << "DOT:\n" << draw::to_dot(r.scheme);
-    if (!r.accepted()) return;
-    std::vector<Dart> hooks;
-    for (uint32_t k : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[k][0]);
-    auto [again, app2] = apply_scheme(g, r.scheme, hooks);
-    RC_ASSERT(app2.applied);
-    RC_ASSERT(is_isomorphic(again, after));
-    // G is a single <o>-orbit and G and H are simple (no free dart, no parallel links): L is one
-    // node, no loop adds an explicit arc, every relabeling is forced, and the inferred rule is S
-    // itself up to isomorphism.
-    if (orbit(g, ls.scheme.orbit, h).size() == g.size() && is_simple(g) && is_simple(after)) {
-      RC_TAG("one orbit");
-      RC_ASSERT(schemes_isomorphic(r.scheme, ls.scheme));
-    }
+    RC_LOG() << "map " << c.str() << " (component of dart 0)\n";
+    const GMap other = (*gen_map_case_of_dim(whole.dimension(), 4)).build();
+    roundtrip(ls.scheme, *ls.engine, whole, other);
   }));
+}
+
+// The same round trip with random schemes (model/testing/random_schemes.hpp) that the checker
+// accepts: arbitrary Jerboa-style schemes with one hook, and the copies family (consistent by
+// construction).
+void random_roundtrip(const SchemeCase& c) {
+  const RuleScheme s = c.build();
+  std::optional<SchemeEngine> engine;
+  try {
+    engine.emplace(s);
+  } catch (const Error&) {
+    RC_DISCARD("malformed");
+  }
+  RC_PRE(s.hooks.size() == 1u);
+  RC_PRE(check_scheme(s, {.embeddings = false}).ok());
+  const MapCase m = *gen_map_case_of_dim(c.n, 4), o = *gen_map_case_of_dim(c.n, 4);
+  RC_LOG() << "scheme case " << c.str() << "\n" << scheme_to_json_text(s) << "map " << m.str() << " (component of dart 0)\n";
+  roundtrip(s, *engine, m.build(), o.build());
+}
+
+TEST(InferenceProps, InferredRuleFromRandomSchemes) {
+  EXPECT_TRUE(check_property<SchemeCase>("infer_random_2d", gen_scheme_case_of_dim(2), random_roundtrip));
+  EXPECT_TRUE(check_property<SchemeCase>("infer_copies", gen_copies_scheme_case(), random_roundtrip));
 }

@@ -13,11 +13,16 @@
 
 #include <gtest/gtest.h>
 
+#include "inference/dart_mapping.hpp"
 #include "inference/fold.hpp"
 #include "inference/fold_check.hpp"
 #include "inference/infer.hpp"
 #include "model/core/orbit.hpp"
+#include "model/core/builders.hpp"
 #include "model/graph/map_family.hpp"
+#include "model/io/scheme_json.hpp"
+#include "model/scheme/scheme_engine.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::inference;
@@ -165,4 +170,61 @@ TEST(FoldCompleteness, ExhaustiveOnSmallMaps) {
   EXPECT_GT(folded, 100u);
   EXPECT_GT(failed, 10u);
   std::cout << folded << " folds, " << failed << " failures, each confirmed by exhaustive search\n";
+}
+
+// The driver's marking after a failure (infer.hpp): a start x in a node of the failed fold whose
+// decoration is full and has the set of <o> is skipped. Exhaustively, no scheme of that orbit type
+// instantiates to the map with x preserved at index 0 either (the oracle above), so skipping x
+// loses no rule.
+TEST(FoldCompleteness, StartsMarkedAfterAFailureFailToo) {
+  size_t checked = 0;
+  for (auto [n, max_darts] : {std::pair{1, size_t{6}}, std::pair{2, size_t{6}}, std::pair{3, size_t{4}}})
+    for (size_t k = 1; k <= max_darts; ++k)
+      for (const GMap& g : connected_maps(n, MapKind::GMap, k)) {
+        const JointGraph j = joint_from_map(g);
+        for (const OrbitType& o : all_orbit_types(n))
+          for (Dart a : g.darts()) {
+            const FoldResult f = fold(j, o, a);
+            if (f.ok()) continue;
+            for (uint32_t x : equivalent_starts(f)) {
+              ++checked;
+              EXPECT_FALSE(Oracle(g, o, j.origin(x)).search())
+                  << n << "-G-map of " << k << " darts, " << o.str() << ": the fold from " << a
+                  << " fails, the one from " << x << " can succeed";
+            }
+          }
+      }
+  EXPECT_GT(checked, 100u);
+  std::cout << checked << " skipped starts, each confirmed by exhaustive search\n";
+}
+
+// The same on joint representations of before/after pairs (κ, several orbit types failing after
+// many nodes): the second quad subdivision and Doo–Sabin steps of a cube, every orbit type and start.
+TEST(FoldCompleteness, StartsMarkedAfterAFailureFailTooOnJointGraphs) {
+  size_t checked = 0;
+  for (const char* rule : {"quad_subdivision", "doo_sabin_subdivision"}) {
+    const RuleScheme s = io::read_scheme_file(gmr::testing::source_path("tools/data/rules/" + std::string(rule) + ".json"));
+    const GMap cube = make_cube();
+    GMap once = cube;
+    ASSERT_TRUE(apply_scheme_in_place(once, s, {0}).applied);
+    GMap after = once;
+    ASSERT_TRUE(apply_scheme_in_place(after, s, {0}).applied);
+    const JointGraph j = joint_from_pair(once, after, identity_mapping(once, after));
+    for (const OrbitType& o : all_orbit_types(2)) {
+      std::vector<uint8_t> seen(j.size(), 0);
+      for (uint32_t a = 0; a < once.size(); ++a) {
+        if (seen[a]) continue;
+        const FoldResult f = fold(j, o, a);
+        if (f.ok()) continue;
+        for (uint32_t x : equivalent_starts(f)) {
+          if (seen[x]) continue;
+          seen[x] = 1;
+          ++checked;
+          EXPECT_FALSE(fold(j, o, x).ok()) << rule << ", " << o.str() << ": the fold from " << a
+                                           << " fails, the one from " << x << " succeeds";
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 100u);
 }

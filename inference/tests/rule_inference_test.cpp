@@ -5,6 +5,7 @@
 #include "checker/scheme_checker.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/prior_cut.hpp"
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
 #include "inference/tests/inference_support.hpp"
@@ -234,7 +235,8 @@ TEST(DartMapping, OrbitPairsExpandByOrbitIsomorphism) {
 // applied to an example whose hook orbit is the whole object, then inferred back on the scheme's
 // orbit type with the identity mapping. Examples with free cells (a single polygon, a free edge)
 // carry loops on preserved darts, which the inferred rule would demand (thesis §7.6); the
-// posterior-cut loops of those dimensions give the library scheme back, up to isomorphism. The
+// posterior-cut loops of those dimensions give the library scheme back, up to isomorphism, and so
+// do the prior-cut loops (cut from the example before folding). The
 // result is also applied to another object and compared with the library's (signatures).
 TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
   struct Case {
@@ -250,6 +252,8 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       {"loop_subdivision", make_polygon(3), 0, make_tetrahedron()},  // Loop topology: triangle -> 4
       {"quad_subdivision", make_polygon(4), 0, make_cube()},
       {"edge_triangulation", make_tetrahedron(), 0, make_prism(5)},
+      {"doo_sabin_subdivision", make_cube(), 0, make_prism(5)},
+      {"sqrt3_subdivision", make_tetrahedron(), 0, make_square_pyramid()},  // not all triangles: still applies
       {"face_triangulation", make_polygon(5), 1u << 2, make_polygon(7)},
       {"face_extrusion", make_polygon(4), 1u << 2, make_polygon(3)},
       {"vertex_insertion", make_free_edge(), 1u << 1, make_free_edge()},
@@ -279,7 +283,13 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       EXPECT_EQ(signature(mine), signature(theirs));
     }
     if (c.cut) {  // without the cut, the rule keeps its explicit loops: not the library's
+      // Prior-cut loops (prior_cut.hpp): the same loops cut from the example instead of the rule.
+      JointGraph cut = j;
+      EXPECT_GT(cut_prior_loops(cut, c.cut), 0u);
       opt.rule.cut_loops = 0;
+      const InferenceResult prior = infer_rules(cut, opt);
+      ASSERT_EQ(prior.rules.size(), 1u) << summary_text(prior);
+      EXPECT_TRUE(schemes_isomorphic(prior.rules[0].scheme, lib)) << scheme_to_json_text(prior.rules[0].scheme);
       const InferenceResult raw = infer_rules(j, opt);
       ASSERT_EQ(raw.rules.size(), 1u);
       EXPECT_FALSE(schemes_isomorphic(raw.rules[0].scheme, lib));
@@ -372,12 +382,12 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
 }
 
 // Doo–Sabin iterations 1, 2, 3, each inferred directly from iteration 0 (thesis §7.4.3): the after
-// object is the cube subdivided k times by a Doo–Sabin scheme (tests/data/doo_sabin.json, accepted
-// by the checker); the engine keeps the ids of preserved darts, so the identity mapping relates
+// object is the cube subdivided k times by the library's Doo–Sabin scheme
+// (tools/data/rules/doo_sabin_subdivision.json); the engine keeps the ids of preserved darts, so the identity mapping relates
 // iteration 0 and iteration k. R has 4, 16, 64 nodes on the closed cube; iteration 1 is the scheme
 // itself; applied to a tetrahedron, the inferred iteration-k rule equals k Doo–Sabin steps.
 TEST(RuleInference, DooSabinIterationsFromIterationZero) {
-  const RuleScheme ds = read_scheme_file(data("doo_sabin.json"));
+  const RuleScheme ds = read_scheme_file(rule_file("doo_sabin_subdivision"));
   ASSERT_TRUE(check_scheme(ds).ok());
   const GMap cube = make_cube();
   GMap after = cube, tetra_k = make_tetrahedron();
@@ -403,12 +413,12 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
 }
 
 // Kobbelt √3 (thesis §7.4.2, a single-step rule with edge flips): inferred from a tetrahedron
-// (24 -> 72 darts) subdivided by a √3 scheme (tests/data/sqrt3.json, accepted by the checker):
-// L1 + R3, the scheme itself; applied to a closed triangle mesh (the cube with every face
+// (24 -> 72 darts) subdivided by the library's √3 scheme (tools/data/rules/sqrt3_subdivision.json):
+// L1 + R3, the library scheme itself (rule-scheme isomorphism); applied to a closed triangle mesh (the cube with every face
 // triangulated by the library's face triangulation) it triples the face count, and agrees with the
 // scheme (signatures).
 TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
-  const RuleScheme s3 = read_scheme_file(data("sqrt3.json"));
+  const RuleScheme s3 = read_scheme_file(rule_file("sqrt3_subdivision"));
   ASSERT_TRUE(check_scheme(s3).ok());
   const GMap tet = make_tetrahedron();
   const GMap after = applied(tet, s3, 0);

@@ -211,6 +211,17 @@ std::vector<Voxel> menger_voxels(int level) {
   return cur;
 }
 
+std::vector<Voxel> menger_polycube_voxels(int l, int m, int k) {
+  if (l < 0 || m < 0 || k < 0 || l > 100 || m > 100 || k > 100)
+    throw Error(ErrorCode::Range, "Menger polycube hole counts must be in 0..100");
+  std::vector<Voxel> out;
+  for (int x = 0; x <= 2 * l; ++x)
+    for (int y = 0; y <= 2 * m; ++y)
+      for (int z = 0; z <= 2 * k; ++z)
+        if ((x % 2) + (y % 2) + (z % 2) < 2) out.push_back({x, y, z});
+  return out;
+}
+
 GMap make_stacked_cubes() { return make_polycube({{0, 0, 0}, {0, 0, 1}}); }
 
 GMap orient(const GMap& g, Dart d, bool keep_boundary) {

@@ -39,6 +39,11 @@ using Voxel = std::array<int, 3>;
 GMap make_polycube(const std::vector<Voxel>& voxels);
 // Menger sponge voxels at `level` (20^level voxels).
 std::vector<Voxel> menger_voxels(int level);
+// One iteration of the (l, m, k)-Menger operation on a unit cube (Menger polycubes, Richaume et al.
+// 2019, cited by the inference paper §9.2.2): the (2l+1) x (2m+1) x (2k+1) grid without the voxels
+// having at least two odd coordinates, i.e. l, m, k unit holes through the cube along the three axes,
+// one unit apart. (1, 1, 1) is menger_voxels(1); (2, 2, 2) has 81 voxels.
+std::vector<Voxel> menger_polycube_voxels(int l, int m, int k);
 
 // A closed orientable surface of genus 1 (a torus) as a grid of w x h quads with wrap-around.
 GMap make_torus(size_t w, size_t h, int n = 2);

@@ -1,13 +1,14 @@
 // `gmr infer BEFORE AFTER [--orbit O | --all-orbits] [--map PAIRS.json] [-o DIR] [--json]
-//  [--explicit-loops 2] [--cut-loops 1,2] [--all-relabelings]`: rule inference by topological folding (thesis Ch. 7, inference/infer.hpp).
+//  [--explicit-loops 2] [--prior-cut-loops 1,2] [--cut-loops 1,2] [--all-relabelings]`: rule inference by topological folding (thesis Ch. 7, inference/infer.hpp).
 // The preserved darts are given by a gmr.mapping file (--map: dart pairs and orbit pairs,
 // inference/dart_mapping.hpp) or, by default, by identity on dart ids (darts alive in both maps).
 // Without --orbit every orbit type is tried (progress on standard error when it is a terminal).
 // Prints the summary table (orbit type, start dart, nodes in L and R, outcome: fold failure by
 // name, checker verdict, duplicates merged) or, with --json, the same as JSON with the accepted
 // schemes. With -o DIR, writes atomically for every accepted rule k: DIR/rule_k.json (gmr.rule
-// scheme) and DIR/rule_k.dot (diagram), for every rule the checker rejected:
-// DIR/rejected_k.json and DIR/rejected_k.dot (diagnostics highlighted), and DIR/summary.txt.
+// scheme) and DIR/rule_k.dot and .svg (diagram, rendered by Graphviz), for every rule the checker
+// rejected: DIR/rejected_k.json and DIR/rejected_k.dot/.svg (diagnostics highlighted), and
+// DIR/summary.txt. Schemes of more than kMaxDrawnNodes nodes get no SVG (the summary says so).
 // Exit 0 when at least one rule is inferred, 1 when none is, 2 on bad input.
 #include <unistd.h>
 
@@ -18,7 +19,9 @@
 #include "checker/dot_overlay.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/prior_cut.hpp"
 #include "model/core/error.hpp"
+#include "model/draw/render.hpp"
 #include "model/draw/rule_dot.hpp"
 #include "model/io/atomic_write.hpp"
 #include "model/io/scheme_json.hpp"
@@ -34,8 +37,12 @@ using namespace gmr::scheme;
 
 namespace {
 
+// Larger schemes (e.g. an inferred second Menger iteration, 400+ nodes) are left as DOT only:
+// Graphviz lays them out slowly and unreadably.
+constexpr size_t kMaxDrawnNodes = 300;
+
 struct InferArgs {
-  std::string before, after, from, orbit, map, output, explicit_loops, cut_loops;
+  std::string before, after, from, orbit, map, output, explicit_loops, prior_cut_loops, cut_loops;
   bool all_orbits = false, json = false, all_relabelings = false;
 };
 
@@ -51,6 +58,7 @@ int run_infer(const InferArgs& a) {
     if (e.code() != ErrorCode::Schema || a.map.empty()) throw;
     throw Error(ErrorCode::Schema, e.message(), a.map + ":$." + e.location());
   }
+  cut_prior_loops(j, parse_dimension_list(a.prior_cut_loops, g.map.dimension(), "--prior-cut-loops"));
   InferOptions opt;
   if (!a.orbit.empty()) opt.orbit = parse_orbit_option(a.orbit, "--orbit");
   opt.fold.loops.explicit_loops = parse_dimension_list(a.explicit_loops, g.map.dimension(), "--explicit-loops");
@@ -95,10 +103,21 @@ int run_infer(const InferArgs& a) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw Error(ErrorCode::Io, "cannot create the directory: " + ec.message(), a.output);
+    std::string not_drawn;
+    // The diagram as DOT, and as SVG (Graphviz) unless the scheme is too large to lay out usefully.
+    auto write_diagram = [&](const RuleScheme& s, const std::string& base, const std::string& dot) {
+      write_file_atomic(dir / (base + ".dot"), dot);
+      const size_t nodes = s.left.size() + s.right.size();
+      if (nodes <= kMaxDrawnNodes)
+        draw::render_dot_file(dot, draw::ImageFormat::Svg, dir / (base + ".svg"));
+      else
+        not_drawn += base + ".svg not drawn: " + std::to_string(nodes) + " nodes (more than " +
+                     std::to_string(kMaxDrawnNodes) + "; " + base + ".dot has the diagram)\n";
+    };
     for (size_t k = 0; k < res.rules.size(); ++k) {
       const std::string base = "rule_" + std::to_string(k);
       write_scheme_file(res.rules[k].scheme, dir / (base + ".json"));
-      write_file_atomic(dir / (base + ".dot"), to_dot(res.rules[k].scheme));
+      write_diagram(res.rules[k].scheme, base, to_dot(res.rules[k].scheme));
     }
     size_t r = 0;
     for (const auto& at : res.attempts) {
@@ -110,9 +129,9 @@ int run_infer(const InferArgs& a) {
       write_scheme_file(s, dir / (base + ".json"));
       RuleDotOptions dot;
       if (at.outcome == AttemptOutcome::Inconsistent) dot.highlights = dot_highlights(at.rejected->check);
-      write_file_atomic(dir / (base + ".dot"), to_dot(s, dot));
+      write_diagram(s, base, to_dot(s, dot));
     }
-    write_file_atomic(dir / "summary.txt", summary);
+    write_file_atomic(dir / "summary.txt", summary + not_drawn);
   }
   return res.rules.empty() ? kExitNegative : kExitOk;
 }
@@ -133,9 +152,11 @@ void register_infer(CLI::App& app) {
                   "Dimensions whose loops are always explicit arcs (conservative), e.g. 2 or 0,2 (default: implicit first)");
   sub->add_flag("--all-relabelings", args->all_relabelings,
                 "Fold every combination of consistent relabelings (thesis §7.6), not only the documented default choice");
+  sub->add_option("--prior-cut-loops", args->prior_cut_loops,
+                  "Prior-cut loops: before folding, remove loops of these dimensions that a preserved dart has before and after, e.g. 2");
   sub->add_option("--cut-loops", args->cut_loops,
                   "Posterior-cut loops: remove explicit loops of these dimensions present on both copies of a preserved node, e.g. 2");
-  sub->add_option("-o,--output", args->output, "Directory for rule_k.json/.dot, rejected_k.json/.dot and summary.txt");
+  sub->add_option("-o,--output", args->output, "Directory for rule_k.json/.dot/.svg, rejected_k.json/.dot/.svg and summary.txt");
   sub->add_flag("--json", args->json, "Print JSON (attempts and inferred schemes)");
   set_action(sub, [args] { return run_infer(*args); });
 }

@@ -397,7 +397,7 @@ TEST_F(Cli, FoldPrintsTheSchemeOrTheNamedFailure) {
 }
 
 // `gmr infer`: the quad subdivision from the cube and its subdivision (identity mapping), written
-// as gmr.rule + DOT + summary and accepted by `gmr check`; the triangle -> hexagon vertex split
+// as gmr.rule + DOT + SVG + summary and accepted by `gmr check`; the triangle -> hexagon vertex split
 // (explicit --map) infers nothing (exit 1) and writes the rejected scheme with its diagnostics.
 TEST_F(Cli, InferWritesCheckedSchemes) {
   const fs::path cube = dir / "cube.json", sub = dir / "sub.json";
@@ -406,12 +406,26 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   Result r = run("infer " + q(cube) + " " + q(sub) + " --orbit '<0,1,2>' -o " + q(dir / "out/q"));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 rule(s) inferred"), std::string::npos) << r.out;
-  for (const char* f : {"rule_0.json", "rule_0.dot", "summary.txt"}) EXPECT_TRUE(fs::exists(dir / "out/q" / f)) << f;
+  for (const char* f : {"rule_0.json", "rule_0.dot", "rule_0.svg", "summary.txt"})
+    EXPECT_TRUE(fs::exists(dir / "out/q" / f)) << f;
+  EXPECT_NE(read_text_file(dir / "out/q/rule_0.svg").find("<svg"), std::string::npos);
   const auto rule = nlohmann::json::parse(read_text_file(dir / "out/q/rule_0.json"));
   EXPECT_EQ(rule["format"], "gmr.rule");
   EXPECT_EQ(rule["left"]["nodes"].size(), 1u);
   EXPECT_EQ(rule["right"]["nodes"].size(), 4u);
   EXPECT_EQ(run("check " + q(dir / "out/q/rule_0.json")).code, 0);
+  // Prior-cut loops on a closed surface: nothing to cut, the same rule.
+  r = run("infer " + q(cube) + " " + q(sub) + " --orbit '<0,1,2>' --prior-cut-loops 0,1");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 rule(s) inferred"), std::string::npos) << r.out;
+  // A scheme too large to lay out (<> on 192 + 768 darts: 960 nodes): DOT only, said in the summary.
+  const fs::path sub2 = dir / "sub2.json";
+  ASSERT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(sub) + " --hook 0 -o " + q(sub2)).code, 0);
+  r = run("infer " + q(sub) + " " + q(sub2) + " --orbit '<>' -o " + q(dir / "out/e"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out/e/rule_0.dot"));
+  EXPECT_FALSE(fs::exists(dir / "out/e/rule_0.svg"));
+  EXPECT_NE(read_text_file(dir / "out/e/summary.txt").find("rule_0.svg not drawn: 960 nodes"), std::string::npos);
   // Every orbit type, JSON: the <0,1,2> rule is among them; duplicates are counted.
   r = run("infer --json --all-orbits " + q(cube) + " " + q(sub));
   EXPECT_EQ(r.code, 0) << r.err;
@@ -430,12 +444,14 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.out.find("rejected by the checker"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(dir / "out/v/rejected_0.json"));
+  EXPECT_TRUE(fs::exists(dir / "out/v/rejected_0.svg"));
   EXPECT_FALSE(fs::exists(dir / "out/v/rule_0.json"));
   const fs::path esplit = source_dir() / "inference/tests/data/triangle_hexagon_edge_split.json";
   EXPECT_EQ(run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit)).code, 0);
   // Bad input: both orbit options, a mapping pairing one after dart twice.
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --orbit '<0>' --all-orbits", "--all-orbits");
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --cut-loops 3", "--cut-loops", "not a dimension");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --prior-cut-loops 3", "--prior-cut-loops", "not a dimension");
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --explicit-loops x", "--explicit-loops");
   // Every relabeling combination, with the loops of preserved nodes cut: still exactly one rule.
   r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit) + " --all-relabelings --cut-loops 2");

@@ -1,6 +1,8 @@
 // Dart storage: deletion with reuse, markers, memory, links.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
@@ -103,4 +105,25 @@ TEST(Builders, PolycubeAndMenger) {
   EXPECT_EQ(count_cells(m, 2), 120u - 24u);
   EXPECT_THROW(make_polycube({{0, 0, 0}, {0, 0, 0}}), Error);
   EXPECT_EQ(menger_voxels(2).size(), 400u);
+}
+
+TEST(Builders, MengerPolycube) {
+  auto sorted = [](std::vector<Voxel> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  EXPECT_EQ(sorted(menger_polycube_voxels(1, 1, 1)), sorted(menger_voxels(1)));
+  // (2,2,2): the inference paper's §9.2.2 counts (81 volumes; its 270 faces and 216 vertices are
+  // those of the boundary surface, of genus 28).
+  const GMap m = make_polycube(menger_polycube_voxels(2, 2, 2));
+  EXPECT_TRUE(is_valid(m));
+  EXPECT_EQ(count_cells(m, 3), 81u);
+  EXPECT_EQ(count_cells(m, 2), 81u * 6 - 108);  // 108 faces shared by two voxels
+  EXPECT_EQ(count_boundary_cells(m), 270u);
+  EXPECT_EQ(count_cells(m, 0), 216u);  // every grid point touches a hole
+  // Boundary surface: 4 darts per edge (two faces, two darts each), chi = V - E + F = 2 - 2 * 28.
+  const auto boundary_edges = static_cast<long long>(free_darts(m, 3).size() / 4);
+  EXPECT_EQ(216 - boundary_edges + 270, 2 - 2 * 28);
+  EXPECT_EQ(menger_polycube_voxels(0, 0, 0).size(), 1u);
+  EXPECT_THROW(menger_polycube_voxels(-1, 0, 0), Error);
 }
