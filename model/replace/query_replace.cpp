@@ -43,9 +43,8 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     if (progress && done % 4096 == 0) progress(done, reps.size());
     ++done;
     const BoundaryGraph c = cell_boundary(g, cell_dim, rep, target.flag, positive);
-    StoreEntry ce;
-    const Word key = store_key(c, cell_dim, store.mode(), &ce);
-    const std::vector<StoreEntry>* hits = store.find(key);
+    const StoreMatch match = store.match(c, cell_dim);
+    const std::vector<StoreEntry>* hits = match.hits;
     if (!hits) {
       r.unmatched.push_back(rep);
       continue;
@@ -53,7 +52,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     if (hits->size() > 1) ++r.ambiguous_keys;
     const StoreEntry& pe = hits->front();
     const Pattern& p = store.patterns()[pe.pattern];
-    const std::vector<uint32_t> oc = boundary_labeling(c, ce.start);
+    const std::vector<uint32_t> oc = boundary_labeling(c, match.start);
     const std::vector<uint32_t> op = boundary_labeling(p.boundary, pe.start);
     std::vector<Dart> f(p.map.map.capacity(), kNoDart);
     for (size_t k = 0; k < op.size(); ++k) f[p.boundary.dart[op[k]]] = c.dart[oc[k]];
