@@ -1,5 +1,7 @@
 #include "model/replace/query_replace.hpp"
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
@@ -38,6 +40,18 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   const OrbitType cells = cell_type(g, cell_dim);
   const std::vector<Dart> reps = orbit_representatives(g, cells);
   r.cells = reps.size();
+  // Room for the copies (at most the largest interior per cell, twice for shared faces), so that
+  // the link, flag and position arrays grow once.
+  size_t most = 0;
+  for (const Pattern& p : store.patterns())
+    if (p.cell_dim == cell_dim) most = std::max(most, p.interior_darts.size());
+  const size_t room = g.capacity() + reps.size() * most * (n > cell_dim ? 2 : 1);
+  g.reserve(room);
+  target.flag.reserve(room);
+  if (target.positioned()) target.position.reserve(room);
+  // Per pattern, its darts in the label order of its minimal start (computed on first use).
+  std::vector<std::vector<uint32_t>> pattern_order(store.patterns().size());
+  std::vector<Dart> f;
   size_t done = 0;
   for (Dart rep : reps) {
     if (progress && done % 4096 == 0) progress(done, reps.size());
@@ -53,8 +67,9 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     const StoreEntry& pe = hits->front();
     const Pattern& p = store.patterns()[pe.pattern];
     const std::vector<uint32_t> oc = boundary_labeling(c, match.start);
-    const std::vector<uint32_t> op = boundary_labeling(p.boundary, pe.start);
-    std::vector<Dart> f(p.map.map.capacity(), kNoDart);
+    std::vector<uint32_t>& op = pattern_order[pe.pattern];
+    if (op.empty()) op = boundary_labeling(p.boundary, pe.start);
+    f.assign(p.map.map.capacity(), kNoDart);
     for (size_t k = 0; k < op.size(); ++k) f[p.boundary.dart[op[k]]] = c.dart[oc[k]];
     r.darts_added += replace_cell(target, p, f);
     if (after_each) after_each();
