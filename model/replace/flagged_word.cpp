@@ -123,7 +123,12 @@ StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags) {
   const std::vector<uint32_t>& size = face_sizes(b, s.faces, s.face_squares);
   auto key = [&](uint32_t k) { return uint64_t(size[k]) << 32 | size[b.neighbour(k, b.arity - 1)]; };
   s.invariant = UINT64_MAX;
-  for (uint32_t k : s.darts) s.invariant = std::min(s.invariant, key(k));
+  for (uint32_t k : s.darts) {
+    s.invariant = std::min(s.invariant, key(k));
+    // A sum of mixes: the multiset of (pair, whether the alpha_0-neighbour is flagged).
+    uint64_t h = (key(k) << 1 | (b.flag[b.neighbour(k, 0)] != 0)) * 0x9e3779b97f4a7c15ull;
+    s.pair_sum += h ^ (h >> 29);
+  }
   std::erase_if(s.darts, [&](uint32_t k) { return key(k) != s.invariant; });
   return s;
 }

@@ -36,12 +36,15 @@ std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start);
 // itself by every isomorphism: the minimum over it is a canonical form and every start reaching
 // it is kept (the automorphism count is unchanged). In local order.
 // For arity 3, `faces` and `face_squares` count the faces of the boundary and sum their squared
-// sizes (more invariants, for the store's profiles; 0 otherwise).
+// sizes, and `pair_sum` sums a mix of the pairs of all candidate starts before the restriction,
+// each with whether its alpha_0-neighbour is flagged (more invariants, for the store's profiles; 0
+// otherwise).
 struct StartSet {
   std::vector<uint32_t> darts;
   uint64_t invariant = 0;
   uint32_t faces = 0;
   uint64_t face_squares = 0;
+  uint64_t pair_sum = 0;
 };
 StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags = true);
 

@@ -7,11 +7,12 @@ namespace gmr::replace {
 namespace {
 
 // Cheap isomorphism invariants of a boundary: cell dimension, darts, start darts and their
-// invariant, faces and their squared sizes (flagged_word.hpp).
+// invariant, faces and their squared sizes, the mixed sum of the start pairs (flagged_word.hpp).
 Word profile(const BoundaryGraph& b, int cell_dim, const StartSet& starts) {
   return {static_cast<uint32_t>(cell_dim), b.size(), static_cast<uint32_t>(starts.darts.size()),
           static_cast<uint32_t>(starts.invariant >> 32), static_cast<uint32_t>(starts.invariant), starts.faces,
-          static_cast<uint32_t>(starts.face_squares)};
+          static_cast<uint32_t>(starts.face_squares), static_cast<uint32_t>(starts.pair_sum >> 32),
+          static_cast<uint32_t>(starts.pair_sum)};
 }
 
 Word key_of(CellSignature s, int cell_dim) {
