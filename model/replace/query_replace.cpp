@@ -18,7 +18,8 @@ size_t QueryReplaceReport::replaced() const {
 
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each,
-                                 const std::function<void(size_t, size_t)>& progress) {
+                                 const std::function<void(size_t, size_t)>& progress,
+                                 const DuplicateSelector& select) {
   GMap& g = target.map;
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
@@ -63,8 +64,16 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
       r.unmatched.push_back(rep);
       continue;
     }
-    if (hits->size() > 1) ++r.ambiguous_keys;
-    const StoreEntry& pe = hits->front();
+    size_t choice = 0;
+    if (hits->size() > 1) {
+      ++r.ambiguous_keys;
+      if (select) choice = select(*hits, target, rep);
+      if (choice >= hits->size())
+        throw Error(ErrorCode::Usage, "the duplicate selector chose pattern " + std::to_string(choice) + " of " +
+                                          std::to_string(hits->size()),
+                    "dart " + std::to_string(rep));
+    }
+    const StoreEntry& pe = (*hits)[choice];
     const Pattern& p = store.patterns()[pe.pattern];
     const std::vector<uint32_t> oc = boundary_labeling(c, match.start);
     std::vector<uint32_t>& op = pattern_order[pe.pattern];
