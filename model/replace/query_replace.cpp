@@ -19,7 +19,7 @@ size_t QueryReplaceReport::replaced() const {
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each,
                                  const std::function<void(size_t, size_t)>& progress,
-                                 const DuplicateSelector& select) {
+                                 const DuplicateSelector& select, const std::vector<Dart>* only) {
   GMap& g = target.map;
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
@@ -39,7 +39,9 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   if (store.mode() == Mode::Oriented) positive = orientation_classes(g);
   // A face of a 3-G-map is a <0,1,3>-orbit; a volume a <0,1,2>-orbit; faces of 2-G-maps <0,1>.
   const OrbitType cells = cell_type(g, cell_dim);
-  const std::vector<Dart> reps = orbit_representatives(g, cells);
+  const std::vector<Dart> reps = only ? *only : orbit_representatives(g, cells);
+  for (Dart d : reps)
+    if (!g.alive(d)) throw Error(ErrorCode::Usage, "no such dart", "dart " + std::to_string(d));
   r.cells = reps.size();
   // Room for the copies (at most the largest interior per cell, twice for shared faces), so that
   // the link, flag and position arrays grow once.

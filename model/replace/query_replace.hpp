@@ -37,10 +37,12 @@ struct QueryReplaceReport {
 // duplicates need outside information, e.g. geometry or vertex values): it receives the candidates
 // (in insertion order), the target and a dart of the cell, and returns an index into the
 // candidates; without it, the first candidate is used. An index out of range is Error(Usage).
+// only (optional): the cells to examine, one dart each (default: every cell of the map).
 using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each = {},
                                  const std::function<void(size_t, size_t)>& progress = {},
-                                 const DuplicateSelector& select = {});
+                                 const DuplicateSelector& select = {},
+                                 const std::vector<Dart>* only = nullptr);
 
 }  // namespace gmr::replace
