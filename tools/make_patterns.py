@@ -132,6 +132,213 @@ def volume_pattern(positions, corners, edges, hexes):
     }
 
 
+def polyhedral_pattern(positions, corners, edges, volumes):
+    """A 3-G-map from volumes given as closed polygon surfaces (lists of vertex cycles). A dart is a
+    (volume, face, vertex, other vertex of the edge) flag; alpha_2 joins the two faces of a volume
+    sharing an edge, alpha_3 the same face (vertex set) in two volumes; boundary darts are 3-free."""
+    darts, index = [], {}
+    for c, faces in enumerate(volumes):
+        for f, cyc in enumerate(faces):
+            for i, v in enumerate(cyc):
+                for w in (cyc[(i + 1) % len(cyc)], cyc[i - 1]):
+                    index[(c, f, v, w)] = len(darts)
+                    darts.append((c, f, v, w))
+    n = len(darts)
+    face_key = {(c, f): frozenset(cyc) for c, faces in enumerate(volumes) for f, cyc in enumerate(faces)}
+    by_face = {}
+    for cf, key in face_key.items():
+        by_face.setdefault(key, []).append(cf)
+
+    def has_edge(cyc, v, w):
+        return any({cyc[i], cyc[(i + 1) % len(cyc)]} == {v, w} for i in range(len(cyc)))
+
+    alpha = [[0] * n for _ in range(4)]
+    for d, (c, f, v, w) in enumerate(darts):
+        cyc = volumes[c][f]
+        alpha[0][d] = index[(c, f, w, v)]
+        i = cyc.index(v)
+        (x,) = {cyc[(i + 1) % len(cyc)], cyc[i - 1]} - {w}
+        alpha[1][d] = index[(c, f, v, x)]
+        others = [g for g, gc in enumerate(volumes[c]) if g != f and has_edge(gc, v, w)]
+        if len(others) != 1:
+            raise SystemExit("volume %d: edge %s in %d faces" % (c, sorted((v, w)), len(others) + 1))
+        alpha[2][d] = index[(c, others[0], v, w)]
+        shared = [cf for cf in by_face[face_key[(c, f)]] if cf != (c, f)]
+        if len(shared) > 1:
+            raise SystemExit("a face shared by more than two volumes")
+        alpha[3][d] = index[(shared[0][0], shared[0][1], v, w)] if shared else d
+
+    def on_edge(v, w):
+        return any(on_segment(positions[v], positions[a], positions[b]) and
+                   on_segment(positions[w], positions[a], positions[b]) for a, b in edges)
+
+    flags = [alpha[3][d] == d and darts[d][2] in corners and on_edge(darts[d][2], darts[d][3]) for d in range(n)]
+    first = {}
+    for d in range(n):
+        first.setdefault(darts[d][2], d)
+    return {
+        "format": "gmr.gmap", "version": 1, "kind": "gmap", "dimension": 3, "darts": n,
+        "alpha": {str(i): alpha[i] for i in range(4)},
+        "embeddings": [
+            {"name": "flag", "orbit": "<>", "values": [{"dart": d, "value": flags[d]} for d in range(n)]},
+            {"name": "position", "orbit": "<1,2,3>",
+             "values": [{"dart": d, "value": positions[v]} for v, d in sorted(first.items())]},
+        ],
+    }
+
+
+CUBE_EDGES = [(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1]
+
+
+def cube_rotations():
+    """The 24 rotations of the cube as permutations of its corners (coordinate bits x + 2y + 4z)."""
+    def corner_map(f):
+        return tuple(sum(b << i for i, b in enumerate(f([(v >> i) & 1 for i in range(3)]))) for v in range(8))
+    turn_x = corner_map(lambda p: [p[0], 1 - p[2], p[1]])
+    turn_y = corner_map(lambda p: [p[2], p[1], 1 - p[0]])
+    group = {tuple(range(8))}
+    frontier = list(group)
+    while frontier:
+        g = frontier.pop()
+        for t in (turn_x, turn_y):
+            h = tuple(t[g[v]] for v in range(8))
+            if h not in group:
+                group.add(h)
+                frontier.append(h)
+    assert len(group) == 24
+    return sorted(group)
+
+
+def mc_face_step(inside, isolate_inside):
+    """The faces of the cube after the face step of marching cubes (§7.2) for the inside corners
+    `inside` (a bit mask): each cut edge gets its midpoint; a face with 2 cuts is cut by one segment;
+    a face with 4 cuts by two segments cutting off its inside corners (face in isolate_inside) or its
+    outside corners. Returns the pieces (vertex cycles) and the segments."""
+    cut = lambda a, b: ((inside >> a) ^ (inside >> b)) & 1
+    mid = lambda a, b: 8 + CUBE_EDGES.index((min(a, b), max(a, b)))
+    pieces, segments = [], []
+    for f, face in enumerate(HEX_FACES):
+        cyc = []
+        for i in range(4):
+            a, b = face[i], face[(i + 1) % 4]
+            cyc.append(a)
+            if cut(a, b):
+                cyc.append(mid(a, b))
+        cuts = [k for k, v in enumerate(cyc) if v >= 8]
+        if not cuts:
+            pieces.append(cyc)
+        elif len(cuts) == 2:
+            i, j = cuts
+            pieces.append(cyc[i:j + 1])
+            pieces.append(cyc[j:] + cyc[:i + 1])
+            segments.append((cyc[i], cyc[j]))
+        else:
+            # corners between consecutive cuts; cut off those on the chosen side
+            keep = list(cyc)
+            for k in range(4):
+                p, q = cuts[k], cuts[(k + 1) % 4]
+                corner = cyc[(p + 1) % len(cyc)]
+                if bool(inside >> corner & 1) == (f in isolate_inside):
+                    pieces.append([cyc[p], corner, cyc[q]])
+                    segments.append((cyc[p], cyc[q]))
+                    keep.remove(corner)
+            pieces.append(keep)
+    return pieces, segments
+
+
+def mc_volumes(inside, isolate_inside):
+    """The volumes of the marching-cubes v-pattern: the cube's surface after the face step is cut
+    along the loops of segments into components; each component closed by the loops' polygons is
+    one volume (inside or outside part of the cell)."""
+    pieces, segments = mc_face_step(inside, isolate_inside)
+    seg = {frozenset(s) for s in segments}
+    # loops: every cut point has two segments
+    nbr = {}
+    for a, b in segments:
+        nbr.setdefault(a, []).append(b)
+        nbr.setdefault(b, []).append(a)
+    loops, seen = [], set()
+    for start in sorted(nbr):
+        if start in seen:
+            continue
+        loop, prev, v = [start], None, start
+        seen.add(start)
+        while True:
+            (w,) = [x for x in nbr[v] if x != prev] if prev is not None else [nbr[v][0]]
+            if w == start:
+                break
+            loop.append(w)
+            seen.add(w)
+            prev, v = v, w
+        loops.append(loop)
+    # components: pieces sharing an edge that is not a segment
+    parent = list(range(len(pieces)))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    by_edge = {}
+    for k, cyc in enumerate(pieces):
+        for i in range(len(cyc)):
+            e = frozenset((cyc[i], cyc[(i + 1) % len(cyc)]))
+            by_edge.setdefault(e, []).append(k)
+    for e, ks in by_edge.items():
+        assert len(ks) == 2, (inside, e, ks)
+        if e not in seg:
+            parent[find(ks[0])] = find(ks[1])
+    comps = sorted({find(k) for k in range(len(pieces))})
+    volumes = {c: [pieces[k] for k in range(len(pieces)) if find(k) == c] for c in comps}
+    for loop in loops:
+        sides = {find(k) for i in range(len(loop)) for k in by_edge[frozenset((loop[i], loop[(i + 1) % len(loop)]))]}
+        assert len(sides) == 2, (inside, loop)
+        for c in sides:
+            volumes[c].append(loop)
+    assert len(volumes) == len(loops) + 1
+    return [volumes[c] for c in comps]
+
+
+def mc_classes():
+    """One representative (inside mask, faces whose inside corners are cut off) per class of the
+    654 marching-cubes configurations under the cube's 24 rotations and the exchange of inside and
+    outside (the cell's boundary after the face step does not tell them apart): the face
+    resolution "inside corners cut off" is carried by the face, so a rotation permutes masks and
+    resolutions, and the exchange complements both."""
+    rotations = cube_rotations()
+    faces = [frozenset(f) for f in HEX_FACES]
+    seen, reps = set(), []
+    for inside in range(1, 255):
+        cut = lambda a, b: ((inside >> a) ^ (inside >> b)) & 1
+        ambiguous = [f for f, face in enumerate(HEX_FACES) if all(cut(face[i], face[(i + 1) % 4]) for i in range(4))]
+        for res in range(1 << len(ambiguous)):
+            iso = frozenset(f for k, f in enumerate(ambiguous) if res >> k & 1)
+            images = set()
+            for r in rotations:
+                m = sum(1 << r[v] for v in range(8) if inside >> v & 1)
+                fs = frozenset(faces.index(frozenset(r[v] for v in faces[f])) for f in iso)
+                amb = frozenset(faces.index(frozenset(r[v] for v in faces[f])) for f in ambiguous)
+                images.add((m, fs))
+                images.add((255 ^ m, amb - fs))  # the same cut, inside and outside swapped
+            key = min(images, key=lambda x: (x[0], sorted(x[1])))
+            if key not in seen:
+                seen.add(key)
+                reps.append((inside, iso))
+    return reps
+
+
+def marching_cubes_set():
+    """The 29 v-patterns of marching cubes (§7.2, Fig. 12), generated: one per rotation class of
+    the face-step configurations, each the cube cut into its inside and outside parts."""
+    positions = [[v & 1, v >> 1 & 1, v >> 2 & 1] for v in range(8)]
+    positions += [[(positions[a][i] + positions[b][i]) / 2 for i in range(3)] for a, b in CUBE_EDGES]
+    out = {}
+    for inside, iso in mc_classes():
+        name = "mc-%03d" % inside + "".join("-f%d" % f for f in sorted(iso))
+        out[name] = polyhedral_pattern(positions, list(range(8)), CUBE_EDGES, mc_volumes(inside, iso))
+    return out
+
+
 def hex_2x2x2():
     """Fig. 9b: a hexahedron cut into 2 x 2 x 2 hexahedra."""
     positions = [[x / 2, y / 2, z / 2] for z in range(3) for y in range(3) for x in range(3)]
@@ -188,6 +395,13 @@ SETS = {
     "hex-subdivision": {
         "split4": (SQUARE, [0, 1, 2, 3], [[0, 4, 8, 7], [4, 1, 5, 8], [8, 5, 2, 6], [7, 8, 6, 3]]),
     },
+    # Marching cubes (§7.2, Fig. 11): the 3 f-patterns of a face with 2 adjacent, 2 opposite or 4
+    # cut edges (a corner cut off; the face cut in two; two opposite corners cut off).
+    "marching-cubes": {
+        "face-corner": (SQUARE, [0, 1, 2, 3], [[0, 4, 7], [4, 1, 2, 3, 7]]),
+        "face-halves": (SQUARE, [0, 1, 2, 3], [[0, 4, 6, 3], [4, 1, 2, 6]]),
+        "face-two-corners": (SQUARE, [0, 1, 2, 3], [[0, 4, 7], [5, 2, 6], [4, 1, 5, 6, 3, 7]]),
+    },
     # Tetrahedra to hexahedra (§7.4, Fig. 16 left): a triangle with split edges cut into 3 quads.
     "tet-to-hex": {
         "triangle3": (TRIANGLE, [0, 1, 2], [[0, 3, 6, 5], [3, 1, 4, 6], [6, 4, 2, 5]]),
@@ -205,6 +419,12 @@ VOLUME_SETS = {
 
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "data", "patterns")
+    mc = os.path.join(root, "marching-cubes")
+    os.makedirs(mc, exist_ok=True)
+    for name, content in marching_cubes_set().items():
+        with open(os.path.join(mc, name + ".json"), "w") as out:
+            json.dump(content, out)
+            out.write("\n")
     for folder, patterns in VOLUME_SETS.items():
         os.makedirs(os.path.join(root, folder), exist_ok=True)
         for name, build in patterns.items():

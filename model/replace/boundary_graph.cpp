@@ -20,11 +20,17 @@ namespace {
 
 // Fills nbr from a local index and a per-dart neighbour function. The dart -> local index table
 // is a per-thread array indexed by dart, reset after use (no hashing, no per-cell allocation).
+// The dart -> local index table of this thread: UINT32_MAX everywhere between uses.
+std::vector<uint32_t>& local_index(Dart capacity) {
+  thread_local std::vector<uint32_t> local;
+  if (local.size() < capacity) local.resize(capacity, UINT32_MAX);
+  return local;
+}
+
 template <class Nbr>
 void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive,
           Nbr nbr) {
-  thread_local std::vector<uint32_t> local;
-  if (local.size() < capacity) local.resize(capacity, UINT32_MAX);
+  std::vector<uint32_t>& local = local_index(capacity);
   for (uint32_t k = 0; k < b.size(); ++k) local[b.dart[k]] = k;
   struct Reset {
     std::vector<uint32_t>& local;
@@ -53,10 +59,35 @@ void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, co
 
 BoundaryGraph cell_boundary(const GMap& g, int i, Dart d, const std::vector<uint32_t>& flag,
                             const std::vector<uint8_t>& positive) {
+  if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
+  // One breadth-first traversal of the <0..i-1>-orbit (neighbours by increasing dimension, the
+  // order of orbit()) numbers the darts and records their neighbours.
   BoundaryGraph b;
   b.arity = i;
-  b.dart = orbit(g, OrbitType::range(0, i - 1), d);
-  fill(b, g.capacity(), flag, positive, [&](Dart x, int j) { return g.alpha(j, x); });
+  std::vector<uint32_t>& local = local_index(g.capacity());
+  b.dart.reserve(256);
+  b.nbr.reserve(size_t(256) * i);
+  b.dart.push_back(d);
+  local[d] = 0;
+  for (uint32_t k = 0; k < b.dart.size(); ++k) {
+    const Dart x = b.dart[k];
+    for (int j = 0; j < i; ++j) {
+      const Dart y = g.alpha(j, x);
+      if (local[y] == UINT32_MAX) {
+        local[y] = static_cast<uint32_t>(b.dart.size());
+        b.dart.push_back(y);
+      }
+      b.nbr.push_back(local[y]);
+    }
+  }
+  b.flag.resize(b.size());
+  b.positive.resize(b.size());
+  for (uint32_t k = 0; k < b.size(); ++k) {
+    const Dart x = b.dart[k];
+    local[x] = UINT32_MAX;
+    b.flag[k] = x < flag.size() ? flag[x] : 0;
+    b.positive[k] = positive.empty() ? 1 : positive[x];
+  }
   return b;
 }
 

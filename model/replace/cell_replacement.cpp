@@ -10,31 +10,25 @@ namespace {
 
 // §5.2: a copied dart at a boundary vertex takes the target's position of that vertex; at an
 // interior vertex, the pattern's mean value coordinates applied to the target's boundary positions
-// (the origin when the pattern has no geometry).
+// (the origin when the pattern has no geometry). `mirror` is the offset of the mirror copies (0:
+// none).
 void place_interior(FlaggedMap& target, const Pattern& p, const std::vector<Dart>& f, const std::vector<Dart>& copy,
-                    const std::vector<Dart>& mirror) {
-  const GMap& q = p.map.map;
-  const OrbitType vertex = vertex_orbit_type(q);
-  std::vector<Vec3> at(q.capacity(), Vec3{0, 0, 0});
+                    size_t mirror) {
+  thread_local std::vector<Vec3> at;
+  at.assign(p.vertex_anchor.size(), Vec3{0, 0, 0});
+  for (size_t v = 0; v < p.vertex_anchor.size(); ++v)
+    if (p.vertex_anchor[v] != kNoDart) at[v] = target.position[f[p.vertex_anchor[v]]];
   for (const InteriorVertex& v : p.interior_vertices) {
     Vec3 x{0, 0, 0};
     for (const auto& [b, w] : v.weights)
       for (int c = 0; c < 3; ++c) x[c] += w * target.position[f[b]][c];
-    for (Dart y : orbit(q, vertex, v.dart)) at[y] = x;
+    at[p.vertex_of[v.dart]] = x;
   }
-  for (Dart rep : orbit_representatives(q, vertex)) {
-    const std::vector<Dart> darts = orbit(q, vertex, rep);
-    for (Dart y : darts)
-      if (f[y] != kNoDart) {
-        for (Dart z : darts) at[z] = target.position[f[y]];
-        break;
-      }
+  for (Dart x : p.interior_darts) {
+    const Vec3& y = at[p.vertex_of[x]];
+    target.position[copy[x]] = y;
+    if (mirror) target.position[copy[x] + mirror] = y;
   }
-  q.for_each_dart([&](Dart x) {
-    if (copy[x] == kNoDart) return;
-    target.position[copy[x]] = at[x];
-    if (!mirror.empty()) target.position[mirror[x]] = at[x];
-  });
 }
 
 }  // namespace
@@ -55,30 +49,30 @@ size_t replace_cell(FlaggedMap& target, const Pattern& p, const std::vector<Dart
     }
   if (t0 == kNoDart) throw Error(ErrorCode::Usage, "empty match", p.name);
   const bool shared = n > i && !g.is_free(i + 1, t0);
-  std::vector<Dart> copy(q.capacity(), kNoDart), mirror;
-  if (shared) mirror.assign(q.capacity(), kNoDart);
-  q.for_each_dart([&](Dart x) {
-    if (q.is_free(i, x)) return;
-    copy[x] = g.add_dart();
-    if (shared) mirror[x] = g.add_dart();
-  });
+  // The copies are new consecutive darts: copy[x] for the interior dart x, and its mirror copy
+  // (the other half-face) at copy[x] + k.
+  const size_t k = p.interior_darts.size();
+  const Dart first = g.add_darts(k * (shared ? 2 : 1));
+  const Dart mirror = shared ? static_cast<Dart>(k) : 0;
+  thread_local std::vector<Dart> copy;
+  copy.assign(q.capacity(), kNoDart);
+  for (size_t j = 0; j < k; ++j) copy[p.interior_darts[j]] = first + static_cast<Dart>(j);
   target.resize_flags();
-  q.for_each_dart([&](Dart x) {
-    if (copy[x] == kNoDart) return;
+  for (Dart x : p.interior_darts) {
     for (int j = 0; j <= i; ++j) {
       const Dart y = q.alpha(j, x);
-      if (copy[y] != kNoDart) {
-        g.link(j, copy[x], copy[y]);
-        if (shared) g.link(j, mirror[x], mirror[y]);
+      if (copy[y] != kNoDart) {  // both copies are written from both sides: one direction each
+        g.set_alpha(j, copy[x], copy[y]);
+        if (shared) g.set_alpha(j, copy[x] + mirror, copy[y] + mirror);
       } else {  // j == i - 1 and y on the boundary: the only relinked dimension
         g.link(j, copy[x], f[y]);
-        if (shared) g.link(j, mirror[x], g.alpha(i + 1, f[y]));
+        if (shared) g.link(j, copy[x] + mirror, g.alpha(i + 1, f[y]));
       }
     }
-    if (shared) g.link(i + 1, copy[x], mirror[x]);
+    if (shared) g.link(i + 1, copy[x], copy[x] + mirror);
     target.flag[copy[x]] = x < p.map.flag.size() ? p.map.flag[x] : 0;
-    if (shared) target.flag[mirror[x]] = target.flag[copy[x]];
-  });
+    if (shared) target.flag[copy[x] + mirror] = target.flag[copy[x]];
+  }
   if (target.positioned()) place_interior(target, p, f, copy, mirror);
   return p.interior * (shared ? 2 : 1);
 }

@@ -1,5 +1,7 @@
 #include "model/replace/flagged_word.hpp"
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
 #include "model/core/word_comparison.hpp"
 
@@ -34,40 +36,39 @@ int stream_word(const BoundaryGraph& b, uint32_t start, bool with_flags, const W
   return cmp;
 }
 
-}  // namespace
-
-Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags) {
-  std::vector<uint32_t> label(b.size(), 0), order;
-  Word w;
-  stream_word(b, start, with_flags, nullptr, label, order, &w);
-  return w;
+// Sizes of the orbits of the first m neighbours (all but the last): for a volume boundary
+// (alpha_0, alpha_1, alpha_2 or abar_2) the number of darts of each face of the boundary surface.
+// Isomorphisms commute with the neighbours, so these sizes are invariants of the darts.
+// Also counts the faces and sums their squared sizes (two more invariants).
+const std::vector<uint32_t>& face_sizes(const BoundaryGraph& b, uint32_t& faces, uint64_t& squares) {
+  thread_local std::vector<uint32_t> size, stack;
+  size.assign(b.size(), 0);
+  for (uint32_t k = 0; k < b.size(); ++k) {
+    if (size[k]) continue;
+    stack.assign(1, k);
+    size[k] = 1;  // visited; the final size is written below
+    for (size_t i = 0; i < stack.size(); ++i)
+      for (int j = 0; j + 1 < b.arity; ++j) {
+        const uint32_t y = b.neighbour(stack[i], j);
+        if (!size[y]) {
+          size[y] = 1;
+          stack.push_back(y);
+        }
+      }
+    for (uint32_t y : stack) size[y] = static_cast<uint32_t>(stack.size());
+    ++faces;
+    squares += uint64_t(stack.size()) * stack.size();
+  }
+  return size;
 }
 
-std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start) {
-  std::vector<uint32_t> label(b.size(), 0), order;
-  stream_word(b, start, false, nullptr, label, order, nullptr);
-  return order;
-}
-
-CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_flags) {
+// The minimal word, one start after the other, each compared on the fly with the best so far
+// (early abort): O(|B|) memory, for graphs too large for one label array per start.
+CellSignature sequential_minimum(const BoundaryGraph& b, const std::vector<uint32_t>& starts, bool with_flags) {
   CellSignature s;
-  if (b.size() == 0) return s;
-  if (b.size() >= UINT32_MAX / 2) throw Error(ErrorCode::Range, "cell too large for 32-bit labels");
-  bool any_flag = false;
-  if (with_flags)
-    for (uint32_t f : b.flag) any_flag |= f != 0;
-  auto is_start = [&](uint32_t k, bool flagged_only) {
-    if (mode == Mode::Oriented && !b.positive[k]) return false;
-    return !flagged_only || b.flag[k] != 0;
-  };
-  // Flagged starts in D+ if there are some, else every start of the mode.
-  bool flagged_only = false;
-  if (any_flag)
-    for (uint32_t k = 0; k < b.size() && !flagged_only; ++k) flagged_only = is_start(k, true);
   std::vector<uint32_t> label(b.size(), 0), order;
   bool have = false;
-  for (uint32_t k = 0; k < b.size(); ++k) {
-    if (!is_start(k, flagged_only)) continue;
+  for (uint32_t k : starts) {
     if (!have) {
       stream_word(b, k, with_flags, nullptr, label, order, &s.word);
       s.start = k;
@@ -88,11 +89,158 @@ CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_fla
   return s;
 }
 
+}  // namespace
+
+Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags) {
+  std::vector<uint32_t> label(b.size(), 0), order;
+  Word w;
+  stream_word(b, start, with_flags, nullptr, label, order, &w);
+  return w;
+}
+
+std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start) {
+  std::vector<uint32_t> label(b.size(), 0), order;
+  stream_word(b, start, false, nullptr, label, order, nullptr);
+  return order;
+}
+
+// The start darts (Def. 5 with flags): the flagged darts (in D+ in oriented mode) if there are
+// some, else every dart (of D+ in oriented mode), in local order. For volume boundaries
+// (arity 3) only those whose pair (size of their face, size of the face across their edge) is
+// the smallest are kept: the pair is an isomorphism invariant, so the kept set is mapped onto
+// itself by every isomorphism, the minimum over it is still a canonical form, and it holds every
+// start reaching the minimum (the automorphism count is unchanged).
+StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags) {
+  std::vector<uint32_t> all, flagged;
+  for (uint32_t k = 0; k < b.size(); ++k) {
+    if (mode == Mode::Oriented && !b.positive[k]) continue;
+    all.push_back(k);
+    if (with_flags && b.flag[k] != 0) flagged.push_back(k);
+  }
+  StartSet s;
+  s.darts = std::move(flagged.empty() ? all : flagged);
+  if (b.arity < 3 || s.darts.empty()) return s;
+  const std::vector<uint32_t>& size = face_sizes(b, s.faces, s.face_squares);
+  auto key = [&](uint32_t k) { return uint64_t(size[k]) << 32 | size[b.neighbour(k, b.arity - 1)]; };
+  s.invariant = UINT64_MAX;
+  for (uint32_t k : s.darts) {
+    s.invariant = std::min(s.invariant, key(k));
+    // A sum of mixes: the multiset of (pair, whether the alpha_0-neighbour is flagged).
+    uint64_t h = (key(k) << 1 | (b.flag[b.neighbour(k, 0)] != 0)) * 0x9e3779b97f4a7c15ull;
+    s.pair_sum += h ^ (h >> 29);
+  }
+  std::erase_if(s.darts, [&](uint32_t k) { return key(k) != s.invariant; });
+  return s;
+}
+
+constexpr size_t kLockstepLabels = size_t(1) << 22;  // 16 MB of per-start labels at most
+
+// The minimal word over the start darts, all start darts streamed in lockstep (one dart of each
+// BFS per round, Def. 5): a start whose next letters exceed the round's smallest is dropped at
+// once, so only the starts reaching the minimum (the automorphisms) are traversed to the end and
+// no word is streamed twice. Each start has its own label array (all zero between calls).
+CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_flags) {
+  return minimal_signature(b, start_darts(b, mode, with_flags), with_flags);
+}
+
+CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& start_set, bool with_flags) {
+  CellSignature s;
+  if (b.size() == 0) return s;
+  if (b.size() >= UINT32_MAX / 2) throw Error(ErrorCode::Range, "cell too large for 32-bit labels");
+  const std::vector<uint32_t>& starts = start_set.darts;
+  const uint32_t n = b.size(), width = static_cast<uint32_t>(b.arity) + (with_flags ? 1 : 0);
+  if (double(starts.size()) * n > double(kLockstepLabels)) return sequential_minimum(b, starts, with_flags);
+  thread_local std::vector<uint32_t> label, order, length, alive, next, letters, best;
+  const size_t m = starts.size();
+  if (label.size() < m * n) label.resize(m * n, 0);
+  if (order.size() < m * n) order.resize(m * n);
+  length.assign(m, 1);
+  alive.resize(m);
+  letters.resize(m * width);
+  for (uint32_t c = 0; c < m; ++c) {
+    alive[c] = c;
+    order[size_t(c) * n] = starts[c];
+    label[size_t(c) * n + starts[c]] = 1;
+  }
+  auto drop = [&](uint32_t c) {
+    uint32_t* l = &label[size_t(c) * n];
+    for (uint32_t k = 0; k < length[c]; ++k) l[order[size_t(c) * n + k]] = 0;
+  };
+  s.word.reserve(size_t(n) * width + 1);  // + 1: room for a key prefix (pattern_store.hpp)
+  for (uint32_t k = 0; k < n && !alive.empty(); ++k) {
+    // A word that ends here (disconnected graph) is a proper prefix of the others: smaller.
+    bool some_end = false;
+    for (uint32_t c : alive) some_end |= length[c] <= k;
+    if (some_end) {
+      next.clear();
+      for (uint32_t c : alive) (length[c] <= k ? next : best).push_back(c);
+      for (uint32_t c : best) drop(c);
+      best.clear();
+      alive.swap(next);
+      break;
+    }
+    // This round's letters of every alive start; keep those equal to the smallest.
+    const uint32_t* least = nullptr;
+    for (uint32_t c : alive) {
+      uint32_t* l = &label[size_t(c) * n];
+      uint32_t* o = &order[size_t(c) * n];
+      uint32_t* w = &letters[size_t(c) * width];
+      const uint32_t x = o[k];
+      if (with_flags) *w++ = b.flag[x];
+      for (int j = 0; j < b.arity; ++j) {
+        const uint32_t y = b.neighbour(x, j);
+        if (!l[y]) {
+          o[length[c]] = y;
+          l[y] = ++length[c];
+        }
+        *w++ = l[y];
+      }
+      const uint32_t* mine = &letters[size_t(c) * width];
+      if (!least) {
+        least = mine;
+        continue;
+      }
+      uint32_t j = 0;
+      while (j < width && mine[j] == least[j]) ++j;
+      if (j < width && mine[j] < least[j]) least = mine;
+    }
+    next.clear();
+    for (uint32_t c : alive) {
+      const uint32_t* mine = &letters[size_t(c) * width];
+      uint32_t j = 0;
+      while (j < width && mine[j] == least[j]) ++j;
+      if (j == width) next.push_back(c);
+      else drop(c);
+    }
+    s.word.insert(s.word.end(), least, least + width);
+    alive.swap(next);
+  }
+  s.start = starts[alive.front()];
+  s.automorphisms = static_cast<uint32_t>(alive.size());
+  for (uint32_t c : alive) drop(c);
+  return s;
+}
+
+uint32_t first_start_with_word(const BoundaryGraph& b, const StartSet& starts, const Word& word, bool with_flags) {
+  thread_local std::vector<uint32_t> label, order;
+  label.assign(b.size(), 0);
+  for (uint32_t k : starts.darts)
+    if (stream_word(b, k, with_flags, &word, label, order, nullptr) == 0) return k;
+  return UINT32_MAX;
+}
+
 size_t WordHash::operator()(const Word& w) const noexcept {
-  uint64_t h = 1469598103934665603ull ^ w.size();  // FNV-1a over the entries
-  for (uint32_t x : w) {
-    h ^= x;
-    h *= 1099511628211ull;
+  // Two letters per round of a multiply-xorshift mix (the letters are 32-bit).
+  uint64_t h = 0x9e3779b97f4a7c15ull ^ w.size();
+  size_t i = 0;
+  for (; i + 1 < w.size(); i += 2) {
+    h ^= uint64_t(w[i]) << 32 | w[i + 1];
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 31;
+  }
+  if (i < w.size()) {
+    h ^= w[i];
+    h *= 0x94d049bb133111ebull;
   }
   return static_cast<size_t>(h ^ (h >> 29));
 }

@@ -5,10 +5,10 @@
 //  * the word lists, per dart in label order, its flag and then the labels of its m+1 neighbours
 //    (length (m+2)|B|). The whole sequence, flags included, is minimised: minimising the unflagged
 //    word first and appending the flags of an arbitrary tied start would not be canonical;
-//  * start darts: the flagged darts if any dart is flagged (the set is invariant under
-//    isomorphisms, so the minimum stays canonical), else all darts; in oriented mode, only those
-//    in D+ (the paper's orientation-preserving isomorphisms of 3-maps). Unoriented mode compares
-//    G-maps up to any isomorphism, reflections included;
+//  * start darts (start_darts below): the flagged darts if any dart is flagged (the set is
+//    invariant under isomorphisms, so the minimum stays canonical), else all darts; in oriented
+//    mode, only those in D+ (the paper's orientation-preserving isomorphisms of 3-maps).
+//    Unoriented mode compares G-maps up to any isomorphism, reflections included;
 //  * the number of start darts reaching the minimum is the number of automorphisms (preserving
 //    flags, and orientation in oriented mode); ties are broken by the first start in local order.
 #pragma once
@@ -29,13 +29,38 @@ Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags = tru
 // The local darts in label order from `start` (order[k] has label k+1).
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start);
 
+// The start darts of Def. 5 with flags: the flagged darts if any dart is flagged, else all darts
+// (only those of D+ in oriented mode); for volume boundaries (arity 3), only those whose pair
+// (size of their face, size of the face across their edge) is the smallest, `invariant` being that
+// pair (0 for other arities). The pair is an isomorphism invariant, so the set is mapped onto
+// itself by every isomorphism: the minimum over it is a canonical form and every start reaching
+// it is kept (the automorphism count is unchanged). In local order.
+// For arity 3, `faces` and `face_squares` count the faces of the boundary and sum their squared
+// sizes, and `pair_sum` sums a mix of the pairs of all candidate starts before the restriction,
+// each with whether its alpha_0-neighbour is flagged (more invariants, for the store's profiles; 0
+// otherwise).
+struct StartSet {
+  std::vector<uint32_t> darts;
+  uint64_t invariant = 0;
+  uint32_t faces = 0;
+  uint64_t face_squares = 0;
+  uint64_t pair_sum = 0;
+};
+StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags = true);
+
 struct CellSignature {
   Word word;                   // the minimal word (empty for an empty graph)
   uint32_t start = 0;          // local index of the first start dart reaching it
   uint32_t automorphisms = 0;  // number of start darts reaching it
 };
 // Words longer than 2^32-1 labels cannot occur: labels are uint32 (Error(Range) beyond).
+// All starts are streamed in lockstep, dropping a start as soon as its word exceeds the smallest.
 CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_flags = true);
+CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& starts, bool with_flags = true);
+// The first start (in local order) whose word is `word`, or UINT32_MAX: the cell's signature is
+// `word` iff there is one (Theorem 1), and it is then the start minimal_signature picks.
+uint32_t first_start_with_word(const BoundaryGraph& b, const StartSet& starts, const Word& word,
+                               bool with_flags = true);
 
 struct WordHash {
   size_t operator()(const Word& w) const noexcept;

@@ -2,6 +2,7 @@
 
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
+#include "model/core/position.hpp"
 #include "model/core/validity.hpp"
 #include "model/replace/orientation.hpp"
 
@@ -40,6 +41,18 @@ Pattern make_pattern(std::string name, FlaggedMap m) {
   if (!is_connected(p.boundary))
     reject(n == 2 ? "the boundary is not one cycle (not a disc)" : "the boundary is not one connected surface");
   if (m.positioned() && !p.positive.empty()) p.interior_vertices = mean_value_coordinates(g, m.position, p.positive);
+  g.for_each_dart([&](Dart d) {
+    if (!g.is_free(n, d)) p.interior_darts.push_back(d);
+  });
+  p.vertex_of.assign(g.capacity(), UINT32_MAX);
+  for (Dart rep : orbit_representatives(g, vertex_orbit_type(g))) {
+    Dart anchor = kNoDart;
+    for (Dart y : orbit(g, vertex_orbit_type(g), rep)) {
+      p.vertex_of[y] = static_cast<uint32_t>(p.vertex_anchor.size());
+      if (anchor == kNoDart && g.is_free(n, y)) anchor = y;
+    }
+    p.vertex_anchor.push_back(anchor);
+  }
   p.map = std::move(m);
   return p;
 }

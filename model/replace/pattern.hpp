@@ -24,6 +24,11 @@ struct Pattern {
   size_t interior = 0;            // darts that are not n-free
   // Mean value coordinates of the interior vertices (empty without positions or orientation).
   std::vector<InteriorVertex> interior_vertices;
+  // Precomputed for replacements: the interior darts in index order; per dart, its vertex (an
+  // index into vertex_anchor); per vertex, one boundary dart of it (kNoDart: interior vertex).
+  std::vector<Dart> interior_darts;
+  std::vector<uint32_t> vertex_of;
+  std::vector<Dart> vertex_anchor;
 
   const char* kind() const { return cell_dim == 2 ? "f-pattern" : "v-pattern"; }
 };

@@ -4,17 +4,32 @@
 
 namespace gmr::replace {
 
+namespace {
+
+// Cheap isomorphism invariants of a boundary: cell dimension, darts, start darts and their
+// invariant, faces and their squared sizes, the mixed sum of the start pairs (flagged_word.hpp).
+Word profile(const BoundaryGraph& b, int cell_dim, const StartSet& starts) {
+  return {static_cast<uint32_t>(cell_dim), b.size(), static_cast<uint32_t>(starts.darts.size()),
+          static_cast<uint32_t>(starts.invariant >> 32), static_cast<uint32_t>(starts.invariant), starts.faces,
+          static_cast<uint32_t>(starts.face_squares), static_cast<uint32_t>(starts.pair_sum >> 32),
+          static_cast<uint32_t>(starts.pair_sum)};
+}
+
+Word key_of(CellSignature s, int cell_dim) {
+  Word key = std::move(s.word);
+  key.insert(key.begin(), static_cast<uint32_t>(cell_dim));
+  return key;
+}
+
+}  // namespace
+
 Word store_key(const BoundaryGraph& b, int cell_dim, Mode mode, StoreEntry* entry) {
-  const CellSignature s = minimal_signature(b, mode);
-  Word key;
-  key.reserve(s.word.size() + 1);
-  key.push_back(static_cast<uint32_t>(cell_dim));
-  key.insert(key.end(), s.word.begin(), s.word.end());
+  CellSignature s = minimal_signature(b, mode);
   if (entry) {
     entry->start = s.start;
     entry->automorphisms = s.automorphisms;
   }
-  return key;
+  return key_of(std::move(s), cell_dim);
 }
 
 bool boundary_automorphisms_extend(const Pattern& p, Mode mode, const StoreEntry& e) {
@@ -63,7 +78,11 @@ void PatternStore::add(Pattern p) {
   e.pattern = patterns_.size();
   Word key = store_key(p.boundary, p.cell_dim, mode_, &e);
   e.ambiguous = !boundary_automorphisms_extend(p, mode_, e);
-  table_[key].push_back(e);
+  auto& list = table_[key];
+  if (list.empty())
+    profiles_[profile(p.boundary, p.cell_dim, start_darts(p.boundary, mode_))].push_back(
+        {Word(key.begin() + 1, key.end()), &list});
+  list.push_back(e);
   key_of_.push_back(std::move(key));
   entries_.push_back(e);
   patterns_.push_back(std::move(p));
@@ -72,6 +91,21 @@ void PatternStore::add(Pattern p) {
 const std::vector<StoreEntry>* PatternStore::find(const Word& key) const {
   const auto it = table_.find(key);
   return it == table_.end() ? nullptr : &it->second;
+}
+
+StoreMatch PatternStore::match(const BoundaryGraph& cell, int cell_dim) const {
+  const StartSet starts = start_darts(cell, mode_);
+  const auto bucket = profiles_.find(profile(cell, cell_dim, starts));
+  if (bucket == profiles_.end()) return {};
+  if (bucket->second.size() == 1) {
+    const Keyed& only = bucket->second.front();
+    const uint32_t s = first_start_with_word(cell, starts, only.word);
+    if (s == UINT32_MAX) return {};
+    return {only.entries, s};
+  }
+  CellSignature sig = minimal_signature(cell, starts);
+  const uint32_t s = sig.start;
+  return {find(key_of(std::move(sig), cell_dim)), s};
 }
 
 std::vector<std::vector<size_t>> PatternStore::duplicates() const {

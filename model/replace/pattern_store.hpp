@@ -26,6 +26,13 @@ struct StoreEntry {
 // another minimal start) extends to an automorphism of the pattern preserving flags.
 bool boundary_automorphisms_extend(const Pattern& p, Mode mode, const StoreEntry& e);
 
+// A cell looked up in the store: the patterns of its key (nullptr: none) and the cell's start dart
+// (local index) whose word is the key, the first in local order.
+struct StoreMatch {
+  const std::vector<StoreEntry>* hits = nullptr;
+  uint32_t start = 0;
+};
+
 class PatternStore {
  public:
   explicit PatternStore(Mode mode) : mode_(mode) {}
@@ -38,6 +45,13 @@ class PatternStore {
 
   // The patterns whose boundary has this key (nullptr if none).
   const std::vector<StoreEntry>* find(const Word& key) const;
+  // Looks a cell's boundary up (§6.3). Keys are grouped by a profile of cheap isomorphism
+  // invariants (cell dimension, number of darts, number and invariant of the start darts): no key
+  // with the cell's profile is a miss without any word; a single one is compared with the cell's
+  // words start by start, stopping at the first equal word (equal words: equal signatures,
+  // Theorem 1), without computing the cell's minimum; otherwise the signature is computed and
+  // hashed. The three give the same answer and the same start dart.
+  StoreMatch match(const BoundaryGraph& cell, int cell_dim) const;
   // Groups of patterns (indices) sharing a key: the duplicates of §6.4.
   std::vector<std::vector<size_t>> duplicates() const;
   size_t keys() const { return table_.size(); }
@@ -48,6 +62,13 @@ class PatternStore {
   std::vector<StoreEntry> entries_;
   std::vector<Word> key_of_;
   std::unordered_map<Word, std::vector<StoreEntry>, WordHash> table_;
+  // Profile -> the distinct keys with that profile: each key's word (without its dimension
+  // prefix) and its patterns in table_ (nodes of an unordered_map do not move).
+  struct Keyed {
+    Word word;
+    const std::vector<StoreEntry>* entries;
+  };
+  std::unordered_map<Word, std::vector<Keyed>, WordHash> profiles_;
 };
 
 // The store key of a boundary graph signed in `mode`, with the entry's start and automorphisms.

@@ -6,7 +6,8 @@
 // replacement), so each is replaced at most once. A face of a 3-G-map is signed on the half-face
 // of its smallest dart.
 // Ties (several minimal start darts, i.e. boundary automorphisms) are broken by the first start in
-// the cell's traversal order; a key holding several patterns uses the first one.
+// the cell's traversal order; a key holding several patterns uses the first one, or the selector's
+// choice.
 #pragma once
 #include <functional>
 #include <string>
@@ -32,8 +33,16 @@ struct QueryReplaceReport {
 // cell_dim + 1 (or, in oriented mode, not orientable).
 // after_each (optional) runs after every replacement (tests assert validity there); progress
 // (optional) receives (cells done, cells) every 4096 cells and at the end.
+// select (optional) chooses among the patterns of a key holding several (§6.4: deliberate
+// duplicates need outside information, e.g. geometry or vertex values): it receives the candidates
+// (in insertion order), the target and a dart of the cell, and returns an index into the
+// candidates; without it, the first candidate is used. An index out of range is Error(Usage).
+// only (optional): the cells to examine, one dart each (default: every cell of the map).
+using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each = {},
-                                 const std::function<void(size_t, size_t)>& progress = {});
+                                 const std::function<void(size_t, size_t)>& progress = {},
+                                 const DuplicateSelector& select = {},
+                                 const std::vector<Dart>* only = nullptr);
 
 }  // namespace gmr::replace

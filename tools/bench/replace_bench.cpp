@@ -1,14 +1,29 @@
 // Query by signature against testing each pattern by isomorphism (Damiand & Nivoliers 2022 §6.3,
 // Table 2 "time-qrn"): the 6209 hex-conformal configurations are looked up among the 226
-// unoriented class representatives (flagged boundaries), (a) by signature and hash table,
-// (b) by the core isomorphism test (Theorem 1, O(n^2) per test) against each representative in
-// turn until one fits. Both find the class of every configuration; the ratio b/a is printed.
+// unoriented class representatives (flagged boundaries), (a) by the pattern store as
+// query-replace uses it (PatternStore::match: profile, then one word comparison or the signature
+// and the hash table), (b) by computing each configuration's signature and hashing it, (c) by the
+// core isomorphism test (Theorem 1, O(n^2) per test) against each representative in turn until
+// one fits. All find the class of every configuration (the store's patterns are the
+// representatives lifted to 3-G-maps, boundary only).
+// Hexahedral subdivision (§7.1, Table 1 "time-qr" against "time-direct"): one level on a 16^3 block
+// of unit hexahedra with positions, (d) by query-replace (split every edge in 2, f-pattern on the
+// faces, v-pattern on the volumes, queries included) and (e) by the direct subdivision
+// (direct_hex_subdivision.hpp). The input copy is not timed.
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <unordered_map>
 
+#include "model/core/builders.hpp"
 #include "model/core/signature.hpp"
+#include "model/core/orbit.hpp"
 #include "model/replace/configurations.hpp"
+#include "model/replace/direct_hex_subdivision.hpp"
+#include "model/replace/edge_split.hpp"
+#include "model/replace/pattern_folder.hpp"
+#include "model/replace/query_replace.hpp"
+#include "model/replace/unit_hex_positions.hpp"
 #include "model/replace/pattern_store.hpp"
 
 namespace {
@@ -20,17 +35,35 @@ struct Data {
   ConfigurationSet set = generate_configurations("hex-conformal");
   std::vector<size_t> reps;  // one configuration per class
   std::unordered_map<Word, size_t, WordHash> table;
+  PatternStore store{Mode::Unoriented};
   Data() {
     for (size_t i = 0; i < set.configurations.size(); ++i) {
       const Configuration& c = set.configurations[i];
       const Word key = store_key(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3, Mode::Unoriented);
       if (table.emplace(key, reps.size()).second) reps.push_back(i);
     }
+    for (size_t r : reps) {
+      const Configuration& c = set.configurations[r];
+      FlaggedMap m{lift(c.map.map, 3), c.map.flag, {}};
+      store.add(make_pattern("class" + std::to_string(r), std::move(m)));
+    }
   }
 };
 const Data& data() {
   static const Data d;
   return d;
+}
+
+void BM_QueryByPatternStore(benchmark::State& state) {
+  const Data& d = data();
+  for (auto _ : state) {
+    size_t found = 0;
+    for (const Configuration& c : d.set.configurations)
+      found += d.store.match(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3).hits != nullptr;
+    if (found != d.set.configurations.size()) state.SkipWithError("a configuration was not found");
+    benchmark::DoNotOptimize(found);
+  }
+  state.counters["patterns"] = static_cast<double>(d.reps.size());
 }
 
 void BM_QueryBySignature(benchmark::State& state) {
@@ -65,8 +98,62 @@ void BM_QueryByIsomorphismTests(benchmark::State& state) {
   state.counters["patterns"] = static_cast<double>(d.reps.size());
 }
 
+// A 16^3 block of unit hexahedra, every dart flagged, with positions.
+const FlaggedMap& block() {
+  static const FlaggedMap m = [] {
+    std::vector<Voxel> voxels;
+    for (int x = 0; x < 16; ++x)
+      for (int y = 0; y < 16; ++y)
+        for (int z = 0; z < 16; ++z) voxels.push_back({x, y, z});
+    FlaggedMap b{make_polycube(voxels), {}, {}};
+    b.flag.assign(b.map.capacity(), 1);
+    b.position = unit_hex_positions(b.map);
+    return b;
+  }();
+  return m;
+}
+
+const PatternStore& hex_patterns() {
+  static const PatternStore s = [] {
+    PatternStore store(Mode::Unoriented);
+    const char* src = std::getenv("GMR_SOURCE_DIR");
+    for (auto& p : load_patterns(std::string(src ? src : GMR_SOURCE_DIR) + "/tools/data/patterns/hex-subdivision"))
+      store.add(std::move(p));
+    return store;
+  }();
+  return s;
+}
+
+void BM_HexSubdivisionQueryReplace(benchmark::State& state) {
+  const PatternStore& store = hex_patterns();
+  size_t volumes = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    FlaggedMap m = block();
+    state.ResumeTiming();
+    for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
+    const QueryReplaceReport f = query_replace(m, store, 2);
+    const QueryReplaceReport v = query_replace(m, store, 3);
+    if (!f.unmatched.empty() || !v.unmatched.empty()) state.SkipWithError("a cell was not matched");
+    volumes = v.replaced() * 8;
+  }
+  state.counters["volumes"] = static_cast<double>(volumes);
+}
+
+void BM_HexSubdivisionDirect(benchmark::State& state) {
+  size_t darts = 0;
+  for (auto _ : state) {
+    FlaggedMap r = subdivide_hexahedra(block());
+    darts = r.map.size();
+  }
+  state.counters["volumes"] = static_cast<double>(darts / 48);
+}
+
+BENCHMARK(BM_QueryByPatternStore)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_QueryBySignature)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_QueryByIsomorphismTests)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 // for G-maps), with validity asserted after every replacement.
 #include <gtest/gtest.h>
 
+#include "model/core/error.hpp"
 #include "model/core/validity.hpp"
 #include "model/replace/orientation.hpp"
 #include "model/replace/query_replace.hpp"
@@ -199,6 +200,49 @@ TEST(FaceReplacement, RefusesInvalidTargetsAndWrongDimensions) {
   EXPECT_THROW(query_replace(m, store, 2), Error);
   FlaggedMap one{GMap(1), {}, {}};
   EXPECT_THROW(query_replace(one, store, 2), Error);
+}
+
+}  // namespace
+}  // namespace gmr::replace
+
+namespace gmr::replace {
+namespace {
+
+// A second f-pattern with split4's boundary (a square with split edges) and another interior: two
+// pentagons cut along the segment joining two opposite midpoints. Corners 0..3, midpoints 4..7.
+Pattern two_pentagons() {
+  std::vector<uint32_t> vertex;
+  FlaggedMap m{surface_from_faces({{0, 4, 6, 3, 7}, {4, 1, 5, 2, 6}}, 8, {}, &vertex), {}, {}};
+  m.flag.assign(m.map.capacity(), 0);
+  // Flagged: boundary darts at a corner (their edge goes to a midpoint, on an original edge).
+  m.map.for_each_dart([&](Dart d) { m.flag[d] = m.map.is_free(2, d) && vertex[d] < 4 ? 1 : 0; });
+  return make_pattern("two-pentagons", std::move(m));
+}
+
+// §6.4: patterns with isomorphic boundaries are duplicates; query-replace takes the first one
+// unless a selector chooses; an out-of-range choice is refused.
+TEST(FaceReplacement, DuplicateSelectorChoosesAmongPatternsOfOneKey) {
+  PatternStore store(Mode::Unoriented);
+  store.add(pattern_file("conformal-faces", "split4"));
+  store.add(two_pentagons());
+  ASSERT_EQ(store.duplicates(), (std::vector<std::vector<size_t>>{{0, 1}}));
+  auto run = [&](const DuplicateSelector& select) {
+    FlaggedMap m = all_flagged(make_cube(2));
+    split_all_edges(m, 2);
+    const QueryReplaceReport r = query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }, {}, select);
+    EXPECT_EQ(r.ambiguous_keys, 6u);
+    return std::make_pair(r, count_cells(m.map, 2));
+  };
+  const auto [first, faces_first] = run({});
+  EXPECT_EQ(first.matched, (std::vector<size_t>{6, 0}));
+  EXPECT_EQ(faces_first, 24u);
+  // Every other face (by the parity of its dart) gets the pentagons.
+  const auto [chosen, faces_chosen] =
+      run([](const std::vector<StoreEntry>& c, const FlaggedMap&, Dart d) { return c.size() - 1 - (d % 2); });
+  EXPECT_EQ(chosen.matched[0] + chosen.matched[1], 6u);
+  EXPECT_GT(chosen.matched[1], 0u);
+  EXPECT_EQ(faces_chosen, 4 * chosen.matched[0] + 2 * chosen.matched[1]);
+  EXPECT_THROW(run([](const std::vector<StoreEntry>& c, const FlaggedMap&, Dart) { return c.size(); }), Error);
 }
 
 }  // namespace

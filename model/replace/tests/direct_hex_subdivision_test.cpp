@@ -1,0 +1,81 @@
+// The direct hexahedral subdivision (§7.1's "time-direct") against query-replace with the
+// hex-subdivision patterns: the same map up to isomorphism and the same vertex positions.
+#include "model/replace/direct_hex_subdivision.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/core/error.hpp"
+#include "model/core/signature.hpp"
+#include "model/core/validity.hpp"
+#include "model/replace/query_replace.hpp"
+#include "model/replace/tests/replace_fixtures.hpp"
+#include "model/replace/unit_hex_positions.hpp"
+
+namespace gmr::replace {
+namespace {
+
+FlaggedMap positioned_polycube(const std::vector<Voxel>& voxels) {
+  FlaggedMap m{make_polycube(voxels), {}, {}};
+  m.flag.assign(m.map.capacity(), 1);
+  m.position = unit_hex_positions(m.map);
+  return m;
+}
+
+// The per-dart positions, rounded and sorted (a multiset invariant under dart renumbering).
+std::vector<std::array<long long, 3>> position_multiset(const FlaggedMap& m) {
+  std::vector<std::array<long long, 3>> out;
+  m.map.for_each_dart([&](Dart d) {
+    const Vec3& p = m.position[d];
+    out.push_back({std::llround(p[0] * 1e6), std::llround(p[1] * 1e6), std::llround(p[2] * 1e6)});
+  });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(DirectHexSubdivision, UnitPositionsOfAPolycube) {
+  const FlaggedMap m = positioned_polycube({{0, 0, 0}, {1, 0, 0}});
+  // 12 vertices at integer points; every dart of a vertex at the same place.
+  std::vector<std::array<long long, 3>> points = position_multiset(m);
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  EXPECT_EQ(points.size(), 12u);
+}
+
+TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
+  const std::vector<Voxel> voxels{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}};
+  const FlaggedMap input = positioned_polycube(voxels);
+  FlaggedMap direct = subdivide_hexahedra(input);
+  EXPECT_TRUE(is_valid(direct.map));
+  EXPECT_EQ(direct.map.size(), 8 * input.map.size());
+
+  PatternStore store(Mode::Unoriented);
+  for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
+  FlaggedMap qr = input;
+  testing::split_all_edges(qr, 2);
+  EXPECT_TRUE(query_replace(qr, store, 2).unmatched.empty());
+  EXPECT_TRUE(query_replace(qr, store, 3).unmatched.empty());
+
+  EXPECT_TRUE(is_isomorphic(direct.map, qr.map));
+  EXPECT_EQ(position_multiset(direct), position_multiset(qr));
+  // A second level of each stays the same.
+  FlaggedMap direct2 = subdivide_hexahedra(direct);
+  qr.flag.assign(qr.map.capacity(), 1);
+  testing::split_all_edges(qr, 2);
+  query_replace(qr, store, 2);
+  query_replace(qr, store, 3);
+  EXPECT_EQ(count_all_cells(direct2.map)[3], 64 * voxels.size());
+  EXPECT_TRUE(is_isomorphic(direct2.map, qr.map));
+  EXPECT_EQ(position_multiset(direct2), position_multiset(qr));
+}
+
+TEST(DirectHexSubdivision, RejectsNonHexahedra) {
+  FlaggedMap tet{lift(make_tetrahedron(2), 3), {}, {}};
+  EXPECT_THROW(subdivide_hexahedra(tet), Error);
+  FlaggedMap surface{make_cube(2), {}, {}};
+  EXPECT_THROW(subdivide_hexahedra(surface), Error);
+}
+
+}  // namespace
+}  // namespace gmr::replace
