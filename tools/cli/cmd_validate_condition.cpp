@@ -1,5 +1,5 @@
 // `gmr validate-condition (--condition NAME | --plugin LIB.so) [--model gmap|omap] [-n N]
-//  [--labels 0,1] [--max-nodes m] [--random N --seed S] [--bound k] [--engine smt|enum] [--shard K/M] [--time-limit s]
+//  [--labels 0,1] [--max-nodes m] [--random N --seed S] [--bound k] [--engine smt|enum|symbolic] [--shard K/M] [--time-limit s]
 //  [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
 // every rule of the bounded family and every map of at most k darts
 // (checker/smt/condition_validation.hpp; docs/verify.md)? Built-in conditions run in-process,
@@ -16,6 +16,7 @@
 #include "checker/smt/condition_plugin.hpp"
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
+#include "checker/smt/symbolic_validation.hpp"
 #include "model/core/error.hpp"
 #include "model/io/read_file.hpp"
 #include "tools/cli/cli.hpp"
@@ -60,6 +61,23 @@ std::vector<int> parse_labels(const std::string& text) {
   return out;
 }
 
+// --engine symbolic: one query per direction for the whole family (symbolic_validation.hpp).
+int run_symbolic(const ValidateConditionArgs& a, ValidationOptions o) {
+  if (!a.plugin.empty())
+    throw Error(ErrorCode::Usage, "plug-ins are evaluated rule by rule (engines smt and enum)", "--engine symbolic");
+  if (!find_builtin_condition(a.condition))
+    throw Error(ErrorCode::Usage, "unknown condition '" + a.condition + "' (--list: the names)", "--condition");
+  o.progress = nullptr;
+  const SymbolicReport rep = validate_symbolic(a.condition, o);
+  const auto j = to_json(rep);
+  if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
+  if (a.json)
+    print_json(j);
+  else
+    std::cout << to_text(rep);
+  return rep.sound() && rep.complete() ? kExitOk : kExitNegative;
+}
+
 int run_validate_condition(const ValidateConditionArgs& a) {
   if (a.list) {
     for (const auto& c : builtin_conditions()) std::printf("%-32s %s\n", c.name.c_str(), c.description.c_str());
@@ -97,8 +115,9 @@ int run_validate_condition(const ValidateConditionArgs& a) {
   if (a.bound < 1 || a.bound > 12) throw Error(ErrorCode::Usage, "must be in 1..12", "--bound");
   o.max_nodes = a.max_nodes;
   o.bound = a.bound;
-  if (a.engine != "smt" && a.engine != "enum") throw Error(ErrorCode::Usage, "smt or enum", "--engine");
-  o.engine = a.engine == "smt" ? Engine::Smt : Engine::Enum;
+  if (a.engine != "smt" && a.engine != "enum" && a.engine != "symbolic")
+    throw Error(ErrorCode::Usage, "smt, enum or symbolic", "--engine");
+  o.engine = a.engine == "enum" ? Engine::Enum : Engine::Smt;
   unsigned k = 0, m = 0;
   char slash = 0;
   std::istringstream ss(a.shard);
@@ -114,6 +133,7 @@ int run_validate_condition(const ValidateConditionArgs& a) {
       std::fprintf(stderr, "\r  %zu / %zu rules", done, total);
       if (done == total) std::fprintf(stderr, "\n");
     };
+  if (a.engine == "symbolic") return run_symbolic(a, o);
   ValidationReport rep;
   if (!a.plugin.empty()) {
     ConditionPlugin plugin(a.plugin);
@@ -151,7 +171,7 @@ void register_validate_condition(CLI::App& app) {
   sub->add_option("--labels", args->labels, "Labels carrying arcs in the rules, e.g. 0,1 (default: all of the model)");
   sub->add_option("--max-nodes", args->max_nodes, "Rules of at most this many nodes (1..4, default 2)");
   sub->add_option("--bound,-k", args->bound, "Maps of at most this many darts (default 4)");
-  sub->add_option("--engine", args->engine, "smt (default) or enum");
+  sub->add_option("--engine", args->engine, "smt (default), enum, or symbolic (every rule of the family in one query per direction; built-in conditions, models without cycle pairs)");
   sub->add_option("--random", args->random, "Also this many random rules of max-nodes+1 or +2 nodes (default 0)");
   sub->add_option("--seed", args->seed, "Seed of the random rules (default 1)");
   sub->add_option("--shard", args->shard, "K/M: the rules whose index is K mod M (default 0/1)");

@@ -95,6 +95,24 @@ TEST_F(CliVerify, ValidateConditionThesisExits0) {
   EXPECT_NE(r.out.find("sound: yes"), std::string::npos) << r.out;
 }
 
+TEST_F(CliVerify, ValidateConditionSymbolicEngine) {
+  const Result ok = run("validate-condition --condition thesis --labels 0,1 --max-nodes 3 --bound 5 --engine symbolic");
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("every rule of the family at once (1466908 rules)"), std::string::npos) << ok.out;
+  const Result bad = run("validate-condition --condition wrong-orientation-dropped --labels 0 --max-nodes 3 --bound 4 "
+                         "--engine symbolic --json -o " + q(dir / "sym.json"));
+  EXPECT_EQ(bad.code, 1) << bad.err;
+  const auto doc = nlohmann::json::parse(bad.out);
+  EXPECT_EQ(doc["engine"], "symbolic");
+  EXPECT_EQ(doc["sound"], false);
+  EXPECT_EQ(doc["smallest_unsound"]["counterexample"]["G"]["darts"], 3);
+  EXPECT_TRUE(fs::exists(dir / "sym.json"));
+  // Cycle pairs, plug-ins and shards are refused.
+  EXPECT_EQ(run("validate-condition --condition thesis --labels 0,2 -n 2 --engine symbolic").code, 2);
+  EXPECT_EQ(run("validate-condition --condition thesis --labels 0,1 --shard 0/2 --engine symbolic").code, 2);
+  EXPECT_EQ(run(std::string("validate-condition --plugin ") + q(GMR_CRASHING_PLUGIN) + " --engine symbolic").code, 2);
+}
+
 TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
   const Result r = run(std::string("validate-condition --plugin ") + q(GMR_CRASHING_PLUGIN) + " --labels 0 --max-nodes 2");
   EXPECT_EQ(r.code, 2);
