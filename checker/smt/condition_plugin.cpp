@@ -2,10 +2,12 @@
 
 #include <dlfcn.h>
 #include <signal.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <csignal>
 #include <cstring>
 
@@ -59,7 +61,7 @@ void write_all(int fd, const char* p, size_t n) {
 }
 }  // namespace
 
-std::vector<bool> ConditionPlugin::evaluate(const std::vector<rewrite::Rule>& rules) const {
+std::vector<bool> ConditionPlugin::evaluate(const std::vector<rewrite::Rule>& rules, double eval_timeout) const {
   // The views are built before the fork: the child only runs the predicate and writes.
   std::vector<condition::RuleView> views;
   views.reserve(rules.size());
@@ -71,9 +73,16 @@ std::vector<bool> ConditionPlugin::evaluate(const std::vector<rewrite::Rule>& ru
   if (pid == 0) {  // child
     close(fds[0]);
     // A crash kills the child (a sanitizer's own handlers would turn it into an exit status).
-    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
+    for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGALRM}) std::signal(sig, SIG_DFL);
     for (const auto& v : views) {
       char c = '0';
+      if (eval_timeout > 0) {  // re-armed per rule: SIGALRM (default action: terminate) ends a hang
+        itimerval t{};
+        t.it_value.tv_sec = static_cast<time_t>(eval_timeout);
+        t.it_value.tv_usec = static_cast<suseconds_t>((eval_timeout - static_cast<double>(t.it_value.tv_sec)) * 1e6);
+        if (t.it_value.tv_sec == 0 && t.it_value.tv_usec == 0) t.it_value.tv_usec = 1;
+        setitimer(ITIMER_REAL, &t, nullptr);
+      }
       try {
         c = condition_->holds(v) ? '1' : '0';
       } catch (const std::exception& e) {
@@ -109,6 +118,14 @@ std::vector<bool> ConditionPlugin::evaluate(const std::vector<rewrite::Rule>& ru
   if (e != std::string::npos)
     throw Error(ErrorCode::Usage, "the condition threw while evaluating " + rule_at(done) + ": " + got.substr(e + 1),
                 "plugin " + path_);
+  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM && eval_timeout > 0) {
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", eval_timeout);
+    throw Error(ErrorCode::Usage,
+                std::string("the condition did not return within the per-evaluation time limit of ") + limit +
+                    " s while evaluating " + rule_at(done),
+                "plugin " + path_);
+  }
   if (WIFSIGNALED(status))
     throw Error(ErrorCode::Usage,
                 "the condition crashed (signal " + std::to_string(WTERMSIG(status)) + ", " +

@@ -8,7 +8,9 @@
 // one byte per rule back through a pipe. A predicate that throws (the child reports the message)
 // or crashes (the child dies on a signal, or exits early) stops the evaluation with an
 // Error(Usage) naming the plug-in, the rule it was evaluating and the signal or message; the gmr
-// process itself survives and exits 2.
+// process itself survives and exits 2. A predicate that does not return within the per-evaluation
+// time limit (wall clock, a real-time interval timer re-armed before each rule in the child; the
+// child dies on SIGALRM) is the same kind of error, naming the limit.
 #pragma once
 #include <string>
 #include <vector>
@@ -30,8 +32,10 @@ class ConditionPlugin {
   const std::string& path() const { return path_; }
   std::string name() const;
   std::string description() const;
-  // holds(rule) for every rule, evaluated in a child process (see above).
-  std::vector<bool> evaluate(const std::vector<rewrite::Rule>& rules) const;
+  // holds(rule) for every rule, evaluated in a child process (see above); each evaluation may
+  // take at most `eval_timeout` seconds (0: no limit).
+  std::vector<bool> evaluate(const std::vector<rewrite::Rule>& rules, double eval_timeout = kDefaultEvalTimeout) const;
+  static constexpr double kDefaultEvalTimeout = 10;
 
  private:
   std::string path_;

@@ -1,6 +1,6 @@
 // `gmr validate-condition (--condition NAME | --plugin LIB.so) [--model gmap|omap] [-n N]
 //  [--labels 0,1] [--max-nodes m] [--random N --seed S] [--bound k] [--engine smt|enum|symbolic] [--shard K/M] [--time-limit s]
-//  [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
+//  [--eval-timeout s] [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
 // every rule of the bounded family and every map of at most k darts
 // (checker/smt/condition_validation.hpp; docs/verify.md)? Built-in conditions run in-process,
 // plug-ins in a forked child (checker/smt/condition_plugin.hpp). Progress on standard error when
@@ -43,6 +43,7 @@ struct ValidateConditionArgs {
   std::vector<std::string> merge;
   size_t random = 0;
   uint64_t seed = 1;
+  double eval_timeout = ConditionPlugin::kDefaultEvalTimeout;
 };
 
 std::vector<int> parse_labels(const std::string& text) {
@@ -126,6 +127,7 @@ int run_validate_condition(const ValidateConditionArgs& a) {
   o.shard = k;
   o.shards = m;
   o.time_limit = a.time_limit;
+  if (!(a.eval_timeout >= 0)) throw Error(ErrorCode::Usage, "must be a number of seconds >= 0", "--eval-timeout");
   o.random = a.random;
   o.seed = a.seed;
   if (isatty(STDERR_FILENO))
@@ -137,7 +139,7 @@ int run_validate_condition(const ValidateConditionArgs& a) {
   ValidationReport rep;
   if (!a.plugin.empty()) {
     ConditionPlugin plugin(a.plugin);
-    rep = validate_condition(plugin.name(), [&](const std::vector<Rule>& rules) { return plugin.evaluate(rules); }, o);
+    rep = validate_condition(plugin.name(), [&](const std::vector<Rule>& rules) { return plugin.evaluate(rules, a.eval_timeout); }, o);
   } else {
     const BuiltinCondition* c = find_builtin_condition(a.condition);
     if (!c) throw Error(ErrorCode::Usage, "unknown condition '" + a.condition + "' (--list: the names)", "--condition");
@@ -176,6 +178,8 @@ void register_validate_condition(CLI::App& app) {
   sub->add_option("--seed", args->seed, "Seed of the random rules (default 1)");
   sub->add_option("--shard", args->shard, "K/M: the rules whose index is K mod M (default 0/1)");
   sub->add_option("--time-limit", args->time_limit, "Stop after this many seconds, reporting the part covered");
+  sub->add_option("--eval-timeout", args->eval_timeout,
+                  "A plug-in's predicate must return within this many seconds per rule (default 10; 0: no limit)");
   sub->add_flag("--json", args->json, "Print JSON (format gmr.condition-validation)");
   sub->add_option("-o,--output", args->output, "Also write the JSON report to this file");
   sub->add_option("--merge", args->merge, "Merge the JSON reports of the shards of one sweep (prints JSON)");

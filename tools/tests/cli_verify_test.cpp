@@ -123,6 +123,16 @@ TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
   EXPECT_EQ(run("validate-condition --condition thesis --shard 3/2").code, 2);
 }
 
+TEST_F(CliVerify, HangingPluginExits2AfterTheEvaluationTimeLimit) {
+  const Result r = run(std::string("validate-condition --plugin ") + q(GMR_HANGING_PLUGIN) +
+                       " --labels 0 --max-nodes 1 --eval-timeout 0.5");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("hanging_condition"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("did not return within the per-evaluation time limit of 0.5 s while evaluating rule rule"),
+            std::string::npos) << r.err;
+  EXPECT_EQ(run("validate-condition --condition thesis --eval-timeout -1").code, 2);
+}
+
 TEST_F(CliVerify, ShardsMergeIntoTheWholeSweep) {
   const std::string sweep = "validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes 2 --bound 3 ";
   EXPECT_EQ(run(sweep + "--shard 0/2 -o " + q(dir / "s0.json")).code, 1);

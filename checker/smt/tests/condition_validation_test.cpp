@@ -194,6 +194,17 @@ TEST(ConditionPlugins, BadPluginsFailNamingPluginAndRule) {
       << crashed;
   EXPECT_NE(crashed.find("while evaluating rule rule"), std::string::npos) << crashed;
   const std::string missing = message("no_entry_condition");
+  // A predicate that never returns: stopped by the per-evaluation time limit.
+  std::string hung;
+  try {
+    ConditionPlugin p(plugin("hanging_condition"));
+    p.evaluate(rules, 0.3);
+  } catch (const Error& e) {
+    hung = e.location() + ": " + e.message();
+  }
+  EXPECT_NE(hung.find("hanging_condition"), std::string::npos) << hung;
+  EXPECT_NE(hung.find("did not return within the per-evaluation time limit of 0.3 s while evaluating rule rule"),
+            std::string::npos) << hung;
   EXPECT_NE(missing.find("no entry symbol gmr_condition_v1"), std::string::npos) << missing;
   const std::string absent = message("does_not_exist");
   EXPECT_NE(absent.find("cannot load"), std::string::npos) << absent;
