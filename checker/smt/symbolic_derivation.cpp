@@ -2,10 +2,12 @@
 
 namespace gmr::smt {
 
-SymbolicDerivation::SymbolicDerivation(const MapEncoding& map, const SymbolicRule& rule, const std::string& prefix)
+SymbolicDerivation::SymbolicDerivation(const MapEncoding& map, const SymbolicRule& rule,
+                                       const std::string& prefix)
     : map_(map), rule_(rule) {
   for (int i = 0; i <= map_.spec().n; ++i)
-    h_.push_back(map_.ctx().function((prefix + "h" + std::to_string(i)).c_str(), map_.sort(), map_.sort()));
+    h_.push_back(
+        map_.ctx().function((prefix + "h" + std::to_string(i)).c_str(), map_.sort(), map_.sort()));
 }
 
 z3::expr SymbolicDerivation::h_node(int x) const {
@@ -49,7 +51,8 @@ z3::expr SymbolicDerivation::alive(unsigned x) const {
   return rule_.added(static_cast<int>(x - map_.capacity()));
 }
 
-std::vector<SymbolicDerivation::Candidate> SymbolicDerivation::arcs(const z3::expr& X, int i, bool incoming) const {
+std::vector<SymbolicDerivation::Candidate> SymbolicDerivation::arcs(const z3::expr& X, int i,
+                                                                    bool incoming) const {
   z3::context& c = map_.ctx();
   std::vector<Candidate> out;
   // G's i-arc at X survives unless a deleted L-arc is matched onto it (false for an added node's
@@ -58,7 +61,8 @@ std::vector<SymbolicDerivation::Candidate> SymbolicDerivation::arcs(const z3::ex
   for (int x = 0; x < rule_.slots(); ++x)
     for (int y = 0; y < rule_.slots(); ++y)
       removed.push_back(rule_.deleted_arc(i, x, y) && X == dart(incoming ? y : x));
-  out.push_back({alive_dart(X) && !z3::mk_or(removed), incoming ? map_.alpha_inverse(i, X) : map_.alpha(i, X)});
+  out.push_back({alive_dart(X) && !z3::mk_or(removed),
+                 incoming ? map_.alpha_inverse(i, X) : map_.alpha(i, X)});
   for (int x = 0; x < rule_.slots(); ++x)
     for (int y = 0; y < rule_.slots(); ++y) {
       const z3::expr here = h_node(incoming ? y : x), there = h_node(incoming ? x : y);

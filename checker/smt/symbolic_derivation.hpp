@@ -12,10 +12,10 @@
 //   violation   looked for at the touched nodes only (the H nodes of the R slots), as the local
 //               encoding of derivation_encoding.hpp, whose argument holds for every rule.
 #pragma once
+#include <z3++.h>
+
 #include <string>
 #include <vector>
-
-#include <z3++.h>
 
 #include "checker/smt/map_encoding.hpp"
 #include "checker/smt/symbolic_rule.hpp"
@@ -33,7 +33,8 @@ class SymbolicDerivation {
   z3::expr_vector h_definitions() const;
   // Some touched node of H breaks a constraint of the model.
   z3::expr breaks_model_local() const;
-  // Consistency semantics (rule_verifier.hpp): the match fails the gluing condition or H is not a map.
+  // Consistency semantics (rule_verifier.hpp): the match fails the gluing condition or H is not a
+  // map.
   z3::expr breaks_consistency() const { return !dangling_condition() || breaks_model_local(); }
 
  private:

@@ -22,8 +22,8 @@ SymbolicRule::SymbolicRule(z3::context& ctx, MapSpec spec, int max_nodes, std::v
       arcs_[side].emplace_back();
       for (int x = 0; x < slots_; ++x)
         for (int y = 0; y < slots_; ++y) {
-          const std::string name = std::string(side ? "R_" : "L_") + node.substr(x, 1) + std::to_string(i) +
-                                   node.substr(y, 1);
+          const std::string name = std::string(side ? "R_" : "L_") + node.substr(x, 1) +
+                                   std::to_string(i) + node.substr(y, 1);
           arcs_[side].back().push_back(ctx_.bool_const(name.c_str()));
         }
     }
@@ -93,7 +93,8 @@ z3::expr SymbolicRule::condition(const ThesisParts& parts) const {
                                                   has_in(false, i, x) == has_in(true, i, x)));
       all.push_back(z3::implies(added(x), has_out(true, i, x) && has_in(true, i, x)));
       // The dangling part of I_r(i), Def. 34 / Fact 1.
-      if (parts.dangling) all.push_back(z3::implies(deleted(x), has_out(false, i, x) && has_in(false, i, x)));
+      if (parts.dangling)
+        all.push_back(z3::implies(deleted(x), has_out(false, i, x) && has_in(false, i, x)));
     }
     // O_r(i), Def. 37.
     if (parts.orientation && spec_.is_involutive_dim(i))
@@ -121,8 +122,10 @@ rewrite::Rule SymbolicRule::extract(const z3::model& m, const std::string& name)
   for (int i : labels_)
     for (int x = 0; x < slots_; ++x)
       for (int y = 0; y < slots_; ++y) {
-        if (left[x] >= 0 && left[y] >= 0 && val(arc(false, i, x, y))) L.add_arc(left[x], left[y], i);
-        if (right[x] >= 0 && right[y] >= 0 && val(arc(true, i, x, y))) R.add_arc(right[x], right[y], i);
+        if (left[x] >= 0 && left[y] >= 0 && val(arc(false, i, x, y)))
+          L.add_arc(left[x], left[y], i);
+        if (right[x] >= 0 && right[y] >= 0 && val(arc(true, i, x, y)))
+          R.add_arc(right[x], right[y], i);
       }
   return rewrite::Rule(std::move(L), std::move(R), spec_.n, spec_.kind, name);
 }
@@ -150,18 +153,22 @@ z3::expr SymbolicRule::describes(const rewrite::Rule& r) const {
     for (Node v = 0; v < g.num_nodes(); ++v) {
       const auto x = node.find(g.name(v));
       if (g.name(v).size() != 1 || x == std::string::npos || static_cast<int>(x) >= slots_)
-        throw Error(ErrorCode::Usage, "node " + g.name(v) + " is not a slot of the symbolic rule", "rule " + r.name());
+        throw Error(ErrorCode::Usage, "node " + g.name(v) + " is not a slot of the symbolic rule",
+                    "rule " + r.name());
       slot_of[right].push_back(static_cast<int>(x));
       present[x] = true;
     }
-    for (int x = 0; x < slots_; ++x) all.push_back(right ? in_right_[x] == ctx_.bool_val(present[x])
-                                                        : in_left_[x] == ctx_.bool_val(present[x]));
+    for (int x = 0; x < slots_; ++x)
+      all.push_back(right ? in_right_[x] == ctx_.bool_val(present[x])
+                          : in_left_[x] == ctx_.bool_val(present[x]));
     std::vector<bool> arcs(labels_.size() * slots_ * slots_, false);
     for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a) {
       if (!g.arc_alive(a)) continue;
       const int k = label_index(g.arc(a).label);
-      if (k < 0) throw Error(ErrorCode::Usage, "an arc on a label outside the family's", "rule " + r.name());
-      arcs[(k * slots_ + slot_of[right][g.arc(a).src]) * slots_ + slot_of[right][g.arc(a).tgt]] = true;
+      if (k < 0)
+        throw Error(ErrorCode::Usage, "an arc on a label outside the family's", "rule " + r.name());
+      arcs[(k * slots_ + slot_of[right][g.arc(a).src]) * slots_ + slot_of[right][g.arc(a).tgt]] =
+          true;
     }
     for (size_t k = 0; k < labels_.size(); ++k)
       for (int e = 0; e < slots_ * slots_; ++e)

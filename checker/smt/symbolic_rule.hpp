@@ -6,8 +6,8 @@
 // For every label i of `labels` and every pair of slots, arc(side, i, x, y) says that the side has
 // the i-arc x -> y; on each side and label the arcs form a partial injection (at most one
 // outgoing and one incoming i-arc per node), exactly the family of rule_space.hpp. Labels of the
-// model outside `labels` carry no arcs. An L-arc is preserved iff R has the same arc (Assumption 4),
-// deleted otherwise; an R-arc without L twin is added.
+// model outside `labels` carry no arcs. An L-arc is preserved iff R has the same arc (Assumption
+// 4), deleted otherwise; an R-arc without L twin is added.
 //
 // Symmetry breaking (family()): the existing slots are a prefix 0..m-1, and their statuses are in
 // nondecreasing order preserved < deleted < added (the family's status tuples). So the L nodes are
@@ -27,10 +27,10 @@
 // The cycle condition C_r (Def. 40, on the model completion) is not encoded: the engine refuses
 // models with cycle pairs.
 #pragma once
+#include <z3++.h>
+
 #include <string>
 #include <vector>
-
-#include <z3++.h>
 
 #include "checker/smt/condition_registry.hpp"
 #include "model/core/map_spec.hpp"
@@ -55,8 +55,12 @@ class SymbolicRule {
   z3::expr added(int x) const { return !in_left_[x] && in_right_[x]; }
   // The side has the i-arc x -> y (false for a label outside `labels`).
   z3::expr arc(bool right, int i, int x, int y) const;
-  z3::expr deleted_arc(int i, int x, int y) const { return arc(false, i, x, y) && !arc(true, i, x, y); }
-  z3::expr added_arc(int i, int x, int y) const { return arc(true, i, x, y) && !arc(false, i, x, y); }
+  z3::expr deleted_arc(int i, int x, int y) const {
+    return arc(false, i, x, y) && !arc(true, i, x, y);
+  }
+  z3::expr added_arc(int i, int x, int y) const {
+    return arc(true, i, x, y) && !arc(false, i, x, y);
+  }
   // The node has an outgoing (incoming) i-arc on the side.
   z3::expr has_out(bool right, int i, int x) const;
   z3::expr has_in(bool right, int i, int x) const;

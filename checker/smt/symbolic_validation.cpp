@@ -2,8 +2,8 @@
 
 #include <chrono>
 #include <cstdio>
-#include <sstream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 #include "checker/smt/counterexample.hpp"
@@ -18,7 +18,8 @@ using graph::Node;
 std::optional<ThesisParts> symbolic_condition_parts(const std::string& name) {
   // Without cycle pairs the completion has no effect: "thesis-per-constraint" and
   // "wrong-cycle-without-completion" coincide with "thesis" there.
-  if (name == "thesis" || name == "thesis-per-constraint" || name == "wrong-cycle-without-completion")
+  if (name == "thesis" || name == "thesis-per-constraint" ||
+      name == "wrong-cycle-without-completion")
     return ThesisParts{};
   if (name == "wrong-incident-without-dangling") return ThesisParts{.dangling = false};
   if (name == "wrong-orientation-dropped") return ThesisParts{.orientation = false};
@@ -31,11 +32,13 @@ double since(std::chrono::steady_clock::time_point t0) {
 }
 unsigned numeral(const z3::expr& e) {
   unsigned v = 0;
-  if (!e.is_numeral_u(v)) throw std::logic_error("SMT model: a dart is not a numeral: " + e.to_string());
+  if (!e.is_numeral_u(v))
+    throw std::logic_error("SMT model: a dart is not a numeral: " + e.to_string());
   return v;
 }
 
-// The common part of both queries: one context, the symbolic rule, a symbolic map and its derivation.
+// The common part of both queries: one context, the symbolic rule, a symbolic map and its
+// derivation.
 struct Query {
   z3::context ctx;
   SymbolicRule rule;
@@ -44,7 +47,8 @@ struct Query {
   z3::solver solver;
   Query(const ValidationOptions& o, const std::string& prefix)
       : rule(ctx, MapSpec{o.n, o.kind}, o.max_nodes, o.labels),
-        map(ctx, MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes), DartSort::BitVec, prefix),
+        map(ctx, MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes),
+            DartSort::BitVec, prefix),
         der(map, rule, prefix),
         solver(ctx) {
     solver.add(rule.family());
@@ -61,12 +65,14 @@ struct Query {
     GMap G(map.spec().n, map.spec().kind);
     G.add_darts(size);
     for (int i : map.spec().labels())
-      for (unsigned d = 0; d < size; ++d) G.set_alpha(i, d, numeral(m.eval(map.alpha(i, map.dart(d)), true)));
+      for (unsigned d = 0; d < size; ++d)
+        G.set_alpha(i, d, numeral(m.eval(map.alpha(i, map.dart(d)), true)));
     return G;
   }
 };
 
-z3::expr condition(const SymbolicRule& rule, const ThesisParts& parts, const ExtraCondition& extra) {
+z3::expr condition(const SymbolicRule& rule, const ThesisParts& parts,
+                   const ExtraCondition& extra) {
   return extra ? rule.condition(parts) && extra(rule) : rule.condition(parts);
 }
 
@@ -99,10 +105,13 @@ void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCond
         std::vector<Node> nodes;
         for (Node v = 0; v < r.left().num_nodes(); ++v) nodes.push_back(v);  // slot x on dart x
         auto c = replay(r, q.map_of(model), nodes, Engine::Smt, Semantics::Consistency);
-        if (!c) throw std::logic_error("symbolic counterexample does not replay (encoding error): " + rule_text(r));
+        if (!c)
+          throw std::logic_error("symbolic counterexample does not replay (encoding error): " +
+                                 rule_text(r));
         rep.smallest_unsound = ValidationWitness{r, 0, std::move(c)};
       }
-    if (!rep.smallest_unsound) throw std::logic_error("symbolic soundness query: no witness within the bounds");
+    if (!rep.smallest_unsound)
+      throw std::logic_error("symbolic soundness query: no witness within the bounds");
   }
   rep.sound_decided = true;
   rep.sound_seconds = since(t0);
@@ -126,10 +135,12 @@ GMap relabel(const GMap& G, const std::vector<Node>& match) {
 
 // "The match of the rule on this concrete map glues and yields a map" as a constraint on the rule.
 void refine(Query& q, const ValidationOptions& o, const GMap& G, size_t t,
-            std::vector<std::unique_ptr<MapEncoding>>& maps, std::vector<std::unique_ptr<SymbolicDerivation>>& ders) {
+            std::vector<std::unique_ptr<MapEncoding>>& maps,
+            std::vector<std::unique_ptr<SymbolicDerivation>>& ders) {
   const std::string prefix = "r" + std::to_string(t) + "_";
   maps.push_back(std::make_unique<MapEncoding>(q.ctx, MapSpec{o.n, o.kind}, o.bound,
-                                               static_cast<unsigned>(o.max_nodes), DartSort::BitVec, prefix));
+                                               static_cast<unsigned>(o.max_nodes), DartSort::BitVec,
+                                               prefix));
   const MapEncoding& M = *maps.back();
   q.solver.add(M.size() == M.dart(static_cast<unsigned>(G.size())));
   for (int i : M.spec().labels())
@@ -171,19 +182,24 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
       const Rule r = q.rule.extract(model, "candidate");
       const VerifyResult v = session.verify(r);
       if (v.preserves) {
-        if (!v.applicable) throw std::logic_error("symbolic candidate matches no map (encoding error): " + rule_text(r));
+        if (!v.applicable)
+          throw std::logic_error("symbolic candidate matches no map (encoding error): " +
+                                 rule_text(r));
         rep.smallest_incomplete = ValidationWitness{r, 0, std::nullopt};
         rep.complete_decided = true;
         rep.complete_seconds = since(t0);
         return;
       }
-      refine(q, o, relabel(v.counterexample->G, v.counterexample->match.node), rep.refinements++, maps, ders);
+      refine(q, o, relabel(v.counterexample->G, v.counterexample->match.node), rep.refinements++,
+             maps, ders);
       // The refinement must exclude the candidate (else the loop would not progress).
       z3::expr_vector fixed(q.ctx);  // a new vector: copies of an expr_vector share it
       for (const auto& e : a) fixed.push_back(e);
-      fixed.push_back(assume(q.solver, q.rule.equals(model), "candidate" + std::to_string(rep.refinements)));
+      fixed.push_back(
+          assume(q.solver, q.rule.equals(model), "candidate" + std::to_string(rep.refinements)));
       if (q.check(fixed) != z3::unsat)
-        throw std::logic_error("a refinement does not exclude its candidate (encoding error): " + rule_text(r));
+        throw std::logic_error("a refinement does not exclude its candidate (encoding error): " +
+                               rule_text(r));
     }
   }
   rep.complete_decided = true;
@@ -194,22 +210,25 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
 SymbolicReport validate_symbolic(const std::string& condition, const ValidationOptions& opt) {
   const auto parts = symbolic_condition_parts(condition);
   if (!parts)
-    throw Error(ErrorCode::Usage, "condition '" + condition + "' has no symbolic form (engines smt and enum take it)",
+    throw Error(ErrorCode::Usage,
+                "condition '" + condition + "' has no symbolic form (engines smt and enum take it)",
                 "--engine symbolic");
   return validate_symbolic(condition, *parts, nullptr, opt);
 }
 
-SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts, const ExtraCondition& extra,
-                                 const ValidationOptions& opt) {
+SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts,
+                                 const ExtraCondition& extra, const ValidationOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   const MapSpec spec{opt.n, opt.kind};
   if (!spec.cycle_pairs().empty())
-    throw Error(ErrorCode::Usage,
-                "the symbolic engine does not encode the cycle condition: models without cycle pairs only "
-                "(1-G-maps, 2-O-maps)",
-                "--engine symbolic");
+    throw Error(
+        ErrorCode::Usage,
+        "the symbolic engine does not encode the cycle condition: models without cycle pairs only "
+        "(1-G-maps, 2-O-maps)",
+        "--engine symbolic");
   if (opt.shards != 1 || opt.random != 0)
-    throw Error(ErrorCode::Usage, "--shard and --random do not apply to the symbolic engine", "--engine symbolic");
+    throw Error(ErrorCode::Usage, "--shard and --random do not apply to the symbolic engine",
+                "--engine symbolic");
   SymbolicReport rep;
   rep.condition = condition;
   rep.options = opt;
@@ -233,8 +252,10 @@ nlohmann::ordered_json to_json(const SymbolicReport& r) {
   j["bound"] = o.bound;
   j["rules"] = r.rules;
   j["time_limit_hit"] = !(r.sound_decided && r.complete_decided);
-  j["sound"] = r.sound_decided ? nlohmann::ordered_json(r.sound()) : nlohmann::ordered_json(nullptr);
-  j["complete"] = r.complete_decided ? nlohmann::ordered_json(r.complete()) : nlohmann::ordered_json(nullptr);
+  j["sound"] =
+      r.sound_decided ? nlohmann::ordered_json(r.sound()) : nlohmann::ordered_json(nullptr);
+  j["complete"] =
+      r.complete_decided ? nlohmann::ordered_json(r.complete()) : nlohmann::ordered_json(nullptr);
   if (r.smallest_unsound) {
     const auto& w = *r.smallest_unsound;
     nlohmann::ordered_json e;
@@ -242,7 +263,8 @@ nlohmann::ordered_json to_json(const SymbolicReport& r) {
     e["counterexample"] = to_json(w.rule, o.bound, *w.counterexample);
     j["smallest_unsound"] = e;
   }
-  if (r.smallest_incomplete) j["smallest_incomplete"] = {{"rule", io::rule_to_json(r.smallest_incomplete->rule)}};
+  if (r.smallest_incomplete)
+    j["smallest_incomplete"] = {{"rule", io::rule_to_json(r.smallest_incomplete->rule)}};
   j["refinements"] = r.refinements;
   j["sound_seconds"] = r.sound_seconds;
   j["complete_seconds"] = r.complete_seconds;
@@ -253,11 +275,12 @@ nlohmann::ordered_json to_json(const SymbolicReport& r) {
 std::string to_text(const SymbolicReport& r) {
   const ValidationOptions& o = r.options;
   std::ostringstream s;
-  s << "condition " << r.condition << " on " << o.n << "-" << (o.kind == MapKind::OMap ? "O-map" : "G-map")
-    << " rules of at most " << o.max_nodes << " nodes (arcs on labels";
+  s << "condition " << r.condition << " on " << o.n << "-"
+    << (o.kind == MapKind::OMap ? "O-map" : "G-map") << " rules of at most " << o.max_nodes
+    << " nodes (arcs on labels";
   for (int i : o.labels) s << " " << i;
-  s << "), maps of at most " << o.bound << " darts, engine symbolic\n  every rule of the family at once ("
-    << r.rules << " rules)\n";
+  s << "), maps of at most " << o.bound
+    << " darts, engine symbolic\n  every rule of the family at once (" << r.rules << " rules)\n";
   char buf[96];
   s << "  sound: ";
   if (!r.sound_decided) {
@@ -270,7 +293,8 @@ std::string to_text(const SymbolicReport& r) {
   if (r.smallest_unsound) {
     const auto& w = *r.smallest_unsound;
     const auto& c = *w.counterexample;
-    s << "\n    smallest: " << rule_text(w.rule) << "\n    on a map of " << c.G.size() << " darts, match";
+    s << "\n    smallest: " << rule_text(w.rule) << "\n    on a map of " << c.G.size()
+      << " darts, match";
     for (graph::Node v = 0; v < w.rule.left().num_nodes(); ++v)
       s << " " << w.rule.left().name(v) << "->" << c.match.node[v];
     if (c.gluing_fails)
@@ -288,7 +312,8 @@ std::string to_text(const SymbolicReport& r) {
   s << buf;
   if (r.smallest_incomplete)
     s << "\n    smallest: " << rule_text(r.smallest_incomplete->rule)
-      << "\n    fails the condition, yet every match on every map of at most " << o.bound << " darts glues and preserves";
+      << "\n    fails the condition, yet every match on every map of at most " << o.bound
+      << " darts glues and preserves";
   std::snprintf(buf, sizeof buf, "\n  time %.3f s\n", r.sound_seconds + r.complete_seconds);
   s << buf;
   return s.str();

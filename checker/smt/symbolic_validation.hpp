@@ -13,18 +13,17 @@
 //             condition fails, a match on a symbolic witness map exists) is verified by the
 //             concrete SMT engine (rule_verifier.hpp); if it breaks on (G, m), the constraint "the
 //             match of the rule onto this G (relabelled so that m is the identity) glues and
-//             preserves" is added to the candidate query, which must exclude the candidate (checked;
-//             an encoding error otherwise). UNSAT: complete for the whole family. A candidate that
-//             the concrete engine finds preserving is the witness (fewest nodes: the node count is
-//             raised one by one, by assumptions).
+//             preserves" is added to the candidate query, which must exclude the candidate
+//             (checked; an encoding error otherwise). UNSAT: complete for the whole family. A
+//             candidate that the concrete engine finds preserving is the witness (fewest nodes: the
+//             node count is raised one by one, by assumptions).
 // Conditions: the built-in ones whose parts are Theorems 1-2 (symbolic_condition_parts); models
 // with cycle pairs are refused (the cycle condition is not encoded symbolically).
 #pragma once
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
@@ -37,11 +36,11 @@ std::optional<ThesisParts> symbolic_condition_parts(const std::string& name);
 
 struct SymbolicReport {
   std::string condition;
-  ValidationOptions options;     // n, kind, labels, max_nodes, bound, time_limit
-  size_t rules = 0;              // of the family the verdicts cover (rule_space.hpp count)
+  ValidationOptions options;  // n, kind, labels, max_nodes, bound, time_limit
+  size_t rules = 0;           // of the family the verdicts cover (rule_space.hpp count)
   bool sound_decided = false, complete_decided = false;  // false: the time limit hit first
   std::optional<ValidationWitness> smallest_unsound, smallest_incomplete;
-  size_t refinements = 0;        // maps added to the completeness query
+  size_t refinements = 0;  // maps added to the completeness query
   double sound_seconds = 0, complete_seconds = 0;
   bool sound() const { return sound_decided && !smallest_unsound; }
   bool complete() const { return complete_decided && !smallest_incomplete; }
@@ -52,8 +51,8 @@ SymbolicReport validate_symbolic(const std::string& condition, const ValidationO
 // The condition "parts, and extra(rule) when given" (a further formula on the symbolic rule: the
 // tests use it to build a condition that is too strong).
 using ExtraCondition = std::function<z3::expr(const SymbolicRule&)>;
-SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts, const ExtraCondition& extra,
-                                 const ValidationOptions& opt);
+SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts,
+                                 const ExtraCondition& extra, const ValidationOptions& opt);
 
 nlohmann::ordered_json to_json(const SymbolicReport& r);
 std::string to_text(const SymbolicReport& r);

@@ -2,6 +2,8 @@
 // validation (condition_validation.hpp) with the enumerator: on the small bounds where both run,
 // the same verdicts; the wrong variants refuted with counterexamples of the same size, which the
 // enumerator confirms; the condition formulas equal the concrete checker on every rule of a family.
+#include "checker/smt/symbolic_validation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -10,15 +12,14 @@
 #include "checker/smt/condition_validation.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/symbolic_rule.hpp"
-#include "checker/smt/symbolic_validation.hpp"
 #include "model/core/error.hpp"
 
 using namespace gmr;
 using namespace gmr::smt;
 
 namespace {
-ValidationOptions sym_options(int n, MapKind kind, std::vector<int> labels, int max_nodes, unsigned bound,
-                          Engine e = Engine::Enum) {
+ValidationOptions sym_options(int n, MapKind kind, std::vector<int> labels, int max_nodes,
+                              unsigned bound, Engine e = Engine::Enum) {
   ValidationOptions o;
   o.n = n;
   o.kind = kind;
@@ -31,11 +32,14 @@ ValidationOptions sym_options(int n, MapKind kind, std::vector<int> labels, int 
 
 ValidationReport family_report(const std::string& name, const ValidationOptions& o) {
   const BuiltinCondition* c = find_builtin_condition(name);
-  return validate_condition(name, [&](const std::vector<Rule>& rules) {
-    std::vector<bool> out;
-    for (const auto& r : rules) out.push_back(c->holds(r));
-    return out;
-  }, o);
+  return validate_condition(
+      name,
+      [&](const std::vector<Rule>& rules) {
+        std::vector<bool> out;
+        for (const auto& r : rules) out.push_back(c->holds(r));
+        return out;
+      },
+      o);
 }
 
 size_t rule_nodes(const Rule& r) { return r.left().num_nodes() + r.added_nodes().size(); }
@@ -52,7 +56,8 @@ void compare(const std::string& name, const ValidationOptions& o) {
   EXPECT_EQ(s.rules, f.rules);
   if (s.smallest_unsound && f.smallest_unsound) {
     EXPECT_EQ(rule_nodes(s.smallest_unsound->rule), rule_nodes(f.smallest_unsound->rule));
-    EXPECT_EQ(s.smallest_unsound->counterexample->G.size(), f.smallest_unsound->counterexample->G.size());
+    EXPECT_EQ(s.smallest_unsound->counterexample->G.size(),
+              f.smallest_unsound->counterexample->G.size());
     const VerifyResult v = verify_enum(s.smallest_unsound->rule, o.bound, Semantics::Consistency);
     EXPECT_FALSE(v.preserves) << rule_text(s.smallest_unsound->rule);
     EXPECT_EQ(v.counterexample->G.size(), s.smallest_unsound->counterexample->G.size());
@@ -72,16 +77,19 @@ TEST(SymbolicValidation, ConditionFormulasEqualTheCheckerOnEveryRule) {
     const SymbolicRule sym(ctx, MapSpec{n, kind}, 2, labels);
     z3::solver s(ctx);
     s.add(sym.family());
-    const char* variants[] = {"thesis", "wrong-incident-without-dangling", "wrong-orientation-dropped"};
+    const char* variants[] = {"thesis", "wrong-incident-without-dangling",
+                              "wrong-orientation-dropped"};
     size_t rules = 0;
     for_each_rule(n, kind, 2, labels, [&](size_t k, const Rule& r) {
       s.push();
       s.add(sym.describes(r));
-      EXPECT_EQ(s.check(), z3::sat) << "rule " << k << " is not in the symbolic family: " << rule_text(r);
+      EXPECT_EQ(s.check(), z3::sat)
+          << "rule " << k << " is not in the symbolic family: " << rule_text(r);
       const z3::model m = s.get_model();
       for (const char* name : variants) {
         const bool formula = m.eval(sym.condition(*symbolic_condition_parts(name)), true).is_true();
-        EXPECT_EQ(formula, find_builtin_condition(name)->holds(r)) << name << " on " << rule_text(r);
+        EXPECT_EQ(formula, find_builtin_condition(name)->holds(r))
+            << name << " on " << rule_text(r);
       }
       EXPECT_EQ(sym.extract(m, "x").side(false).num_nodes(), r.left().num_nodes());
       s.pop();
@@ -103,7 +111,8 @@ TEST(SymbolicValidation, ThesisSoundAndComplete2OMapsAgreesWithEnumerator) {
 // The dangling part dropped: a rule deleting a node without its arcs, on a map of 1 dart.
 TEST(SymbolicValidation, WrongIncidentRefutedMinimally) {
   compare("wrong-incident-without-dangling", sym_options(1, MapKind::GMap, {0, 1}, 2, 4));
-  const SymbolicReport s = validate_symbolic("wrong-incident-without-dangling", sym_options(1, MapKind::GMap, {0, 1}, 2, 4));
+  const SymbolicReport s = validate_symbolic("wrong-incident-without-dangling",
+                                             sym_options(1, MapKind::GMap, {0, 1}, 2, 4));
   ASSERT_TRUE(s.smallest_unsound);
   EXPECT_EQ(rule_nodes(s.smallest_unsound->rule), 1u);
   EXPECT_EQ(s.smallest_unsound->counterexample->G.size(), 1u);
@@ -115,7 +124,8 @@ TEST(SymbolicValidation, WrongIncidentRefutedMinimally) {
 TEST(SymbolicValidation, WrongOrientationRefutedWithThreeNodes) {
   compare("wrong-orientation-dropped", sym_options(1, MapKind::GMap, {0}, 2, 5));
   compare("wrong-orientation-dropped", sym_options(1, MapKind::GMap, {0}, 3, 5));
-  const SymbolicReport s = validate_symbolic("wrong-orientation-dropped", sym_options(1, MapKind::GMap, {0}, 3, 5));
+  const SymbolicReport s =
+      validate_symbolic("wrong-orientation-dropped", sym_options(1, MapKind::GMap, {0}, 3, 5));
   ASSERT_TRUE(s.smallest_unsound);
   EXPECT_EQ(rule_nodes(s.smallest_unsound->rule), 3u);
   EXPECT_EQ(s.smallest_unsound->counterexample->G.size(), 3u);
@@ -139,11 +149,14 @@ TEST(SymbolicValidation, RefusesCycleModelsAndOtherConditions) {
 // with a 1-node witness that the enumerator finds applicable and preserving on every map.
 TEST(SymbolicValidation, TooStrongConditionIncompleteWitnessConfirmedByEnumerator) {
   const ValidationOptions o = sym_options(1, MapKind::GMap, {0, 1}, 2, 4);
-  const SymbolicReport s = validate_symbolic("thesis-without-1-loops", ThesisParts{}, [](const SymbolicRule& r) {
-    z3::expr_vector none(r.ctx());
-    for (int x = 0; x < r.slots(); ++x) none.push_back(!r.arc(false, 1, x, x));
-    return z3::mk_and(none);
-  }, o);
+  const SymbolicReport s = validate_symbolic(
+      "thesis-without-1-loops", ThesisParts{},
+      [](const SymbolicRule& r) {
+        z3::expr_vector none(r.ctx());
+        for (int x = 0; x < r.slots(); ++x) none.push_back(!r.arc(false, 1, x, x));
+        return z3::mk_and(none);
+      },
+      o);
   std::printf("%s", to_text(s).c_str());
   ASSERT_TRUE(s.complete_decided);
   ASSERT_TRUE(s.smallest_incomplete);
@@ -154,16 +167,20 @@ TEST(SymbolicValidation, TooStrongConditionIncompleteWitnessConfirmedByEnumerato
   EXPECT_TRUE(v.applicable && v.preserves) << rule_text(w);
   // The rule-by-rule validation of the same condition is incomplete too, with a 1-node witness.
   ValidationOptions f = o;
-  const ValidationReport fr = validate_condition("thesis-without-1-loops", [](const std::vector<Rule>& rules) {
-    std::vector<bool> out;
-    for (const auto& r : rules) {
-      bool loop = false;
-      for (graph::ArcId a = 0; a < r.left().num_arc_slots(); ++a)
-        loop = loop || (r.left().arc_alive(a) && r.left().arc(a).label == 1 && r.left().arc(a).src == r.left().arc(a).tgt);
-      out.push_back(thesis_conditions(r) && !loop);
-    }
-    return out;
-  }, f);
+  const ValidationReport fr = validate_condition(
+      "thesis-without-1-loops",
+      [](const std::vector<Rule>& rules) {
+        std::vector<bool> out;
+        for (const auto& r : rules) {
+          bool loop = false;
+          for (graph::ArcId a = 0; a < r.left().num_arc_slots(); ++a)
+            loop = loop || (r.left().arc_alive(a) && r.left().arc(a).label == 1 &&
+                            r.left().arc(a).src == r.left().arc(a).tgt);
+          out.push_back(thesis_conditions(r) && !loop);
+        }
+        return out;
+      },
+      f);
   EXPECT_FALSE(fr.complete());
   ASSERT_TRUE(fr.smallest_incomplete);
   EXPECT_EQ(rule_nodes(fr.smallest_incomplete->rule), 1u);
