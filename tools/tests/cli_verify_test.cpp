@@ -107,6 +107,7 @@ TEST_F(CliVerify, ValidateConditionSymbolicEngine) {
   EXPECT_EQ(doc["sound"], false);
   EXPECT_EQ(doc["smallest_unsound"]["counterexample"]["G"]["darts"], 3);
   EXPECT_TRUE(fs::exists(dir / "sym.json"));
+  EXPECT_EQ(run("validate-condition --merge " + q(dir / "sym.json")).code, 2);
   // Cycle pairs, plug-ins and shards are refused.
   EXPECT_EQ(run("validate-condition --condition thesis --labels 0,2 -n 2 --engine symbolic").code, 2);
   EXPECT_EQ(run("validate-condition --condition thesis --labels 0,1 --shard 0/2 --engine symbolic").code, 2);
