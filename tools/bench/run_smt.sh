@@ -8,14 +8,19 @@
 #   tools/bench/run_smt.sh                      # enumerator up to 6 darts (~1 min)
 #   GMR_BENCH_ENUM_MAX=7 tools/bench/run_smt.sh # enumerator up to 7 darts (~+15 s CPU)
 #   GMR_BENCH_BUILD=/tmp/b tools/bench/run_smt.sh
+#   GMR_BENCH_REPLOT=1 tools/bench/run_smt.sh  # tables and plot from the last run's saved output
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=${GMR_BENCH_BUILD:-$root/build-bench}
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
 cmake --build "$build" --target gmr_bench_smt -j"$(nproc 2>/dev/null || echo 2)"
-out=$("$build/tools/bench/gmr_bench_smt" "$@" 2>/dev/null)
-echo "$out" > "$build/smt_bench.txt"
-echo "$out" | grep -E '^BM_(SmtVariant|FamilySession)'
+if [ -n "${GMR_BENCH_REPLOT:-}" ]; then  # tables and plot again from the last run's output
+  out=$(cat "$build/smt_bench.txt")
+else
+  out=$("$build/tools/bench/gmr_bench_smt" "$@" 2>/dev/null)
+  echo "$out" > "$build/smt_bench.txt"
+fi
+echo "$out" | grep -E '^BM_(SmtVariant|FamilySession)' || true
 echo
 echo "CPU ms to the verdict (identity rule on a path of m nodes, 2-G-maps; '-': not run)"
 echo "$out" | awk '
@@ -72,7 +77,7 @@ set xlabel "maps of at most k darts"
 set ylabel "CPU ms to the verdict"
 set key top left font ",9"
 set grid
-set multiplot layout 2,2 title "Time to a verdict (one run; tools/bench/run_smt.sh)"
+set multiplot layout 2,2 title "Time to a verdict (one run; tools/bench/run_smt.sh)" noenhanced
 do for [m=1:4] {
   c = 2 + 4*(m-1)
   set title sprintf("rules of %d node%s", m, m > 1 ? "s" : "")
