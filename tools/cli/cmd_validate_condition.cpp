@@ -1,6 +1,6 @@
 // `gmr validate-condition (--condition NAME | --plugin LIB.so) [--model gmap|omap] [-n N]
 //  [--labels 0,1] [--max-nodes m] [--random N --seed S] [--bound k] [--engine smt|enum|symbolic] [--shard K/M] [--time-limit s]
-//  [--eval-timeout s] [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
+//  [--eval-timeout s] [--schemes FILE...] [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
 // every rule of the bounded family and every map of at most k darts
 // (checker/smt/condition_validation.hpp; docs/verify.md)? Built-in conditions run in-process,
 // plug-ins in a forked child (checker/smt/condition_plugin.hpp). Progress on standard error when
@@ -16,7 +16,10 @@
 #include "checker/smt/condition_plugin.hpp"
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
+#include "checker/smt/counterexample.hpp"
+#include "checker/smt/scheme_conditions.hpp"
 #include "checker/smt/symbolic_validation.hpp"
+#include "model/io/scheme_json.hpp"
 #include "model/core/error.hpp"
 #include "model/io/read_file.hpp"
 #include "tools/cli/cli.hpp"
@@ -44,6 +47,7 @@ struct ValidateConditionArgs {
   size_t random = 0;
   uint64_t seed = 1;
   double eval_timeout = ConditionPlugin::kDefaultEvalTimeout;
+  std::vector<std::string> schemes;
 };
 
 std::vector<int> parse_labels(const std::string& text) {
@@ -79,11 +83,58 @@ int run_symbolic(const ValidateConditionArgs& a, ValidationOptions o) {
   return rep.sound() && rep.complete() ? kExitOk : kExitNegative;
 }
 
+// A scheme condition (scheme_conditions.hpp) on the schemes of --schemes, through instantiation.
+int run_scheme_condition(const ValidateConditionArgs& a, const SchemeCondition& c) {
+  if (a.schemes.empty())
+    throw Error(ErrorCode::Usage, "a scheme condition needs the schemes to validate it on (--schemes FILE...)",
+                "--condition " + c.name);
+  if (a.bound < 1 || a.bound > 8) throw Error(ErrorCode::Usage, "must be in 1..8 for schemes", "--bound");
+  std::vector<RuleScheme> schemes;
+  for (const auto& f : a.schemes) schemes.push_back(io::read_scheme_file(f));
+  const SchemeValidationReport r = validate_scheme_condition(c, schemes, a.bound);
+  nlohmann::ordered_json j;
+  j["format"] = "gmr.scheme-condition-validation";
+  j["version"] = 1;
+  j["condition"] = r.condition;
+  j["bound"] = r.bound;
+  j["schemes"] = r.schemes;
+  j["holds"] = r.holds;
+  j["fails"] = r.fails;
+  j["vacuous"] = r.vacuous;
+  j["unsound"] = r.unsound;
+  j["incomplete"] = r.incomplete;
+  j["sound"] = r.sound();
+  j["complete"] = r.complete();
+  j["sufficient_only"] = c.sufficient_only;
+  if (r.smallest_unsound) {
+    const auto& w = *r.smallest_unsound;
+    nlohmann::ordered_json e;
+    e["scheme"] = w.scheme.name;
+    e["counterexample"] = to_json(*w.result.instance, r.bound, *w.result.result->counterexample);
+    j["smallest_unsound"] = e;
+  }
+  if (r.first_incomplete) j["first_incomplete"] = r.first_incomplete->name;
+  j["seconds"] = r.seconds;
+  if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
+  if (a.json)
+    print_json(j);
+  else
+    std::cout << to_text(r);
+  // A sufficient-only condition is refuted by unsoundness alone.
+  return r.sound() && (c.sufficient_only || r.complete()) ? kExitOk : kExitNegative;
+}
+
 int run_validate_condition(const ValidateConditionArgs& a) {
   if (a.list) {
     for (const auto& c : builtin_conditions()) std::printf("%-32s %s\n", c.name.c_str(), c.description.c_str());
+    for (const auto& c : builtin_scheme_conditions())
+      std::printf("%-32s %s (schemes: --schemes FILE...)\n", c.name.c_str(), c.description.c_str());
     return kExitOk;
   }
+  if (!a.condition.empty())
+    if (const SchemeCondition* sc = find_builtin_scheme_condition(a.condition)) return run_scheme_condition(a, *sc);
+  if (!a.schemes.empty())
+    throw Error(ErrorCode::Usage, "--schemes goes with a scheme condition (--list)", "--schemes");
   if (!a.merge.empty()) {
     std::vector<nlohmann::json> docs;
     for (const auto& f : a.merge) {
@@ -180,6 +231,8 @@ void register_validate_condition(CLI::App& app) {
   sub->add_option("--time-limit", args->time_limit, "Stop after this many seconds, reporting the part covered");
   sub->add_option("--eval-timeout", args->eval_timeout,
                   "A plug-in's predicate must return within this many seconds per rule (default 10; 0: no limit)");
+  sub->add_option("--schemes", args->schemes,
+                  "The rule schemes (gmr.rule JSON files) a scheme condition is validated on, through instantiation");
   sub->add_flag("--json", args->json, "Print JSON (format gmr.condition-validation)");
   sub->add_option("-o,--output", args->output, "Also write the JSON report to this file");
   sub->add_option("--merge", args->merge, "Merge the JSON reports of the shards of one sweep (prints JSON)");

@@ -124,6 +124,22 @@ TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
   EXPECT_EQ(run("validate-condition --condition thesis --shard 3/2").code, 2);
 }
 
+TEST_F(CliVerify, ValidateSchemeConditionOnSchemeFiles) {
+  const std::string rules = (source_dir() / "tools/data/rules").string();
+  const Result r = run("validate-condition --condition scheme-thesis --bound 3 --json --schemes " +
+                       q(rules + "/face_triangulation.json") + " " + q(rules + "/quad_subdivision.json"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["format"], "gmr.scheme-condition-validation");
+  EXPECT_EQ(doc["schemes"], 2);
+  EXPECT_EQ(doc["holds"], 2);
+  EXPECT_EQ(doc["sound"], true);
+  EXPECT_EQ(run("validate-condition --condition scheme-thesis").code, 2);  // no --schemes
+  EXPECT_EQ(run("validate-condition --condition thesis --schemes " + q(rules + "/face_triangulation.json")).code, 2);
+  EXPECT_EQ(run("validate-condition --condition scheme-thesis --schemes " +
+                q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json")).code, 2);  // a concrete rule
+}
+
 TEST_F(CliVerify, HangingPluginExits2AfterTheEvaluationTimeLimit) {
   const Result r = run(std::string("validate-condition --plugin ") + q(GMR_HANGING_PLUGIN) +
                        " --labels 0 --max-nodes 1 --eval-timeout 0.5");
