@@ -1,7 +1,8 @@
-// The scheme conditions of Theorems 4-6 as registered conditions (checker/smt/scheme_conditions.hpp),
-// validated through instantiation: every application on every G-map of at most `darts` darts
-// (every hook orbit of at most `darts` darts). `scheme-thesis` must be sound (Theorems 4-6, the
-// sufficiency direction; Theorem 6 has no other); the two wrong variants must be refuted.
+// The scheme conditions of Theorems 4-6 as registered conditions
+// (checker/smt/scheme_conditions.hpp), validated through instantiation: every application on every
+// G-map of at most `darts` darts (every hook orbit of at most `darts` darts). `scheme-thesis` must
+// be sound (Theorems 4-6, the sufficiency direction; Theorem 6 has no other); the two wrong
+// variants must be refuted.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,10 +16,12 @@ using namespace gmr;
 using namespace gmr::smt;
 
 namespace {
-// The library operations and the random schemes of seeds 0..seeds-1 (model/testing/random_schemes.hpp).
+// The library operations and the random schemes of seeds 0..seeds-1
+// (model/testing/random_schemes.hpp).
 std::vector<RuleScheme> scheme_family(uint64_t seeds) {
   std::vector<RuleScheme> out;
-  for (const auto& e : std::filesystem::directory_iterator(gmr::testing::source_path("tools/data/rules")))
+  for (const auto& e :
+       std::filesystem::directory_iterator(gmr::testing::source_path("tools/data/rules")))
     if (e.path().extension() == ".json") out.push_back(io::read_scheme_file(e.path()));
   for (uint64_t seed = 0; seed < seeds; ++seed) {
     gmr::testing::Rng rng(seed);
@@ -26,8 +29,10 @@ std::vector<RuleScheme> scheme_family(uint64_t seeds) {
   }
   return out;
 }
-SchemeValidationReport validate(const std::string& name, const std::vector<RuleScheme>& family, unsigned darts) {
-  const SchemeValidationReport r = validate_scheme_condition(*find_builtin_scheme_condition(name), family, darts);
+SchemeValidationReport validate(const std::string& name, const std::vector<RuleScheme>& family,
+                                unsigned darts) {
+  const SchemeValidationReport r =
+      validate_scheme_condition(*find_builtin_scheme_condition(name), family, darts);
   std::printf("%s", to_text(r).c_str());
   return r;
 }

@@ -50,7 +50,14 @@ struct SchemeValidationReport {
   bool complete() const { return incomplete == 0; }
 };
 
-SchemeValidationReport validate_scheme_condition(const SchemeCondition& c, const std::vector<RuleScheme>& schemes,
+SchemeValidationReport validate_scheme_condition(const SchemeCondition& c,
+                                                 const std::vector<RuleScheme>& schemes,
+                                                 unsigned bound);
+// The same with the condition's verdicts given (holds[k] for schemes[k]: a plug-in's, evaluated in
+// its guarded child, condition_plugin.hpp).
+SchemeValidationReport validate_scheme_condition(const std::string& name,
+                                                 const std::vector<bool>& holds,
+                                                 const std::vector<RuleScheme>& schemes,
                                                  unsigned bound);
 std::string to_text(const SchemeValidationReport& r);
 

@@ -83,15 +83,20 @@ int run_symbolic(const ValidateConditionArgs& a, ValidationOptions o) {
   return rep.sound() && rep.complete() ? kExitOk : kExitNegative;
 }
 
-// A scheme condition (scheme_conditions.hpp) on the schemes of --schemes, through instantiation.
-int run_scheme_condition(const ValidateConditionArgs& a, const SchemeCondition& c) {
+// A scheme condition (scheme_conditions.hpp; built in, or a plug-in's optional entry point) on the
+// schemes of --schemes, through instantiation.
+int run_scheme_condition(const ValidateConditionArgs& a, const SchemeCondition* builtin, const ConditionPlugin* plugin) {
+  const std::string name = builtin ? builtin->name : plugin->scheme_name();
   if (a.schemes.empty())
     throw Error(ErrorCode::Usage, "a scheme condition needs the schemes to validate it on (--schemes FILE...)",
-                "--condition " + c.name);
+                builtin ? "--condition " + name : "--plugin " + a.plugin);
   if (a.bound < 1 || a.bound > 8) throw Error(ErrorCode::Usage, "must be in 1..8 for schemes", "--bound");
   std::vector<RuleScheme> schemes;
   for (const auto& f : a.schemes) schemes.push_back(io::read_scheme_file(f));
-  const SchemeValidationReport r = validate_scheme_condition(c, schemes, a.bound);
+  const bool sufficient_only = builtin && builtin->sufficient_only;
+  const SchemeValidationReport r =
+      builtin ? validate_scheme_condition(*builtin, schemes, a.bound)
+              : validate_scheme_condition(name, plugin->evaluate_schemes(schemes, a.eval_timeout), schemes, a.bound);
   nlohmann::ordered_json j;
   j["format"] = "gmr.scheme-condition-validation";
   j["version"] = 1;
@@ -105,7 +110,7 @@ int run_scheme_condition(const ValidateConditionArgs& a, const SchemeCondition& 
   j["incomplete"] = r.incomplete;
   j["sound"] = r.sound();
   j["complete"] = r.complete();
-  j["sufficient_only"] = c.sufficient_only;
+  j["sufficient_only"] = sufficient_only;
   if (r.smallest_unsound) {
     const auto& w = *r.smallest_unsound;
     nlohmann::ordered_json e;
@@ -121,7 +126,7 @@ int run_scheme_condition(const ValidateConditionArgs& a, const SchemeCondition& 
   else
     std::cout << to_text(r);
   // A sufficient-only condition is refuted by unsoundness alone.
-  return r.sound() && (c.sufficient_only || r.complete()) ? kExitOk : kExitNegative;
+  return r.sound() && (sufficient_only || r.complete()) ? kExitOk : kExitNegative;
 }
 
 int run_validate_condition(const ValidateConditionArgs& a) {
@@ -132,7 +137,14 @@ int run_validate_condition(const ValidateConditionArgs& a) {
     return kExitOk;
   }
   if (!a.condition.empty())
-    if (const SchemeCondition* sc = find_builtin_scheme_condition(a.condition)) return run_scheme_condition(a, *sc);
+    if (const SchemeCondition* sc = find_builtin_scheme_condition(a.condition)) return run_scheme_condition(a, sc, nullptr);
+  if (!a.plugin.empty() && !a.schemes.empty()) {
+    ConditionPlugin plugin(a.plugin);
+    if (!plugin.judges_schemes())
+      throw Error(ErrorCode::Usage, std::string("the plug-in has no ") + kSchemeConditionEntrySymbol +
+                                        ": it judges concrete rules (drop --schemes)", "plugin " + a.plugin);
+    return run_scheme_condition(a, nullptr, &plugin);
+  }
   if (!a.schemes.empty())
     throw Error(ErrorCode::Usage, "--schemes goes with a scheme condition (--list)", "--schemes");
   if (!a.merge.empty()) {

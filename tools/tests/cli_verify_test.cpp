@@ -140,6 +140,21 @@ TEST_F(CliVerify, ValidateSchemeConditionOnSchemeFiles) {
                 q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json")).code, 2);  // a concrete rule
 }
 
+TEST_F(CliVerify, SchemePluginOnSchemeFiles) {
+  const std::string rules = (source_dir() / "tools/data/rules").string();
+  const Result r = run(std::string("validate-condition --plugin ") + q(GMR_SCHEME_PLUGIN) + " --bound 3 --json --schemes " +
+                       q(rules + "/face_triangulation.json") + " " + q(rules + "/sew2.json"));
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["condition"], "full-degree");
+  EXPECT_EQ(doc["schemes"], 2);
+  EXPECT_EQ(r.code, doc["sound"].get<bool>() && doc["complete"].get<bool>() ? 0 : 1) << r.err;
+  // A plug-in without the scheme entry point, with --schemes: exit 2 naming the symbol.
+  const Result bad = run(std::string("validate-condition --plugin ") + q(GMR_CRASHING_PLUGIN) + " --schemes " +
+                         q(rules + "/sew2.json"));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("gmr_scheme_condition_v1"), std::string::npos) << bad.err;
+}
+
 TEST_F(CliVerify, HangingPluginExits2AfterTheEvaluationTimeLimit) {
   const Result r = run(std::string("validate-condition --plugin ") + q(GMR_HANGING_PLUGIN) +
                        " --labels 0 --max-nodes 1 --eval-timeout 0.5");
