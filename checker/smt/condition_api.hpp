@@ -4,7 +4,9 @@
 //     c++ -std=c++20 -shared -fPIC -I<gmr source> my_condition.cpp -o libmycond.so
 // that defines the entry symbol (C linkage)
 //     extern "C" const gmr_condition* gmr_condition_v1();
-// (the macro GMR_CONDITION_PLUGIN writes it). The returned description must stay valid while the
+// (the macro GMR_CONDITION_PLUGIN writes it), or, for a condition on rule schemes,
+//     extern "C" const gmr_scheme_condition* gmr_scheme_condition_v1();
+// (GMR_SCHEME_CONDITION_PLUGIN), or both. The returned description must stay valid while the
 // library is loaded. A condition is a predicate on concrete rules (thesis §3.3: a syntactic
 // condition on L and R): `holds(rule)` returns true when the rule satisfies it. It may throw; a
 // plug-in must be built with the same C++ standard library as gmr (std::vector and std::string
@@ -103,6 +105,49 @@ struct RuleView {
   }
 };
 
+// A Jerboa rule scheme (thesis Defs. 86-87) as a scheme condition sees it (optional entry point
+// gmr_scheme_condition_v1, below). Each node has a label: the generalised orbit type <o^v>, read
+// positionally against the scheme's <o> (position p carries dimension orbit[p] to label[p], or
+// deletes it when label[p] is -1, Jerboa's `_`): the node's implicit arcs. Explicit arcs are
+// undirected a -dim- b (a == b: a loop). Statuses by name, as for rules.
+struct SchemeNode {
+  std::string name;
+  std::vector<int> label;  // -1: `_`
+  Status status = Status::Preserved;
+};
+
+struct SchemeArc {
+  unsigned a = 0, b = 0;
+  int dim = 0;
+};
+
+struct SchemeGraph {
+  std::vector<SchemeNode> nodes;
+  std::vector<SchemeArc> arcs;
+};
+
+struct SchemeView {
+  std::string name;
+  int n = 0;                       // the scheme rewrites n-G-maps
+  std::vector<int> orbit;          // <o>
+  SchemeGraph left, right;
+  std::vector<std::string> hooks;  // L node names; the first is the reference hook
+
+  const SchemeGraph& side(Side s) const { return s == Side::Left ? left : right; }
+  // Explicit d-arcs at node v (a loop counts once).
+  unsigned explicit_arcs(Side s, unsigned v, int d) const {
+    unsigned k = 0;
+    for (const auto& a : side(s).arcs) k += a.dim == d && (a.a == v || a.b == v);
+    return k;
+  }
+  // All d-arcs at v: the explicit ones and the label positions carrying d (thesis Alg. 1).
+  unsigned arcs(Side s, unsigned v, int d) const {
+    unsigned k = explicit_arcs(s, v, d);
+    for (int x : side(s).nodes[v].label) k += x == d;
+    return k;
+  }
+};
+
 }  // namespace gmr::condition
 
 // What a plug-in exports.
@@ -113,6 +158,22 @@ struct gmr_condition {
   bool (*holds)(const gmr::condition::RuleView& rule);
 };
 }
+
+// Optional: a condition on rule schemes (validated through instantiation on the schemes given with
+// --schemes). A plug-in may export either entry point or both.
+extern "C" {
+struct gmr_scheme_condition {
+  const char* name;
+  const char* description;
+  bool (*holds)(const gmr::condition::SchemeView& scheme);
+};
+}
+
+#define GMR_SCHEME_CONDITION_PLUGIN(NAME, DESCRIPTION, FN)               \
+  extern "C" const gmr_scheme_condition* gmr_scheme_condition_v1() {     \
+    static const gmr_scheme_condition c{NAME, DESCRIPTION, FN};          \
+    return &c;                                                           \
+  }
 
 // Defines the entry symbol gmr_condition_v1 returning {name, description, fn}.
 #define GMR_CONDITION_PLUGIN(NAME, DESCRIPTION, FN)                     \

@@ -162,6 +162,8 @@ nlohmann::ordered_json merge_reports(const std::vector<nlohmann::json>& shards) 
     const std::string where = "report " + std::to_string(k + 1);
     if (!j.is_object() || j.value("format", "") != kValidationFormat)
       throw Error(ErrorCode::Usage, std::string("not a ") + kValidationFormat + " document", where);
+    if (j.value("engine", "") == "symbolic")
+      throw Error(ErrorCode::Usage, "a report of the symbolic engine covers the whole family: nothing to merge", where);
     for (const char* key : same)
       if (j.at(key) != shards[0].at(key)) throw Error(ErrorCode::Usage, std::string("differs in \"") + key + "\"", where);
     const std::string shard = j.at("shard").get<std::string>();

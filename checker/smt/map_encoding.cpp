@@ -17,15 +17,16 @@ z3::sort make_sort(z3::context& c, DartSort s, unsigned values) {
 }
 }  // namespace
 
-MapEncoding::MapEncoding(z3::context& ctx, MapSpec spec, unsigned capacity, unsigned extra, DartSort sort)
+MapEncoding::MapEncoding(z3::context& ctx, MapSpec spec, unsigned capacity, unsigned extra, DartSort sort,
+                         const std::string& prefix)
     : ctx_(ctx),
       spec_(spec),
       capacity_(capacity),
       sort_kind_(sort),
       sort_(make_sort(ctx, sort, capacity + extra)),
-      size_(ctx.constant("size", sort_)) {
+      size_(ctx.constant((prefix + "size").c_str(), sort_)) {
   for (int i = 0; i <= spec_.n; ++i) {
-    const std::string name = std::string(spec_.is_omap() ? "beta" : "alpha") + std::to_string(i);
+    const std::string name = prefix + (spec_.is_omap() ? "beta" : "alpha") + std::to_string(i);
     alpha_.push_back(ctx_.function(name.c_str(), sort_, sort_));
     inverse_.push_back(ctx_.function((name + "_inv").c_str(), sort_, sort_));
   }

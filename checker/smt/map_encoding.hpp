@@ -13,6 +13,7 @@
 //   C(i,j)       alpha_j(alpha_i(alpha_j(alpha_i(d)))) = d for the model's cycle pairs.
 // Loops are fixed points (a free dart is an i-loop).
 #pragma once
+#include <string>
 #include <vector>
 
 #include <z3++.h>
@@ -27,9 +28,10 @@ const char* to_string(DartSort s);
 class MapEncoding {
  public:
   // `capacity` darts of G (the bound k); `extra` further numerals reserved for the nodes a
-  // derivation adds (so the bit-vector width covers them).
+  // derivation adds (so the bit-vector width covers them). `prefix` names the map's symbols, so
+  // that several maps can live in one context (the instances of symbolic_validation.hpp).
   MapEncoding(z3::context& ctx, MapSpec spec, unsigned capacity, unsigned extra = 0,
-              DartSort sort = DartSort::Int);
+              DartSort sort = DartSort::Int, const std::string& prefix = "");
 
   z3::context& ctx() const { return ctx_; }
   const MapSpec& spec() const { return spec_; }

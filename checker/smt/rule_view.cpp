@@ -42,4 +42,26 @@ condition::RuleView to_view(const rewrite::Rule& r) {
   return v;
 }
 
+condition::SchemeView to_view(const scheme::RuleScheme& s) {
+  condition::SchemeView v;
+  v.name = s.name;
+  v.n = s.dimension;
+  for (size_t p = 0; p < s.orbit.size(); ++p) v.orbit.push_back(s.orbit[p]);
+  for (bool right : {false, true}) {
+    const scheme::GraphScheme& g = right ? s.right : s.left;
+    condition::SchemeGraph& out = right ? v.right : v.left;
+    for (uint32_t n = 0; n < g.size(); ++n) {
+      condition::SchemeNode node;
+      node.name = g.nodes[n].name;
+      for (size_t p = 0; p < g.nodes[n].label.size(); ++p)
+        node.label.push_back(g.nodes[n].label[p] == OrbitType::kHole ? -1 : g.nodes[n].label[p]);
+      node.status = status(right ? s.role_right(n) : s.role_left(n));
+      out.nodes.push_back(std::move(node));
+    }
+    for (const auto& a : g.arcs) out.arcs.push_back({a.a, a.b, a.dim});
+  }
+  v.hooks = s.hooks;
+  return v;
+}
+
 }  // namespace gmr::smt

@@ -3,9 +3,12 @@
 #pragma once
 #include "checker/smt/condition_api.hpp"
 #include "model/rewrite/rule.hpp"
+#include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::smt {
 
 condition::RuleView to_view(const rewrite::Rule& r);
+// A rule scheme as the scheme-condition interface sees it.
+condition::SchemeView to_view(const scheme::RuleScheme& s);
 
 }  // namespace gmr::smt

@@ -4,13 +4,18 @@
 // (a0 -0- a1 -1- a2 -0- a3, every node preserved): they preserve the model, so each engine must
 // cover every map of the bound (no early counterexample). The enumerator is run only while its
 // family of maps is small enough (GMR_BENCH_ENUM_MAX darts, default 6: map_family is a brute force
-// over the involutions of k darts). tools/bench/run_smt.sh prints the table.
+// over the involutions of k darts). Then the thesis conditions validated on the whole family of
+// 1-G-map rules of at most m nodes: the symbolic engine against the enumerator rule by rule.
+// tools/bench/run_smt.sh prints the tables and plots them.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
 
 #include "checker/smt/rule_space.hpp"
+#include "checker/smt/condition_registry.hpp"
+#include "checker/smt/condition_validation.hpp"
 #include "checker/smt/rule_verifier.hpp"
+#include "checker/smt/symbolic_validation.hpp"
 
 using namespace gmr;
 using namespace gmr::smt;
@@ -86,10 +91,56 @@ void BM_FamilySession(benchmark::State& st) {
   }
   st.counters["breaks"] = static_cast<double>(breaks);
 }
+// The thesis conditions validated on the whole family of 1-G-map rules of at most m nodes (labels
+// 0 and 1), maps of at most k darts: the symbolic engine (one query per direction) ...
+ValidationOptions family_options(unsigned darts, int nodes) {
+  ValidationOptions o;
+  o.n = 1;
+  o.labels = {0, 1};
+  o.max_nodes = nodes;
+  o.bound = darts;
+  return o;
+}
+void BM_Symbolic(benchmark::State& st) {
+  const ValidationOptions o = family_options(static_cast<unsigned>(st.range(0)), static_cast<int>(st.range(1)));
+  bool valid = false;
+  for (auto _ : st) {
+    const SymbolicReport r = validate_symbolic("thesis", o);
+    valid = r.sound() && r.complete();
+  }
+  st.counters["valid"] = valid;
+}
+// ... and rule by rule with the enumerator (only while the family and the maps are small:
+// GMR_BENCH_FAMILY_MAX_NODES nodes, default 2, and GMR_BENCH_ENUM_MAX darts).
+void BM_FamilyEnum(benchmark::State& st) {
+  const char* s = std::getenv("GMR_BENCH_FAMILY_MAX_NODES");
+  const int max_nodes = s ? std::atoi(s) : 2;
+  if (st.range(0) > enum_max() || st.range(1) > max_nodes) {
+    st.SkipWithError("family too large for the enumerator (GMR_BENCH_ENUM_MAX, GMR_BENCH_FAMILY_MAX_NODES)");
+    for (auto _ : st) {
+    }
+    return;
+  }
+  ValidationOptions o = family_options(static_cast<unsigned>(st.range(0)), static_cast<int>(st.range(1)));
+  o.engine = Engine::Enum;
+  const BuiltinCondition* c = find_builtin_condition("thesis");
+  bool valid = false;
+  for (auto _ : st) {
+    const ValidationReport r = validate_condition("thesis", [&](const std::vector<Rule>& rules) {
+      std::vector<bool> out;
+      for (const auto& x : rules) out.push_back(c->holds(x));
+      return out;
+    }, o);
+    valid = r.sound() && r.complete();
+  }
+  st.counters["valid"] = valid;
+}
 }  // namespace
 
 BENCHMARK(BM_FamilySession)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SmtVariant)->ArgsProduct({{6, 7, 8}, {0, 1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Smt)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Enum)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Symbolic)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FamilyEnum)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_MAIN();

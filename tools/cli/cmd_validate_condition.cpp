@@ -1,6 +1,6 @@
 // `gmr validate-condition (--condition NAME | --plugin LIB.so) [--model gmap|omap] [-n N]
-//  [--labels 0,1] [--max-nodes m] [--random N --seed S] [--bound k] [--engine smt|enum] [--shard K/M] [--time-limit s]
-//  [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
+//  [--labels 0,1] [--max-nodes m] [--random N --seed S] [--bound k] [--engine smt|enum|symbolic] [--shard K/M] [--time-limit s]
+//  [--eval-timeout s] [--schemes FILE...] [--json] [-o report.json]` | `--merge shard1.json shard2.json ...`: is the condition sound and complete against the DPO semantics on
 // every rule of the bounded family and every map of at most k darts
 // (checker/smt/condition_validation.hpp; docs/verify.md)? Built-in conditions run in-process,
 // plug-ins in a forked child (checker/smt/condition_plugin.hpp). Progress on standard error when
@@ -16,6 +16,10 @@
 #include "checker/smt/condition_plugin.hpp"
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
+#include "checker/smt/counterexample.hpp"
+#include "checker/smt/scheme_conditions.hpp"
+#include "checker/smt/symbolic_validation.hpp"
+#include "model/io/scheme_json.hpp"
 #include "model/core/error.hpp"
 #include "model/io/read_file.hpp"
 #include "tools/cli/cli.hpp"
@@ -42,6 +46,8 @@ struct ValidateConditionArgs {
   std::vector<std::string> merge;
   size_t random = 0;
   uint64_t seed = 1;
+  double eval_timeout = ConditionPlugin::kDefaultEvalTimeout;
+  std::vector<std::string> schemes;
 };
 
 std::vector<int> parse_labels(const std::string& text) {
@@ -60,11 +66,87 @@ std::vector<int> parse_labels(const std::string& text) {
   return out;
 }
 
+// --engine symbolic: one query per direction for the whole family (symbolic_validation.hpp).
+int run_symbolic(const ValidateConditionArgs& a, ValidationOptions o) {
+  if (!a.plugin.empty())
+    throw Error(ErrorCode::Usage, "plug-ins are evaluated rule by rule (engines smt and enum)", "--engine symbolic");
+  if (!find_builtin_condition(a.condition))
+    throw Error(ErrorCode::Usage, "unknown condition '" + a.condition + "' (--list: the names)", "--condition");
+  o.progress = nullptr;
+  const SymbolicReport rep = validate_symbolic(a.condition, o);
+  const auto j = to_json(rep);
+  if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
+  if (a.json)
+    print_json(j);
+  else
+    std::cout << to_text(rep);
+  return rep.sound() && rep.complete() ? kExitOk : kExitNegative;
+}
+
+// A scheme condition (scheme_conditions.hpp; built in, or a plug-in's optional entry point) on the
+// schemes of --schemes, through instantiation.
+int run_scheme_condition(const ValidateConditionArgs& a, const SchemeCondition* builtin, const ConditionPlugin* plugin) {
+  const std::string name = builtin ? builtin->name : plugin->scheme_name();
+  if (a.schemes.empty())
+    throw Error(ErrorCode::Usage, "a scheme condition needs the schemes to validate it on (--schemes FILE...)",
+                builtin ? "--condition " + name : "--plugin " + a.plugin);
+  if (a.bound < 1 || a.bound > 8) throw Error(ErrorCode::Usage, "must be in 1..8 for schemes", "--bound");
+  std::vector<RuleScheme> schemes;
+  for (const auto& f : a.schemes) schemes.push_back(io::read_scheme_file(f));
+  const bool sufficient_only = builtin && builtin->sufficient_only;
+  const SchemeValidationReport r =
+      builtin ? validate_scheme_condition(*builtin, schemes, a.bound)
+              : validate_scheme_condition(name, plugin->evaluate_schemes(schemes, a.eval_timeout), schemes, a.bound);
+  nlohmann::ordered_json j;
+  j["format"] = "gmr.scheme-condition-validation";
+  j["version"] = 1;
+  j["condition"] = r.condition;
+  j["bound"] = r.bound;
+  j["schemes"] = r.schemes;
+  j["holds"] = r.holds;
+  j["fails"] = r.fails;
+  j["vacuous"] = r.vacuous;
+  j["unsound"] = r.unsound;
+  j["incomplete"] = r.incomplete;
+  j["sound"] = r.sound();
+  j["complete"] = r.complete();
+  j["sufficient_only"] = sufficient_only;
+  if (r.smallest_unsound) {
+    const auto& w = *r.smallest_unsound;
+    nlohmann::ordered_json e;
+    e["scheme"] = w.scheme.name;
+    e["counterexample"] = to_json(*w.result.instance, r.bound, *w.result.result->counterexample);
+    j["smallest_unsound"] = e;
+  }
+  if (r.first_incomplete) j["first_incomplete"] = r.first_incomplete->name;
+  j["seconds"] = r.seconds;
+  if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
+  if (a.json)
+    print_json(j);
+  else
+    std::cout << to_text(r);
+  // A sufficient-only condition is refuted by unsoundness alone.
+  return r.sound() && (sufficient_only || r.complete()) ? kExitOk : kExitNegative;
+}
+
 int run_validate_condition(const ValidateConditionArgs& a) {
   if (a.list) {
     for (const auto& c : builtin_conditions()) std::printf("%-32s %s\n", c.name.c_str(), c.description.c_str());
+    for (const auto& c : builtin_scheme_conditions())
+      std::printf("%-32s %s (schemes: --schemes FILE...)\n", c.name.c_str(), c.description.c_str());
     return kExitOk;
   }
+  if (!a.condition.empty())
+    if (const SchemeCondition* sc = find_builtin_scheme_condition(a.condition)) return run_scheme_condition(a, sc, nullptr);
+  if (!a.plugin.empty() && !a.schemes.empty()) {
+    ConditionPlugin plugin(a.plugin);
+    if (!plugin.judges_schemes())
+      throw Error(ErrorCode::Usage, std::string("the plug-in has no ") + kSchemeConditionEntrySymbol +
+                                        ": it judges concrete rules (drop --schemes)", "plugin " + a.plugin);
+    return run_scheme_condition(a, nullptr, &plugin);
+  }
+  if (!a.schemes.empty())
+    throw Error(ErrorCode::Usage, "--schemes goes with a scheme condition (--list)", "--schemes");
   if (!a.merge.empty()) {
     std::vector<nlohmann::json> docs;
     for (const auto& f : a.merge) {
@@ -97,8 +179,9 @@ int run_validate_condition(const ValidateConditionArgs& a) {
   if (a.bound < 1 || a.bound > 12) throw Error(ErrorCode::Usage, "must be in 1..12", "--bound");
   o.max_nodes = a.max_nodes;
   o.bound = a.bound;
-  if (a.engine != "smt" && a.engine != "enum") throw Error(ErrorCode::Usage, "smt or enum", "--engine");
-  o.engine = a.engine == "smt" ? Engine::Smt : Engine::Enum;
+  if (a.engine != "smt" && a.engine != "enum" && a.engine != "symbolic")
+    throw Error(ErrorCode::Usage, "smt, enum or symbolic", "--engine");
+  o.engine = a.engine == "enum" ? Engine::Enum : Engine::Smt;
   unsigned k = 0, m = 0;
   char slash = 0;
   std::istringstream ss(a.shard);
@@ -107,6 +190,7 @@ int run_validate_condition(const ValidateConditionArgs& a) {
   o.shard = k;
   o.shards = m;
   o.time_limit = a.time_limit;
+  if (!(a.eval_timeout >= 0)) throw Error(ErrorCode::Usage, "must be a number of seconds >= 0", "--eval-timeout");
   o.random = a.random;
   o.seed = a.seed;
   if (isatty(STDERR_FILENO))
@@ -114,10 +198,11 @@ int run_validate_condition(const ValidateConditionArgs& a) {
       std::fprintf(stderr, "\r  %zu / %zu rules", done, total);
       if (done == total) std::fprintf(stderr, "\n");
     };
+  if (a.engine == "symbolic") return run_symbolic(a, o);
   ValidationReport rep;
   if (!a.plugin.empty()) {
     ConditionPlugin plugin(a.plugin);
-    rep = validate_condition(plugin.name(), [&](const std::vector<Rule>& rules) { return plugin.evaluate(rules); }, o);
+    rep = validate_condition(plugin.name(), [&](const std::vector<Rule>& rules) { return plugin.evaluate(rules, a.eval_timeout); }, o);
   } else {
     const BuiltinCondition* c = find_builtin_condition(a.condition);
     if (!c) throw Error(ErrorCode::Usage, "unknown condition '" + a.condition + "' (--list: the names)", "--condition");
@@ -151,11 +236,15 @@ void register_validate_condition(CLI::App& app) {
   sub->add_option("--labels", args->labels, "Labels carrying arcs in the rules, e.g. 0,1 (default: all of the model)");
   sub->add_option("--max-nodes", args->max_nodes, "Rules of at most this many nodes (1..4, default 2)");
   sub->add_option("--bound,-k", args->bound, "Maps of at most this many darts (default 4)");
-  sub->add_option("--engine", args->engine, "smt (default) or enum");
+  sub->add_option("--engine", args->engine, "smt (default), enum, or symbolic (every rule of the family in one query per direction; built-in conditions, models without cycle pairs)");
   sub->add_option("--random", args->random, "Also this many random rules of max-nodes+1 or +2 nodes (default 0)");
   sub->add_option("--seed", args->seed, "Seed of the random rules (default 1)");
   sub->add_option("--shard", args->shard, "K/M: the rules whose index is K mod M (default 0/1)");
   sub->add_option("--time-limit", args->time_limit, "Stop after this many seconds, reporting the part covered");
+  sub->add_option("--eval-timeout", args->eval_timeout,
+                  "A plug-in's predicate must return within this many seconds per rule (default 10; 0: no limit)");
+  sub->add_option("--schemes", args->schemes,
+                  "The rule schemes (gmr.rule JSON files) a scheme condition is validated on, through instantiation");
   sub->add_flag("--json", args->json, "Print JSON (format gmr.condition-validation)");
   sub->add_option("-o,--output", args->output, "Also write the JSON report to this file");
   sub->add_option("--merge", args->merge, "Merge the JSON reports of the shards of one sweep (prints JSON)");

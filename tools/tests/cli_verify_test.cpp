@@ -17,6 +17,10 @@ namespace {
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 fs::path source_dir() { return gmr::testing::source_path("."); }
 std::string gmr_bin() { return gmr::testing::build_artifact("GMR_BIN"); }
+// A condition plug-in built for the tests (checker/smt/CMakeLists.txt).
+std::string plugin(const std::string& stem) {
+  return gmr::testing::build_artifact("GMR_PLUGIN_DIR") + "/lib" + stem + ".so";
+}
 struct Result {
   int code;
   std::string out, err;
@@ -96,14 +100,74 @@ TEST_F(CliVerify, ValidateConditionThesisExits0) {
   EXPECT_NE(r.out.find("sound: yes"), std::string::npos) << r.out;
 }
 
+TEST_F(CliVerify, ValidateConditionSymbolicEngine) {
+  const Result ok = run("validate-condition --condition thesis --labels 0,1 --max-nodes 3 --bound 5 --engine symbolic");
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("every rule of the family at once (1466908 rules)"), std::string::npos) << ok.out;
+  const Result bad = run("validate-condition --condition wrong-orientation-dropped --labels 0 --max-nodes 3 --bound 4 "
+                         "--engine symbolic --json -o " + q(dir / "sym.json"));
+  EXPECT_EQ(bad.code, 1) << bad.err;
+  const auto doc = nlohmann::json::parse(bad.out);
+  EXPECT_EQ(doc["engine"], "symbolic");
+  EXPECT_EQ(doc["sound"], false);
+  EXPECT_EQ(doc["smallest_unsound"]["counterexample"]["G"]["darts"], 3);
+  EXPECT_TRUE(fs::exists(dir / "sym.json"));
+  EXPECT_EQ(run("validate-condition --merge " + q(dir / "sym.json")).code, 2);
+  // Cycle pairs, plug-ins and shards are refused.
+  EXPECT_EQ(run("validate-condition --condition thesis --labels 0,2 -n 2 --engine symbolic").code, 2);
+  EXPECT_EQ(run("validate-condition --condition thesis --labels 0,1 --shard 0/2 --engine symbolic").code, 2);
+  EXPECT_EQ(run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) + " --engine symbolic").code, 2);
+}
+
 TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
-  const Result r = run(std::string("validate-condition --plugin ") + q(gmr::testing::build_artifact("GMR_PLUGIN_DIR") + "/libcrashing_condition.so") + " --labels 0 --max-nodes 2");
+  const Result r = run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) + " --labels 0 --max-nodes 2");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("crashing_condition"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("while evaluating rule rule"), std::string::npos) << r.err;
   EXPECT_EQ(run(std::string("validate-condition --plugin ") + q(dir / "nothing.so")).code, 2);
   EXPECT_EQ(run("validate-condition --condition no-such-condition").code, 2);
   EXPECT_EQ(run("validate-condition --condition thesis --shard 3/2").code, 2);
+}
+
+TEST_F(CliVerify, ValidateSchemeConditionOnSchemeFiles) {
+  const std::string rules = (source_dir() / "tools/data/rules").string();
+  const Result r = run("validate-condition --condition scheme-thesis --bound 3 --json --schemes " +
+                       q(rules + "/face_triangulation.json") + " " + q(rules + "/quad_subdivision.json"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["format"], "gmr.scheme-condition-validation");
+  EXPECT_EQ(doc["schemes"], 2);
+  EXPECT_EQ(doc["holds"], 2);
+  EXPECT_EQ(doc["sound"], true);
+  EXPECT_EQ(run("validate-condition --condition scheme-thesis").code, 2);  // no --schemes
+  EXPECT_EQ(run("validate-condition --condition thesis --schemes " + q(rules + "/face_triangulation.json")).code, 2);
+  EXPECT_EQ(run("validate-condition --condition scheme-thesis --schemes " +
+                q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json")).code, 2);  // a concrete rule
+}
+
+TEST_F(CliVerify, SchemePluginOnSchemeFiles) {
+  const std::string rules = (source_dir() / "tools/data/rules").string();
+  const Result r = run(std::string("validate-condition --plugin ") + q(plugin("full_degree_scheme_condition")) + " --bound 3 --json --schemes " +
+                       q(rules + "/face_triangulation.json") + " " + q(rules + "/sew2.json"));
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["condition"], "full-degree");
+  EXPECT_EQ(doc["schemes"], 2);
+  EXPECT_EQ(r.code, doc["sound"].get<bool>() && doc["complete"].get<bool>() ? 0 : 1) << r.err;
+  // A plug-in without the scheme entry point, with --schemes: exit 2 naming the symbol.
+  const Result bad = run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) + " --schemes " +
+                         q(rules + "/sew2.json"));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("gmr_scheme_condition_v1"), std::string::npos) << bad.err;
+}
+
+TEST_F(CliVerify, HangingPluginExits2AfterTheEvaluationTimeLimit) {
+  const Result r = run(std::string("validate-condition --plugin ") + q(plugin("hanging_condition")) +
+                       " --labels 0 --max-nodes 1 --eval-timeout 0.5");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("hanging_condition"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("did not return within the per-evaluation time limit of 0.5 s while evaluating rule rule"),
+            std::string::npos) << r.err;
+  EXPECT_EQ(run("validate-condition --condition thesis --eval-timeout -1").code, 2);
 }
 
 TEST_F(CliVerify, ShardsMergeIntoTheWholeSweep) {

@@ -4,6 +4,7 @@
 // and condition plug-ins load, run in a child process and fail cleanly.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "checker/rule_check.hpp"
@@ -11,6 +12,9 @@
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
 #include "checker/smt/rule_space.hpp"
+#include "checker/smt/scheme_conditions.hpp"
+#include "model/io/scheme_json.hpp"
+#include "model/testing/source_tree.hpp"
 #include "model/core/error.hpp"
 #include "model/testing/source_tree.hpp"
 
@@ -195,6 +199,17 @@ TEST(ConditionPlugins, BadPluginsFailNamingPluginAndRule) {
       << crashed;
   EXPECT_NE(crashed.find("while evaluating rule rule"), std::string::npos) << crashed;
   const std::string missing = message("no_entry_condition");
+  // A predicate that never returns: stopped by the per-evaluation time limit.
+  std::string hung;
+  try {
+    ConditionPlugin p(plugin("hanging_condition"));
+    p.evaluate(rules, 0.3);
+  } catch (const Error& e) {
+    hung = e.location() + ": " + e.message();
+  }
+  EXPECT_NE(hung.find("hanging_condition"), std::string::npos) << hung;
+  EXPECT_NE(hung.find("did not return within the per-evaluation time limit of 0.3 s while evaluating rule rule"),
+            std::string::npos) << hung;
   EXPECT_NE(missing.find("no entry symbol gmr_condition_v1"), std::string::npos) << missing;
   const std::string absent = message("does_not_exist");
   EXPECT_NE(absent.find("cannot load"), std::string::npos) << absent;
@@ -232,4 +247,38 @@ TEST(ConditionValidation, RandomLargerRules) {
   const auto again = validate_condition(c->name, eval, o);
   EXPECT_EQ(again.holds, r.holds);
   EXPECT_EQ(again.incomplete, r.incomplete);
+}
+
+// The worked example of a scheme condition (docs/examples/full_degree_scheme_condition.cpp): the
+// plug-in's verdicts, evaluated in its child, equal the same predicate evaluated in process on the
+// library schemes; the entry points a plug-in lacks are refused by name.
+TEST(ConditionPlugins, SchemePluginWorkedExampleAgreesWithInProcessPredicate) {
+  std::vector<scheme::RuleScheme> schemes;
+  for (const auto& e : std::filesystem::directory_iterator(gmr::testing::source_path("tools/data/rules")))
+    if (e.path().extension() == ".json") schemes.push_back(io::read_scheme_file(e.path()));
+  ASSERT_EQ(schemes.size(), 16u);
+  ConditionPlugin p(plugin("full_degree_scheme_condition"));
+  EXPECT_TRUE(p.judges_schemes());
+  EXPECT_FALSE(p.judges_rules());
+  EXPECT_EQ(p.scheme_name(), "full-degree");
+  const std::vector<bool> got = p.evaluate_schemes(schemes);
+  size_t holds = 0;
+  for (size_t k = 0; k < schemes.size(); ++k) {
+    const auto& s = schemes[k];
+    bool expected = true;
+    for (const auto* g : {&s.left, &s.right})
+      for (uint32_t v = 0; v < g->size(); ++v)
+        for (int d = 0; d <= s.dimension; ++d) expected = expected && g->count_arcs(v, d) == 1;
+    EXPECT_EQ(got[k], expected) << s.name;
+    holds += expected;
+  }
+  EXPECT_GT(holds, 0u);
+  EXPECT_LT(holds, schemes.size());
+  const SchemeValidationReport r = validate_scheme_condition("full-degree", got, schemes, 3);
+  EXPECT_EQ(r.holds, holds);
+  EXPECT_TRUE(r.sound()) << to_text(r);
+  EXPECT_THROW(p.evaluate({}), Error);
+  ConditionPlugin rules_only(plugin("closed_components_condition"));
+  EXPECT_FALSE(rules_only.judges_schemes());
+  EXPECT_THROW(rules_only.evaluate_schemes(schemes), Error);
 }

@@ -1,0 +1,116 @@
+#include "checker/smt/scheme_conditions.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "checker/scheme_checker.hpp"
+
+namespace gmr::smt {
+
+namespace {
+checker::SchemeCheckReport topology(const RuleScheme& s) {
+  checker::SchemeCheckOptions o;
+  o.embeddings = false;
+  return checker::check_scheme(s, o);
+}
+// No error diagnostic except those whose code `ignored` accepts.
+bool no_error_but(const RuleScheme& s,
+                  const std::function<bool(const checker::Diagnostic&)>& ignored) {
+  for (const auto& d : topology(s).diagnostics)
+    if (d.severity == checker::Severity::Error && !ignored(d)) return false;
+  return true;
+}
+}  // namespace
+
+const std::vector<SchemeCondition>& builtin_scheme_conditions() {
+  static const std::vector<SchemeCondition> all = {
+      {"scheme-thesis",
+       "Theorems 4-6: I_S, O_S, C_S for every dimension and pair (sufficient only)", true,
+       [](const RuleScheme& s) { return topology(s).ok(); }},
+      {"wrong-scheme-cycle-dropped", "WRONG: I_S and O_S only, C_S dropped", true,
+       [](const RuleScheme& s) {
+         return no_error_but(
+             s, [](const checker::Diagnostic& d) { return d.condition.rfind("C(", 0) == 0; });
+       }},
+      {"wrong-scheme-dangling-dropped", "WRONG: I_S without its dangling part (deleted nodes)",
+       true,
+       [](const RuleScheme& s) {
+         return no_error_but(
+             s, [](const checker::Diagnostic& d) { return d.code == "I-deleted-node"; });
+       }},
+  };
+  return all;
+}
+
+const SchemeCondition* find_builtin_scheme_condition(const std::string& name) {
+  for (const auto& c : builtin_scheme_conditions())
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+SchemeValidationReport validate_scheme_condition(const SchemeCondition& c,
+                                                 const std::vector<RuleScheme>& schemes,
+                                                 unsigned bound) {
+  std::vector<bool> holds;
+  for (const RuleScheme& s : schemes) holds.push_back(c.holds(s));
+  return validate_scheme_condition(c.name, holds, schemes, bound);
+}
+
+SchemeValidationReport validate_scheme_condition(const std::string& name,
+                                                 const std::vector<bool>& verdicts,
+                                                 const std::vector<RuleScheme>& schemes,
+                                                 unsigned bound) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SchemeValidationReport rep;
+  rep.condition = name;
+  rep.bound = bound;
+  EncodingOptions eo;
+  eo.semantics = Semantics::Consistency;
+  for (size_t k = 0; k < schemes.size(); ++k) {
+    const RuleScheme& s = schemes[k];
+    ++rep.schemes;
+    const bool holds = verdicts[k];
+    (holds ? rep.holds : rep.fails)++;
+    SchemeVerifyResult v = verify_scheme(s, bound, Engine::Smt, 0, eo);
+    if (v.applicable == 0 && v.preserves) {
+      ++rep.vacuous;
+    } else if (holds && !v.preserves) {
+      ++rep.unsound;
+      const auto darts = [](const SchemeVerifyResult& r) {
+        return r.result->counterexample->G.size();
+      };
+      if (!rep.smallest_unsound || darts(v) < darts(rep.smallest_unsound->result))
+        rep.smallest_unsound = SchemeWitness{s, std::move(v)};
+    } else if (!holds && v.preserves) {
+      ++rep.incomplete;
+      if (!rep.first_incomplete) rep.first_incomplete = s;
+    }
+  }
+  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return rep;
+}
+
+std::string to_text(const SchemeValidationReport& r) {
+  std::ostringstream s;
+  s << "scheme condition " << r.condition << " on " << r.schemes << " schemes, G-maps of at most "
+    << r.bound << " darts (every hook orbit of at most " << r.bound << " darts)\n  holds on "
+    << r.holds << ", fails on " << r.fails << "; vacuous " << r.vacuous
+    << "\n  sound: " << (r.sound() ? "yes" : "NO") << " (" << r.unsound << " unsound)";
+  if (r.smallest_unsound) {
+    const auto& w = *r.smallest_unsound;
+    const auto& c = *w.result.result->counterexample;
+    s << "\n    smallest: " << w.scheme.name << " on a hook orbit of "
+      << w.result.orbit->darts.size() << " darts, a map of " << c.G.size() << " darts: "
+      << (c.gluing_fails ? std::string("the gluing (dangling) condition fails")
+                         : c.violations.front().describe(c.H));
+  }
+  s << "\n  complete: " << (r.complete() ? "yes" : "NO") << " (" << r.incomplete << " incomplete)";
+  if (r.first_incomplete) s << "\n    first: " << r.first_incomplete->name;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "\n  time %.3f s\n", r.seconds);
+  s << buf;
+  return s.str();
+}
+
+}  // namespace gmr::smt

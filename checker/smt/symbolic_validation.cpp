@@ -1,0 +1,322 @@
+#include "checker/smt/symbolic_validation.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "checker/smt/counterexample.hpp"
+#include "checker/smt/rule_space.hpp"
+#include "checker/smt/symbolic_derivation.hpp"
+#include "model/core/error.hpp"
+#include "model/io/rule_json.hpp"
+
+namespace gmr::smt {
+using graph::Node;
+
+std::optional<ThesisParts> symbolic_condition_parts(const std::string& name) {
+  // Without cycle pairs the completion has no effect: "thesis-per-constraint" and
+  // "wrong-cycle-without-completion" coincide with "thesis" there.
+  if (name == "thesis" || name == "thesis-per-constraint" ||
+      name == "wrong-cycle-without-completion")
+    return ThesisParts{};
+  if (name == "wrong-incident-without-dangling") return ThesisParts{.dangling = false};
+  if (name == "wrong-orientation-dropped") return ThesisParts{.orientation = false};
+  return std::nullopt;
+}
+
+namespace {
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+unsigned numeral(const z3::expr& e) {
+  unsigned v = 0;
+  if (!e.is_numeral_u(v))
+    throw std::logic_error("SMT model: a dart is not a numeral: " + e.to_string());
+  return v;
+}
+
+// The common part of both queries: one context, the symbolic rule, a symbolic map and its
+// derivation.
+struct Query {
+  z3::context ctx;
+  SymbolicRule rule;
+  MapEncoding map;
+  SymbolicDerivation der;
+  z3::solver solver;
+  Query(const ValidationOptions& o, const std::string& prefix)
+      : rule(ctx, MapSpec{o.n, o.kind}, o.max_nodes, o.labels),
+        map(ctx, MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes),
+            DartSort::BitVec, prefix),
+        der(map, rule, prefix),
+        solver(ctx) {
+    solver.add(rule.family());
+    solver.add(map.constraints());
+    solver.add(der.match());
+  }
+  z3::check_result check(const z3::expr_vector& assumptions) {
+    const z3::check_result r = solver.check(assumptions);
+    if (r == z3::unknown) throw std::logic_error("Z3 returned unknown: " + solver.reason_unknown());
+    return r;
+  }
+  GMap map_of(const z3::model& m) const {
+    const unsigned size = numeral(m.eval(map.size(), true));
+    GMap G(map.spec().n, map.spec().kind);
+    G.add_darts(size);
+    for (int i : map.spec().labels())
+      for (unsigned d = 0; d < size; ++d)
+        G.set_alpha(i, d, numeral(m.eval(map.alpha(i, map.dart(d)), true)));
+    return G;
+  }
+};
+
+z3::expr condition(const SymbolicRule& rule, const ThesisParts& parts,
+                   const ExtraCondition& extra) {
+  return extra ? rule.condition(parts) && extra(rule) : rule.condition(parts);
+}
+
+// An assumption literal standing for `e` (so that bounds can be lowered without popping).
+z3::expr assume(z3::solver& s, const z3::expr& e, const std::string& name) {
+  const z3::expr p = s.ctx().bool_const(name.c_str());
+  s.add(z3::implies(p, e));
+  return p;
+}
+
+// Sound: no rule satisfying the condition has a breaking match within the bounds.
+void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ValidationOptions& o = rep.options;
+  Query q(o, "");
+  q.solver.add(q.der.h_definitions());
+  q.solver.add(condition(q.rule, parts, extra));
+  q.solver.add(q.der.breaks_consistency());
+  z3::expr_vector none(q.ctx);
+  if (q.check(none) == z3::sat) {
+    // The smallest witness: fewest nodes, then fewest darts.
+    for (int m = 1; m <= o.max_nodes && !rep.smallest_unsound; ++m)
+      for (unsigned b = 1; b <= o.bound && !rep.smallest_unsound; ++b) {
+        z3::expr_vector a(q.ctx);
+        a.push_back(assume(q.solver, q.rule.nodes_exactly(m), "nodes" + std::to_string(m)));
+        a.push_back(assume(q.solver, q.map.size() == q.map.dart(b), "darts" + std::to_string(b)));
+        if (q.check(a) != z3::sat) continue;
+        const z3::model model = q.solver.get_model();
+        const Rule r = q.rule.extract(model, "unsound");
+        std::vector<Node> nodes;
+        for (Node v = 0; v < r.left().num_nodes(); ++v) nodes.push_back(v);  // slot x on dart x
+        auto c = replay(r, q.map_of(model), nodes, Engine::Smt, Semantics::Consistency);
+        if (!c)
+          throw std::logic_error("symbolic counterexample does not replay (encoding error): " +
+                                 rule_text(r));
+        rep.smallest_unsound = ValidationWitness{r, 0, std::move(c)};
+      }
+    if (!rep.smallest_unsound)
+      throw std::logic_error("symbolic soundness query: no witness within the bounds");
+  }
+  rep.sound_decided = true;
+  rep.sound_seconds = since(t0);
+}
+
+// G relabelled so that the match is the identity on the L nodes (the symbolic match's shape).
+GMap relabel(const GMap& G, const std::vector<Node>& match) {
+  const size_t size = G.size();
+  const Dart none = static_cast<Dart>(-1);
+  std::vector<Dart> to(size, none);
+  Dart next = 0;
+  for (Node d : match) to[d] = next++;
+  for (Dart d = 0; d < size; ++d)
+    if (to[d] == none) to[d] = next++;
+  GMap out(G.dimension(), G.kind());
+  out.add_darts(size);
+  for (int i : MapSpec{G.dimension(), G.kind()}.labels())
+    for (Dart d = 0; d < size; ++d) out.set_alpha(i, to[d], to[G.alpha(i, d)]);
+  return out;
+}
+
+// "The match of the rule on this concrete map glues and yields a map" as a constraint on the rule.
+void refine(Query& q, const ValidationOptions& o, const GMap& G, size_t t,
+            std::vector<std::unique_ptr<MapEncoding>>& maps,
+            std::vector<std::unique_ptr<SymbolicDerivation>>& ders) {
+  const std::string prefix = "r" + std::to_string(t) + "_";
+  maps.push_back(std::make_unique<MapEncoding>(q.ctx, MapSpec{o.n, o.kind}, o.bound,
+                                               static_cast<unsigned>(o.max_nodes), DartSort::BitVec,
+                                               prefix));
+  const MapEncoding& M = *maps.back();
+  q.solver.add(M.size() == M.dart(static_cast<unsigned>(G.size())));
+  for (int i : M.spec().labels())
+    for (Dart d = 0; d < G.size(); ++d) {
+      q.solver.add(M.alpha(i, M.dart(d)) == M.dart(G.alpha(i, d)));
+      if (!M.spec().is_involutive_dim(i)) {
+        for (Dart e = 0; e < G.size(); ++e)
+          if (G.alpha(i, e) == d) q.solver.add(M.alpha_inverse(i, M.dart(d)) == M.dart(e));
+      }
+    }
+  ders.push_back(std::make_unique<SymbolicDerivation>(M, q.rule, prefix));
+  const SymbolicDerivation& D = *ders.back();
+  q.solver.add(D.h_definitions());
+  q.solver.add(z3::implies(D.match(), !D.breaks_consistency()));
+}
+
+// Complete: every rule failing the condition and matching some map has a breaking match.
+void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
+                     std::chrono::steady_clock::time_point start) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ValidationOptions& o = rep.options;
+  Query q(o, "w_");  // the witness map: the rule matches it (not vacuous)
+  q.solver.add(!condition(q.rule, parts, extra));
+  EncodingOptions eo;
+  eo.semantics = Semantics::Consistency;
+  SmtSession session(MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes), eo);
+  std::vector<std::unique_ptr<MapEncoding>> maps;
+  std::vector<std::unique_ptr<SymbolicDerivation>> ders;
+  for (int m = 1; m <= o.max_nodes; ++m) {
+    z3::expr_vector a(q.ctx);
+    a.push_back(assume(q.solver, q.rule.nodes_exactly(m), "nodes" + std::to_string(m)));
+    while (true) {
+      if (o.time_limit > 0 && since(start) > o.time_limit) {
+        rep.complete_seconds = since(t0);
+        return;
+      }
+      if (q.check(a) == z3::unsat) break;
+      const z3::model model = q.solver.get_model();
+      const Rule r = q.rule.extract(model, "candidate");
+      const VerifyResult v = session.verify(r);
+      if (v.preserves) {
+        if (!v.applicable)
+          throw std::logic_error("symbolic candidate matches no map (encoding error): " +
+                                 rule_text(r));
+        rep.smallest_incomplete = ValidationWitness{r, 0, std::nullopt};
+        rep.complete_decided = true;
+        rep.complete_seconds = since(t0);
+        return;
+      }
+      refine(q, o, relabel(v.counterexample->G, v.counterexample->match.node), rep.refinements++,
+             maps, ders);
+      // The refinement must exclude the candidate (else the loop would not progress).
+      z3::expr_vector fixed(q.ctx);  // a new vector: copies of an expr_vector share it
+      for (const auto& e : a) fixed.push_back(e);
+      fixed.push_back(
+          assume(q.solver, q.rule.equals(model), "candidate" + std::to_string(rep.refinements)));
+      if (q.check(fixed) != z3::unsat)
+        throw std::logic_error("a refinement does not exclude its candidate (encoding error): " +
+                               rule_text(r));
+    }
+  }
+  rep.complete_decided = true;
+  rep.complete_seconds = since(t0);
+}
+}  // namespace
+
+SymbolicReport validate_symbolic(const std::string& condition, const ValidationOptions& opt) {
+  const auto parts = symbolic_condition_parts(condition);
+  if (!parts)
+    throw Error(ErrorCode::Usage,
+                "condition '" + condition + "' has no symbolic form (engines smt and enum take it)",
+                "--engine symbolic");
+  return validate_symbolic(condition, *parts, nullptr, opt);
+}
+
+SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts,
+                                 const ExtraCondition& extra, const ValidationOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  const MapSpec spec{opt.n, opt.kind};
+  if (!spec.cycle_pairs().empty())
+    throw Error(
+        ErrorCode::Usage,
+        "the symbolic engine does not encode the cycle condition: models without cycle pairs only "
+        "(1-G-maps, 2-O-maps)",
+        "--engine symbolic");
+  if (opt.shards != 1 || opt.random != 0)
+    throw Error(ErrorCode::Usage, "--shard and --random do not apply to the symbolic engine",
+                "--engine symbolic");
+  SymbolicReport rep;
+  rep.condition = condition;
+  rep.options = opt;
+  for (int m = 1; m <= opt.max_nodes; ++m) rep.rules += count_rules(m, opt.labels.size());
+  decide_sound(rep, parts, extra);
+  decide_complete(rep, parts, extra, start);
+  return rep;
+}
+
+nlohmann::ordered_json to_json(const SymbolicReport& r) {
+  const ValidationOptions& o = r.options;
+  nlohmann::ordered_json j;
+  j["format"] = kValidationFormat;
+  j["version"] = 1;
+  j["condition"] = r.condition;
+  j["engine"] = "symbolic";
+  j["model"] = o.kind == MapKind::OMap ? "omap" : "gmap";
+  j["n"] = o.n;
+  j["labels"] = o.labels;
+  j["max_nodes"] = o.max_nodes;
+  j["bound"] = o.bound;
+  j["rules"] = r.rules;
+  j["time_limit_hit"] = !(r.sound_decided && r.complete_decided);
+  j["sound"] =
+      r.sound_decided ? nlohmann::ordered_json(r.sound()) : nlohmann::ordered_json(nullptr);
+  j["complete"] =
+      r.complete_decided ? nlohmann::ordered_json(r.complete()) : nlohmann::ordered_json(nullptr);
+  if (r.smallest_unsound) {
+    const auto& w = *r.smallest_unsound;
+    nlohmann::ordered_json e;
+    e["rule"] = io::rule_to_json(w.rule);
+    e["counterexample"] = to_json(w.rule, o.bound, *w.counterexample);
+    j["smallest_unsound"] = e;
+  }
+  if (r.smallest_incomplete)
+    j["smallest_incomplete"] = {{"rule", io::rule_to_json(r.smallest_incomplete->rule)}};
+  j["refinements"] = r.refinements;
+  j["sound_seconds"] = r.sound_seconds;
+  j["complete_seconds"] = r.complete_seconds;
+  j["seconds"] = r.sound_seconds + r.complete_seconds;
+  return j;
+}
+
+std::string to_text(const SymbolicReport& r) {
+  const ValidationOptions& o = r.options;
+  std::ostringstream s;
+  s << "condition " << r.condition << " on " << o.n << "-"
+    << (o.kind == MapKind::OMap ? "O-map" : "G-map") << " rules of at most " << o.max_nodes
+    << " nodes (arcs on labels";
+  for (int i : o.labels) s << " " << i;
+  s << "), maps of at most " << o.bound
+    << " darts, engine symbolic\n  every rule of the family at once (" << r.rules << " rules)\n";
+  char buf[96];
+  s << "  sound: ";
+  if (!r.sound_decided) {
+    s << "undecided (time limit hit)";
+  } else {
+    s << (r.sound() ? "yes" : "NO");
+    std::snprintf(buf, sizeof buf, " (%.3f s)", r.sound_seconds);
+    s << buf;
+  }
+  if (r.smallest_unsound) {
+    const auto& w = *r.smallest_unsound;
+    const auto& c = *w.counterexample;
+    s << "\n    smallest: " << rule_text(w.rule) << "\n    on a map of " << c.G.size()
+      << " darts, match";
+    for (graph::Node v = 0; v < w.rule.left().num_nodes(); ++v)
+      s << " " << w.rule.left().name(v) << "->" << c.match.node[v];
+    if (c.gluing_fails)
+      s << ": the gluing (dangling) condition fails";
+    else
+      s << ": H breaks " << c.violations.front().describe(c.H);
+  }
+  s << "\n  complete: ";
+  if (!r.complete_decided) {
+    s << "undecided (time limit hit)";
+  } else {
+    s << (r.complete() ? "yes" : "NO");
+  }
+  std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
+  s << buf;
+  if (r.smallest_incomplete)
+    s << "\n    smallest: " << rule_text(r.smallest_incomplete->rule)
+      << "\n    fails the condition, yet every match on every map of at most " << o.bound
+      << " darts glues and preserves";
+  std::snprintf(buf, sizeof buf, "\n  time %.3f s\n", r.sound_seconds + r.complete_seconds);
+  s << buf;
+  return s.str();
+}
+
+}  // namespace gmr::smt

@@ -1,0 +1,60 @@
+// Validation of the built-in thesis conditions with the RULE symbolic too (docs/verify.md,
+// "Symbolic rules"): instead of one SMT query per rule of the family (condition_validation.hpp),
+// one query per direction covers every rule of at most N nodes at once.
+//
+//   sound     "is there a rule of the family (symbolic_rule.hpp), a map of at most k darts and a
+//             match such that the condition holds and the match fails the gluing condition or H is
+//             not a map?" UNSAT: sound for the whole family. SAT: the bounds are lowered (nodes,
+//             then darts, with assumptions on the same solver) to the smallest witness, which is
+//             replayed through the concrete derivation before it is reported.
+//   complete  "is there a rule that fails the condition, matches some map of at most k darts, and
+//             whose every match on every map of at most k darts glues and yields a map?" — a
+//             forall over maps, solved by counterexample-guided refinement: a candidate rule (the
+//             condition fails, a match on a symbolic witness map exists) is verified by the
+//             concrete SMT engine (rule_verifier.hpp); if it breaks on (G, m), the constraint "the
+//             match of the rule onto this G (relabelled so that m is the identity) glues and
+//             preserves" is added to the candidate query, which must exclude the candidate
+//             (checked; an encoding error otherwise). UNSAT: complete for the whole family. A
+//             candidate that the concrete engine finds preserving is the witness (fewest nodes: the
+//             node count is raised one by one, by assumptions).
+// Conditions: the built-in ones whose parts are Theorems 1-2 (symbolic_condition_parts); models
+// with cycle pairs are refused (the cycle condition is not encoded symbolically).
+#pragma once
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "checker/smt/condition_registry.hpp"
+#include "checker/smt/condition_validation.hpp"
+#include "checker/smt/symbolic_rule.hpp"
+
+namespace gmr::smt {
+
+// The parts of a built-in condition for the symbolic engine; nullopt if it has no symbolic form.
+std::optional<ThesisParts> symbolic_condition_parts(const std::string& name);
+
+struct SymbolicReport {
+  std::string condition;
+  ValidationOptions options;  // n, kind, labels, max_nodes, bound, time_limit
+  size_t rules = 0;           // of the family the verdicts cover (rule_space.hpp count)
+  bool sound_decided = false, complete_decided = false;  // false: the time limit hit first
+  std::optional<ValidationWitness> smallest_unsound, smallest_incomplete;
+  size_t refinements = 0;  // maps added to the completeness query
+  double sound_seconds = 0, complete_seconds = 0;
+  bool sound() const { return sound_decided && !smallest_unsound; }
+  bool complete() const { return complete_decided && !smallest_incomplete; }
+};
+
+// Error(Usage) for a condition without symbolic form or a model with cycle pairs.
+SymbolicReport validate_symbolic(const std::string& condition, const ValidationOptions& opt);
+// The condition "parts, and extra(rule) when given" (a further formula on the symbolic rule: the
+// tests use it to build a condition that is too strong).
+using ExtraCondition = std::function<z3::expr(const SymbolicRule&)>;
+SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts,
+                                 const ExtraCondition& extra, const ValidationOptions& opt);
+
+nlohmann::ordered_json to_json(const SymbolicReport& r);
+std::string to_text(const SymbolicReport& r);
+
+}  // namespace gmr::smt
