@@ -9,7 +9,7 @@
 namespace gmr::smt {
 
 namespace {
-checker::SchemeCheckReport topology(const RuleScheme& s) {
+checker::CheckReport topology(const RuleScheme& s) {
   checker::SchemeCheckOptions o;
   o.embeddings = false;
   return checker::check_scheme(s, o);

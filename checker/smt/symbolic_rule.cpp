@@ -147,8 +147,9 @@ z3::expr SymbolicRule::describes(const rewrite::Rule& r) const {
   z3::expr_vector all(ctx_);
   const std::string node = "abcdefgh";
   std::vector<std::vector<int>> slot_of(2);  // per side: node -> slot
-  for (int right = 0; right < 2; ++right) {
-    const DGraph& g = r.side(right);
+  for (graph::Side side : graph::kSides) {
+    const unsigned right = graph::index_of(side);
+    const DGraph& g = r.side(side);
     std::vector<bool> present(slots_, false);
     for (Node v = 0; v < g.num_nodes(); ++v) {
       const auto x = node.find(g.name(v));

@@ -91,7 +91,7 @@ TEST(SymbolicValidation, ConditionFormulasEqualTheCheckerOnEveryRule) {
         EXPECT_EQ(formula, find_builtin_condition(name)->holds(r))
             << name << " on " << rule_text(r);
       }
-      EXPECT_EQ(sym.extract(m, "x").side(false).num_nodes(), r.left().num_nodes());
+      EXPECT_EQ(sym.extract(m, "x").side(graph::Side::L).num_nodes(), r.left().num_nodes());
       s.pop();
       ++rules;
       return !::testing::Test::HasFailure();
