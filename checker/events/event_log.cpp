@@ -104,9 +104,16 @@ class Recorder {
     ns_ = O.size();
     M_ = res.match;
     dims_ = g.dimension() + 1;
+    // The links of the matched darts before the rewrite, in the dimensions of the analysed orbit
+    // types only (each other link array would be read for nothing).
+    DimMask used = 0;
+    for (const auto& t : st_.orbits) used |= t.orbit.mask();
     old_.resize(M_.size() * dims_);
-    for (size_t k = 0; k < M_.size(); ++k)
-      for (int i = 0; i < dims_; ++i) old_[k * dims_ + i] = g.alpha(i, M_[k]);
+    for (int i = 0; i < dims_; ++i) {
+      if (!((used >> i) & 1u)) continue;
+      const std::vector<Dart>& link = g.links(i);
+      for (size_t k = 0; k < M_.size(); ++k) old_[k * dims_ + i] = link[M_[k]];
+    }
     InstanceNamer namer(g, O, M_, s_.left.size());
     logs_.clear();
     logs_.resize(st_.orbits.size());
