@@ -214,7 +214,8 @@ class Recorder {
     fates.reserve(s_.left.size() * ns_);
     std::vector<std::pair<Dart, Dart>> into;  // (H-orbit, G-orbit) of the preserved matched darts
     into.reserve(fates.capacity());
-    log.events.reserve(log.events.size() + fates.capacity());  // at most one event per matched dart
+    log.events.reserve(log.events.size() + fates.capacity());  // a capacity hint: merges, splits and
+                                                               // (non-)modifications name matched darts
     for (uint32_t v = 0; v < s_.left.size(); ++v) {
       const auto r = s_.right_of(v);
       const bool fl = flagged[te.left.class_of[v]];

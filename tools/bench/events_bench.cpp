@@ -25,10 +25,9 @@
 //
 // GMR_BENCH_SCALE (environment, default 1.0) scales the largest sizes down (e.g. 0.01).
 #include <benchmark/benchmark.h>
-
-#include <algorithm>
 #include <time.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
