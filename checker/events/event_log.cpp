@@ -161,6 +161,7 @@ class Recorder {
   void log_orbit_type(const GMap& h, const OrbitTypeEvents& te, const std::vector<Dart>& gname,
                       const std::vector<Dart>& hname, OrbitTypeLog& log) const {
     const OrbitType& o = te.orbit;
+    const DimMask om = o.mask();
     std::vector<std::pair<Dart, bool>> split, merge;  // G-orbits split, H-orbits merged (certain)
     std::vector<bool> flagged(te.left.size(), false);  // L pattern orbits with a split or merge flag
     for (uint32_t ei = 0; ei < te.events.size(); ++ei) {
@@ -176,7 +177,7 @@ class Recorder {
           for (uint32_t b = 0; b < ns_; ++b) {
             const Dart n = name[l_slot(m, b)];
             if (table[l_slot(m, b)] != n) continue;
-            log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, o,
+            log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, om,
                                   del ? std::vector<Dart>{n} : std::vector<Dart>{},
                                   del ? std::vector<Dart>{} : std::vector<Dart>{n}, EventStatus::Certain});
           }
@@ -237,7 +238,7 @@ class Recorder {
     std::sort(into.begin(), into.end());
     into.erase(std::unique(into.begin(), into.end()), into.end());
     for (auto [hn, certain] : merge) {
-      OrbitEvent ev{OrbitEventKind::Merge, o, {}, {hn}, certain ? EventStatus::Certain : EventStatus::Confirmed};
+      OrbitEvent ev{OrbitEventKind::Merge, om, {}, {hn}, certain ? EventStatus::Certain : EventStatus::Confirmed};
       for (auto it = std::lower_bound(into.begin(), into.end(), std::make_pair(hn, Dart(0)));
            it != into.end() && it->first == hn; ++it)
         ev.before.push_back(it->second);
@@ -258,11 +259,11 @@ class Recorder {
       if (hs.empty()) continue;  // deleted (logged above)
       hs = unique_sorted(std::move(hs));
       if (const auto* sp = lookup(split, gn)) {
-        log.events.push_back({OrbitEventKind::Split, o, {gn}, hs, sp->second ? EventStatus::Certain : EventStatus::Confirmed});
+        log.events.push_back({OrbitEventKind::Split, om, {gn}, hs, sp->second ? EventStatus::Certain : EventStatus::Confirmed});
         continue;
       }
       if (lookup(merge, hs.front())) continue;  // part of a merge
-      log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, o, {gn},
+      log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, om, {gn},
                             {hs.front()}, fl || changed == nm ? EventStatus::Refuted : EventStatus::Certain});
     }
   }

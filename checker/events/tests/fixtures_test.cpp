@@ -131,7 +131,7 @@ TEST(Fixtures, F1FaceTriangulationTable1) {
       }
     std::vector<OrbitEvent> expected;
     for (const auto& w : want) {
-      OrbitEvent e{w.kind, OrbitType::parse(o), {}, {}, EventStatus::Observed};
+      OrbitEvent e{w.kind, OrbitType::parse(o).mask(), {}, {}, EventStatus::Observed};
       for (const auto& x : w.before) e.before.push_back(low(before, o, x));
       for (const auto& x : w.after) e.after.push_back(low(g, o, x));
       std::sort(e.after.begin(), e.after.end());
