@@ -1,10 +1,11 @@
 // Topological events (Gaide et al. 2023): on random rule schemes accepted by the scheme checker,
 // on the library (tools/data/rules and the Jerboa fixture's rules) and on random G-maps at random
-// hooks, the static analysis with its run-time confirmation (checker/events/event_log.hpp) logs
+// hooks — and on random concrete rules through their scheme on <> — the static analysis with its run-time confirmation (checker/events/event_log.hpp) logs
 // exactly the events of the dynamic detector, which compares every orbit of G and H
 // (checker/events/dynamic_events.hpp), for every orbit type of the dimension.
 #include <gtest/gtest.h>
 
+#include "checker/events/concrete_scheme.hpp"
 #include "checker/events/dynamic_events.hpp"
 #include "checker/events/event_log.hpp"
 #include "checker/events/static_events.hpp"
@@ -13,6 +14,7 @@
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 #include "proptests/library.hpp"
+#include "proptests/rule_cases.hpp"
 #include "proptests/scheme_cases.hpp"
 
 using namespace gmr;
@@ -100,5 +102,23 @@ TEST(EventProps, LogEqualsDynamicOnTheLibrary) {
     const size_t k = *rc::gen::elementOf(idx);
     RC_TAG(lib[k].scheme.name);
     log_equals_dynamic(*lib[k].engine, analyses[k], lib[k].scheme.dimension == 3 ? 3 : 6, 16);
+  }));
+}
+
+// Concrete rules through their scheme on <> (checker/events/concrete_scheme.hpp): random rules
+// consistent by construction, on G-maps, applied where their hooks' darts match.
+TEST(EventProps, LogEqualsDynamicOnConcreteRules) {
+  EXPECT_TRUE(check_property<RuleCase>("events_concrete", gen_consistent_rule_case(), [](const RuleCase& c) {
+    const rewrite::Rule r = c.build();
+    RC_PRE(r.kind() == MapKind::GMap);
+    const RuleScheme s = scheme_of_concrete_rule(r);
+    std::optional<SchemeEngine> engine;
+    try {
+      engine.emplace(s);
+    } catch (const Error&) {
+      RC_DISCARD("not a scheme the engine applies");
+    }
+    RC_PRE(engine->not_combinatorial().empty());
+    log_equals_dynamic(*engine, analyse(s), 6, 16);
   }));
 }

@@ -30,6 +30,7 @@ OrbitSnapshot snapshot(const GMap& g, const OrbitType& o) {
 std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& h,
                                        const std::vector<Dart>* touched) {
   const OrbitType& o = before.orbit;
+  const DimMask om = o.mask();
   const std::vector<Dart>& gname = before.name;
   const std::vector<Dart> hname = orbit_names(h, o.mask());
   const Dart gcap = static_cast<Dart>(gname.size()), hcap = h.capacity();
@@ -69,7 +70,7 @@ std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& 
     size_t e = k;
     while (e < pairs.size() && pairs[e].first == pairs[k].first) ++e;
     if (g_many[pairs[k].first]) {
-      OrbitEvent ev{OrbitEventKind::Split, o, {pairs[k].first}, {}, EventStatus::Observed};
+      OrbitEvent ev{OrbitEventKind::Split, om, {pairs[k].first}, {}, EventStatus::Observed};
       for (size_t j = k; j < e; ++j) ev.after.push_back(pairs[j].second);
       out.push_back(std::move(ev));
     }
@@ -82,7 +83,7 @@ std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& 
     size_t e = k;
     while (e < pairs.size() && pairs[e].second == pairs[k].second) ++e;
     if (h_many[pairs[k].second]) {
-      OrbitEvent ev{OrbitEventKind::Merge, o, {}, {pairs[k].second}, EventStatus::Observed};
+      OrbitEvent ev{OrbitEventKind::Merge, om, {}, {pairs[k].second}, EventStatus::Observed};
       for (size_t j = k; j < e; ++j) ev.before.push_back(pairs[j].first);
       out.push_back(std::move(ev));
     }
@@ -91,15 +92,15 @@ std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& 
   for (Dart d = 0; d < gcap; ++d) {
     if (!alive_g(d) || gname[d] != d) continue;
     if (g_to[d] == kNoDart) {
-      out.push_back({OrbitEventKind::Deletion, o, {d}, {}, EventStatus::Observed});
+      out.push_back({OrbitEventKind::Deletion, om, {d}, {}, EventStatus::Observed});
     } else if (!g_many[d] && !h_many[g_to[d]] && (g_changed[d] || g_listed[d])) {
-      out.push_back({g_changed[d] ? OrbitEventKind::Modification : OrbitEventKind::NonModification, o, {d},
+      out.push_back({g_changed[d] ? OrbitEventKind::Modification : OrbitEventKind::NonModification, om, {d},
                      {g_to[d]}, EventStatus::Observed});
     }
   }
   for (Dart d = 0; d < hcap; ++d)
     if (alive_h(d) && hname[d] == d && h_from[d] == kNoDart)
-      out.push_back({OrbitEventKind::Creation, o, {}, {d}, EventStatus::Observed});
+      out.push_back({OrbitEventKind::Creation, om, {}, {d}, EventStatus::Observed});
   return out;
 }
 

@@ -157,6 +157,18 @@ ordered_json event_log_to_json(const RuleScheme& s, const StaticEvents& st, cons
   return j;
 }
 
+ordered_json event_logs_to_json(const RuleScheme& s, const StaticEvents& st, const std::vector<EventLog>& logs) {
+  ordered_json j;
+  j["format"] = kEventsFormat;
+  j["version"] = kEventsVersion;
+  j["kind"] = "log-set";
+  j["rule"] = s.name;
+  ordered_json apps = ordered_json::array();
+  for (const EventLog& log : logs) apps.push_back(event_log_to_json(s, st, log));
+  j["applications"] = apps;
+  return j;
+}
+
 std::string event_log_to_text(const EventLog& log) {
   std::ostringstream os;
   for (const auto& l : log.orbits) {

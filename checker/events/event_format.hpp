@@ -4,9 +4,13 @@
 //    "orbits": [{"orbit": "<1>", "left": [pattern orbit], "right": [...], "events": [...]}]}
 //   {"format": "gmr.events", "version": 1, "kind": "log", "rule": ..., "hooks": [...],
 //    "orbits": [{"orbit": "<1>", "traversed": t, "events": [...], "checks": [...]}]}
+//   {"format": "gmr.events", "version": 1, "kind": "log-set", "rule": ..., "applications": [log, ...]}
+//     the logs of repeated applications (apply everywhere), in order; log k names the darts of the
+//     map after the applications before it.
 // Positions k of implicit events are counted from 1, as the paper's "k-th implicit link".
 #pragma once
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +27,8 @@ std::string static_events_to_text(const scheme::RuleScheme& s, const StaticEvent
 
 nlohmann::ordered_json event_log_to_json(const scheme::RuleScheme& s, const StaticEvents& st, const EventLog& log);
 std::string event_log_to_text(const EventLog& log);
+nlohmann::ordered_json event_logs_to_json(const scheme::RuleScheme& s, const StaticEvents& st,
+                                          const std::vector<EventLog>& logs);
 
 // "implicit split along 2 of L<1>(n0) -> R<1>(n0), possible: compare m(b,n0), m(b+2,n0) on H".
 std::string describe(const scheme::RuleScheme& s, const OrbitTypeEvents& t, const PatternEvent& e);

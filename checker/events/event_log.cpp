@@ -1,8 +1,8 @@
 #include "checker/events/event_log.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <numeric>
-#include <unordered_map>
 
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
@@ -54,40 +54,34 @@ class InstanceNamer {
       for (uint32_t b = 0; b < s_; ++b) out[m * s_ + b] = low[find(parent, b)];
   }
 
-  // The slot of a dart of the table, or UINT32_MAX. A hash map when the table is small against
-  // the map, else a dense array (filling it costs O(capacity)).
+  // The slot of a dart of the table, or UINT32_MAX: a binary search in the table's (dart, slot)
+  // pairs, sorted once. Its size is the match's, never the map's, so that naming costs O(orbits
+  // traversed) whatever the size of the object.
   uint32_t slot(Dart x) {
-    if (!indexed_) {
-      indexed_ = true;
-      dense_ = table_.size() * 8 > g_.capacity();
-      if (dense_) {
-        dense_slot_.assign(g_.capacity(), UINT32_MAX);
-        for (uint32_t k = 0; k < table_.size(); ++k) dense_slot_[table_[k]] = k;
-      } else {
-        for (uint32_t k = 0; k < table_.size(); ++k) slot_.emplace(table_[k], k);
-      }
+    if (sorted_.empty()) {
+      sorted_.reserve(table_.size());
+      for (uint32_t k = 0; k < table_.size(); ++k) sorted_.emplace_back(table_[k], k);
+      std::sort(sorted_.begin(), sorted_.end());
     }
-    if (dense_) return dense_slot_[x];
-    auto it = slot_.find(x);
-    return it == slot_.end() ? UINT32_MAX : it->second;
+    auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(x, 0u));
+    return it != sorted_.end() && it->first == x ? it->second : UINT32_MAX;
   }
 
   void name_by_traversal(const PatternOrbits& p, uint32_t c, std::vector<Dart>& out, size_t& traversed) {
     ScopedMarker seen(g_);
-    std::vector<Dart> stack, visited;
     for (uint32_t m : p.nodes[c])
       for (uint32_t b = 0; b < s_; ++b) {
         if (out[m * s_ + b] != kNoDart) continue;
-        visited.clear();
-        visit_orbit_marked(g_, p.orbit, table_[m * s_ + b], seen.id(), stack,
-                           [&](Dart x) { visited.push_back(x); });
-        const Dart low = *std::min_element(visited.begin(), visited.end());
-        for (Dart x : visited) {
+        visited_.clear();
+        visit_orbit_marked(g_, p.orbit, table_[m * s_ + b], seen.id(), stack_,
+                           [&](Dart x) { visited_.push_back(x); });
+        const Dart low = *std::min_element(visited_.begin(), visited_.end());
+        for (Dart x : visited_) {
           seen.unmark(x);
           const uint32_t k = slot(x);
           if (k != UINT32_MAX) out[k] = low;
         }
-        traversed += visited.size();
+        traversed += visited_.size();
       }
     seen.set_clean();
   }
@@ -96,9 +90,8 @@ class InstanceNamer {
   const OrbitGraph& O_;
   const std::vector<Dart>& table_;
   size_t nodes_, s_;
-  bool indexed_ = false, dense_ = false;
-  std::unordered_map<Dart, uint32_t> slot_;
-  std::vector<uint32_t> dense_slot_;
+  std::vector<std::pair<Dart, uint32_t>> sorted_;  // (dart of the table, slot), by dart
+  std::vector<Dart> stack_, visited_;               // traversal buffers, reused across orbits
 };
 
 class Recorder {
@@ -107,14 +100,22 @@ class Recorder {
 
   // Step 1 (G before the rewrite).
   void before(const GMap& g, const OrbitGraph& O, const SchemeApplication& res) {
-    O_ = O;
+    O_ = &O;
     ns_ = O.size();
     M_ = res.match;
     dims_ = g.dimension() + 1;
+    // The links of the matched darts before the rewrite, in the dimensions of the analysed orbit
+    // types only (each other link array would be read for nothing).
+    DimMask used = 0;
+    for (const auto& t : st_.orbits) used |= t.orbit.mask();
     old_.resize(M_.size() * dims_);
-    for (size_t k = 0; k < M_.size(); ++k)
-      for (int i = 0; i < dims_; ++i) old_[k * dims_ + i] = g.alpha(i, M_[k]);
-    InstanceNamer namer(g, O_, M_, s_.left.size());
+    for (int i = 0; i < dims_; ++i) {
+      if (!((used >> i) & 1u)) continue;
+      const std::vector<Dart>& link = g.links(i);
+      for (size_t k = 0; k < M_.size(); ++k) old_[k * dims_ + i] = link[M_[k]];
+    }
+    InstanceNamer namer(g, O, M_, s_.left.size());
+    logs_.clear();
     logs_.resize(st_.orbits.size());
     gname_.resize(st_.orbits.size());
     for (size_t t = 0; t < st_.orbits.size(); ++t) {
@@ -126,7 +127,7 @@ class Recorder {
   // Steps 3 and 4 (H after the rewrite).
   std::vector<OrbitTypeLog> after(const GMap& h, const SchemeApplication& res) {
     T_ = &res.comatch;
-    InstanceNamer namer(h, O_, res.comatch, s_.right.size());
+    InstanceNamer namer(h, *O_, res.comatch, s_.right.size());
     for (size_t t = 0; t < st_.orbits.size(); ++t) {
       const std::vector<Dart> hname = namer.names(st_.orbits[t].right, logs_[t].traversed);
       log_orbit_type(h, st_.orbits[t], gname_[t], hname, logs_[t]);
@@ -160,6 +161,7 @@ class Recorder {
   void log_orbit_type(const GMap& h, const OrbitTypeEvents& te, const std::vector<Dart>& gname,
                       const std::vector<Dart>& hname, OrbitTypeLog& log) const {
     const OrbitType& o = te.orbit;
+    const DimMask om = o.mask();
     std::vector<std::pair<Dart, bool>> split, merge;  // G-orbits split, H-orbits merged (certain)
     std::vector<bool> flagged(te.left.size(), false);  // L pattern orbits with a split or merge flag
     for (uint32_t ei = 0; ei < te.events.size(); ++ei) {
@@ -175,7 +177,7 @@ class Recorder {
           for (uint32_t b = 0; b < ns_; ++b) {
             const Dart n = name[l_slot(m, b)];
             if (table[l_slot(m, b)] != n) continue;
-            log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, o,
+            log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, om,
                                   del ? std::vector<Dart>{n} : std::vector<Dart>{},
                                   del ? std::vector<Dart>{} : std::vector<Dart>{n}, EventStatus::Certain});
           }
@@ -188,7 +190,7 @@ class Recorder {
       for (const InstancePair& p : e.pairs) {
         const uint32_t ra = *s_.right_of(p.a), rb = *s_.right_of(p.b);
         for (uint32_t b = 0; b < ns_; ++b) {
-          const uint32_t b2 = p.position < 0 ? b : O_.neighbor(b, static_cast<size_t>(p.position));
+          const uint32_t b2 = p.position < 0 ? b : O_->neighbor(b, static_cast<size_t>(p.position));
           if (p.a == p.b && b2 < b) continue;  // the pair (b2, b), already compared
           // Splits on H after the rewrite, merges on G before it.
           const Dart na = sp ? hname[l_slot(ra, b)] : gname[l_slot(p.a, b)];
@@ -212,6 +214,9 @@ class Recorder {
     std::vector<Fate> fates;
     fates.reserve(s_.left.size() * ns_);
     std::vector<std::pair<Dart, Dart>> into;  // (H-orbit, G-orbit) of the preserved matched darts
+    into.reserve(fates.capacity());
+    log.events.reserve(log.events.size() + fates.capacity());  // a capacity hint: merges, splits and
+                                                               // (non-)modifications name matched darts
     for (uint32_t v = 0; v < s_.left.size(); ++v) {
       const auto r = s_.right_of(v);
       const bool fl = flagged[te.left.class_of[v]];
@@ -233,7 +238,7 @@ class Recorder {
     std::sort(into.begin(), into.end());
     into.erase(std::unique(into.begin(), into.end()), into.end());
     for (auto [hn, certain] : merge) {
-      OrbitEvent ev{OrbitEventKind::Merge, o, {}, {hn}, certain ? EventStatus::Certain : EventStatus::Confirmed};
+      OrbitEvent ev{OrbitEventKind::Merge, om, {}, {hn}, certain ? EventStatus::Certain : EventStatus::Confirmed};
       for (auto it = std::lower_bound(into.begin(), into.end(), std::make_pair(hn, Dart(0)));
            it != into.end() && it->first == hn; ++it)
         ev.before.push_back(it->second);
@@ -254,18 +259,18 @@ class Recorder {
       if (hs.empty()) continue;  // deleted (logged above)
       hs = unique_sorted(std::move(hs));
       if (const auto* sp = lookup(split, gn)) {
-        log.events.push_back({OrbitEventKind::Split, o, {gn}, hs, sp->second ? EventStatus::Certain : EventStatus::Confirmed});
+        log.events.push_back({OrbitEventKind::Split, om, {gn}, hs, sp->second ? EventStatus::Certain : EventStatus::Confirmed});
         continue;
       }
       if (lookup(merge, hs.front())) continue;  // part of a merge
-      log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, o, {gn},
+      log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, om, {gn},
                             {hs.front()}, fl || changed == nm ? EventStatus::Refuted : EventStatus::Certain});
     }
   }
 
   const RuleScheme& s_;
   const StaticEvents& st_;
-  OrbitGraph O_;
+  const OrbitGraph* O_ = nullptr;  // the hook orbit graph, alive from before_rewrite to after_rewrite
   size_t ns_ = 0;
   int dims_ = 0;
   std::vector<Dart> M_, old_;
@@ -276,34 +281,47 @@ class Recorder {
 
 }  // namespace
 
-LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
-                                    GMap& g, const std::vector<Dart>& hooks, scheme::ApplicationObserver* also) {
-  const RuleScheme& s = engine.scheme();
+struct EventRecorder::Impl {
+  Recorder rec;
+  Impl(const RuleScheme& s, const StaticEvents& st) : rec(s, st) {}
+};
+
+EventRecorder::EventRecorder(const RuleScheme& s, const StaticEvents& analysis, scheme::ApplicationObserver* also)
+    : s_(s), impl_(std::make_unique<Impl>(s, analysis)), also_(also) {
   if (analysis.rule != s.name || analysis.dimension != s.dimension)
     throw Error(ErrorCode::Usage, "the static events are those of rule \"" + analysis.rule + "\"",
                 "scheme " + s.name);
   for (const auto& t : analysis.orbits)
     if (t.left.class_of.size() != s.left.size() || t.right.class_of.size() != s.right.size())
       throw Error(ErrorCode::Usage, "the static events do not match the scheme's nodes", "scheme " + s.name);
+}
+
+EventRecorder::~EventRecorder() = default;
+
+// Merges are checked on G, before the rewrite; `also` (embedding propagation) sees both phases.
+void EventRecorder::before_rewrite(const GMap& before, const SchemeApplication& res, const OrbitGraph& O) {
+  impl_->rec.before(before, O, res);
+  if (also_) also_->before_rewrite(before, res, O);
+}
+
+// Splits are checked on H, after it; the hook orbit O is still alive here.
+void EventRecorder::after_rewrite(const GMap& after, const SchemeApplication& res, const OrbitGraph& O) {
+  EventLog log;
+  log.rule = s_.name;
+  if (!O.darts.empty() && s_.hooks.size() == 1) log.hooks = {O.darts[0]};  // the hook orbit starts at the hook
+  log.orbits = impl_->rec.after(after, res);
+  logs_.push_back(std::move(log));
+  if (also_) also_->after_rewrite(after, res, O);
+}
+
+LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
+                                    GMap& g, const std::vector<Dart>& hooks, scheme::ApplicationObserver* also) {
+  EventRecorder recorder(engine.scheme(), analysis, also);
   LoggedApplication out;
-  out.log.rule = s.name;
+  out.application = engine.apply(g, hooks, &recorder);
+  if (out.application) out.log = std::move(recorder.logs().back());
+  out.log.rule = engine.scheme().name;
   out.log.hooks = hooks;
-  Recorder rec(s, analysis);
-  // Merges are checked on G, before the rewrite; `also` (embedding propagation) sees both phases.
-  struct RecordingObserver : scheme::ApplicationObserver {
-    Recorder& rec;
-    scheme::ApplicationObserver* also;
-    RecordingObserver(Recorder& r, scheme::ApplicationObserver* a) : rec(r), also(a) {}
-    void before_rewrite(const GMap& before, const SchemeApplication& res, const OrbitGraph& O) override {
-      rec.before(before, O, res);
-      if (also) also->before_rewrite(before, res, O);
-    }
-    void after_rewrite(const GMap& after, const SchemeApplication& res, const OrbitGraph& O) override {
-      if (also) also->after_rewrite(after, res, O);
-    }
-  } observer(rec, also);
-  out.application = engine.apply(g, hooks, &observer);
-  if (out.application) out.log.orbits = rec.after(g, out.application);
   return out;
 }
 

@@ -26,6 +26,7 @@
 // G- or H-orbit of an incomplete pattern orbit (the whole component for <0,..,n>).
 #pragma once
 #include <string>
+#include <memory>
 #include <vector>
 
 #include "checker/events/orbit_event.hpp"
@@ -60,6 +61,27 @@ struct EventLog {
 struct LoggedApplication {
   scheme::SchemeApplication application;
   EventLog log;  // empty orbits when the scheme was not applied
+};
+
+// An application observer (model/scheme/scheme_engine.hpp) that logs every application it sees,
+// e.g. those of apply_everywhere (model/scheme/apply_everywhere.hpp): one EventLog per successful
+// application, in order, each naming the orbits of the map just before and just after that
+// application. `analysis` must be the static events of `s`, else Error(Usage). `also` observes the
+// applications too. The scheme and the analysis must outlive the recorder.
+class EventRecorder : public scheme::ApplicationObserver {
+ public:
+  EventRecorder(const scheme::RuleScheme& s, const StaticEvents& analysis, scheme::ApplicationObserver* also = nullptr);
+  ~EventRecorder() override;
+  void before_rewrite(const GMap& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  void after_rewrite(const GMap& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  std::vector<EventLog>& logs() { return logs_; }
+
+ private:
+  struct Impl;
+  const scheme::RuleScheme& s_;
+  std::unique_ptr<Impl> impl_;
+  scheme::ApplicationObserver* also_;
+  std::vector<EventLog> logs_;
 };
 
 // Applies `engine` at `hooks` in place and logs the events of every orbit type of `analysis`

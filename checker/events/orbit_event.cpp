@@ -27,10 +27,19 @@ const char* to_string(EventStatus s) {
 }
 
 namespace {
-std::string names(char side, const OrbitType& o, const std::vector<Dart>& ds, bool braces) {
+// "<0,1>" from the mask.
+std::string orbit_text(DimMask m) {
+  std::string s = "<";
+  for (int i = 0; m >> i; ++i)
+    if ((m >> i) & 1u) s += (s.size() > 1 ? "," : "") + std::to_string(i);
+  return s + ">";
+}
+
+std::string names(char side, DimMask m, const std::vector<Dart>& ds, bool braces) {
+  const std::string o = orbit_text(m);
   std::string s = braces ? "{" : "";
   for (size_t k = 0; k < ds.size(); ++k)
-    s += (k ? ", " : "") + std::string(1, side) + o.str() + "(" + std::to_string(ds[k]) + ")";
+    s += (k ? ", " : "") + std::string(1, side) + o + "(" + std::to_string(ds[k]) + ")";
   return s + (braces ? "}" : "");
 }
 }  // namespace

@@ -34,7 +34,7 @@ const char* to_string(EventStatus s);
 
 struct OrbitEvent {
   OrbitEventKind kind = OrbitEventKind::Modification;
-  OrbitType orbit;
+  DimMask orbit = 0;          // the orbit type's dimensions (a mask: no allocation per event)
   std::vector<Dart> before;  // G-orbits (lowest ids, increasing); empty for a creation
   std::vector<Dart> after;   // H-orbits (lowest ids, increasing); empty for a deletion
   EventStatus status = EventStatus::Observed;

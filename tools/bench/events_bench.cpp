@@ -17,13 +17,17 @@
 //             outside the timing; confirmation, naming of the touched orbits);
 //   dynamic   snapshot of G (orbit names and links), the application, the comparison with H.
 // Each iteration applies the rule to a fresh copy of the object (the copy is not timed: manual
-// timing; the copy has room for the new darts and an allocated marker, as a map in a modeler); tools/bench/events.sh prints the ratios dynamic/static, with and without the
-// application's own time.
+// timing, in thread CPU time; the copy has room for the new darts and an allocated marker, as a map in a modeler),
+// after the same method was run, untimed, on a copy of the scenario's smallest object: copying a
+// large object evicts the code and the rule's data from the caches, the warm-up puts every size in
+// the state of a modeler between two operations. tools/bench/events.sh prints the ratios
+// dynamic/static, with and without the application's own time.
 //
 // GMR_BENCH_SCALE (environment, default 1.0) scales the largest sizes down (e.g. 0.01).
 #include <benchmark/benchmark.h>
+#include <time.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -114,42 +118,60 @@ Case& cached(const std::string& scenario, Factory f, double darts) {
 
 enum class Method { Apply, Static, Dynamic };
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// The thread's CPU time: the machine the numbers come from is shared, and wall time would count the
+// time the thread waits for a core.
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 void run(benchmark::State& state, const std::string& scenario, Factory f, double darts, const OrbitType& o,
          Method m) {
   Case& c = cached(scenario, f, darts);
+  // The warm-up object: the same scenario at its smallest size.
+  Case& w = cached(scenario, f, 1e3);
   const StaticEvents st = analyse(c.engine->scheme(), {o});
   size_t events = 0, traversed = 0;
-  for (auto _ : state) {
-    // Not timed: a fresh copy, prepared as a map that lives in a modeler (room for new darts, a
-    // marker already allocated), so that neither method pays for growing the arrays.
-    GMap g = c.object;
+  // A fresh copy, prepared as a map that lives in a modeler (room for new darts, a marker already
+  // allocated), so that neither method pays for growing the arrays.
+  auto fresh = [](const GMap& object) {
+    GMap g = object;
     g.reserve(g.capacity() + 4096);
     ScopedMarker(g).set_clean();
-    const auto t0 = std::chrono::steady_clock::now();
+    return g;
+  };
+  auto step = [&](const Case& k, GMap& g) {
     switch (m) {
       case Method::Apply: {
-        const auto app = c.engine->apply(g, c.hooks);
+        const auto app = k.engine->apply(g, k.hooks);
         benchmark::DoNotOptimize(app.applied);
         break;
       }
       case Method::Static: {
-        const auto la = apply_with_events(*c.engine, st, g, c.hooks);
+        const auto la = apply_with_events(*k.engine, st, g, k.hooks);
         events = la.log.orbits[0].events.size();
         traversed = la.log.orbits[0].traversed;
         break;
       }
       case Method::Dynamic: {
         const OrbitSnapshot before = snapshot(g, o);
-        const auto app = c.engine->apply(g, c.hooks);
+        const auto app = k.engine->apply(g, k.hooks);
         events = dynamic_events(before, g, &app.match).size();
         break;
       }
     }
-    state.SetIterationTime(seconds_since(t0));
+  };
+  for (auto _ : state) {
+    // Not timed: the copy, then the same method once on a copy of the small object. Copying a large
+    // object evicts the code and the rule's data from the caches, which a modeler applying one
+    // operation after another does not; the warm-up puts every size in the same state.
+    GMap g = fresh(c.object);
+    GMap gw = fresh(w.object);
+    step(w, gw);
+    const double t0 = cpu_seconds();
+    step(c, g);
+    state.SetIterationTime(cpu_seconds() - t0);
   }
   state.counters["darts"] = static_cast<double>(c.object.size());
   state.counters["events"] = static_cast<double>(events);
@@ -166,7 +188,12 @@ void register_scenario(const std::string& scenario, Factory f, int n, const std:
         const Method m = static_cast<Method>(k);
         benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& st) { run(st, scenario, f, darts, o, m); })
             ->UseManualTime()
-            ->Iterations(size >= 1e6 ? 5 : size >= 1e5 ? 20 : 50)
+            // The minimum over the repetitions: the cost without interference from the other
+            // processes of the machine (events.sh reports it next to the median).
+            ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); })
+            // Few iterations per repetition on large objects, many repetitions (events.sh takes the
+            // medians): an iteration disturbed by the machine then spoils one sample, not a mean.
+            ->Iterations(size >= 1e6 || (scenario == "split" && size >= 1e5) ? 1 : size >= 1e5 ? 3 : 20)
             ->Unit(benchmark::kMicrosecond);
       }
   }

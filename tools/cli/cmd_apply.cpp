@@ -9,18 +9,23 @@
 // match applies or the result breaks a constraint of the model (listed up to --limit), 2 on bad
 // input.
 // Rule schemes (gmr.rule kind "scheme", Jerboa .jme with --rule) go to scheme_apply.hpp
-// (--hook D[,D...] or --all).
+// (--hook D[,D...] or --all). --events [--orbits] writes the event log (checker/events/).
 #include <cctype>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
+#include "checker/events/concrete_scheme.hpp"
+#include "checker/events/event_format.hpp"
+#include "model/io/json_writer.hpp"
 #include "model/rewrite/dpo.hpp"
+#include "model/scheme/scheme_engine.hpp"
 #include "model/core/error.hpp"
 #include "model/io/rule_json.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/match_syntax.hpp"
+#include "tools/cli/orbit_list.hpp"
 #include "tools/cli/rule_gate.hpp"
 #include "tools/cli/rule_input.hpp"
 #include "tools/cli/scheme_apply.hpp"
@@ -38,9 +43,33 @@ struct ApplyArgs {
   size_t limit = 20;
   std::string hooks, rule_name;  // rule schemes
   bool all = false;
-  std::string events;
+  std::string events, orbits;
   bool no_embeddings = false;
 };
+
+// --events on a concrete rule: the rule is applied again as its scheme on <> (one dart per node,
+// checker/events/concrete_scheme.hpp) at the same match, with the event log, which is written
+// atomically. The result is the scheme engine's: the DPO's up to the indices of the created darts
+// (the engine appends them, the DPO reuses the indices of deleted darts first), so that the log
+// names the darts of the map written by -o. False (printed) when the engine refuses the rule.
+bool log_concrete_application(const Rule& r, const GMap& g, const std::vector<Dart>& md,
+                              const std::vector<OrbitType>& types, const std::string& log_file, MapDerivation& d) {
+  const scheme::RuleScheme s = events::scheme_of_concrete_rule(r);
+  const scheme::SchemeEngine engine(s);
+  std::vector<Dart> hooks;
+  for (const std::string& h : s.hooks) hooks.push_back(md[*s.left.find(h)]);
+  const events::StaticEvents st = events::analyse(s, types);
+  GMap h = g;
+  events::LoggedApplication la = events::apply_with_events(engine, st, h, hooks);
+  if (!la.application) {
+    std::cout << r.name() << " as a scheme on <>: " << la.application.why << "\n";
+    return false;
+  }
+  write_output(log_file, io::dump_json(events::event_log_to_json(s, st, la.log)));
+  d.H = std::move(h);
+  d.comatch = la.application.comatch;
+  return true;
+}
 
 int run_apply(const ApplyArgs& a) {
   const RuleInput in = load_rule_input(a.rule, a.rule_name);
@@ -48,10 +77,11 @@ int run_apply(const ApplyArgs& a) {
   if (in.is_scheme()) {
     if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
     return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift,
-                                           a.limit, a.no_embeddings, a.events});
+                                           a.limit, a.no_embeddings, a.events, a.orbits});
   }
-  if (!a.events.empty())
-    throw Error(ErrorCode::Usage, "--events logs the application of a rule scheme, not of a concrete rule", "--events");
+  if (!a.orbits.empty() && a.events.empty())
+    throw Error(ErrorCode::Usage, "--orbits selects the orbit types of the event log: give it with --events", "--orbits");
+  const std::vector<OrbitType> orbit_types = parse_orbit_list(a.orbits);
   if (!a.hooks.empty() || a.all)
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
   const Rule& r = *in.concrete;
@@ -102,6 +132,7 @@ int run_apply(const ApplyArgs& a) {
     std::cout << "the result is not a map: " << e.location() << ": " << e.message() << "\n";
     return kExitNegative;
   }
+  if (!a.events.empty() && !log_concrete_application(r, g, md, orbit_types, a.events, d)) return kExitNegative;
   const ValidityReport rep = check_validity(d.H, a.limit);
   std::string match_text;
   for (Node v = 0; v < r.left().num_nodes(); ++v)
@@ -157,7 +188,8 @@ void register_apply(CLI::App& app) {
       ->check(non_negative_integer())
       ->capture_default_str();
   sub->add_option("--events", args->events,
-                  "Rule schemes at --hook: write the event log (gmr.events JSON: every orbit type's events, named by lowest dart, certain/confirmed/refuted) here");
+                  "Write the event log here (gmr.events JSON: every orbit type's events, named by lowest dart, certain/confirmed/refuted; with --all one log per application; a concrete rule is logged as its scheme on <>)");
+  sub->add_option("--orbits", args->orbits, "With --events: the orbit types logged, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
   set_action(sub, [args] { return run_apply(*args); });
 }
 

@@ -2,18 +2,20 @@
 // scheme (checker/events/static_events.hpp) for every orbit type of its dimension, or those given:
 // per orbit type, each creation, deletion, split, merge, modification or non-modification of a
 // pattern orbit, certain or possible with the instance pairs to compare at application time. A
-// Jerboa .jme file gives one table per rule (or the rule named by --rule). Exit 0, 2 on bad input
-// (a concrete rule has no pattern orbits: schemes only).
+// Jerboa .jme file gives one table per rule (or the rule named by --rule). A concrete rule is
+// analysed as its scheme on <> (checker/events/concrete_scheme.hpp: one dart per node). Exit 0, 2 on
+// bad input.
 #include <iostream>
 #include <memory>
 #include <filesystem>
-#include <regex>
 
+#include "checker/events/concrete_scheme.hpp"
 #include "checker/events/event_format.hpp"
 #include "model/core/error.hpp"
 #include "model/io/jme_import.hpp"
 #include "model/io/json_writer.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/orbit_list.hpp"
 #include "tools/cli/rule_input.hpp"
 
 namespace gmr::cli {
@@ -26,26 +28,6 @@ struct EventsArgs {
   bool json = false;
 };
 
-// "<0,1>,<1,2>" -> the orbit types (an empty list: all of them).
-std::vector<OrbitType> parse_orbit_list(const std::string& text) {
-  std::vector<OrbitType> out;
-  const std::regex item(R"(\s*(<[^>]*>)\s*(,|$))");
-  auto it = text.cbegin();
-  std::smatch m;
-  while (it != text.cend()) {
-    if (!std::regex_search(it, text.cend(), m, item, std::regex_constants::match_continuous))
-      throw Error(ErrorCode::Usage, "expected a list of orbit types such as \"<0,1>,<1,2>\", found \"" + text + "\"",
-                  "--orbits");
-    try {
-      out.push_back(OrbitType::parse(m[1].str()));
-    } catch (const Error& e) {
-      throw Error(e.code(), e.message() + " (" + e.location() + ")", "--orbits");
-    }
-    it = m[0].second;
-  }
-  return out;
-}
-
 std::vector<RuleScheme> load_schemes(const EventsArgs& a) {
   if (std::filesystem::path(a.rule).extension() == ".jme" && a.rule_name.empty()) {
     io::JmeModeler m = io::read_jme_file(a.rule);
@@ -53,8 +35,7 @@ std::vector<RuleScheme> load_schemes(const EventsArgs& a) {
     return std::move(m.rules);
   }
   RuleInput in = load_rule_input(a.rule, a.rule_name);
-  if (!in.is_scheme())
-    throw Error(ErrorCode::Usage, "events are detected on rule schemes (pattern orbits); this is a concrete rule", a.rule);
+  if (!in.is_scheme()) return {scheme_of_concrete_rule(*in.concrete)};
   return {std::move(*in.scheme)};
 }
 
@@ -101,7 +82,7 @@ void register_events(CLI::App& app) {
   auto args = std::make_shared<EventsArgs>();
   CLI::App* sub = app.add_subcommand(
       "events", "Static topological events of a rule scheme per orbit type: creation, deletion, split, merge, modification, certain or to confirm");
-  sub->add_option("rule", args->rule, "Rule scheme (gmr.rule JSON of kind scheme) or Jerboa .jme file (every rule)")->required();
+  sub->add_option("rule", args->rule, "Rule (gmr.rule JSON, scheme or concrete: a scheme on <>) or Jerboa .jme file (every rule)")->required();
   sub->add_option("--orbits", args->orbits, "Orbit types to analyse, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file (default: every rule)");
   sub->add_flag("--json", args->json, "Print JSON (format gmr.events, kind static)");

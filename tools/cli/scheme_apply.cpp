@@ -15,6 +15,7 @@
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/orbit_list.hpp"
 #include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
@@ -67,8 +68,8 @@ void check_hook_arguments(const RuleScheme& s, const SchemeApplyArgs& a) {
                 "--all applies schemes with one hook; \"" + s.name + "\" has " + std::to_string(nhooks) +
                     " (give them with --hook)",
                 "--all");
-  if (a.all && !a.events.empty())
-    throw Error(ErrorCode::Usage, "--events logs one application: give the hook(s) with --hook", "--events");
+  if (!a.orbits.empty() && a.events.empty())
+    throw Error(ErrorCode::Usage, "--orbits selects the orbit types of the event log: give it with --events", "--orbits");
   if (!a.all && a.hooks.empty() && nhooks > 0)
     throw Error(ErrorCode::Usage,
                 "the scheme has " + std::to_string(nhooks) + " hook(s): give the dart(s) with --hook D[,D...] or use --all",
@@ -101,7 +102,7 @@ std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const
   if (a.events.empty()) {
     app = engine.apply(g, hooks, obs);  // wrong count, dead dart: Error (exit 2)
   } else {
-    const events::StaticEvents st = events::analyse(s);
+    const events::StaticEvents st = events::analyse(s, parse_orbit_list(a.orbits));
     events::LoggedApplication la = events::apply_with_events(engine, st, g, hooks, obs);
     app = std::move(la.application);
     if (app) write_output(a.events, io::dump_json(events::event_log_to_json(s, st, la.log)));
@@ -121,7 +122,17 @@ std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, 
                                            ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> darts = g.darts();
-  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json, obs);  // tables only with --json
+  // With --events, every application is logged on the map as it is just before and after it.
+  std::optional<events::StaticEvents> st;
+  std::optional<events::EventRecorder> recorder;
+  if (!a.events.empty()) {
+    st = events::analyse(s, parse_orbit_list(a.orbits));
+    recorder.emplace(s, *st, obs);
+  }
+  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json,
+                                               recorder ? &*recorder : obs);  // tables only with --json
+  if (recorder && !all.applications.empty())
+    write_output(a.events, io::dump_json(events::event_logs_to_json(s, *st, recorder->logs())));
   if (all.applications.empty()) {
     const SchemeApplication& last = all.last_failure;
     const std::string why = darts.empty() ? "the map has no dart"

@@ -504,8 +504,60 @@ TEST_F(Cli, ApplyWritesTheEventLog) {
   r = run("apply " + q(tools_data("rules/unsew2.json")) + " " + house + " --hook 4 --events " + q(log));
   EXPECT_EQ(r.code, 1) << r.out << r.err;
   EXPECT_EQ(outputs(), 0u);
-  expect_bad_input("apply " + tri + " " + house + " --all --events " + q(log), "--events");
+  expect_bad_input("apply " + tri + " " + house + " --hook 0 --orbits \"<0,1>\"", "--orbits", "--events");
+  expect_bad_input("apply " + tri + " " + house + " --hook 0 --events " + q(log) + " --orbits \"<0,7>\"", "<0,7>");
   EXPECT_EQ(outputs(), 0u);
+}
+
+// `gmr apply --all --events`: one log per application, in order ("log-set"); --orbits restricts the
+// logged orbit types.
+TEST_F(Cli, ApplyEverywhereLogsEveryApplication) {
+  const std::string tri = q(tools_data("rules/face_triangulation.json"));
+  const std::string house = q(source_dir() / "checker/events/tests/data/house.json");
+  const fs::path log = dir / "all.json";
+  Result r = run("apply " + tri + " " + house + " --all --events " + q(log) + " --orbits \"<0,1>,<1,2>\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("applied 2 times"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(read_text_file(log));
+  EXPECT_EQ(j["format"], "gmr.events");
+  EXPECT_EQ(j["kind"], "log-set");
+  ASSERT_EQ(j["applications"].size(), 2u);  // the square at dart 0, then the roof at dart 8
+  EXPECT_EQ(j["applications"][0]["hooks"], nlohmann::json::array({0}));
+  EXPECT_EQ(j["applications"][1]["hooks"], nlohmann::json::array({8}));
+  for (const auto& app : j["applications"]) {
+    EXPECT_EQ(app["kind"], "log");
+    ASSERT_EQ(app["orbits"].size(), 2u);
+    EXPECT_EQ(app["orbits"][0]["orbit"], "<0,1>");
+    EXPECT_EQ(app["orbits"][1]["orbit"], "<1,2>");
+    ASSERT_EQ(app["orbits"][0]["events"].size(), 1u);
+    EXPECT_EQ(app["orbits"][0]["events"][0]["event"], "split");
+  }
+  EXPECT_EQ(j["applications"][0]["orbits"][0]["events"][0]["after"].size(), 4u);  // square: 4 triangles
+  EXPECT_EQ(j["applications"][1]["orbits"][0]["events"][0]["after"].size(), 3u);  // roof: 3
+}
+
+// Concrete rules: `gmr events` analyses them as schemes on <> (one dart per node), `gmr apply
+// --events` logs their application; the result is the one without --events.
+TEST_F(Cli, EventsOfConcreteRules) {
+  const std::string unsew = q(source_dir() / "checker/tests/data/F5_fig319a_unsew.json");
+  const std::string grid = q(source_dir() / "checker/events/tests/data/quad_grid_2x2.off");
+  Result r = run("events " + unsew + " --orbits \"<0,2>\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("explicit split of L<0,2>(a) -> R<0,2>(a), R<0,2>(c), certain"), std::string::npos) << r.out;
+  const fs::path log = dir / "log.json", with = dir / "with.json", without = dir / "without.json";
+  r = run("apply " + unsew + " " + grid + " --match a=2 --events " + q(log) + " --orbits \"<0,2>,<0,1,2>\" -o " + q(with));
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run("apply " + unsew + " " + grid + " --match a=2 -o " + q(without));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(read_text_file(with), read_text_file(without));
+  const auto j = nlohmann::json::parse(read_text_file(log));
+  EXPECT_EQ(j["kind"], "log");
+  ASSERT_EQ(j["orbits"].size(), 2u);
+  ASSERT_EQ(j["orbits"][0]["events"].size(), 1u);
+  EXPECT_EQ(j["orbits"][0]["events"][0]["event"], "split");
+  EXPECT_EQ(j["orbits"][0]["events"][0]["status"], "certain");
+  EXPECT_EQ(j["orbits"][1]["events"][0]["event"], "modification");  // the grid stays connected
+  expect_bad_input("events " + q(source_dir() / "checker/tests/data/omap_face_split.json"), "O-maps");
 }
 
 TEST_F(Cli, DotDrawsTheStaticEvents) {
