@@ -515,3 +515,61 @@ TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
     EXPECT_FALSE(schemes_isomorphic(raw.rules[0].scheme, lib));
   }
 }
+
+namespace {
+// A local example (thesis §7.1.2): the hook's <o>-orbit, the darts 1-linked to it (when
+// with_neighbours) and, after, the preserved ones among them plus the created darts.
+HookedExample local_example(const GMap& before, const RuleScheme& lib, Dart hook, const OrbitType& o, bool with_neighbours) {
+  auto [after, app] = apply_scheme(before, lib, {hook});
+  EXPECT_TRUE(app.applied) << app.why;
+  std::vector<Dart> sel = orbit(before, o, hook);
+  if (with_neighbours) {
+    const size_t k = sel.size();
+    for (size_t i = 0; i < k; ++i) sel.push_back(before.alpha(1, sel[i]));
+  }
+  DartMapping m;
+  std::vector<Dart> after_sel;
+  for (Dart d : sel)
+    if (after.alive(d)) {
+      m.pairs.emplace_back(d, d);
+      after_sel.push_back(d);
+    }
+  for (Dart d = before.capacity(); d < after.capacity(); ++d)
+    if (after.alive(d)) after_sel.push_back(d);
+  m.before_selection = sel;
+  m.after_selection = after_sel;
+  return {before, after, m};
+}
+}  // namespace
+
+// Local operations through selections (thesis §7.1.2, docs/inference.md): edge collapse and edge
+// deletion applied to one edge of a closed surface, with the edge's 4 darts and their 4
+// 1-neighbours selected before and those neighbours after; vertex insertion on <2> with the edge's
+// 4 darts selected before and those plus the 4 created darts after. Links to unselected darts are
+// undefined neighbours, which gives n1 <_,_> (collapse, deletion) and the 1-free ends x, y
+// (insertion). The inferred rule is the library's; the other starts (the neighbours, whose hook
+// orbit is cut by the selection) fail. Applied to a prism it agrees with the library (signatures).
+TEST(RuleInference, LocalLibrarySchemesAreRecoveredThroughSelections) {
+  for (const char* rule : {"edge_collapse", "edge_deletion", "vertex_insertion_folded_2"}) {
+    SCOPED_TRACE(rule);
+    const RuleScheme lib = read_scheme_file(rule_file(rule));
+    const bool neighbours = std::string(rule) != "vertex_insertion_folded_2";
+    for (const GMap& g : {make_tetrahedron(), make_cube()}) {
+      const HookedExample e = local_example(g, lib, 0, ot("<0,2>"), neighbours);
+      EXPECT_EQ(e.mapping.before_selection->size(), 8u - (neighbours ? 0 : 4));
+      const InferenceResult res = infer_on(lib, e, 0);
+      ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+      const RuleScheme& s = res.rules[0].scheme;
+      EXPECT_TRUE(schemes_isomorphic(s, lib)) << scheme_to_json_text(s);
+      EXPECT_EQ(res.attempts.size(), neighbours ? 5u : 1u) << summary_text(res);
+      for (size_t k = 1; k < res.attempts.size(); ++k) {
+        EXPECT_EQ(res.attempts[k].outcome, AttemptOutcome::FoldFailed);
+        EXPECT_NE(res.attempts[k].reason.find("partial hook orbit"), std::string::npos);
+      }
+      auto [mine, a1] = apply_scheme(make_prism(5), s, {0});
+      auto [theirs, a2] = apply_scheme(make_prism(5), lib, {0});
+      ASSERT_TRUE(a1.applied && a2.applied) << a1.why << a2.why;
+      EXPECT_EQ(signature(mine), signature(theirs));
+    }
+  }
+}
