@@ -20,7 +20,8 @@
 //    up to isomorphism. Checked with the library schemes and with random schemes the checker
 //    accepts (random_schemes.hpp: arbitrary one-hook schemes and the copies family).
 // On failure (RC_LOG) a case prints its case lines (map, other map, scheme case), the maps before,
-// after and other as gmr.gmap JSON, the before map's DOT, and the schemes' JSON and DOT.
+// after and other as gmr.gmap JSON, the before map's DOT, the applied scheme's DOT (a library
+// scheme by name, a random one also as JSON) and the inferred scheme's JSON and DOT.
 #include <gtest/gtest.h>
 
 #include "inference/dart_mapping.hpp"
