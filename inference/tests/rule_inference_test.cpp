@@ -546,7 +546,7 @@ HookedExample local_example(const GMap& before, const RuleScheme& lib, Dart hook
 // deletion applied to one edge of a closed surface, with the edge's 4 darts and their 4
 // 1-neighbours selected before and those neighbours after; vertex insertion on <2> with the edge's
 // 4 darts selected before and those plus the 4 created darts after. Links to unselected darts are
-// undefined neighbours, which gives n1 <_,_> (collapse, deletion) and the 1-free ends x, y
+// undefined neighbours, which gives n1 <_,_> (collapse, deletion) and no 1-arc at x and y
 // (insertion). The inferred rule is the library's; the other starts (the neighbours, whose hook
 // orbit is cut by the selection) fail. Applied to a prism it agrees with the library (signatures).
 TEST(RuleInference, LocalLibrarySchemesAreRecoveredThroughSelections) {
