@@ -19,6 +19,9 @@
 //    isomorphism, and applied to another random map at a dart where S applies it gives S's result
 //    up to isomorphism. Checked with the library schemes and with random schemes the checker
 //    accepts (random_schemes.hpp: arbitrary one-hook schemes and the copies family).
+// On failure (RC_LOG) a case prints its case lines (map, other map, scheme case), the maps before,
+// after and other as gmr.gmap JSON, the before map's DOT, the applied scheme's DOT (a library
+// scheme by name, a random one also as JSON) and the inferred scheme's JSON and DOT.
 #include <gtest/gtest.h>
 
 #include "inference/dart_mapping.hpp"
@@ -27,6 +30,7 @@
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
 #include "model/draw/rule_dot.hpp"
+#include "model/io/gmap_json.hpp"
 #include "model/io/scheme_json.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
@@ -87,7 +91,9 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const GMap& whol
     const Dart cand = static_cast<Dart>((offset + k) % g.size());
     if (engine.apply(after, {cand}).applied) h = cand;
   }
-  RC_LOG() << "scheme " << s.name << " at " << h << "\n";
+  RC_LOG() << "scheme " << s.name << " at " << h << "\nscheme DOT:\n" << draw::to_dot(s)
+           << "before (gmr.gmap, the component of dart 0, darts renumbered):\n" << describe_counterexample(g)
+           << "\nafter (gmr.gmap):\n" << write_gmap_json(after, {}) << "\n";
   if (h == kNoDart) {
     RC_TAG("not applicable");
     return;
@@ -116,6 +122,7 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const GMap& whol
     RC_TAG("one orbit");
     RC_ASSERT(schemes_isomorphic(r.scheme, s));
     if (other.size() == 0u) return;
+    RC_LOG() << "other map (gmr.gmap):\n" << write_gmap_json(other, {}) << "\n";
     const Dart d = *rc::gen::inRange<Dart>(0, static_cast<Dart>(other.capacity()));
     if (!other.alive(d)) return;
     GMap by_s = other;
@@ -144,8 +151,9 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
     const auto& lib = one_hook[whole.dimension()];
     const LibraryScheme& ls = scheme_library()[lib[*rc::gen::inRange<size_t>(0, lib.size())]];
     RC_LOG() << "map " << c.str() << " (component of dart 0)\n";
-    const GMap other = (*gen_map_case_of_dim(whole.dimension(), 4)).build();
-    roundtrip(ls.scheme, *ls.engine, whole, other);
+    const MapCase other = *gen_map_case_of_dim(whole.dimension(), 4);
+    RC_LOG() << "other map " << other.str() << "\n";
+    roundtrip(ls.scheme, *ls.engine, whole, other.build());
   }));
 }
 
@@ -163,7 +171,7 @@ void random_roundtrip(const SchemeCase& c) {
   RC_PRE(s.hooks.size() == 1u);
   RC_PRE(check_scheme(s, {.embeddings = false}).ok());
   const MapCase m = *gen_map_case_of_dim(c.n, 4), o = *gen_map_case_of_dim(c.n, 4);
-  RC_LOG() << "scheme case " << c.str() << "\n" << scheme_to_json_text(s) << "map " << m.str() << " (component of dart 0)\n";
+  RC_LOG() << "scheme case " << c.str() << "\n" << scheme_to_json_text(s) << "map " << m.str() << " (component of dart 0), other map " << o.str() << "\n";
   roundtrip(s, *engine, m.build(), o.build());
 }
 
