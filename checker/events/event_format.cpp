@@ -27,7 +27,7 @@ std::string pair_text(const RuleScheme& s, const InstancePair& p) {
 }
 
 ordered_json pattern_orbits_json(const RuleScheme& s, const PatternOrbits& p) {
-  const auto& side = p.side == Side::Left ? s.left : s.right;
+  const auto& side = p.side == Side::L ? s.left : s.right;
   ordered_json out = ordered_json::array();
   for (uint32_t c = 0; c < p.size(); ++c) {
     ordered_json nodes = ordered_json::array();
@@ -46,7 +46,7 @@ std::string describe(const RuleScheme& s, const OrbitTypeEvents& t, const Patter
     for (uint32_t k : e.positions) ks.push_back(std::to_string(k + 1));
     text += " along " + join(ks, ",");
   }
-  const auto l = orbit_names(s, t, Side::Left, e.left), r = orbit_names(s, t, Side::Right, e.right);
+  const auto l = orbit_names(s, t, Side::L, e.left), r = orbit_names(s, t, Side::R, e.right);
   switch (e.kind) {
     case PatternEventKind::Creation: text += " of " + join(r, ", "); break;
     case PatternEventKind::Deletion: text += " of " + join(l, ", "); break;
@@ -79,8 +79,8 @@ ordered_json static_events_to_json(const RuleScheme& s, const StaticEvents& st) 
       ordered_json ej;
       ej["event"] = to_string(e.kind);
       ej["certainty"] = to_string(e.certainty);
-      ej["left"] = orbit_names(s, t, Side::Left, e.left);
-      ej["right"] = orbit_names(s, t, Side::Right, e.right);
+      ej["left"] = orbit_names(s, t, Side::L, e.left);
+      ej["right"] = orbit_names(s, t, Side::R, e.right);
       if (!e.positions.empty()) {
         ordered_json ks = ordered_json::array();
         for (uint32_t k : e.positions) ks.push_back(k + 1);
@@ -112,8 +112,8 @@ std::string static_events_to_text(const RuleScheme& s, const StaticEvents& st) {
   for (const auto& t : st.orbits) {
     os << t.orbit.str() << "  pattern orbits";
     for (const PatternOrbits* p : {&t.left, &t.right}) {
-      const auto& side = p->side == Side::Left ? s.left : s.right;
-      os << (p->side == Side::Left ? "  L:" : "  R:");
+      const auto& side = p->side == Side::L ? s.left : s.right;
+      os << (p->side == Side::L ? "  L:" : "  R:");
       for (uint32_t c = 0; c < p->size(); ++c) {
         std::vector<std::string> names;
         for (uint32_t m : p->nodes[c]) names.push_back(side.nodes[m].name);

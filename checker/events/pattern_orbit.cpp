@@ -4,8 +4,6 @@
 
 namespace gmr::events {
 
-const char* to_string(Side s) { return s == Side::Left ? "L" : "R"; }
-
 bool has_link(const scheme::GraphScheme& side, uint32_t m, int i) {
   for (int d : side.nodes[m].label.dims())
     if (d == i) return true;

@@ -15,16 +15,16 @@
 #include <vector>
 
 #include "model/core/orbit_type.hpp"
+#include "model/graph/elem_status.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::events {
 
-enum class Side { Left, Right };
-const char* to_string(Side s);
+using graph::Side;
 
 // The pattern orbits of one side for one orbit type.
 struct PatternOrbits {
-  Side side = Side::Left;
+  Side side = Side::L;
   DimMask orbit = 0;                        // the analysed orbit type <o>
   std::vector<uint32_t> class_of;           // node index -> pattern orbit index
   std::vector<std::vector<uint32_t>> nodes; // pattern orbit -> its nodes (increasing)

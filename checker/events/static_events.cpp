@@ -51,8 +51,8 @@ std::vector<OrbitType> all_orbit_types(int n) {
 }
 
 std::string pattern_orbit_name(const RuleScheme& s, const OrbitTypeEvents& t, Side side, uint32_t c) {
-  const PatternOrbits& p = side == Side::Left ? t.left : t.right;
-  const GraphScheme& g = side == Side::Left ? s.left : s.right;
+  const PatternOrbits& p = side == Side::L ? t.left : t.right;
+  const GraphScheme& g = side == Side::L ? s.left : s.right;
   return std::string(to_string(side)) + t.orbit.str() + "(" + g.nodes[p.nodes[c].front()].name + ")";
 }
 
@@ -83,8 +83,8 @@ class Analysis {
  public:
   Analysis(const RuleScheme& s, const OrbitType& o) : s_(s), o_(o.mask()) {
     t_.orbit = o;
-    t_.left = pattern_orbits(s.left, Side::Left, o_);
-    t_.right = pattern_orbits(s.right, Side::Right, o_);
+    t_.left = pattern_orbits(s.left, Side::L, o_);
+    t_.right = pattern_orbits(s.right, Side::R, o_);
     arity_ = s.orbit.size();
   }
 

@@ -69,7 +69,7 @@ TEST(StaticEvents, AllOrbitTypesOfDimension2) {
 // §2.2: R<0,2>(n0) = {n0} is incomplete (no 2), R<0,2>(n1) = {n1, n2} is complete.
 TEST(StaticEvents, PatternOrbitsOfTriangulation) {
   const auto s = library_rule("face_triangulation");
-  const PatternOrbits r = pattern_orbits(s.right, Side::Right, OrbitType{0, 2}.mask());
+  const PatternOrbits r = pattern_orbits(s.right, Side::R, OrbitType{0, 2}.mask());
   const uint32_t n0 = *s.right.find("n0"), n1 = *s.right.find("n1"), n2 = *s.right.find("n2");
   EXPECT_NE(r.class_of[n0], r.class_of[n1]);
   EXPECT_EQ(r.class_of[n1], r.class_of[n2]);
