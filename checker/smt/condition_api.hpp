@@ -50,7 +50,7 @@ struct RuleView {
   int n = 0;
   Graph left, right;
 
-  const Graph& side(Side s) const { return s == Side::L ? left : right; }
+  const Graph& side(Side s) const { return s == Side::Left ? left : right; }
   int lowest_label() const { return model == Model::OMap ? 1 : 0; }
   std::vector<int> labels() const {
     std::vector<int> out;
@@ -133,7 +133,7 @@ struct SchemeView {
   SchemeGraph left, right;
   std::vector<std::string> hooks;  // L node names; the first is the reference hook
 
-  const SchemeGraph& side(Side s) const { return s == Side::L ? left : right; }
+  const SchemeGraph& side(Side s) const { return s == Side::Left ? left : right; }
   // Explicit d-arcs at node v (a loop counts once).
   unsigned explicit_arcs(Side s, unsigned v, int d) const {
     unsigned k = 0;
