@@ -23,6 +23,8 @@
 
 namespace gmr::condition {
 
+// The model's enums (MapKind, ElemStatus, Side of model/graph/elem_status.hpp), repeated so that a
+// plug-in compiles against this header alone.
 enum class Model { GMap, OMap };
 enum class Status { Preserved, Deleted, Added };
 enum class Side { Left, Right };
