@@ -19,13 +19,8 @@ namespace gmr::proofs {
 inline smt::ValidationReport prove_conditions(int n, MapKind kind, std::vector<int> labels, int max_nodes,
                                               unsigned bound, smt::Engine engine = smt::Engine::Smt) {
   const smt::BuiltinCondition* c = smt::find_builtin_condition("thesis");
-  smt::ValidationOptions o;
-  o.n = n;
-  o.kind = kind;
-  o.labels = std::move(labels);
-  o.max_nodes = max_nodes;
-  o.bound = bound;
-  o.engine = engine;
+  const smt::ValidationOptions o{
+      .n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound, .engine = engine};
   const smt::ValidationReport r = smt::validate_condition(c->name, [&](const std::vector<rewrite::Rule>& rules) {
     std::vector<bool> out;
     for (const auto& x : rules) out.push_back(c->holds(x));
@@ -43,12 +38,8 @@ inline smt::ValidationReport prove_conditions(int n, MapKind kind, std::vector<i
 // (checker/smt/symbolic_validation.hpp): models without cycle pairs (Theorems 1 and 2).
 inline smt::SymbolicReport prove_conditions_symbolic(int n, MapKind kind, std::vector<int> labels, int max_nodes,
                                                      unsigned bound) {
-  smt::ValidationOptions o;
-  o.n = n;
-  o.kind = kind;
-  o.labels = std::move(labels);
-  o.max_nodes = max_nodes;
-  o.bound = bound;
+  const smt::ValidationOptions o{
+      .n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound};
   const smt::SymbolicReport r = smt::validate_symbolic("thesis", o);
   std::printf("%s", smt::to_text(r).c_str());
   EXPECT_TRUE(r.sound()) << "sufficiency fails:\n" << smt::to_text(r);

@@ -96,16 +96,22 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
   return rep;
 }
 
-nlohmann::ordered_json to_json(const ValidationReport& r) {
-  const ValidationOptions& o = r.options;
+nlohmann::ordered_json validation_header(const std::string& condition, const std::string& engine,
+                                         const ValidationOptions& o) {
   nlohmann::ordered_json j;
   j["format"] = kValidationFormat;
   j["version"] = 1;
-  j["condition"] = r.condition;
-  j["engine"] = to_string(o.engine);
+  j["condition"] = condition;
+  if (!engine.empty()) j["engine"] = engine;
   j["model"] = o.kind == MapKind::OMap ? "omap" : "gmap";
   j["n"] = o.n;
   j["labels"] = o.labels;
+  return j;
+}
+
+nlohmann::ordered_json to_json(const ValidationReport& r) {
+  const ValidationOptions& o = r.options;
+  nlohmann::ordered_json j = validation_header(r.condition, to_string(o.engine), o);
   j["max_nodes"] = o.max_nodes;
   j["random"] = o.random;
   j["seed"] = o.seed;
@@ -115,13 +121,7 @@ nlohmann::ordered_json to_json(const ValidationReport& r) {
   j["checked"] = r.checked;
   j["nodes_covered"] = r.nodes_covered;
   j["time_limit_hit"] = r.time_limit_hit;
-  j["holds"] = r.holds;
-  j["fails"] = r.fails;
-  j["vacuous"] = r.vacuous;
-  j["unsound"] = r.unsound;
-  j["incomplete"] = r.incomplete;
-  j["sound"] = r.sound();
-  j["complete"] = r.complete();
+  put_verdict_counts(j, r);
   if (r.smallest_unsound) {
     const auto& w = *r.smallest_unsound;
     nlohmann::ordered_json e;

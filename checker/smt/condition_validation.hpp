@@ -71,6 +71,22 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
 
 inline constexpr const char* kValidationFormat = "gmr.condition-validation";
 nlohmann::ordered_json to_json(const ValidationReport& r);
+// The first members of every gmr.condition-validation document: format, version, condition,
+// engine (omitted when empty), model, n, labels.
+nlohmann::ordered_json validation_header(const std::string& condition, const std::string& engine,
+                                         const ValidationOptions& o);
+// The verdict counts of a report over a list (rules or schemes): holds, fails, vacuous, unsound,
+// incomplete, sound, complete.
+template <class Report>
+void put_verdict_counts(nlohmann::ordered_json& j, const Report& r) {
+  j["holds"] = r.holds;
+  j["fails"] = r.fails;
+  j["vacuous"] = r.vacuous;
+  j["unsound"] = r.unsound;
+  j["incomplete"] = r.incomplete;
+  j["sound"] = r.sound();
+  j["complete"] = r.complete();
+}
 std::string to_text(const ValidationReport& r);
 
 // Merges the JSON reports of the shards of one sweep (same condition, engine, model, labels,

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "checker/scheme_checker.hpp"
+#include "checker/smt/condition_validation.hpp"
+#include "checker/smt/counterexample.hpp"
 
 namespace gmr::smt {
 
@@ -111,6 +113,27 @@ std::string to_text(const SchemeValidationReport& r) {
   std::snprintf(buf, sizeof buf, "\n  time %.3f s\n", r.seconds);
   s << buf;
   return s.str();
+}
+
+nlohmann::ordered_json to_json(const SchemeValidationReport& r, bool sufficient_only) {
+  nlohmann::ordered_json j;
+  j["format"] = "gmr.scheme-condition-validation";
+  j["version"] = 1;
+  j["condition"] = r.condition;
+  j["bound"] = r.bound;
+  j["schemes"] = r.schemes;
+  put_verdict_counts(j, r);
+  j["sufficient_only"] = sufficient_only;
+  if (r.smallest_unsound) {
+    const auto& w = *r.smallest_unsound;
+    nlohmann::ordered_json e;
+    e["scheme"] = w.scheme.name;
+    e["counterexample"] = to_json(*w.result.instance, r.bound, *w.result.result->counterexample);
+    j["smallest_unsound"] = e;
+  }
+  if (r.first_incomplete) j["first_incomplete"] = r.first_incomplete->name;
+  j["seconds"] = r.seconds;
+  return j;
 }
 
 }  // namespace gmr::smt

@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "checker/smt/scheme_verifier.hpp"
 
 namespace gmr::smt {
@@ -60,5 +62,8 @@ SchemeValidationReport validate_scheme_condition(const std::string& name,
                                                  const std::vector<RuleScheme>& schemes,
                                                  unsigned bound);
 std::string to_text(const SchemeValidationReport& r);
+// The "gmr.scheme-condition-validation" document (docs/verify.md); `sufficient_only` as the
+// condition declares it.
+nlohmann::ordered_json to_json(const SchemeValidationReport& r, bool sufficient_only);
 
 }  // namespace gmr::smt

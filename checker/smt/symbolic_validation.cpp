@@ -240,14 +240,7 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
 
 nlohmann::ordered_json to_json(const SymbolicReport& r) {
   const ValidationOptions& o = r.options;
-  nlohmann::ordered_json j;
-  j["format"] = kValidationFormat;
-  j["version"] = 1;
-  j["condition"] = r.condition;
-  j["engine"] = "symbolic";
-  j["model"] = o.kind == MapKind::OMap ? "omap" : "gmap";
-  j["n"] = o.n;
-  j["labels"] = o.labels;
+  nlohmann::ordered_json j = validation_header(r.condition, "symbolic", o);
   j["max_nodes"] = o.max_nodes;
   j["bound"] = o.bound;
   j["rules"] = r.rules;

@@ -18,6 +18,7 @@
 #include "inference/expression_inference.hpp"
 #include "inference/infer.hpp"
 #include "inference/tests/inference_support.hpp"
+#include "inference/tests/polycube_support.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
@@ -32,28 +33,9 @@ using Status = InferredExpression::Status;
 // A named namespace: the tests are built as one unity source with menger_test.cpp.
 namespace menger_positions {
 
-constexpr Dart kVoxelDarts = 48;
-
-// Corner in {0,1}^3 of every local dart of a polycube voxel (see menger_test.cpp).
-std::vector<std::array<int, 3>> local_corners() {
-  std::vector<std::array<int, 3>> corner(kVoxelDarts, {0, 0, 0});
-  for (int a = 0; a < 3; ++a) {
-    Voxel other{0, 0, 0};
-    other[static_cast<size_t>(a)] = 1;
-    const GMap two = make_polycube({{0, 0, 0}, other});
-    for (Dart d = 0; d < kVoxelDarts; ++d)
-      for (Dart e : orbit(two, OrbitType{1, 2}, d))
-        if (!two.is_free(3, e)) corner[d][static_cast<size_t>(a)] = 1;
-  }
-  return corner;
-}
-
-std::vector<Voxel> menger_of(const std::vector<Voxel>& cubes) {
-  std::vector<Voxel> out;
-  for (const Voxel& c : cubes)
-    for (const Voxel& m : menger_voxels(1)) out.push_back({3 * c[0] + m[0], 3 * c[1] + m[1], 3 * c[2] + m[2]});
-  return out;
-}
+using gmr::inference::test::polycube::kVoxelDarts;
+using gmr::inference::test::polycube::local_corners;
+using gmr::inference::test::polycube::menger_of;
 
 // A polycube with vertex positions (one value per <1,2,3>-orbit): `pos(d)` for a dart d.
 template <class Pos>

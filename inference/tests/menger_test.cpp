@@ -12,6 +12,7 @@
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
 #include "inference/tests/inference_support.hpp"
+#include "inference/tests/polycube_support.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
@@ -24,35 +25,9 @@ using namespace gmr::graph;
 using namespace gmr::scheme;
 using namespace gmr::inference::test;
 
-namespace {
-
-constexpr Dart kVoxelDarts = 48;
-
-// Corner (x, y, z in {0,1}) of every local dart of a voxel, found topologically: in the polycube
-// {(0,0,0), e_a}, the darts of voxel 0 whose vertex (<1,2>-orbit in the volume) touches the glued
-// face x_a = 1 are the ones with coordinate a = 1.
-std::vector<std::array<int, 3>> local_corners() {
-  std::vector<std::array<int, 3>> corner(kVoxelDarts, {0, 0, 0});
-  for (int a = 0; a < 3; ++a) {
-    Voxel other{0, 0, 0};
-    other[static_cast<size_t>(a)] = 1;
-    const GMap two = make_polycube({{0, 0, 0}, other});
-    for (Dart d = 0; d < kVoxelDarts; ++d)
-      for (Dart e : orbit(two, OrbitType{1, 2}, d))
-        if (!two.is_free(3, e)) corner[d][static_cast<size_t>(a)] = 1;
-  }
-  return corner;
-}
-
-// The level-1 Menger voxels of every voxel of `cubes`, and the index of each in that list.
-std::vector<Voxel> menger_of(const std::vector<Voxel>& cubes) {
-  std::vector<Voxel> out;
-  for (const Voxel& c : cubes)
-    for (const Voxel& m : menger_voxels(1)) out.push_back({3 * c[0] + m[0], 3 * c[1] + m[1], 3 * c[2] + m[2]});
-  return out;
-}
-
-}  // namespace
+using gmr::inference::test::polycube::kVoxelDarts;
+using gmr::inference::test::polycube::local_corners;
+using gmr::inference::test::polycube::menger_of;
 
 TEST(RuleInference, MengerLevelOneFromTwoGluedCubes) {
   const std::vector<Voxel> cubes{{0, 0, 0}, {0, 0, 1}};

@@ -32,6 +32,18 @@ inline std::vector<std::array<int, 3>> local_corners() {
   return corner;
 }
 
+// Every voxel of `cubes` replaced by the voxels of `pattern` (a side x side x side grid): the
+// pattern voxels of cube k at k * |pattern| + i.
+inline std::vector<Voxel> subdivided(const std::vector<Voxel>& cubes, const std::vector<Voxel>& pattern, int side) {
+  std::vector<Voxel> out;
+  for (const Voxel& c : cubes)
+    for (const Voxel& p : pattern) out.push_back({side * c[0] + p[0], side * c[1] + p[1], side * c[2] + p[2]});
+  return out;
+}
+
+// The level-1 Menger voxels of every voxel of `cubes`.
+inline std::vector<Voxel> menger_of(const std::vector<Voxel>& cubes) { return subdivided(cubes, menger_voxels(1), 3); }
+
 // A subdivision of every voxel of `cubes` by `pattern`, voxels in a side x side x side grid.
 struct PolycubeSubdivision {
   std::vector<Voxel> cubes, pattern, sub;  // sub: pattern voxels of cube k at k * |pattern| + i
@@ -41,9 +53,7 @@ struct PolycubeSubdivision {
 
   PolycubeSubdivision(std::vector<Voxel> cubes_, std::vector<Voxel> pattern_, int side_)
       : cubes(std::move(cubes_)), pattern(std::move(pattern_)), side(side_) {
-    for (const Voxel& c : cubes)
-      for (const Voxel& p : pattern)
-        sub.push_back({side * c[0] + p[0], side * c[1] + p[1], side * c[2] + p[2]});
+    sub = subdivided(cubes, pattern, side);
     before = make_polycube(cubes);
     after = make_polycube(sub);
     std::map<Voxel, Dart> index;

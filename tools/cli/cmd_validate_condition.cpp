@@ -97,29 +97,7 @@ int run_scheme_condition(const ValidateConditionArgs& a, const SchemeCondition* 
   const SchemeValidationReport r =
       builtin ? validate_scheme_condition(*builtin, schemes, a.bound)
               : validate_scheme_condition(name, plugin->evaluate_schemes(schemes, a.eval_timeout), schemes, a.bound);
-  nlohmann::ordered_json j;
-  j["format"] = "gmr.scheme-condition-validation";
-  j["version"] = 1;
-  j["condition"] = r.condition;
-  j["bound"] = r.bound;
-  j["schemes"] = r.schemes;
-  j["holds"] = r.holds;
-  j["fails"] = r.fails;
-  j["vacuous"] = r.vacuous;
-  j["unsound"] = r.unsound;
-  j["incomplete"] = r.incomplete;
-  j["sound"] = r.sound();
-  j["complete"] = r.complete();
-  j["sufficient_only"] = sufficient_only;
-  if (r.smallest_unsound) {
-    const auto& w = *r.smallest_unsound;
-    nlohmann::ordered_json e;
-    e["scheme"] = w.scheme.name;
-    e["counterexample"] = to_json(*w.result.instance, r.bound, *w.result.result->counterexample);
-    j["smallest_unsound"] = e;
-  }
-  if (r.first_incomplete) j["first_incomplete"] = r.first_incomplete->name;
-  j["seconds"] = r.seconds;
+  const nlohmann::ordered_json j = to_json(r, sufficient_only);
   if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
   if (a.json)
     print_json(j);

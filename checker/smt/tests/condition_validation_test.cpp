@@ -26,13 +26,8 @@ ValidationReport run(const std::string& name, int n, MapKind kind, std::vector<i
                      unsigned bound, Engine e = Engine::Smt) {
   const BuiltinCondition* c = find_builtin_condition(name);
   EXPECT_NE(c, nullptr) << name;
-  ValidationOptions o;
-  o.n = n;
-  o.kind = kind;
-  o.labels = std::move(labels);
-  o.max_nodes = max_nodes;
-  o.bound = bound;
-  o.engine = e;
+  const ValidationOptions o{
+      .n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound, .engine = e};
   return validate_condition(name, [&](const std::vector<Rule>& rules) {
     std::vector<bool> out;
     for (const auto& r : rules) out.push_back(c->holds(r));

@@ -20,14 +20,7 @@ using namespace gmr::smt;
 namespace {
 ValidationOptions sym_options(int n, MapKind kind, std::vector<int> labels, int max_nodes,
                               unsigned bound, Engine e = Engine::Enum) {
-  ValidationOptions o;
-  o.n = n;
-  o.kind = kind;
-  o.labels = std::move(labels);
-  o.max_nodes = max_nodes;
-  o.bound = bound;
-  o.engine = e;
-  return o;
+  return {.n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound, .engine = e};
 }
 
 ValidationReport family_report(const std::string& name, const ValidationOptions& o) {
