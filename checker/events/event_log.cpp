@@ -234,8 +234,8 @@ class Recorder {
             const Dart n = name[l_slot(m, b)];
             if (table[l_slot(m, b)] != n) continue;
             log.events.push_back({del ? OrbitEventKind::Deletion : OrbitEventKind::Creation, om,
-                                  del ? std::vector<Dart>{n} : std::vector<Dart>{},
-                                  del ? std::vector<Dart>{} : std::vector<Dart>{n}, EventStatus::Certain});
+                                  del ? DartList{n} : DartList{}, del ? DartList{} : DartList{n},
+                                  EventStatus::Certain});
           }
         continue;
       }
@@ -244,7 +244,7 @@ class Recorder {
       for (uint32_t c : e.left) flagged[c] = true;
       const bool certain = e.certainty == Certainty::Certain;
       for (const InstancePair& p : e.pairs) {
-        const uint32_t ra = *s_.right_of(p.a), rb = *s_.right_of(p.b);
+        const uint32_t ra = st_.right_of[p.a], rb = st_.right_of[p.b];
         for (uint32_t b = 0; b < ns_; ++b) {
           const uint32_t b2 = p.position < 0 ? b : O_->neighbor(b, static_cast<size_t>(p.position));
           if (p.a == p.b && b2 < b) continue;  // the pair (b2, b), already compared
@@ -269,16 +269,16 @@ class Recorder {
     // A capacity hint: merges, splits and (non-)modifications name matched darts.
     log.events.reserve(log.events.size() + s_.left.size() * ns_);
     for (uint32_t v = 0; v < s_.left.size(); ++v) {
-      const auto r = s_.right_of(v);
+      const uint32_t r = st_.right_of[v];
       const bool fl = flagged[te.left.class_of[v]];
       const bool nm = te.residual[te.left.class_of[v]] == PatternEventKind::NonModification;
       for (uint32_t b = 0; b < ns_; ++b) {
         const Dart gn = gname[l_slot(v, b)];
-        if (!r) {
+        if (r == StaticEvents::kDeletedNode) {
           fates.push_back({gn, kNoDart, true, fl, false});
           continue;
         }
-        const Dart hn = hname[l_slot(*r, b)];
+        const Dart hn = hname[l_slot(r, b)];
         const Dart d = M_[l_slot(v, b)];
         bool ch = false;
         for (int i : o.dims()) ch = ch || old_[l_slot(v, b) * dims_ + i] != h.alpha(i, d);
@@ -345,7 +345,8 @@ EventRecorder::EventRecorder(const RuleScheme& s, const StaticEvents& analysis, 
     throw Error(ErrorCode::Usage, "the static events are those of rule \"" + analysis.rule + "\"",
                 "scheme " + s.name);
   for (const auto& t : analysis.orbits)
-    if (t.left.class_of.size() != s.left.size() || t.right.class_of.size() != s.right.size())
+    if (t.left.class_of.size() != s.left.size() || t.right.class_of.size() != s.right.size() ||
+        analysis.right_of.size() != s.left.size())
       throw Error(ErrorCode::Usage, "the static events do not match the scheme's nodes", "scheme " + s.name);
 }
 
