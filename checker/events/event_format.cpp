@@ -141,8 +141,8 @@ ordered_json event_log_to_json(const RuleScheme& s, const StaticEvents& st, cons
     o["traversed"] = l.traversed;
     ordered_json evs = ordered_json::array();
     for (const auto& e : l.events)
-      evs.push_back({{"event", to_string(e.kind)}, {"status", to_string(e.status)}, {"before", e.before},
-                     {"after", e.after}, {"text", e.describe()}});
+      evs.push_back({{"event", to_string(e.kind)}, {"status", to_string(e.status)}, {"before", e.before.vector()},
+                     {"after", e.after.vector()}, {"text", e.describe()}});
     o["events"] = evs;
     ordered_json cs = ordered_json::array();
     for (const auto& c : l.checks)

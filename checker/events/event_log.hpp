@@ -23,7 +23,8 @@
 //     inside the match.
 // Orbits holding no matched dart are not logged: the rule leaves them unchanged (Prop. 3.4.2).
 // Cost: the match and comatch tables times the number of orbit types, plus one traversal per
-// G- or H-orbit of an incomplete pattern orbit (the whole component for <0,..,n>).
+// G- or H-orbit of an incomplete pattern orbit (the whole component for <0,..,n>), however many
+// instance components of however many pattern orbits it holds.
 #pragma once
 #include <string>
 #include <memory>

@@ -35,7 +35,7 @@ std::string orbit_text(DimMask m) {
   return s + ">";
 }
 
-std::string names(char side, DimMask m, const std::vector<Dart>& ds, bool braces) {
+std::string names(char side, DimMask m, const DartList& ds, bool braces) {
   const std::string o = orbit_text(m);
   std::string s = braces ? "{" : "";
   for (size_t k = 0; k < ds.size(); ++k)

@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "checker/events/dart_list.hpp"
 #include "model/core/gmap.hpp"
 #include "model/core/orbit_type.hpp"
 
@@ -35,8 +36,8 @@ const char* to_string(EventStatus s);
 struct OrbitEvent {
   OrbitEventKind kind = OrbitEventKind::Modification;
   DimMask orbit = 0;          // the orbit type's dimensions (a mask: no allocation per event)
-  std::vector<Dart> before;  // G-orbits (lowest ids, increasing); empty for a creation
-  std::vector<Dart> after;   // H-orbits (lowest ids, increasing); empty for a deletion
+  DartList before;  // G-orbits (lowest ids, increasing); empty for a creation
+  DartList after;   // H-orbits (lowest ids, increasing); empty for a deletion
   EventStatus status = EventStatus::Observed;
 
   // The event without its status, for comparisons.

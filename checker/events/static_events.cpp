@@ -250,6 +250,7 @@ StaticEvents analyse(const RuleScheme& s, const std::vector<OrbitType>& types) {
   StaticEvents out;
   out.rule = s.name;
   out.dimension = s.dimension;
+  for (uint32_t v = 0; v < s.left.size(); ++v) out.right_of.push_back(s.right_of(v).value_or(StaticEvents::kDeletedNode));
   const std::vector<OrbitType> ts = types.empty() ? all_orbit_types(s.dimension) : types;
   for (const OrbitType& o : ts) {
     if (o.has_hole()) throw Error(ErrorCode::Range, "an analysed orbit type has no `_`", o.str());

@@ -84,6 +84,10 @@ struct StaticEvents {
   std::string rule;
   int dimension = 0;
   std::vector<OrbitTypeEvents> orbits;
+  // Per L node, its R node (the preserved node of the same name), or kDeletedNode: read at every
+  // application (event_log.hpp), so resolved once per rule.
+  std::vector<uint32_t> right_of;
+  static constexpr uint32_t kDeletedNode = UINT32_MAX;
 };
 
 // The 2^(n+1) orbit types over 0..n, by increasing size then lexicographically (<>, <0>, <1>, ...).
