@@ -41,7 +41,7 @@ struct ValidationOptions {
   size_t random = 0;
   uint64_t seed = 1;
   // Called now and then with (rules done, rules of the shard).
-  std::function<void(size_t, size_t)> progress;
+  std::function<void(size_t, size_t)> progress = nullptr;
 };
 
 struct ValidationWitness {
