@@ -109,6 +109,20 @@ struct Query {
     solver.add(rule.family());
     solver.add(map.constraints());
     solver.add(der.match());
+    if (!cycle_label_set.empty()) solver.add(z3::implies(cycle_untouched(), cycle_holds));
+  }
+  // No added node and no deleted or added arc on the labels of the cycle pairs: C_r holds in every
+  // reading (the completions add preserved arcs only, so there is no optimal path, no rewired
+  // preserved node and no added node, Def. 40), without asking the oracle.
+  z3::expr cycle_untouched() const {
+    z3::expr_vector all(rule.ctx());
+    for (int x = 0; x < rule.slots(); ++x) {
+      all.push_back(!rule.added(x));
+      for (int l : cycle_label_set)
+        for (int y = 0; y < rule.slots(); ++y)
+          all.push_back(!rule.deleted_arc(l, x, y) && !rule.added_arc(l, x, y));
+    }
+    return z3::mk_and(all);
   }
   // The whole condition: Theorems 1-2 and C_r.
   z3::expr whole() const { return theorems12 && cycle_holds; }
