@@ -92,6 +92,7 @@ struct Query {
   CycleReading reading;
   const BuiltinCondition* builtin;  // the whole condition, to cross-check (nullptr: extra given)
   size_t* lemmas;
+  std::function<bool()> out_of_time;  // checked between lemmas
   Query(const ValidationOptions& o, const std::string& prefix, const ThesisParts& parts,
         const ExtraCondition& extra, const CondSpec& cs, size_t* lemma_count)
       : rule(ctx, MapSpec{o.n, o.kind}, o.max_nodes, o.labels),
@@ -135,8 +136,10 @@ struct Query {
   // Theorems 1-2 hold (when they fail, C_r does not matter): a model that disagrees yields the
   // lemma "rules with these node statuses and cycle-label arcs have C_r = verdict" (valid for the
   // whole family, since C_r reads nothing else) and the query is solved again.
+  // z3::unknown: the time limit hit between lemmas.
   z3::check_result solve(const z3::expr_vector& assumptions) {
     while (true) {
+      if (out_of_time && out_of_time()) return z3::unknown;
       if (check(assumptions) == z3::unsat) return z3::unsat;
       if (cycle_label_set.empty()) return z3::sat;
       const z3::model m = solver.get_model();
@@ -171,22 +174,33 @@ z3::expr assume(z3::solver& s, const z3::expr& e, const std::string& name) {
 
 // Sound: no rule satisfying the condition has a breaking match within the bounds.
 void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
-                  const CondSpec& cs) {
+                  const CondSpec& cs, const std::function<bool()>& out_of_time) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
   Query q(o, "", parts, extra, cs, &rep.cycle_lemmas);
+  q.out_of_time = out_of_time;
   q.solver.add(q.der.h_definitions());
   q.solver.add(q.whole());
   q.solver.add(q.der.breaks_consistency());
   z3::expr_vector none(q.ctx);
-  if (q.solve(none) == z3::sat) {
+  const z3::check_result first = q.solve(none);
+  if (first == z3::unknown) {
+    rep.sound_seconds = since(t0);
+    return;
+  }
+  if (first == z3::sat) {
     // The smallest witness: fewest nodes, then fewest darts.
     for (int m = 1; m <= o.max_nodes && !rep.smallest_unsound; ++m)
       for (unsigned b = 1; b <= o.bound && !rep.smallest_unsound; ++b) {
         z3::expr_vector a(q.ctx);
         a.push_back(assume(q.solver, q.rule.nodes_exactly(m), "nodes" + std::to_string(m)));
         a.push_back(assume(q.solver, q.map.size() == q.map.dart(b), "darts" + std::to_string(b)));
-        if (q.solve(a) != z3::sat) continue;
+        const z3::check_result res = q.solve(a);
+        if (res == z3::unknown) {
+          rep.sound_seconds = since(t0);
+          return;
+        }
+        if (res != z3::sat) continue;
         const z3::model model = q.solver.get_model();
         const Rule r = q.rule.extract(model, "unsound");
         std::vector<Node> nodes;
@@ -251,6 +265,7 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
   Query q(o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
+  q.out_of_time = [&] { return o.time_limit > 0 && since(start) > o.time_limit; };
   q.solver.add(!q.whole());
   EncodingOptions eo;
   eo.semantics = Semantics::Consistency;
@@ -265,7 +280,12 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
         rep.complete_seconds = since(t0);
         return;
       }
-      if (q.solve(a) == z3::unsat) break;
+      const z3::check_result res = q.solve(a);
+      if (res == z3::unknown) {
+        rep.complete_seconds = since(t0);
+        return;
+      }
+      if (res == z3::unsat) break;
       const z3::model model = q.solver.get_model();
       const Rule r = q.rule.extract(model, "candidate");
       const VerifyResult v = session.verify(r);
@@ -315,7 +335,8 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   rep.options = opt;
   for (int m = 1; m <= opt.max_nodes; ++m) rep.rules += count_rules(m, opt.labels.size());
   const CondSpec cs{symbolic_cycle_reading(condition), find_builtin_condition(condition)};
-  decide_sound(rep, parts, extra, cs);
+  decide_sound(rep, parts, extra, cs,
+               [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
   decide_complete(rep, parts, extra, cs, start);
   return rep;
 }
