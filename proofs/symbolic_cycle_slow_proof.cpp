@@ -1,8 +1,7 @@
 // The symbolic engine on 2-G-maps (labels 0, 1, 2; checker/smt/symbolic_validation.hpp) against
 // the enumerator rule by rule (checker/smt/condition_validation.hpp, Engine::Enum), on every
 // built-in condition, rules of at most 2 nodes, maps of 4 to 6 darts: the same verdicts, and the
-// symbolic witnesses confirmed by the enumerator. Then the bounded proof of Theorems 1-3 with 3
-// nodes and 8 darts (proofs/README.md).
+// symbolic witnesses confirmed by the enumerator (proofs/README.md).
 #include <string>
 
 #include "checker/smt/rule_verifier.hpp"
@@ -36,9 +35,4 @@ TEST(ProofSlow, Thm1To3_Symbolic_2GMaps_Nodes2_Darts4To6_AgreesWithEnumerator) {
         EXPECT_TRUE(v.applicable && v.preserves) << c.name;
       }
     }
-}
-
-// 2-G-maps, labels 0, 1, 2, 3 nodes (1572721536 rules), 8 darts.
-TEST(ProofSlow, Thm1To3_Symbolic_2GMaps_Labels012_Nodes3_Darts8) {
-  prove_conditions_symbolic(2, MapKind::GMap, {0, 1, 2}, 3, 8);
 }
