@@ -105,8 +105,6 @@ z3::expr SymbolicRule::condition(const ThesisParts& parts) const {
           all.push_back(z3::implies(added_arc(i, x, y), added_arc(i, y, x)));
         }
   }
-  if (!spec_.cycle_pairs().empty())
-    throw std::logic_error("symbolic rules: the cycle condition is not encoded");
   return z3::mk_and(all);
 }
 
@@ -140,6 +138,22 @@ z3::expr SymbolicRule::equals(const z3::model& m) const {
   for (const auto& side : arcs_)
     for (const auto& label : side)
       for (const auto& e : label) fix(e);
+  return z3::mk_and(all);
+}
+
+z3::expr SymbolicRule::equals_on(const z3::model& m, const std::vector<int>& labels) const {
+  z3::expr_vector all(ctx_);
+  auto fix = [&](const z3::expr& e) { all.push_back(e == m.eval(e, true)); };
+  for (int x = 0; x < slots_; ++x) {
+    fix(in_left_[x]);
+    fix(in_right_[x]);
+  }
+  for (int i : labels) {
+    const int k = label_index(i);
+    if (k < 0) continue;  // no arcs on that label
+    for (const auto& side : arcs_)
+      for (const auto& e : side[k]) fix(e);
+  }
   return z3::mk_and(all);
 }
 

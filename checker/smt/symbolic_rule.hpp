@@ -24,8 +24,8 @@
 //   O_r(i)         Def. 37, on the involutive labels: every deleted (added) i-arc x -> y has the
 //                  reverse y -> x, deleted (added) too (a loop is its own reverse; the reverse is
 //                  unique in a partial injection).
-// The cycle condition C_r (Def. 40, on the model completion) is not encoded: the engine refuses
-// models with cycle pairs.
+// The cycle condition C_r (Def. 40) is not a formula here: symbolic_validation.hpp decides it
+// lazily, the concrete checker being the oracle on the rule's nodes and cycle-label arcs.
 #pragma once
 #include <z3++.h>
 
@@ -70,13 +70,16 @@ class SymbolicRule {
   // The rule has exactly m nodes (m existing slots).
   z3::expr nodes_exactly(int m) const;
   // The thesis conditions of Theorems 1-2 for every label of the model (parts switched off for the
-  // wrong variants; `completion` has no effect without cycle pairs).
+  // wrong variants; `completion` has no effect here: the cycle condition is not part of it).
   z3::expr condition(const ThesisParts& parts) const;
 
   // The concrete rule of a model (nodes named a, b, c, ... after their slots, as rule_space.hpp).
   rewrite::Rule extract(const z3::model& m, const std::string& name) const;
   // "The rule variables equal those of the concrete rule r of the model" (to block or fix it).
   z3::expr equals(const z3::model& m) const;
+  // "The node flags and the arcs on `labels` equal those of the rule of the model" (the other
+  // labels' arcs are free).
+  z3::expr equals_on(const z3::model& m, const std::vector<int>& labels) const;
   // "The rule variables describe r" (r's nodes named after slots a, b, c, ..., as rule_space.hpp
   // names them); Error(Usage) if r has another node name or an arc on a label outside `labels`.
   z3::expr describes(const rewrite::Rule& r) const;

@@ -1,11 +1,13 @@
 #include "checker/smt/symbolic_validation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
+#include "checker/rule_check.hpp"
 #include "checker/smt/counterexample.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/symbolic_derivation.hpp"
@@ -16,14 +18,32 @@ namespace gmr::smt {
 using graph::Node;
 
 std::optional<ThesisParts> symbolic_condition_parts(const std::string& name) {
-  // Without cycle pairs the completion has no effect: "thesis-per-constraint" and
-  // "wrong-cycle-without-completion" coincide with "thesis" there.
+  // The cycle reading of a name is symbolic_cycle_reading's; without cycle pairs
+  // "thesis-per-constraint" and "wrong-cycle-without-completion" coincide with "thesis".
   if (name == "thesis" || name == "thesis-per-constraint" ||
       name == "wrong-cycle-without-completion")
     return ThesisParts{};
   if (name == "wrong-incident-without-dangling") return ThesisParts{.dangling = false};
   if (name == "wrong-orientation-dropped") return ThesisParts{.orientation = false};
   return std::nullopt;
+}
+
+CycleReading symbolic_cycle_reading(const std::string& name) {
+  if (name == "thesis-per-constraint") return CycleReading::IjCompletion;
+  if (name == "wrong-cycle-without-completion") return CycleReading::AsWritten;
+  return CycleReading::ModelCompletion;  // check_rule, and thesis_conditions' other variants
+}
+
+bool cycle_condition(const Rule& r, CycleReading reading) {
+  const auto pairs = r.spec().cycle_pairs();
+  std::vector<checker::Diagnostic> d;
+  const Rule c = reading == CycleReading::ModelCompletion ? checker::complete_for_model(r) : r;
+  for (auto [i, j] : pairs) {
+    const bool ok = reading == CycleReading::AsWritten ? checker::check_cycle_as_written(c, i, j, d)
+                                                       : checker::check_cycle(c, i, j, d);
+    if (!ok) return false;
+  }
+  return true;
 }
 
 namespace {
@@ -37,28 +57,102 @@ unsigned numeral(const z3::expr& e) {
   return v;
 }
 
+z3::expr condition(const SymbolicRule& rule, const ThesisParts& parts,
+                   const ExtraCondition& extra) {
+  return extra ? rule.condition(parts) && extra(rule) : rule.condition(parts);
+}
+
+// The labels of the model's cycle pairs: C_r reads the node statuses and these labels' arcs only
+// (the ij-completion, the O-completion of these labels, optimal paths and coherence, Defs. 38-40).
+std::vector<int> cycle_labels(const MapSpec& spec) {
+  std::vector<int> out;
+  for (auto [i, j] : spec.cycle_pairs())
+    for (int l : {i, j})
+      if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
+  return out;
+}
+
+// How the named condition reads C_r, and the condition itself (for the cross-check).
+struct CondSpec {
+  CycleReading reading;
+  const BuiltinCondition* builtin;
+};
+
 // The common part of both queries: one context, the symbolic rule, a symbolic map and its
-// derivation.
+// derivation; the condition is the formula of Theorems 1-2 (`theorems12`) and, with cycle pairs,
+// the Boolean `cycle_holds` standing for C_r, which solve() ties to the concrete checker lazily.
 struct Query {
   z3::context ctx;
   SymbolicRule rule;
   MapEncoding map;
   SymbolicDerivation der;
   z3::solver solver;
-  Query(const ValidationOptions& o, const std::string& prefix)
+  z3::expr theorems12, cycle_holds;
+  std::vector<int> cycle_label_set;
+  CycleReading reading;
+  const BuiltinCondition* builtin;  // the whole condition, to cross-check (nullptr: extra given)
+  size_t* lemmas;
+  std::function<bool()> out_of_time;  // checked between lemmas
+  Query(const ValidationOptions& o, const std::string& prefix, const ThesisParts& parts,
+        const ExtraCondition& extra, const CondSpec& cs, size_t* lemma_count)
       : rule(ctx, MapSpec{o.n, o.kind}, o.max_nodes, o.labels),
         map(ctx, MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes),
             DartSort::BitVec, prefix),
         der(map, rule, prefix),
-        solver(ctx) {
+        solver(ctx),
+        theorems12(condition(rule, parts, extra)),
+        cycle_holds(MapSpec{o.n, o.kind}.cycle_pairs().empty() ? ctx.bool_val(true)
+                                                               : ctx.bool_const("cycle_holds")),
+        cycle_label_set(cycle_labels(MapSpec{o.n, o.kind})),
+        reading(cs.reading),
+        builtin(extra ? nullptr : cs.builtin),
+        lemmas(lemma_count) {
     solver.add(rule.family());
     solver.add(map.constraints());
     solver.add(der.match());
+    if (!cycle_label_set.empty()) solver.add(z3::implies(cycle_untouched(), cycle_holds));
   }
+  // No added node and no deleted or added arc on the labels of the cycle pairs: C_r holds in every
+  // reading (the completions add preserved arcs only, so there is no optimal path, no rewired
+  // preserved node and no added node, Def. 40), without asking the oracle.
+  z3::expr cycle_untouched() const {
+    z3::expr_vector all(rule.ctx());
+    for (int x = 0; x < rule.slots(); ++x) {
+      all.push_back(!rule.added(x));
+      for (int l : cycle_label_set)
+        for (int y = 0; y < rule.slots(); ++y)
+          all.push_back(!rule.deleted_arc(l, x, y) && !rule.added_arc(l, x, y));
+    }
+    return z3::mk_and(all);
+  }
+  // The whole condition: Theorems 1-2 and C_r.
+  z3::expr whole() const { return theorems12 && cycle_holds; }
   z3::check_result check(const z3::expr_vector& assumptions) {
     const z3::check_result r = solver.check(assumptions);
     if (r == z3::unknown) throw std::logic_error("Z3 returned unknown: " + solver.reason_unknown());
     return r;
+  }
+  // check() whose models give `cycle_holds` the concrete checker's verdict on their rule whenever
+  // Theorems 1-2 hold (when they fail, C_r does not matter): a model that disagrees yields the
+  // lemma "rules with these node statuses and cycle-label arcs have C_r = verdict" (valid for the
+  // whole family, since C_r reads nothing else) and the query is solved again.
+  // z3::unknown: the time limit hit between lemmas.
+  z3::check_result solve(const z3::expr_vector& assumptions) {
+    while (true) {
+      if (out_of_time && out_of_time()) return z3::unknown;
+      if (check(assumptions) == z3::unsat) return z3::unsat;
+      if (cycle_label_set.empty()) return z3::sat;
+      const z3::model m = solver.get_model();
+      if (!m.eval(theorems12, true).is_true()) return z3::sat;
+      const Rule r = rule.extract(m, "oracle");
+      const bool verdict = cycle_condition(r, reading);
+      if (builtin && builtin->holds(r) != verdict)
+        throw std::logic_error("the cycle oracle disagrees with condition " + builtin->name +
+                               " on " + rule_text(r) + " (encoding error)");
+      if (m.eval(cycle_holds, true).is_true() == verdict) return z3::sat;
+      solver.add(z3::implies(rule.equals_on(m, cycle_label_set), cycle_holds == ctx.bool_val(verdict)));
+      ++*lemmas;
+    }
   }
   GMap map_of(const z3::model& m) const {
     const unsigned size = numeral(m.eval(map.size(), true));
@@ -71,11 +165,6 @@ struct Query {
   }
 };
 
-z3::expr condition(const SymbolicRule& rule, const ThesisParts& parts,
-                   const ExtraCondition& extra) {
-  return extra ? rule.condition(parts) && extra(rule) : rule.condition(parts);
-}
-
 // An assumption literal standing for `e` (so that bounds can be lowered without popping).
 z3::expr assume(z3::solver& s, const z3::expr& e, const std::string& name) {
   const z3::expr p = s.ctx().bool_const(name.c_str());
@@ -84,22 +173,34 @@ z3::expr assume(z3::solver& s, const z3::expr& e, const std::string& name) {
 }
 
 // Sound: no rule satisfying the condition has a breaking match within the bounds.
-void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra) {
+void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
+                  const CondSpec& cs, const std::function<bool()>& out_of_time) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
-  Query q(o, "");
+  Query q(o, "", parts, extra, cs, &rep.cycle_lemmas);
+  q.out_of_time = out_of_time;
   q.solver.add(q.der.h_definitions());
-  q.solver.add(condition(q.rule, parts, extra));
+  q.solver.add(q.whole());
   q.solver.add(q.der.breaks_consistency());
   z3::expr_vector none(q.ctx);
-  if (q.check(none) == z3::sat) {
+  const z3::check_result first = q.solve(none);
+  if (first == z3::unknown) {
+    rep.sound_seconds = since(t0);
+    return;
+  }
+  if (first == z3::sat) {
     // The smallest witness: fewest nodes, then fewest darts.
     for (int m = 1; m <= o.max_nodes && !rep.smallest_unsound; ++m)
       for (unsigned b = 1; b <= o.bound && !rep.smallest_unsound; ++b) {
         z3::expr_vector a(q.ctx);
         a.push_back(assume(q.solver, q.rule.nodes_exactly(m), "nodes" + std::to_string(m)));
         a.push_back(assume(q.solver, q.map.size() == q.map.dart(b), "darts" + std::to_string(b)));
-        if (q.check(a) != z3::sat) continue;
+        const z3::check_result res = q.solve(a);
+        if (res == z3::unknown) {
+          rep.sound_seconds = since(t0);
+          return;
+        }
+        if (res != z3::sat) continue;
         const z3::model model = q.solver.get_model();
         const Rule r = q.rule.extract(model, "unsound");
         std::vector<Node> nodes;
@@ -159,11 +260,13 @@ void refine(Query& q, const ValidationOptions& o, const GMap& G, size_t t,
 
 // Complete: every rule failing the condition and matching some map has a breaking match.
 void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
+                     const CondSpec& cs,
                      std::chrono::steady_clock::time_point start) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
-  Query q(o, "w_");  // the witness map: the rule matches it (not vacuous)
-  q.solver.add(!condition(q.rule, parts, extra));
+  Query q(o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
+  q.out_of_time = [&] { return o.time_limit > 0 && since(start) > o.time_limit; };
+  q.solver.add(!q.whole());
   EncodingOptions eo;
   eo.semantics = Semantics::Consistency;
   SmtSession session(MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes), eo);
@@ -177,7 +280,12 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
         rep.complete_seconds = since(t0);
         return;
       }
-      if (q.check(a) == z3::unsat) break;
+      const z3::check_result res = q.solve(a);
+      if (res == z3::unknown) {
+        rep.complete_seconds = since(t0);
+        return;
+      }
+      if (res == z3::unsat) break;
       const z3::model model = q.solver.get_model();
       const Rule r = q.rule.extract(model, "candidate");
       const VerifyResult v = session.verify(r);
@@ -219,13 +327,6 @@ SymbolicReport validate_symbolic(const std::string& condition, const ValidationO
 SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts,
                                  const ExtraCondition& extra, const ValidationOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
-  const MapSpec spec{opt.n, opt.kind};
-  if (!spec.cycle_pairs().empty())
-    throw Error(
-        ErrorCode::Usage,
-        "the symbolic engine does not encode the cycle condition: models without cycle pairs only "
-        "(1-G-maps, 2-O-maps)",
-        "--engine symbolic");
   if (opt.shards != 1 || opt.random != 0)
     throw Error(ErrorCode::Usage, "--shard and --random do not apply to the symbolic engine",
                 "--engine symbolic");
@@ -233,8 +334,10 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   rep.condition = condition;
   rep.options = opt;
   for (int m = 1; m <= opt.max_nodes; ++m) rep.rules += count_rules(m, opt.labels.size());
-  decide_sound(rep, parts, extra);
-  decide_complete(rep, parts, extra, start);
+  const CondSpec cs{symbolic_cycle_reading(condition), find_builtin_condition(condition)};
+  decide_sound(rep, parts, extra, cs,
+               [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
+  decide_complete(rep, parts, extra, cs, start);
   return rep;
 }
 
@@ -259,6 +362,7 @@ nlohmann::ordered_json to_json(const SymbolicReport& r) {
   if (r.smallest_incomplete)
     j["smallest_incomplete"] = {{"rule", io::rule_to_json(r.smallest_incomplete->rule)}};
   j["refinements"] = r.refinements;
+  j["cycle_lemmas"] = r.cycle_lemmas;
   j["sound_seconds"] = r.sound_seconds;
   j["complete_seconds"] = r.complete_seconds;
   j["seconds"] = r.sound_seconds + r.complete_seconds;
@@ -302,6 +406,13 @@ std::string to_text(const SymbolicReport& r) {
     s << (r.complete() ? "yes" : "NO");
   }
   std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
+  s << buf;
+  if (!MapSpec{o.n, o.kind}.cycle_pairs().empty()) {
+    std::snprintf(buf, sizeof buf, "\n  cycle condition: %zu lemmas from the concrete checker",
+                  r.cycle_lemmas);
+  } else {
+    buf[0] = 0;
+  }
   s << buf;
   if (r.smallest_incomplete)
     s << "\n    smallest: " << rule_text(r.smallest_incomplete->rule)

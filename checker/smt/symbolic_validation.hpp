@@ -17,8 +17,17 @@
 //             (checked; an encoding error otherwise). UNSAT: complete for the whole family. A
 //             candidate that the concrete engine finds preserving is the witness (fewest nodes: the
 //             node count is raised one by one, by assumptions).
-// Conditions: the built-in ones whose parts are Theorems 1-2 (symbolic_condition_parts); models
-// with cycle pairs are refused (the cycle condition is not encoded symbolically).
+// Conditions: the built-in ones. Theorems 1-2 are formulas on the symbolic rule
+// (symbolic_rule.hpp). The cycle condition C_r (Defs. 38-40, read as the condition reads it: on the
+// model completion, on the ij-completion, or as written) is a Boolean `cycle_holds` of both
+// queries, tied lazily to the concrete checker (checker/cycle_check.cpp), which is the oracle:
+// whenever a model satisfies Theorems 1-2 and its `cycle_holds` differs from the checker's verdict
+// on its rule, the lemma "every rule with these node statuses and these arcs on the labels of
+// the cycle pairs has C_r = verdict" is added and the query solved again. The lemma is valid for
+// the whole family, since C_r reads nothing else (the completions and optimal paths of labels i, j
+// use the arcs of i and j only); every final model therefore carries the true C_r of its rule, and
+// UNSAT is a proof for the whole family. The number of lemmas is reported; each oracle verdict is
+// cross-checked with the built-in condition itself.
 #pragma once
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -34,6 +43,14 @@ namespace gmr::smt {
 // The parts of a built-in condition for the symbolic engine; nullopt if it has no symbolic form.
 std::optional<ThesisParts> symbolic_condition_parts(const std::string& name);
 
+// How a built-in condition reads C_r: on the model completion (checker::check_rule), on the
+// ij-completion of each pair (thesis-per-constraint), or on the rule as written (the wrong variant
+// without ij-completion).
+enum class CycleReading { ModelCompletion, IjCompletion, AsWritten };
+CycleReading symbolic_cycle_reading(const std::string& name);
+// C_r on every cycle pair of the rule's model, in that reading (true without cycle pairs).
+bool cycle_condition(const Rule& r, CycleReading reading);
+
 struct SymbolicReport {
   std::string condition;
   ValidationOptions options;  // n, kind, labels, max_nodes, bound, time_limit
@@ -41,12 +58,13 @@ struct SymbolicReport {
   bool sound_decided = false, complete_decided = false;  // false: the time limit hit first
   std::optional<ValidationWitness> smallest_unsound, smallest_incomplete;
   size_t refinements = 0;  // maps added to the completeness query
+  size_t cycle_lemmas = 0; // verdicts of the concrete cycle checker added to the queries
   double sound_seconds = 0, complete_seconds = 0;
   bool sound() const { return sound_decided && !smallest_unsound; }
   bool complete() const { return complete_decided && !smallest_incomplete; }
 };
 
-// Error(Usage) for a condition without symbolic form or a model with cycle pairs.
+// Error(Usage) for a condition without symbolic form.
 SymbolicReport validate_symbolic(const std::string& condition, const ValidationOptions& opt);
 // The condition "parts, and extra(rule) when given" (a further formula on the symbolic rule: the
 // tests use it to build a condition that is too strong).

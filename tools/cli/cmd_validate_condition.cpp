@@ -214,7 +214,7 @@ void register_validate_condition(CLI::App& app) {
   sub->add_option("--labels", args->labels, "Labels carrying arcs in the rules, e.g. 0,1 (default: all of the model)");
   sub->add_option("--max-nodes", args->max_nodes, "Rules of at most this many nodes (1..4, default 2)");
   sub->add_option("--bound,-k", args->bound, "Maps of at most this many darts (default 4)");
-  sub->add_option("--engine", args->engine, "smt (default), enum, or symbolic (every rule of the family in one query per direction; built-in conditions, models without cycle pairs)");
+  sub->add_option("--engine", args->engine, "smt (default), enum, or symbolic (every rule of the family in one query per direction; built-in conditions; the cycle condition through the checker as oracle)");
   sub->add_option("--random", args->random, "Also this many random rules of max-nodes+1 or +2 nodes (default 0)");
   sub->add_option("--seed", args->seed, "Seed of the random rules (default 1)");
   sub->add_option("--shard", args->shard, "K/M: the rules whose index is K mod M (default 0/1)");
