@@ -28,11 +28,12 @@ if [ "${GMR_SKIP_ASAN:-0}" != 1 ]; then
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   # Sweeps that compute verdicts over large families run in the release pass only: the
   # checker/semantics equivalence sweep (pure enumeration, 200-340 s under ASan), the SMT engine
-  # comparisons and the bounded proofs (Z3-bound, about 10 minutes of CPU under ASan). Their code
+  # comparisons, the symbolic cycle-condition sweeps (57 s each under ASan) and the bounded proofs
+  # (Z3-bound, about 10 minutes of CPU under ASan). Their code
   # paths run under ASan through the concrete-rule properties, the fixtures, the condition
   # validation tests and the gmr verify CLI tests. The proofs are not even built there.
   # The `slow` tests, which neither pass runs, are built in the release pass only.
-  run "$root/build-asan" "gmr_checker_test\.Equivalence\.|gmr_smt_test\.(EngineComparison|RuleVerifier)\." -DGMR_SANITIZE=ON -DGMR_PROOFS=OFF -DCMAKE_BUILD_TYPE=Debug \
+  run "$root/build-asan" "gmr_checker_test\.Equivalence\.|gmr_smt_test\.(EngineComparison|RuleVerifier)\.|gmr_smt_test\.SymbolicValidation\.Cycle(ModelsAgreeWithEnumerator|OracleReadsOnlyCycleLabels)" -DGMR_SANITIZE=ON -DGMR_PROOFS=OFF -DCMAKE_BUILD_TYPE=Debug \
     -DGMR_SLOW_TESTS=OFF
 fi
 echo "== gmr tests: all passed =="
