@@ -96,6 +96,19 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
   return rep;
 }
 
+std::string unsound_witness_text(const ValidationWitness& w) {
+  std::ostringstream s;
+  const auto& c = *w.counterexample;
+  s << "\n    smallest: " << rule_text(w.rule) << "\n    on a map of " << c.G.size() << " darts, match";
+  for (graph::Node v = 0; v < w.rule.left().num_nodes(); ++v)
+    s << " " << w.rule.left().name(v) << "->" << c.match.node[v];
+  if (c.gluing_fails)
+    s << ": the gluing (dangling) condition fails";
+  else
+    s << ": H breaks " << c.violations.front().describe(c.H);
+  return s.str();
+}
+
 nlohmann::ordered_json validation_header(const std::string& condition, const std::string& engine,
                                          const ValidationOptions& o) {
   nlohmann::ordered_json j;
@@ -219,17 +232,7 @@ std::string to_text(const ValidationReport& r) {
                   << " nodes (seed " << o.seed << ")\n";
   s << "  condition holds on " << r.holds << ", fails on " << r.fails << "; vacuous (match no map) " << r.vacuous << "\n";
   s << "  sound: " << (r.sound() ? "yes" : "NO") << " (" << r.unsound << " unsound rules)";
-  if (r.smallest_unsound) {
-    const auto& w = *r.smallest_unsound;
-    const auto& c = *w.counterexample;
-    s << "\n    smallest: " << rule_text(w.rule) << "\n    on a map of " << c.G.size() << " darts, match";
-    for (graph::Node v = 0; v < w.rule.left().num_nodes(); ++v)
-      s << " " << w.rule.left().name(v) << "->" << c.match.node[v];
-    if (c.gluing_fails)
-      s << ": the gluing (dangling) condition fails";
-    else
-      s << ": H breaks " << c.violations.front().describe(c.H);
-  }
+  if (r.smallest_unsound) s << unsound_witness_text(*r.smallest_unsound);
   s << "\n  complete: " << (r.complete() ? "yes" : "NO") << " (" << r.incomplete << " incomplete rules)";
   if (r.smallest_incomplete)
     s << "\n    smallest: " << rule_text(r.smallest_incomplete->rule)

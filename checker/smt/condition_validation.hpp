@@ -71,6 +71,9 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
 
 inline constexpr const char* kValidationFormat = "gmr.condition-validation";
 nlohmann::ordered_json to_json(const ValidationReport& r);
+// The text lines of an unsoundness witness: the rule, the map size, the match and the broken
+// constraint (or the failing gluing condition).
+std::string unsound_witness_text(const ValidationWitness& w);
 // The first members of every gmr.condition-validation document: format, version, condition,
 // engine (omitted when empty), model, n, labels.
 nlohmann::ordered_json validation_header(const std::string& condition, const std::string& engine,

@@ -387,18 +387,7 @@ std::string to_text(const SymbolicReport& r) {
     std::snprintf(buf, sizeof buf, " (%.3f s)", r.sound_seconds);
     s << buf;
   }
-  if (r.smallest_unsound) {
-    const auto& w = *r.smallest_unsound;
-    const auto& c = *w.counterexample;
-    s << "\n    smallest: " << rule_text(w.rule) << "\n    on a map of " << c.G.size()
-      << " darts, match";
-    for (graph::Node v = 0; v < w.rule.left().num_nodes(); ++v)
-      s << " " << w.rule.left().name(v) << "->" << c.match.node[v];
-    if (c.gluing_fails)
-      s << ": the gluing (dangling) condition fails";
-    else
-      s << ": H breaks " << c.violations.front().describe(c.H);
-  }
+  if (r.smallest_unsound) s << unsound_witness_text(*r.smallest_unsound);
   s << "\n  complete: ";
   if (!r.complete_decided) {
     s << "undecided (time limit hit)";

@@ -66,6 +66,19 @@ std::vector<int> parse_labels(const std::string& text) {
   return out;
 }
 
+// Writes a validation report (-o, --json or text) and returns the exit code: 0 when sound and
+// complete.
+template <class Report>
+int report(const ValidateConditionArgs& a, const Report& rep) {
+  const auto j = to_json(rep);
+  if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
+  if (a.json)
+    print_json(j);
+  else
+    std::cout << to_text(rep);
+  return rep.sound() && rep.complete() ? kExitOk : kExitNegative;
+}
+
 // --engine symbolic: one query per direction for the whole family (symbolic_validation.hpp).
 int run_symbolic(const ValidateConditionArgs& a, ValidationOptions o) {
   if (!a.plugin.empty())
@@ -74,13 +87,7 @@ int run_symbolic(const ValidateConditionArgs& a, ValidationOptions o) {
     throw Error(ErrorCode::Usage, "unknown condition '" + a.condition + "' (--list: the names)", "--condition");
   o.progress = nullptr;
   const SymbolicReport rep = validate_symbolic(a.condition, o);
-  const auto j = to_json(rep);
-  if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
-  if (a.json)
-    print_json(j);
-  else
-    std::cout << to_text(rep);
-  return rep.sound() && rep.complete() ? kExitOk : kExitNegative;
+  return report(a, rep);
 }
 
 // A scheme condition (scheme_conditions.hpp; built in, or a plug-in's optional entry point) on the
@@ -190,13 +197,7 @@ int run_validate_condition(const ValidateConditionArgs& a) {
       return out;
     }, o);
   }
-  const auto j = to_json(rep);
-  if (!a.output.empty()) write_output(a.output, j.dump(2) + "\n");
-  if (a.json)
-    print_json(j);
-  else
-    std::cout << to_text(rep);
-  return rep.sound() && rep.complete() ? kExitOk : kExitNegative;
+  return report(a, rep);
 }
 
 }  // namespace

@@ -7,32 +7,20 @@
 #include <filesystem>
 
 #include "model/expr/tests/subdivision_oracle.hpp"
+#include "model/testing/cgal_data.hpp"
 
 using namespace gmr::expr::oracle;
 namespace fs = std::filesystem;
 
 namespace {
 
-const char* kArchive = "/usr/share/doc/libcgal-dev/data.tar.gz";
-
-// The path of data/meshes/<name>.off unpacked from CGAL's archive, or "" when the archive is absent.
-std::string cgal_mesh(const std::string& name) {
-  if (!fs::exists(kArchive)) return {};
-  const fs::path dir = fs::current_path() / "cgal-data";
-  const fs::path off = dir / "data" / "meshes" / (name + ".off");
-  if (!fs::exists(off)) {
-    fs::create_directories(dir);
-    const std::string cmd = "tar xzf " + std::string(kArchive) + " -C '" + dir.string() + "' data/meshes/" + name + ".off";
-    if (std::system(cmd.c_str()) != 0) return {};
-  }
-  return off.string();
-}
+using gmr::testing::cgal_mesh;
 
 #define REQUIRE_MESH(var, name)                                                                       \
   const std::string var = cgal_mesh(name);                                                           \
   if (var.empty())                                                                                   \
   GTEST_SKIP() << "CGAL's data meshes are not installed: Debian package libcgal-demo ("             \
-               << kArchive << "), installed by tools/setup.sh"
+               << gmr::testing::kCgalDataArchive << "), installed by tools/setup.sh"
 
 }  // namespace
 

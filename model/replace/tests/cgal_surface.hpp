@@ -15,24 +15,11 @@
 #include <string>
 
 #include "model/replace/adaptive_hex_meshing.hpp"
+#include "model/testing/cgal_data.hpp"
 
 namespace gmr::replace::testing {
 
-inline const char* kCgalArchive = "/usr/share/doc/libcgal-dev/data.tar.gz";
-
-// The path of data/meshes/<name>.off unpacked from CGAL's archive, or "" when the archive is absent.
-inline std::string cgal_mesh(const std::string& name) {
-  namespace fs = std::filesystem;
-  if (!fs::exists(kCgalArchive)) return {};
-  const fs::path dir = fs::current_path() / "cgal-data";
-  const fs::path off = dir / "data" / "meshes" / (name + ".off");
-  if (!fs::exists(off)) {
-    fs::create_directories(dir);
-    const std::string cmd = "tar xzf " + std::string(kCgalArchive) + " -C '" + dir.string() + "' data/meshes/" + name + ".off";
-    if (std::system(cmd.c_str()) != 0) return {};
-  }
-  return off.string();
-}
+using gmr::testing::cgal_mesh;
 
 class CgalSurface {
  public:
