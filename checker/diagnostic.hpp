@@ -42,7 +42,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/graph/elem_status.hpp"
 
 namespace gmr::checker {

@@ -8,7 +8,7 @@ using namespace gmr::graph;
 using namespace gmr::rewrite;
 
 std::string SemanticWitness::describe(const Rule& r, const MapFamily& f) const {
-  const GMap& g = f.maps[map_index];
+  const Map& g = f.maps[map_index];
   std::string s = "map #" + std::to_string(map_index) + " (" + std::to_string(g.size()) + " darts;";
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
     s += std::string(" ") + (g.is_omap() ? "beta" : "alpha") + std::to_string(i) + "=[";

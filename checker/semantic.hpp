@@ -17,7 +17,7 @@
 #include "model/graph/constraints.hpp"
 #include "model/graph/dgraph.hpp"
 #include "model/graph/map_family.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/rewrite/match.hpp"
 #include "model/rewrite/rule.hpp"
 

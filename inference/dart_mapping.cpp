@@ -29,7 +29,7 @@ OrbitType read_orbit(const JsonAt& at) {
 }
 }  // namespace
 
-DartMapping identity_mapping(const GMap& before, const GMap& after) {
+DartMapping identity_mapping(const Map& before, const Map& after) {
   DartMapping m;
   before.for_each_dart([&](Dart d) {
     if (after.alive(d)) m.pairs.emplace_back(d, d);
@@ -99,7 +99,7 @@ std::string mapping_to_json_text(const DartMapping& m) {
   return dump_json(j);
 }
 
-std::vector<std::pair<Dart, Dart>> expand_mapping(const GMap& before, const GMap& after,
+std::vector<std::pair<Dart, Dart>> expand_mapping(const Map& before, const Map& after,
                                                    const DartMapping& m) {
   // Every pair with its source: pairs[s] for s < pairs.size(), else orbits[s - pairs.size()] (the
   // place named in errors, formatted only when one is raised).
@@ -156,7 +156,7 @@ std::vector<std::pair<Dart, Dart>> expand_mapping(const GMap& before, const GMap
   return uniq;
 }
 
-JointGraph joint_from_pair(const GMap& before, const GMap& after, const DartMapping& m, JointIndex* index) {
+JointGraph joint_from_pair(const Map& before, const Map& after, const DartMapping& m, JointIndex* index) {
   if (before.is_omap() || after.is_omap())
     throw Error(ErrorCode::Usage, "rule inference works on G-maps, not O-maps");
   if (before.dimension() != after.dimension())
@@ -165,7 +165,7 @@ JointGraph joint_from_pair(const GMap& before, const GMap& after, const DartMapp
   const auto pairs = expand_mapping(before, after, m);
   const int n = before.dimension();
   // Selected darts (all live darts without a selection).
-  auto selected = [](const GMap& g, const std::optional<std::vector<Dart>>& sel, const char* key) {
+  auto selected = [](const Map& g, const std::optional<std::vector<Dart>>& sel, const char* key) {
     std::vector<uint8_t> in(g.capacity(), 0);
     if (!sel) {
       g.for_each_dart([&](Dart d) { in[d] = 1; });
@@ -195,7 +195,7 @@ JointGraph joint_from_pair(const GMap& before, const GMap& after, const DartMapp
   after.for_each_dart([&](Dart d) {
     if (sa[d]) ia[d] = j.add_dart(Side::R, d);
   });
-  auto copy = [&](const GMap& g, const std::vector<uint32_t>& idx) {
+  auto copy = [&](const Map& g, const std::vector<uint32_t>& idx) {
     g.for_each_dart([&](Dart d) {
       if (idx[d] == kUndefined) return;
       for (int i = 0; i <= n; ++i) {

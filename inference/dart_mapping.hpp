@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "inference/joint_graph.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/core/orbit_type.hpp"
 
 namespace gmr::inference {
@@ -47,7 +47,7 @@ struct DartMapping {
 };
 
 // Every dart id alive in both maps, paired with itself.
-DartMapping identity_mapping(const GMap& before, const GMap& after);
+DartMapping identity_mapping(const Map& before, const Map& after);
 
 DartMapping parse_mapping(std::string_view text, const std::string& source = {});
 DartMapping read_mapping_file(const std::filesystem::path& path);
@@ -56,14 +56,14 @@ std::string mapping_to_json_text(const DartMapping& m);
 // The dart pairs of m, orbit pairs expanded by Alg. 5, sorted by before dart. Throws Error(Schema)
 // (located "pairs[k]" / "orbits[k]") for a dead dart, a dart paired twice on either side, or
 // orbits that are not isomorphic.
-std::vector<std::pair<Dart, Dart>> expand_mapping(const GMap& before, const GMap& after,
+std::vector<std::pair<Dart, Dart>> expand_mapping(const Map& before, const Map& after,
                                                    const DartMapping& m);
 
 // κ(G, H) (thesis Def. 36 on maps): the (selected) darts of G on side L, then those of H on side R,
 // links copied (undefined towards unselected darts), one κ-link per mapped pair. Both maps must be
 // G-maps of the same dimension. Throws Error(Schema) for a selected dart that does not exist or a
 // mapped dart that is not selected ("before_selection[k]", "pairs[k]").
-JointGraph joint_from_pair(const GMap& before, const GMap& after, const DartMapping& m,
+JointGraph joint_from_pair(const Map& before, const Map& after, const DartMapping& m,
                            JointIndex* index = nullptr);
 
 }  // namespace gmr::inference

@@ -50,7 +50,7 @@ Q rationalize(double x) {
 }
 
 // Per dart: the index of its <mask>-orbit.
-std::vector<uint32_t> orbit_ids(const GMap& g, DimMask mask) {
+std::vector<uint32_t> orbit_ids(const Map& g, DimMask mask) {
   std::vector<uint32_t> id(g.capacity(), UINT32_MAX);
   uint32_t n = 0;
   visit_all_orbits(g, mask, [&](Dart) { ++n; }, [&](Dart x) { id[x] = n - 1; });
@@ -121,7 +121,7 @@ ExpressionInference infer_expressions(const RuleScheme& s, const expr::EmbeddedM
   const OrbitType pos_orbit = fb->orbit();
   const DimMask mask = pos_orbit.mask();
   // 1. The associated darts: the scheme applied to a copy of G gives H.
-  GMap g = before.map;
+  Map g = before.map;
   const SchemeApplication app = SchemeEngine(s).apply(g, hooks);
   if (!app) throw Error(ErrorCode::Usage, "the scheme does not apply to the object before: " + app.why, "scheme " + s.name);
   bool same = g.capacity() == after.map.capacity() && g.dimension() == after.map.dimension();
@@ -132,7 +132,7 @@ ExpressionInference infer_expressions(const RuleScheme& s, const expr::EmbeddedM
   if (!same)
     throw Error(ErrorCode::Usage, "the object after is not the scheme's result on the object before (dart for dart)",
                 "scheme " + s.name);
-  const GMap& G = before.map;
+  const Map& G = before.map;
   const size_t sz = app.orbit_size();
   const int n = G.dimension();
   // Points of interest (Table 8.1's representatives): <>, <0>, <0,1>, ..., <0..n>.

@@ -37,7 +37,7 @@ std::string JointGraph::describe(uint32_t x) const {
   return (side_[x] == Side::L ? "before " : "after ") + id;
 }
 
-JointGraph joint_from_map(const GMap& g, JointIndex* index) {
+JointGraph joint_from_map(const Map& g, JointIndex* index) {
   if (g.is_omap()) throw Error(ErrorCode::Usage, "topological folding works on G-maps, not O-maps");
   JointGraph j(g.dimension());
   j.reserve(g.size());
@@ -53,7 +53,7 @@ JointGraph joint_from_map(const GMap& g, JointIndex* index) {
   return j;
 }
 
-JointGraph joint_from_component(const GMap& g, Dart d, JointIndex* index) {
+JointGraph joint_from_component(const Map& g, Dart d, JointIndex* index) {
   if (g.is_omap()) throw Error(ErrorCode::Usage, "topological folding works on G-maps, not O-maps");
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no dart " + std::to_string(d));
   std::vector<Dart> comp = orbit(g, OrbitType::range(0, g.dimension()), d);

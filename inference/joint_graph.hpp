@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/graph/elem_status.hpp"
 
 namespace gmr::inference {
@@ -72,10 +72,10 @@ struct JointIndex {
 
 // The darts of g (live ones, in increasing index order) on side L, links copied, no κ.
 // G-maps only (throws Error(Usage) for an O-map).
-JointGraph joint_from_map(const GMap& g, JointIndex* index = nullptr);
+JointGraph joint_from_map(const Map& g, JointIndex* index = nullptr);
 
 // The connected component of dart d in g (its <0..n>-orbit), as joint_from_map does for the whole
 // map; index->before[e] = kUndefined for darts of other components.
-JointGraph joint_from_component(const GMap& g, Dart d, JointIndex* index = nullptr);
+JointGraph joint_from_component(const Map& g, Dart d, JointIndex* index = nullptr);
 
 }  // namespace gmr::inference

@@ -35,7 +35,7 @@ namespace {
 // A random map of the rule's model (same dimension and kind): half of the time from the random
 // generators, half of the time the first map of the exhaustive small family (maps of <= 4 darts,
 // from a random start) on which L has a match — random rules rarely match random maps.
-GMap random_map_for(const Rule& r) {
+Map random_map_for(const Rule& r) {
   if (*rc::gen::arbitrary<bool>() && r.dimension() <= 2) {
     const MapFamily& fam = small_maps(r.dimension(), r.kind());
     const size_t start = *rc::gen::inRange<size_t>(0, fam.maps.size());
@@ -69,7 +69,7 @@ TEST(ConcreteProps, AcceptedRulesPreserveTheModelOnRandomMaps) {
     if (!accepted) return;
     size_t applied = 0;
     for (int k = 0; k < 4; ++k) {
-      const GMap g = random_map_for(r);
+      const Map g = random_map_for(r);
       const DGraph G = to_dgraph(g);
       for (const Match& m : applicable_matches(r, G, 8)) {
         const Derivation d = derive(r, G, m);
@@ -109,7 +109,7 @@ TEST(ConcreteProps, TwoDpoConstructionsAgree) {
   const auto gen = rc::gen::oneOf(gen_arbitrary_rule_case(), gen_consistent_rule_case());
   EXPECT_TRUE(check_property<RuleCase>("concrete_dpo_agree", gen, [](const RuleCase& c) {
     const Rule r = c.build();
-    const GMap g = random_map_for(r);
+    const Map g = random_map_for(r);
     const DGraph G = to_dgraph(g);
     const auto matches = applicable_matches(r, G, 6);
     RC_CLASSIFY(matches.empty(), "no applicable match");

@@ -35,7 +35,7 @@ std::string listing(const std::vector<OrbitEvent>& es) {
 void log_equals_dynamic(const SchemeEngine& engine, const StaticEvents& st, size_t max_map_size, int tries) {
   const RuleScheme& s = engine.scheme();
   const MapCase mc = *gen_map_case_of_dim(s.dimension, max_map_size);
-  GMap g = mc.build();
+  Map g = mc.build();
   RC_PRE(g.size() > 0u);
   const auto darts = g.darts();
   std::vector<OrbitSnapshot> before;

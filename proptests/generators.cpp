@@ -23,8 +23,8 @@ constexpr Family kAll[] = {Family::GluedPolygons,    Family::Polycube,        Fa
 // A small map edited by `steps` random applications of accepted library schemes of dimension n
 // (2 or 3) at random hook darts; refused applications are skipped, and the map is kept under
 // ~600 darts (quad subdivision of a whole component multiplies it by 4).
-GMap rule_applications(Rng& rng, int n, size_t steps) {
-  GMap g(n);
+Map rule_applications(Rng& rng, int n, size_t steps) {
+  Map g(n);
   if (n == 3) {
     PolycubeOptions o;
     o.max_voxels = 2;
@@ -44,7 +44,7 @@ GMap rule_applications(Rng& rng, int n, size_t steps) {
     const auto darts = g.darts();
     std::vector<Dart> hooks;
     for (size_t h = 0; h < sch.hooks.size(); ++h) hooks.push_back(darts[uniform(rng, 0, darts.size() - 1)]);
-    GMap h = g;
+    Map h = g;
     if (ls.engine->apply(h, hooks).applied && h.size() <= 600 && h.size() > 0) g = to_gmap(to_dgraph(h), n);  // renumbers the live darts densely
   }
   return g;
@@ -86,7 +86,7 @@ std::vector<Family> families_for(int n, bool omap) {
   return out;
 }
 
-GMap MapCase::build() const {
+Map MapCase::build() const {
   Rng rng(seed);
   switch (family) {
     case Family::GluedPolygons: {
@@ -131,7 +131,7 @@ GMap MapCase::build() const {
       return oriented_components(random_glued_polygons(rng, o));
     }
   }
-  return GMap(n);
+  return Map(n);
 }
 
 std::string MapCase::str() const { return "MapCase{" + corpus_line() + "}"; }
@@ -187,7 +187,7 @@ rc::Gen<std::vector<Dart>> gen_permutation(size_t k) {
   });
 }
 
-std::string describe_counterexample(const GMap& g) {
+std::string describe_counterexample(const Map& g) {
   std::string s = "--- counterexample (gmr.gmap) ---\n" + write_gmap_json(g, {});
   s += "\n--- diagram (DOT) ---\n" + to_dot(g);
   return s;

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/core/orbit_type.hpp"
 #include "model/testing/random_maps.hpp"
 
@@ -38,7 +38,7 @@ struct MapCase {
   int n = 2;
   size_t size = 1;  // number of cells / faces / voxels / rule applications
   uint64_t seed = 0;
-  GMap build() const;
+  Map build() const;
   std::string str() const;
   std::string corpus_line() const;
   static std::optional<MapCase> parse(const std::string& line);
@@ -56,7 +56,7 @@ rc::Gen<OrbitType> gen_orbit_type(int n);
 rc::Gen<std::vector<Dart>> gen_permutation(size_t k);
 
 // Text for a failing case: JSON and DOT of the map.
-std::string describe_counterexample(const GMap& g);
+std::string describe_counterexample(const Map& g);
 
 inline void showValue(const MapCase& c, std::ostream& os) {
   os << c.str() << "\n" << describe_counterexample(c.build());

@@ -53,11 +53,11 @@ using namespace gmr::scheme;
 namespace {
 
 // The component of d as a map of its own (darts renumbered in increasing order).
-GMap component_map(const GMap& g, Dart d) {
+Map component_map(const Map& g, Dart d) {
   std::vector<Dart> comp = orbit(g, OrbitType::range(0, g.dimension()), d);
   std::sort(comp.begin(), comp.end());
   std::vector<Dart> idx(g.capacity(), kNoDart);
-  GMap c(g.dimension());
+  Map c(g.dimension());
   c.add_darts(comp.size());
   for (size_t k = 0; k < comp.size(); ++k) idx[comp[k]] = static_cast<Dart>(k);
   for (size_t k = 0; k < comp.size(); ++k)
@@ -67,7 +67,7 @@ GMap component_map(const GMap& g, Dart d) {
 
 // No free dart and no two dimensions linking a dart to the same neighbour: every candidate set of
 // a relabeling (inference/relabeling.hpp) then has at most one dimension.
-bool is_simple(const GMap& g) {
+bool is_simple(const Map& g) {
   for (Dart d : g.darts())
     for (int i = 0; i <= g.dimension(); ++i) {
       if (g.is_free(i, d)) return false;
@@ -80,12 +80,12 @@ bool is_simple(const GMap& g) {
 // The round trip of S on the component of dart 0 of `whole` (see the header), then S and the
 // inferred rule applied to `other` at the same dart when S is the inferred rule's isomorphic
 // original: they agree (isomorphic results) wherever S applies.
-void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const GMap& whole, const GMap& other) {
+void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole, const Map& other) {
   RC_PRE(whole.size() > 0u);
-  const GMap g = component_map(whole, 0);
+  const Map g = component_map(whole, 0);
   // The first dart, from a random offset, where the scheme applies.
   const Dart offset = *rc::gen::inRange<Dart>(0, static_cast<Dart>(g.size()));
-  GMap after = g;
+  Map after = g;
   Dart h = kNoDart;
   for (Dart k = 0; k < g.size() && h == kNoDart; ++k) {
     const Dart cand = static_cast<Dart>((offset + k) % g.size());
@@ -125,7 +125,7 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const GMap& whol
     RC_LOG() << "other map (gmr.gmap):\n" << write_gmap_json(other, {}) << "\n";
     const Dart d = *rc::gen::inRange<Dart>(0, static_cast<Dart>(other.capacity()));
     if (!other.alive(d)) return;
-    GMap by_s = other;
+    Map by_s = other;
     if (!engine.apply(by_s, {d}).applied) return;
     auto [by_r, app3] = apply_scheme(other, r.scheme, {d});
     RC_ASSERT(app3.applied);
@@ -146,7 +146,7 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
   ASSERT_FALSE(one_hook[3].empty());
   const rc::Gen<MapCase> gen = rc::gen::mapcat(rc::gen::inRange(2, 4), [](int n) { return gen_map_case_of_dim(n, 4); });
   EXPECT_TRUE(check_property<MapCase>("infer_roundtrip", gen, [&](const MapCase& c) {
-    const GMap whole = c.build();
+    const Map whole = c.build();
     RC_PRE(whole.size() > 0u);
     const auto& lib = one_hook[whole.dimension()];
     const LibraryScheme& ls = scheme_library()[lib[*rc::gen::inRange<size_t>(0, lib.size())]];

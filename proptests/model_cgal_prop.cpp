@@ -15,14 +15,14 @@ using namespace gmr::prop;
 namespace {
 
 template <unsigned N>
-bool cgal_verdict(const GMap& g, const GMap& h) {
+bool cgal_verdict(const Map& g, const Map& h) {
   cgal_diff::CMap<N> cg, ch;
   cgal_diff::to_cgal<N>(g, cg);
   cgal_diff::to_cgal<N>(h, ch);
   return cgal_diff::cgal_isomorphic<N>(cg, ch);
 }
 
-bool cgal_iso(const GMap& g, const GMap& h) {
+bool cgal_iso(const Map& g, const Map& h) {
   switch (g.dimension()) {
     case 1: return cgal_verdict<1>(g, h);
     case 2: return cgal_verdict<2>(g, h);
@@ -35,11 +35,11 @@ bool cgal_iso(const GMap& g, const GMap& h) {
 
 TEST(ModelCgalProps, SignatureEqualityIsCgalIsomorphism) {
   EXPECT_TRUE(check_property<MapCase>("signature_vs_cgal", gen_map_case(4), [](const MapCase& c) {
-    const GMap g = c.build();
-    GMap m = g;
+    const Map g = c.build();
+    Map m = g;
     Rng rng(c.seed * 1000003 + 11);
     const Mutation mu = *rc::gen::arbitrary<bool>() ? resew_one_link(m, rng) : mutate_one_link(m, rng);
-    const GMap h = permute_darts(m, *gen_permutation(m.capacity()));
+    const Map h = permute_darts(m, *gen_permutation(m.capacity()));
     const bool ours = signature(g) == signature(h);
     const bool theirs = cgal_iso(g, h);
     RC_TAG(theirs ? "isomorphic" : "not isomorphic");

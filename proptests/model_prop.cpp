@@ -26,7 +26,7 @@ using namespace gmr::prop;
 
 TEST(ModelProps, GeneratedMapsAreValid) {
   EXPECT_TRUE(check_property<MapCase>("generated_valid", gen_map_case(), [](const MapCase& c) {
-    const GMap g = c.build();
+    const Map g = c.build();
     RC_ASSERT(g.size() > 0u);
     RC_ASSERT(check_validity(g).ok());
     RC_ASSERT(check_gmap_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
@@ -37,7 +37,7 @@ TEST(ModelProps, GeneratedMapsAreValid) {
 // checker (constraints.cpp, a separate implementation over arc lists), after a random raw write.
 TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
   EXPECT_TRUE(check_property<MapCase>("validity_locates", gen_map_case(4), [](const MapCase& c) {
-    GMap g = c.build();
+    Map g = c.build();
     const auto darts = g.darts();
     const Dart d = darts[*rc::gen::inRange<size_t>(0, darts.size())];
     const Dart e = darts[*rc::gen::inRange<size_t>(0, darts.size())];
@@ -78,7 +78,7 @@ TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
 
 TEST(ModelProps, OrbitsPartitionTheDarts) {
   EXPECT_TRUE(check_property<MapCase>("orbits_partition", gen_map_case(), [](const MapCase& c) {
-    const GMap g = c.build();
+    const Map g = c.build();
     const OrbitType o = *gen_orbit_type(g.dimension());
     std::vector<int> owner(g.capacity(), -1);
     int k = 0;
@@ -99,8 +99,8 @@ TEST(ModelProps, OrbitsPartitionTheDarts) {
 
 TEST(ModelProps, SignatureInvariantUnderRelabeling) {
   EXPECT_TRUE(check_property<MapCase>("signature_relabel", gen_map_case(4), [](const MapCase& c) {
-    const GMap g = c.build();
-    const GMap h = permute_darts(g, *gen_permutation(g.capacity()));
+    const Map g = c.build();
+    const Map h = permute_darts(g, *gen_permutation(g.capacity()));
     RC_ASSERT(signature(g) == signature(h));
     RC_ASSERT(is_isomorphic(g, h));
   }));
@@ -108,8 +108,8 @@ TEST(ModelProps, SignatureInvariantUnderRelabeling) {
 
 TEST(ModelProps, OneLinkChangeBreaksIsomorphism) {
   EXPECT_TRUE(check_property<MapCase>("signature_mutation", gen_map_case(4), [](const MapCase& c) {
-    const GMap g = c.build();
-    GMap h = g;
+    const Map g = c.build();
+    Map h = g;
     Rng rng(c.seed ^ 0x9e3779b97f4a7c15ull);
     const Mutation m = mutate_one_link(h, rng);
     RC_PRE(m.kind != Mutation::Kind::None);
@@ -121,18 +121,18 @@ TEST(ModelProps, OneLinkChangeBreaksIsomorphism) {
 
 TEST(ModelProps, SignatureEqualityIsIsomorphism) {
   EXPECT_TRUE(check_property<MapCase>("signature_iff_iso", gen_map_case(4), [](const MapCase& c) {
-    const GMap g = c.build();
-    GMap h = g;
+    const Map g = c.build();
+    Map h = g;
     Rng rng(c.seed * 31 + 7);
     resew_one_link(h, rng);
-    const GMap hp = permute_darts(h, *gen_permutation(h.capacity()));
+    const Map hp = permute_darts(h, *gen_permutation(h.capacity()));
     RC_ASSERT(is_isomorphic(g, hp) == (signature(g) == signature(hp)));
   }));
 }
 
 TEST(ModelProps, JsonRoundTrip) {
   EXPECT_TRUE(check_property<MapCase>("json_roundtrip", gen_map_case(), [](const MapCase& c) {
-    const GMap g = c.build();
+    const Map g = c.build();
     const GMapFile f = read_gmap_json(write_gmap_json(g, {}));
     RC_ASSERT(f.map.dimension() == g.dimension());
     RC_ASSERT(f.map.size() == g.size());
@@ -145,7 +145,7 @@ TEST(ModelProps, JsonRoundTrip) {
 
 TEST(ModelProps, GeneratedOMapsAreValid) {
   EXPECT_TRUE(check_property<MapCase>("omap_generated_valid", gen_omap_case(), [](const MapCase& c) {
-    const GMap g = c.build();
+    const Map g = c.build();
     RC_TAG(to_string(c.family));
     RC_ASSERT(g.is_omap());
     RC_ASSERT(check_validity(g).ok());
@@ -155,8 +155,8 @@ TEST(ModelProps, GeneratedOMapsAreValid) {
 
 TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
   EXPECT_TRUE(check_property<MapCase>("omap_signature_json", gen_omap_case(4), [](const MapCase& c) {
-    const GMap g = c.build();
-    const GMap h = permute_darts(g, *gen_permutation(g.capacity()));
+    const Map g = c.build();
+    const Map h = permute_darts(g, *gen_permutation(g.capacity()));
     RC_ASSERT(signature(g) == signature(h));
     RC_ASSERT(is_isomorphic(g, h));
     const GMapFile f = read_gmap_json(write_gmap_json(g, {}));
@@ -166,7 +166,7 @@ TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
     // no cycle constraint for n = 2); isomorphic or not, signature equality must agree with
     // is_isomorphic.
     if (g.dimension() == 2 && g.size() >= 2) {
-      GMap m = g;
+      Map m = g;
       const auto darts = m.darts();
       const Dart a = darts[*rc::gen::inRange<size_t>(0, darts.size())];
       const Dart b = darts[*rc::gen::inRange<size_t>(0, darts.size())];
@@ -187,7 +187,7 @@ TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
 // refused by the writer or the reader with an Error: discarded, and counted by RC_TAG.
 TEST(ModelProps, OffRoundTrip) {
   EXPECT_TRUE(check_property<MapCase>("off_roundtrip", gen_map_case_of_dim(2, 6), [](const MapCase& c) {
-    const GMap g = c.build();
+    const Map g = c.build();
     PositionEmbedding pos(kPositionName, OrbitType{1, 2});
     double k = 0;
     for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) {

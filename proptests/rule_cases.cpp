@@ -41,7 +41,7 @@ std::pair<int, int> dims_of(RuleFamily f) {
 Rule scheme_instance(Rng& rng, int n, size_t size) {
   const std::vector<size_t> lib = library_of_dim(n, true);
   const RuleScheme& s = scheme_library()[lib[uniform(rng, 0, lib.size() - 1)]].scheme;
-  GMap g(n);
+  Map g(n);
   if (n == 3) {
     PolycubeOptions o;
     o.max_voxels = 1 + size % 2;

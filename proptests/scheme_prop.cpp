@@ -28,7 +28,7 @@ namespace {
 // and a valid result when the checker accepts the scheme.
 void engine_dpo_property(const RuleScheme& s, bool accepted, size_t max_map_size) {
   const MapCase mc = *gen_map_case_of_dim(s.dimension, max_map_size);
-  const GMap g = mc.build();
+  const Map g = mc.build();
   RC_PRE(g.size() > 0u);
   const auto darts = g.darts();
   std::vector<Dart> hooks;

@@ -9,7 +9,7 @@
 #include <initializer_list>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::events {
 

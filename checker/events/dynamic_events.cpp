@@ -9,7 +9,7 @@ namespace gmr::events {
 
 namespace {
 // The lowest dart of every orbit (visit_all_orbits meets orbits by increasing lowest dart).
-std::vector<Dart> orbit_names(const GMap& g, DimMask mask) {
+std::vector<Dart> orbit_names(const Map& g, DimMask mask) {
   std::vector<Dart> name(g.capacity(), kNoDart);
   Dart current = kNoDart;
   visit_all_orbits(
@@ -18,7 +18,7 @@ std::vector<Dart> orbit_names(const GMap& g, DimMask mask) {
 }
 }  // namespace
 
-OrbitSnapshot snapshot(const GMap& g, const OrbitType& o) {
+OrbitSnapshot snapshot(const Map& g, const OrbitType& o) {
   require_orbit_type(g, o);
   OrbitSnapshot s;
   s.orbit = o;
@@ -27,7 +27,7 @@ OrbitSnapshot snapshot(const GMap& g, const OrbitType& o) {
   return s;
 }
 
-std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& h,
+std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const Map& h,
                                        const std::vector<Dart>* touched) {
   const OrbitType& o = before.orbit;
   const DimMask om = o.mask();

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "checker/events/orbit_event.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::events {
 
@@ -20,13 +20,13 @@ struct OrbitSnapshot {
 };
 
 // Throws Error(Range) for an orbit type the map does not have (require_orbit_type).
-OrbitSnapshot snapshot(const GMap& g, const OrbitType& o);
+OrbitSnapshot snapshot(const Map& g, const OrbitType& o);
 
 // Every event of the transformation from `before` to h; statuses are Observed. Non-modifications
 // are listed for every unchanged orbit of G, or, when `touched` is given (G darts, e.g. the matched
 // ones), only for those holding one of its darts: the orbits a rule application leaves untouched
 // are not logged.
-std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const GMap& h,
+std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const Map& h,
                                        const std::vector<Dart>* touched = nullptr);
 
 }  // namespace gmr::events

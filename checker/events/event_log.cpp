@@ -57,7 +57,7 @@ Scratch& scratch() {
 // and orbit index b, `table` being the match (L, on G) or the comatch (R, on H).
 class InstanceNamer {
  public:
-  InstanceNamer(const GMap& g, const OrbitGraph& O, const std::vector<Dart>& table, size_t nodes, Scratch& sc)
+  InstanceNamer(const Map& g, const OrbitGraph& O, const std::vector<Dart>& table, size_t nodes, Scratch& sc)
       : g_(g), O_(O), table_(table), nodes_(nodes), s_(O.size()), parent_(sc.parent), low_(sc.low),
         comps_(sc.comps), slot_comp_(sc.slot_comp), stack_(sc.stack), visited_(sc.visited) {}
 
@@ -136,7 +136,7 @@ class InstanceNamer {
           for (uint32_t b = 0; b < s_; ++b) out[m * s_ + b] = comps_[slot_comp_[m * s_ + b]].name;
   }
 
-  const GMap& g_;
+  const Map& g_;
   const OrbitGraph& O_;
   const std::vector<Dart>& table_;
   size_t nodes_, s_;
@@ -152,7 +152,7 @@ class Recorder {
   Recorder(const RuleScheme& s, const StaticEvents& st) : s_(s), st_(st) {}
 
   // Step 1 (G before the rewrite).
-  void before(const GMap& g, const OrbitGraph& O, const SchemeApplication& res) {
+  void before(const Map& g, const OrbitGraph& O, const SchemeApplication& res) {
     O_ = &O;
     ns_ = O.size();
     match_ = &res.match;
@@ -179,7 +179,7 @@ class Recorder {
   }
 
   // Steps 3 and 4 (H after the rewrite).
-  std::vector<OrbitTypeLog> after(const GMap& h, const SchemeApplication& res) {
+  std::vector<OrbitTypeLog> after(const Map& h, const SchemeApplication& res) {
     T_ = &res.comatch;
     match_ = &res.match;
     Scratch& sc = scratch();
@@ -209,7 +209,7 @@ class Recorder {
     return it != v.end() && it->first == name ? &*it : nullptr;
   }
 
-  void log_orbit_type(const GMap& h, const OrbitTypeEvents& te, const std::vector<Dart>& gname,
+  void log_orbit_type(const Map& h, const OrbitTypeEvents& te, const std::vector<Dart>& gname,
                       const std::vector<Dart>& hname, OrbitTypeLog& log, Scratch& sc) const {
     const OrbitType& o = te.orbit;
     const DimMask om = o.mask();
@@ -353,13 +353,13 @@ EventRecorder::EventRecorder(const RuleScheme& s, const StaticEvents& analysis, 
 EventRecorder::~EventRecorder() = default;
 
 // Merges are checked on G, before the rewrite; `also` (embedding propagation) sees both phases.
-void EventRecorder::before_rewrite(const GMap& before, const SchemeApplication& res, const OrbitGraph& O) {
+void EventRecorder::before_rewrite(const Map& before, const SchemeApplication& res, const OrbitGraph& O) {
   impl_->rec.before(before, O, res);
   if (also_) also_->before_rewrite(before, res, O);
 }
 
 // Splits are checked on H, after it; the hook orbit O is still alive here.
-void EventRecorder::after_rewrite(const GMap& after, const SchemeApplication& res, const OrbitGraph& O) {
+void EventRecorder::after_rewrite(const Map& after, const SchemeApplication& res, const OrbitGraph& O) {
   EventLog log;
   log.rule = s_.name;
   if (!O.darts.empty() && s_.hooks.size() == 1) log.hooks = {O.darts[0]};  // the hook orbit starts at the hook
@@ -369,7 +369,7 @@ void EventRecorder::after_rewrite(const GMap& after, const SchemeApplication& re
 }
 
 LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
-                                    GMap& g, const std::vector<Dart>& hooks, scheme::ApplicationObserver* also) {
+                                    Map& g, const std::vector<Dart>& hooks, scheme::ApplicationObserver* also) {
   EventRecorder recorder(engine.scheme(), analysis, also);
   LoggedApplication out;
   out.application = engine.apply(g, hooks, &recorder);

@@ -73,8 +73,8 @@ class EventRecorder : public scheme::ApplicationObserver {
  public:
   EventRecorder(const scheme::RuleScheme& s, const StaticEvents& analysis, scheme::ApplicationObserver* also = nullptr);
   ~EventRecorder() override;
-  void before_rewrite(const GMap& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
-  void after_rewrite(const GMap& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  void before_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  void after_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
   std::vector<EventLog>& logs() { return logs_; }
 
  private:
@@ -90,7 +90,7 @@ class EventRecorder : public scheme::ApplicationObserver {
 // Error(Usage) when `analysis` belongs to another rule. `also` (e.g. the embedding propagation of
 // model/expr) observes the application too.
 LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
-                                    GMap& g, const std::vector<Dart>& hooks,
+                                    Map& g, const std::vector<Dart>& hooks,
                                     scheme::ApplicationObserver* also = nullptr);
 
 }  // namespace gmr::events

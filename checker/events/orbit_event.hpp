@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "checker/events/dart_list.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/core/orbit_type.hpp"
 
 namespace gmr::events {

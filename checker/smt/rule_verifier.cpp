@@ -25,11 +25,11 @@ unsigned numeral(const z3::expr& e) {
 }
 }  // namespace
 
-std::optional<Counterexample> replay(const Rule& r, const GMap& G, const std::vector<Node>& nodes, Engine e) {
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<Node>& nodes, Engine e) {
   return replay(r, G, nodes, e, Semantics::Preservation);
 }
 
-std::optional<Counterexample> replay(const Rule& r, const GMap& G, const std::vector<Node>& nodes, Engine e,
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<Node>& nodes, Engine e,
                                      Semantics sem) {
   const DGraph Gd = graph::to_dgraph(G);
   auto m = rewrite::match_from_nodes(r.left(), Gd, nodes);
@@ -113,7 +113,7 @@ VerifyResult verify_on(z3::context& ctx, const MapEncoding& map, z3::solver* sha
   };
   if (auto model = search(true)) {
     const unsigned size = numeral(model->eval(map.size(), true));
-    GMap G(r.dimension(), r.kind());
+    Map G(r.dimension(), r.kind());
     G.add_darts(size);
     for (int i : r.spec().labels())
       for (unsigned d = 0; d < size; ++d) G.set_alpha(i, d, numeral(model->eval(map.alpha(i, map.dart(d)), true)));

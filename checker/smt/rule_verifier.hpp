@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "checker/smt/map_encoding.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/graph/constraints.hpp"
 #include "model/graph/dgraph.hpp"
 #include "model/graph/map_family.hpp"
@@ -52,7 +52,7 @@ struct EncodingOptions {
 };
 
 struct Counterexample {
-  GMap G{0};
+  Map G{0};
   Match match;              // L node -> dart of G (as nodes of to_dgraph(G))
   bool gluing_fails = false;  // Consistency: the match fails the gluing condition (no H)
   DGraph H;                 // the result of the derivation (derive_in_place)
@@ -99,8 +99,8 @@ inline VerifyResult verify(const Rule& r, unsigned bound, Engine e, const Encodi
 
 // Replays (G, node map) through the concrete derivation; nullopt when the node map is not a match
 // satisfying the gluing condition or when H is a map of the model.
-std::optional<Counterexample> replay(const Rule& r, const GMap& G, const std::vector<graph::Node>& nodes, Engine e);
-std::optional<Counterexample> replay(const Rule& r, const GMap& G, const std::vector<graph::Node>& nodes, Engine e,
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<graph::Node>& nodes, Engine e);
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<graph::Node>& nodes, Engine e,
                                      Semantics sem);
 
 }  // namespace gmr::smt

@@ -154,9 +154,9 @@ struct Query {
       ++*lemmas;
     }
   }
-  GMap map_of(const z3::model& m) const {
+  Map map_of(const z3::model& m) const {
     const unsigned size = numeral(m.eval(map.size(), true));
-    GMap G(map.spec().n, map.spec().kind);
+    Map G(map.spec().n, map.spec().kind);
     G.add_darts(size);
     for (int i : map.spec().labels())
       for (unsigned d = 0; d < size; ++d)
@@ -219,7 +219,7 @@ void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCond
 }
 
 // G relabelled so that the match is the identity on the L nodes (the symbolic match's shape).
-GMap relabel(const GMap& G, const std::vector<Node>& match) {
+Map relabel(const Map& G, const std::vector<Node>& match) {
   const size_t size = G.size();
   const Dart none = static_cast<Dart>(-1);
   std::vector<Dart> to(size, none);
@@ -227,7 +227,7 @@ GMap relabel(const GMap& G, const std::vector<Node>& match) {
   for (Node d : match) to[d] = next++;
   for (Dart d = 0; d < size; ++d)
     if (to[d] == none) to[d] = next++;
-  GMap out(G.dimension(), G.kind());
+  Map out(G.dimension(), G.kind());
   out.add_darts(size);
   for (int i : MapSpec{G.dimension(), G.kind()}.labels())
     for (Dart d = 0; d < size; ++d) out.set_alpha(i, to[d], to[G.alpha(i, d)]);
@@ -235,7 +235,7 @@ GMap relabel(const GMap& G, const std::vector<Node>& match) {
 }
 
 // "The match of the rule on this concrete map glues and yields a map" as a constraint on the rule.
-void refine(Query& q, const ValidationOptions& o, const GMap& G, size_t t,
+void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t,
             std::vector<std::unique_ptr<MapEncoding>>& maps,
             std::vector<std::unique_ptr<SymbolicDerivation>>& ders) {
   const std::string prefix = "r" + std::to_string(t) + "_";

@@ -38,7 +38,7 @@ bool O(const Rule& r, int i) { return check_non_orientation(r, i, diags); }
 bool C(const Rule& r, int i, int j) { return check_cycle(r, i, j, diags); }
 
 // Applies r on g through the match "node name -> dart" given by name_to_dart, both ways.
-GMap apply_both(const Rule& r, const GMap& g, const std::function<Dart(const std::string&)>& name_to_dart) {
+Map apply_both(const Rule& r, const Map& g, const std::function<Dart(const std::string&)>& name_to_dart) {
   std::vector<Dart> m;
   for (Node v = 0; v < r.left().num_nodes(); ++v) m.push_back(name_to_dart(r.left().name(v)));
   MapDerivation a = apply_in_map(r, g, m), b = apply_to_map(r, g, m);
@@ -46,8 +46,8 @@ GMap apply_both(const Rule& r, const GMap& g, const std::function<Dart(const std
   return a.H;
 }
 
-GMap isolated_face(size_t k) {  // 2k darts, numbering of the fixture generator
-  GMap g(2);
+Map isolated_face(size_t k) {  // 2k darts, numbering of the fixture generator
+  Map g(2);
   g.add_darts(2 * k);
   for (Dart d = 0; d < 2 * k; d += 2) g.link(0, d, d + 1);
   for (Dart d = 1; d < 2 * k; d += 2) g.link(1, d, static_cast<Dart>((d + 1) % (2 * k)));
@@ -161,9 +161,9 @@ TEST(Fixtures, F9_F13_QuadSubdivisionOnIsolatedQuad) {
   const Rule r = load("F9_quad_subdivision_isolated_quad");
   const CheckReport rep = check_rule(r);
   EXPECT_TRUE(rep.ok()) << to_text(rep);
-  const GMap q = isolated_face(4);
+  const Map q = isolated_face(4);
   ASSERT_TRUE(is_valid(q));
-  const GMap h = apply_both(r, q, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
+  const Map h = apply_both(r, q, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
   EXPECT_TRUE(is_valid(h));
   EXPECT_EQ(h.size(), 32u);
   EXPECT_EQ(count_cells(h, 0), 9u);
@@ -202,15 +202,15 @@ TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
   EXPECT_FALSE(check_rule(r).ok());
   // Isolated quad: the outside 2-links are loops, the result is the maximal rule's.
   const auto by_index = [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); };
-  const GMap h = apply_both(r, isolated_face(4), by_index);
+  const Map h = apply_both(r, isolated_face(4), by_index);
   EXPECT_TRUE(is_valid(h));
   EXPECT_EQ(h.size(), 32u);
   // A face of the cube: match a_k along the face of dart 0 (a0 = 0, a1 = alpha0(a0), a2 = alpha1(a1)...).
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   std::vector<Dart> face{0};
   while (face.size() < 8) face.push_back(cube.alpha(face.size() % 2 == 1 ? 0 : 1, face.back()));
   ASSERT_EQ(cube.alpha(1, face[7]), face[0]);
-  const GMap hc = apply_both(r, cube, [&](const std::string& s) { return face[std::stoul(s.substr(1))]; });
+  const Map hc = apply_both(r, cube, [&](const std::string& s) { return face[std::stoul(s.substr(1))]; });
   const auto rep = check_validity(hc);
   EXPECT_FALSE(rep.ok());
   bool c02 = false;
@@ -221,10 +221,10 @@ TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
 TEST(Fixtures, F11_VertexInsertionOnFreeEdge) {
   const Rule r = load("F11_vertex_insertion_free_edge");
   EXPECT_TRUE(check_rule(r).ok()) << to_text(check_rule(r));
-  GMap e(2);
+  Map e(2);
   e.add_darts(2);
   e.link(0, 0, 1);
-  const GMap h = apply_both(r, e, [](const std::string& s) { return s == "a" ? Dart{0} : Dart{1}; });
+  const Map h = apply_both(r, e, [](const std::string& s) { return s == "a" ? Dart{0} : Dart{1}; });
   EXPECT_TRUE(is_valid(h));
   EXPECT_EQ(h.size(), 4u);
   const SemanticVerdict v = semantic_verdict(r, map_family(2, MapKind::GMap, 4));
@@ -234,8 +234,8 @@ TEST(Fixtures, F11_VertexInsertionOnFreeEdge) {
 TEST(Fixtures, F12_TriangulationOfIsolatedTriangle) {
   const Rule r = load("F12_triangulation_isolated_triangle");
   EXPECT_TRUE(check_rule(r).ok()) << to_text(check_rule(r));
-  const GMap t = isolated_face(3);
-  const GMap h = apply_both(r, t, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
+  const Map t = isolated_face(3);
+  const Map h = apply_both(r, t, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
   EXPECT_TRUE(is_valid(h));
   EXPECT_EQ(h.size(), 18u);
   EXPECT_EQ(count_cells(h, 2), 3u);

@@ -29,12 +29,12 @@ std::filesystem::path rules_dir() { return gmr::testing::source_path("tools/data
 RuleScheme lib(const std::string& name) { return read_scheme_file(rules_dir() / (name + ".json")); }
 
 struct Outcome {
-  GMap map{0};
+  Map map{0};
   size_t darts = 0;
   std::vector<size_t> cells;
 };
 
-Outcome apply_ok(const std::string& rule, const GMap& g, const std::vector<Dart>& hooks) {
+Outcome apply_ok(const std::string& rule, const Map& g, const std::vector<Dart>& hooks) {
   auto [h, a] = apply_scheme(g, lib(rule), hooks);
   EXPECT_TRUE(a.applied) << rule << ": " << a.why;
   EXPECT_TRUE(is_valid(h)) << rule;
@@ -69,7 +69,7 @@ TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
 }
 
 TEST(SchemeLibrary, VertexInsertion) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   Outcome a = apply_ok("vertex_insertion", cube, {0});
   EXPECT_EQ(a.darts, 52u);
   EXPECT_EQ(a.cells, (Cells{9, 13, 6}));
@@ -79,7 +79,7 @@ TEST(SchemeLibrary, VertexInsertion) {
   EXPECT_TRUE(is_isomorphic(a.map, b.map));
   // Free edge: 2 -> 4 darts; boundary edge of a grid: +2 darts.
   EXPECT_EQ(apply_ok("vertex_insertion", make_free_edge(2), {0}).darts, 4u);
-  const GMap grid = make_grid(2, 2);
+  const Map grid = make_grid(2, 2);
   Dart boundary = 0;
   while (!grid.is_free(2, boundary)) ++boundary;
   Outcome c = apply_ok("vertex_insertion", grid, {boundary});
@@ -88,7 +88,7 @@ TEST(SchemeLibrary, VertexInsertion) {
 }
 
 TEST(SchemeLibrary, Triangulations) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   Outcome f = apply_ok("face_triangulation", cube, {0});
   EXPECT_EQ(f.darts, 64u);
   EXPECT_EQ(f.cells, (Cells{9, 16, 9}));
@@ -118,7 +118,7 @@ TEST(SchemeLibrary, Subdivisions) {
 }
 
 TEST(SchemeLibrary, ExtrusionAndDualVertex) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   Outcome e = apply_ok("face_extrusion", cube, {0});
   EXPECT_EQ(e.darts, 80u);
   EXPECT_EQ(e.cells, (Cells{12, 20, 10}));
@@ -130,7 +130,7 @@ TEST(SchemeLibrary, ExtrusionAndDualVertex) {
 }
 
 TEST(SchemeLibrary, SewAndUnsew2) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   const Dart d = 0, e = cube.alpha(2, 0);
   Outcome u = apply_ok("unsew2", cube, {d});
   EXPECT_EQ(u.cells, (Cells{8, 13, 6}));
@@ -143,7 +143,7 @@ TEST(SchemeLibrary, SewAndUnsew2) {
 }
 
 TEST(SchemeLibrary, SewAndUnsew3OnStackedCubes) {
-  const GMap g = make_stacked_cubes();
+  const Map g = make_stacked_cubes();
   Dart d = 0;
   while (g.is_free(3, d)) ++d;
   const Dart e = g.alpha(3, d);
@@ -156,7 +156,7 @@ TEST(SchemeLibrary, SewAndUnsew3OnStackedCubes) {
 }
 
 TEST(SchemeLibrary, EdgeDeletionAndCollapse) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   Outcome del = apply_ok("edge_deletion", cube, {0});
   EXPECT_EQ(del.darts, 44u);
   EXPECT_EQ(del.cells, (Cells{8, 11, 5}));

@@ -37,9 +37,9 @@ std::optional<Witness> find_witness(const RuleScheme& s) {
   SchemeEngine e(s);
   if (s.hooks.size() != 1) return std::nullopt;
   for (const auto& [name, voxels] : objects) {
-    const GMap g = make_polycube(voxels);
+    const Map g = make_polycube(voxels);
     for (Dart d : g.darts()) {
-      GMap h = g;
+      Map h = g;
       SchemeApplication a = e.apply(h, {d});
       if (!a.applied) continue;
       ValidityReport v = check_validity(h, 1);

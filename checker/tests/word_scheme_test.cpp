@@ -134,7 +134,7 @@ WordRuleScheme quad_gmap() {
 }
 const std::vector<PathWord> kGmapWords = {w("eps"), w("0"), w("1"), w("2")};
 
-size_t max_face_size(const GMap& g, const OrbitType& face) {
+size_t max_face_size(const Map& g, const OrbitType& face) {
   size_t mx = 0, mn = SIZE_MAX;
   for (Dart d : orbit_representatives(g, face)) {
     const size_t k = orbit(g, face, d).size();
@@ -147,7 +147,7 @@ size_t max_face_size(const GMap& g, const OrbitType& face) {
 }  // namespace
 
 TEST(PatternFunctor, Def48OnCubeGmapAndOmap) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   const PatternGraph P = pattern_graph(cube, kGmapWords);
   ASSERT_EQ(P.size(), 48u);
   EXPECT_EQ(P.graph.num_arcs(), 48u * 4);
@@ -165,7 +165,7 @@ TEST(PatternFunctor, Def48OnCubeGmapAndOmap) {
     EXPECT_EQ(P2.targets(t, w("~1~0")), std::vector<Node>{v});
   }
   // O-map: ~1 follows the 1-arc backwards (beta_1^{-1}).
-  const GMap om = orient(make_cube(2));
+  const Map om = orient(make_cube(2));
   ASSERT_EQ(om.size(), 24u);
   const PatternGraph Po = pattern_graph(om, kOmapWords);
   for (Node v = 0; v < Po.size(); ++v) {
@@ -299,7 +299,7 @@ TEST(WordScheme, InstantiationOperationalForm) {
 }
 
 TEST(F10, OmapQuadSubdivisionOnCube) {
-  const GMap om = orient(make_cube(2));
+  const Map om = orient(make_cube(2));
   ASSERT_EQ(om.size(), 24u);
   ASSERT_TRUE(is_valid(om));
   const WordRuleScheme S = quad_omap();
@@ -310,7 +310,7 @@ TEST(F10, OmapQuadSubdivisionOnCube) {
   EXPECT_EQ(app.rule.left().num_nodes(), 24u);
   EXPECT_EQ(app.rule.right().num_nodes(), 96u);
   EXPECT_EQ(app.rule.right().num_arcs(), 8u * 24);
-  const GMap& H = app.result.H;
+  const Map& H = app.result.H;
   EXPECT_EQ(H.kind(), MapKind::OMap);
   EXPECT_EQ(H.size(), 96u);
   EXPECT_TRUE(is_valid(H));
@@ -331,7 +331,7 @@ TEST(F10, OmapQuadSubdivisionOnCube) {
 }
 
 TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   const WordRuleScheme S = quad_gmap();
   // Scheme level: the (1,1) and (2,2) loops of a are preserved, the (0,0) loop deleted.
   const auto pres = S.preserved_arcs();
@@ -343,7 +343,7 @@ TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
   EXPECT_EQ(app.rule.left().num_nodes(), 48u);
   EXPECT_EQ(app.rule.left().num_arcs(), 3u * 48);  // L = N nodes / 3N arcs (a loop counts once)
   EXPECT_EQ(app.rule.right().num_nodes(), 4u * 48);
-  const GMap& H = app.result.H;
+  const Map& H = app.result.H;
   EXPECT_EQ(H.size(), 192u);
   EXPECT_TRUE(is_valid(H));
   EXPECT_EQ(count_all_cells(H), (std::vector<size_t>{26, 48, 24}));
@@ -361,6 +361,6 @@ TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
   EXPECT_EQ(J.size(), 192u);
   EXPECT_TRUE(is_isomorphic(H, J));
   // And differs from a subdivision that is not the same operation (sanity of is_isomorphic).
-  const GMap tri = apply_word_scheme(make_tetrahedron(2), S, kGmapWords, 0).result.H;
+  const Map tri = apply_word_scheme(make_tetrahedron(2), S, kGmapWords, 0).result.H;
   EXPECT_FALSE(is_isomorphic(H, tri));
 }

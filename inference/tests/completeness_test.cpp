@@ -32,7 +32,7 @@ using namespace gmr::scheme;
 namespace {
 
 struct Oracle {
-  const GMap& g;
+  const Map& g;
   const OrbitType& o;
   std::vector<Dart> orbit_darts;          // O[b]
   std::vector<uint32_t> nb;               // nb[b * |o| + p]
@@ -40,7 +40,7 @@ struct Oracle {
   std::vector<std::vector<Dart>> blocks;  // blocks[v][b] = dart (b, v); block 0 = O
   std::vector<uint32_t> node_of, index_of;
 
-  Oracle(const GMap& gm, const OrbitType& ot, Dart a) : g(gm), o(ot) {
+  Oracle(const Map& gm, const OrbitType& ot, Dart a) : g(gm), o(ot) {
     orbit_darts = orbit(g, o, a);  // BFS order, a first (Alg. 4)
     s = orbit_darts.size();
     node_of.assign(g.capacity(), UINT32_MAX);
@@ -140,7 +140,7 @@ struct Oracle {
 
 void check_family(int n, size_t max_darts, size_t& folded, size_t& failed) {
   for (size_t k = 1; k <= max_darts; ++k)
-    for (const GMap& g : connected_maps(n, MapKind::GMap, k)) {
+    for (const Map& g : connected_maps(n, MapKind::GMap, k)) {
       const JointGraph j = joint_from_map(g);
       for (const OrbitType& o : all_orbit_types(n))
         for (Dart a : g.darts()) {
@@ -180,7 +180,7 @@ TEST(FoldCompleteness, StartsMarkedAfterAFailureFailToo) {
   size_t checked = 0;
   for (auto [n, max_darts] : {std::pair{1, size_t{6}}, std::pair{2, size_t{6}}, std::pair{3, size_t{4}}})
     for (size_t k = 1; k <= max_darts; ++k)
-      for (const GMap& g : connected_maps(n, MapKind::GMap, k)) {
+      for (const Map& g : connected_maps(n, MapKind::GMap, k)) {
         const JointGraph j = joint_from_map(g);
         for (const OrbitType& o : all_orbit_types(n))
           for (Dart a : g.darts()) {
@@ -204,10 +204,10 @@ TEST(FoldCompleteness, StartsMarkedAfterAFailureFailTooOnJointGraphs) {
   size_t checked = 0;
   for (const char* rule : {"quad_subdivision", "doo_sabin_subdivision"}) {
     const RuleScheme s = io::read_scheme_file(gmr::testing::source_path("tools/data/rules/" + std::string(rule) + ".json"));
-    const GMap cube = make_cube();
-    GMap once = cube;
+    const Map cube = make_cube();
+    Map once = cube;
     ASSERT_TRUE(apply_scheme_in_place(once, s, {0}).applied);
-    GMap after = once;
+    Map after = once;
     ASSERT_TRUE(apply_scheme_in_place(after, s, {0}).applied);
     const JointGraph j = joint_from_pair(once, after, identity_mapping(once, after));
     for (const OrbitType& o : all_orbit_types(2)) {

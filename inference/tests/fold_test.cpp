@@ -54,7 +54,7 @@ TEST(FoldTrace, CubeOnVertexOrbitGivesEightNodesOppositeVertexSwapped) {
 // <0,1>" while its figures fold on <1,2>, the figures' <1,2> is the consistent
 // reading.)
 TEST(FoldTrace, SquarePyramidFromBaseCornerIsRelabelingFailure) {
-  const GMap g = make_square_pyramid();
+  const Map g = make_square_pyramid();
   const JointGraph j = joint_from_map(g);
   size_t in_triangle = 0;
   for (Dart a : g.darts()) {
@@ -101,7 +101,7 @@ TEST(FoldTrace, OpenBoxOnEdgeOrbitIsInstantiationFailure) {
 // A 1-gon (one edge whose two darts are 1-linked) folded on <0>: the 1-link joins orbit indices 0
 // and 1 of the hook — an arc failure. On <0,1> it folds.
 TEST(FoldFailures, ArcFailureOnLoopEdge) {
-  const GMap g = make_polygon(1);
+  const Map g = make_polygon(1);
   const JointGraph j = joint_from_map(g);
   const FoldResult f = fold(j, ot("<0>"), 0);
   ASSERT_FALSE(f.ok());
@@ -138,7 +138,7 @@ TEST(FoldFailures, PartialHookOrbitAndNotConnected) {
   ASSERT_FALSE(f.ok());
   EXPECT_EQ(f.failure.kind, FoldFailureKind::PartialHookOrbit);
   // Two separate triangles.
-  GMap two(2);
+  Map two(2);
   two.add_darts(12);
   for (Dart base : {Dart{0}, Dart{6}})
     for (Dart p = 0; p < 3; ++p) {
@@ -166,7 +166,7 @@ TEST(FoldFailures, NotSpanningOnOneWayLink) {
 
 // Thesis §8.2.1: <> always folds, one node per dart.
 TEST(FoldProperties, EmptyOrbitAlwaysFolds) {
-  for (const GMap& g : {make_cube(), make_square_pyramid(), make_torus(3, 3), make_polygon(5), make_stacked_cubes(),
+  for (const Map& g : {make_cube(), make_square_pyramid(), make_torus(3, 3), make_polygon(5), make_stacked_cubes(),
                         read_off_file(data("open_box.off")).map}) {
     const JointGraph j = joint_from_map(g);
     for (Dart a : {Dart{0}, static_cast<Dart>(g.size() - 1)}) {
@@ -182,7 +182,7 @@ TEST(FoldProperties, EmptyOrbitAlwaysFolds) {
 // gives back the input exactly, and the instantiated map is isomorphic (signatures) to the input.
 // The number of nodes is |G| / |G<o>(a)|.
 TEST(FoldProperties, FoldThenInstantiateGivesBackTheInput) {
-  const std::vector<std::pair<const char*, GMap>> objects = {
+  const std::vector<std::pair<const char*, Map>> objects = {
       {"cube", make_cube()},           {"tetrahedron", make_tetrahedron()},    {"pyramid", make_square_pyramid()},
       {"torus", make_torus(4, 3)},     {"prism5", make_prism(5)},              {"grid", make_grid(2, 3)},
       {"stacked", make_stacked_cubes()}, {"open box", read_off_file(data("open_box.off")).map}};

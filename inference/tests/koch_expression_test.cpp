@@ -71,7 +71,7 @@ std::vector<Vec3> outward_edges(const expr::EmbeddedMap& m) {
 
 // `m` with vertex positions pos(d) (one value per <1,2>-orbit).
 template <class Pos>
-expr::EmbeddedMap with_positions(const GMap& g, Pos pos) {
+expr::EmbeddedMap with_positions(const Map& g, Pos pos) {
   expr::EmbeddedMap m;
   m.map = g;
   m.fields.push_back({3, Embedding<Vec3>("position", OrbitType{1, 2})});
@@ -91,7 +91,7 @@ std::vector<uint32_t> node_of(const scheme::SchemeApplication& app, size_t capac
 expr::EmbeddedMap koch_step(const expr::EmbeddedMap& m) {
   const auto& pos = m.find("position")->values;
   const std::vector<Vec3> out = outward_edges(m);
-  GMap g = m.map;
+  Map g = m.map;
   const scheme::SchemeApplication app = scheme::SchemeEngine(koch()).apply(g, {0});
   EXPECT_TRUE(app.applied) << app.why;
   std::vector<Vec3> p(g.capacity(), Vec3{0, 0, 0});

@@ -39,7 +39,7 @@ using gmr::inference::test::polycube::menger_of;
 
 // A polycube with vertex positions (one value per <1,2,3>-orbit): `pos(d)` for a dart d.
 template <class Pos>
-expr::EmbeddedMap embedded(const GMap& g, Pos pos) {
+expr::EmbeddedMap embedded(const Map& g, Pos pos) {
   expr::EmbeddedMap m;
   m.map = g;
   m.fields.push_back({3, Embedding<Vec3>("position", OrbitType{1, 2, 3})});
@@ -59,7 +59,7 @@ expr::EmbeddedMap polycube_with_positions(const std::vector<Voxel>& voxels, doub
 
 // `result` (a topology isomorphic to make_polycube(sub) through the darts pair (d, d2)) with the
 // positions of the Menger voxels `sub` at scale 1/3.
-expr::EmbeddedMap with_menger_positions(const GMap& result, Dart d, const std::vector<Voxel>& sub, Dart d2) {
+expr::EmbeddedMap with_menger_positions(const Map& result, Dart d, const std::vector<Voxel>& sub, Dart d2) {
   const expr::EmbeddedMap target = polycube_with_positions(sub, 1.0 / 3.0);
   const OrbitType all = OrbitType::range(0, 3);
   const auto pairs = orbit_isomorphism(result, all, d, target.map, all, d2);

@@ -44,7 +44,7 @@ RuleScheme infer_menger222() {
 
 // Positions carried from `source` to `target` through the isomorphism that sends dart `t` to `s`
 // (Algorithm 1's BFS labelings from both darts; the words must agree).
-expr::EmbeddedMap carry_positions(const expr::EmbeddedMap& source, Dart s, const GMap& target,
+expr::EmbeddedMap carry_positions(const expr::EmbeddedMap& source, Dart s, const Map& target,
                                   Dart t) {
   EXPECT_EQ(bfs_word(source.map, s), bfs_word(target, t));
   const std::vector<Dart> ls = bfs_labeling(source.map, s), lt = bfs_labeling(target, t);

@@ -31,9 +31,9 @@ using gmr::inference::test::polycube::menger_of;
 
 TEST(RuleInference, MengerLevelOneFromTwoGluedCubes) {
   const std::vector<Voxel> cubes{{0, 0, 0}, {0, 0, 1}};
-  const GMap before = make_polycube(cubes);
+  const Map before = make_polycube(cubes);
   const std::vector<Voxel> sub = menger_of(cubes);
-  const GMap after = make_polycube(sub);
+  const Map after = make_polycube(sub);
   ASSERT_EQ(before.size(), 96u);
   ASSERT_EQ(after.size(), 1920u);
   std::map<Voxel, Dart> voxel_index;

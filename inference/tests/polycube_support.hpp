@@ -24,7 +24,7 @@ inline std::vector<std::array<int, 3>> local_corners() {
   for (size_t a = 0; a < 3; ++a) {
     Voxel other{0, 0, 0};
     other[a] = 1;
-    const GMap two = make_polycube({{0, 0, 0}, other});
+    const Map two = make_polycube({{0, 0, 0}, other});
     for (Dart d = 0; d < kVoxelDarts; ++d)
       for (Dart e : orbit(two, OrbitType{1, 2}, d))
         if (!two.is_free(3, e)) corner[d][a] = 1;
@@ -48,7 +48,7 @@ inline std::vector<Voxel> menger_of(const std::vector<Voxel>& cubes) { return su
 struct PolycubeSubdivision {
   std::vector<Voxel> cubes, pattern, sub;  // sub: pattern voxels of cube k at k * |pattern| + i
   int side = 1;
-  GMap before{3}, after{3};
+  Map before{3}, after{3};
   DartMapping mapping;  // before dart -> the same local dart in the pattern voxel at its corner
 
   PolycubeSubdivision(std::vector<Voxel> cubes_, std::vector<Voxel> pattern_, int side_)
@@ -70,7 +70,7 @@ struct PolycubeSubdivision {
 };
 
 // Positions of a polycube (on <1,2,3>): the corner of each dart of voxel v is (v + corner) * scale.
-inline expr::EmbeddedMap with_positions(const GMap& polycube, const std::vector<Voxel>& voxels,
+inline expr::EmbeddedMap with_positions(const Map& polycube, const std::vector<Voxel>& voxels,
                                         double scale) {
   expr::EmbeddedMap m;
   m.map = polycube;

@@ -30,14 +30,14 @@ using namespace gmr::inference::test;
 namespace {
 
 // The after map of applying `s` at `hook` on a copy of g (the engine keeps preserved dart ids).
-GMap applied(const GMap& g, const RuleScheme& s, Dart hook) {
+Map applied(const Map& g, const RuleScheme& s, Dart hook) {
   auto [h, app] = apply_scheme(g, s, {hook});
   EXPECT_TRUE(app.applied) << app.why;
   return h;
 }
 
 // Applies an inferred rule at its own hooks (the before darts of its hook nodes, orbit index 0).
-GMap apply_at_own_hooks(const GMap& g, const InferredRule& r) {
+Map apply_at_own_hooks(const Map& g, const InferredRule& r) {
   std::vector<Dart> hooks;
   for (uint32_t h : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[h][0]);
   auto [out, app] = apply_scheme(g, r.scheme, hooks);
@@ -46,8 +46,8 @@ GMap apply_at_own_hooks(const GMap& g, const InferredRule& r) {
 }
 
 // Two free edges 2-sewn: 4 darts, 1-free.
-GMap sewn_edge() {
-  GMap g(2);
+Map sewn_edge() {
+  Map g(2);
   g.add_darts(4);
   g.link(0, 0, 1);
   g.link(0, 2, 3);
@@ -60,7 +60,7 @@ GMap sewn_edge() {
 // Thesis Fig. 7.15: triangle -> hexagon with the vertices preserved (edge split): a valid rule on
 // <0,1,2>, L = n0, R = n0 <_,1,2> and the edge-midpoint node <1,_,2> 0-linked to it.
 TEST(RuleInference, TriangleToHexagonEdgeSplitIsValid) {
-  const GMap tri = make_polygon(3), hex = make_polygon(6);
+  const Map tri = make_polygon(3), hex = make_polygon(6);
   const JointGraph j = joint_from_pair(tri, hex, read_mapping_file(data("triangle_hexagon_edge_split.json")));
   EXPECT_EQ(j.size(), 18u);
   const FoldResult f = fold(j, ot("<0,1,2>"), 0);
@@ -85,7 +85,7 @@ TEST(RuleInference, TriangleToHexagonEdgeSplitIsValid) {
 // edge at every vertex is impossible on a closed surface: the checker rejects the new node (cycle
 // condition C(0,2) at n1 <_,0,2>), and the driver reports no operation.
 TEST(RuleInference, TriangleToHexagonVertexSplitIsRejectedByTheChecker) {
-  const GMap tri = make_polygon(3), hex = make_polygon(6);
+  const Map tri = make_polygon(3), hex = make_polygon(6);
   const JointGraph j = joint_from_pair(tri, hex, read_mapping_file(data("triangle_hexagon_vertex_split.json")));
   const FoldResult f = fold(j, ot("<0,1,2>"), 0);
   ASSERT_TRUE(f.ok()) << f.failure.message;
@@ -114,8 +114,8 @@ TEST(RuleInference, TriangleToHexagonVertexSplitIsRejectedByTheChecker) {
 // with the library scheme's result.
 TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   const RuleScheme lib = read_scheme_file(rule_file("quad_subdivision"));
-  const GMap cube = make_cube();
-  const GMap sub = applied(cube, lib, 0);
+  const Map cube = make_cube();
+  const Map sub = applied(cube, lib, 0);
   ASSERT_EQ(sub.size(), 192u);
   const JointGraph j = joint_from_pair(cube, sub, identity_mapping(cube, sub));
   EXPECT_EQ(j.size(), 240u);
@@ -131,7 +131,7 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   EXPECT_EQ(res.attempts.size(), 1u);  // one orbit: the whole cube
   EXPECT_TRUE(is_isomorphic(apply_at_own_hooks(cube, r), sub));
   const PositionedMap box = read_off_file(data("open_box.off"));
-  for (const GMap& g : {make_torus(5, 4), box.map, make_prism(7)}) {
+  for (const Map& g : {make_torus(5, 4), box.map, make_prism(7)}) {
     auto [mine, a1] = apply_scheme(g, r.scheme, {0});
     auto [theirs, a2] = apply_scheme(g, lib, {0});
     ASSERT_TRUE(a1.applied && a2.applied);
@@ -146,8 +146,8 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
 // gives back the subdivided cube (soundness of inference with the whole object as example).
 TEST(RuleInference, AllOrbitTypesOnQuadSubdivision) {
   const RuleScheme lib = read_scheme_file(rule_file("quad_subdivision"));
-  const GMap cube = make_cube();
-  const GMap sub = applied(cube, lib, 0);
+  const Map cube = make_cube();
+  const Map sub = applied(cube, lib, 0);
   const JointGraph j = joint_from_pair(cube, sub, identity_mapping(cube, sub));
   const InferenceResult res = infer_rules(j);
   ASSERT_FALSE(res.rules.empty());
@@ -179,8 +179,8 @@ TEST(RuleInference, AllOrbitTypesOnQuadSubdivision) {
 // fold; the next unmarked dart (in n1) gives the same rule rooted elsewhere, merged as a duplicate.
 TEST(RuleInference, MarkingSkipsEquivalentStartsAndDuplicatesAreMerged) {
   const RuleScheme vi = read_scheme_file(rule_file("vertex_insertion"));
-  GMap g = make_polygon(4);
-  GMap h = g;
+  Map g = make_polygon(4);
+  Map h = g;
   for (Dart e : {Dart{0}, Dart{2}, Dart{4}, Dart{6}}) {
     auto app = apply_scheme_in_place(h, vi, {e});
     ASSERT_TRUE(app.applied) << app.why;
@@ -202,7 +202,7 @@ TEST(RuleInference, MarkingSkipsEquivalentStartsAndDuplicatesAreMerged) {
 }
 
 TEST(DartMapping, FileErrorsAreLocated) {
-  const GMap tri = make_polygon(3), hex = make_polygon(6);
+  const Map tri = make_polygon(3), hex = make_polygon(6);
   EXPECT_THROW(parse_mapping(R"({"format":"gmr.mapping","version":1,"pairs":[[0]]})"), Error);
   EXPECT_THROW(parse_mapping(R"({"format":"gmr.map","version":1})"), Error);
   try {
@@ -218,7 +218,7 @@ TEST(DartMapping, FileErrorsAreLocated) {
 // Orbit pairs are expanded with Alg. 5: the hexagon's face paired with the triangle's... is not
 // isomorphic; a square's face paired with a relabeled square face is.
 TEST(DartMapping, OrbitPairsExpandByOrbitIsomorphism) {
-  const GMap a = make_polygon(4), b = make_polygon(4);
+  const Map a = make_polygon(4), b = make_polygon(4);
   DartMapping m = parse_mapping(R"({"format":"gmr.mapping","version":1,
       "orbits":[{"before":0,"after":3,"orbit":"<0,1>","after_orbit":"<0,1>"}]})");
   const auto pairs = expand_mapping(a, b, m);
@@ -241,9 +241,9 @@ TEST(DartMapping, OrbitPairsExpandByOrbitIsomorphism) {
 TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
   struct Case {
     const char* rule;
-    GMap example;
+    Map example;
     DimMask cut;
-    GMap other;
+    Map other;
     DimMask explicit_loops = 0;
   };
   const std::vector<Case> cases = {
@@ -266,7 +266,7 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
   for (const auto& c : cases) {
     SCOPED_TRACE(c.rule);
     const RuleScheme lib = read_scheme_file(rule_file(c.rule));
-    const GMap after = applied(c.example, lib, 0);
+    const Map after = applied(c.example, lib, 0);
     const JointGraph j = joint_from_pair(c.example, after, identity_mapping(c.example, after));
     InferOptions opt;
     opt.orbit = lib.orbit;
@@ -306,8 +306,8 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
   const RuleScheme vi = read_scheme_file(rule_file("vertex_insertion"));
   const RuleScheme ft = read_scheme_file(rule_file("face_triangulation"));
   const RuleScheme et = read_scheme_file(rule_file("edge_triangulation"));
-  const GMap tri = make_polygon(3);
-  GMap after = tri;
+  const Map tri = make_polygon(3);
+  Map after = tri;
   for (Dart e : {Dart{0}, Dart{2}, Dart{4}}) ASSERT_TRUE(apply_scheme_in_place(after, vi, {e}).applied);
   ASSERT_TRUE(apply_scheme_in_place(after, ft, {0}).applied);
   ASSERT_EQ(after.size(), 36u);
@@ -320,7 +320,7 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
   EXPECT_EQ(ps.left.size(), 1u);
   EXPECT_EQ(ps.right.size(), 6u);
   EXPECT_TRUE(schemes_isomorphic(ps, et)) << scheme_to_json_text(ps);
-  for (const GMap& g : {make_grid(1, 1), make_grid(3, 2), make_tetrahedron()}) {
+  for (const Map& g : {make_grid(1, 1), make_grid(3, 2), make_tetrahedron()}) {
     auto [mine, a1] = apply_scheme(g, ps, {0});
     auto [theirs, a2] = apply_scheme(g, et, {0});
     ASSERT_TRUE(a1.applied && a2.applied);
@@ -335,8 +335,8 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
 // the 1-loops of preserved nodes cut, is the library scheme.
 TEST(RuleInference, EnumeratingRelabelingsFindsMixedLoopReadings) {
   const RuleScheme lib = read_scheme_file(rule_file("dual_vertex_insertion"));
-  const GMap edge = make_free_edge();
-  const GMap after = applied(edge, lib, 0);
+  const Map edge = make_free_edge();
+  const Map after = applied(edge, lib, 0);
   const JointGraph j = joint_from_pair(edge, after, identity_mapping(edge, after));
   const FoldAll all = fold_all(j, lib.orbit, 0);
   EXPECT_FALSE(all.truncated);
@@ -361,8 +361,8 @@ TEST(RuleInference, EnumeratingRelabelingsFindsMixedLoopReadings) {
 // to the rest of the square become undefined neighbours and the library scheme comes back.
 TEST(RuleInference, SelectionInfersALocalOperation) {
   const RuleScheme vi = read_scheme_file(rule_file("vertex_insertion"));
-  const GMap sq = make_polygon(4);
-  const GMap after = applied(sq, vi, 0);
+  const Map sq = make_polygon(4);
+  const Map after = applied(sq, vi, 0);
   ASSERT_EQ(after.size(), 10u);
   InferOptions opt;
   opt.orbit = ot("<0,2>");
@@ -389,8 +389,8 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
 TEST(RuleInference, DooSabinIterationsFromIterationZero) {
   const RuleScheme ds = read_scheme_file(rule_file("doo_sabin_subdivision"));
   ASSERT_TRUE(check_scheme(ds).ok());
-  const GMap cube = make_cube();
-  GMap after = cube, tetra_k = make_tetrahedron();
+  const Map cube = make_cube();
+  Map after = cube, tetra_k = make_tetrahedron();
   size_t nodes = 1;
   for (int k = 1; k <= 3; ++k) {
     SCOPED_TRACE(k);
@@ -420,8 +420,8 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
 TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   const RuleScheme s3 = read_scheme_file(rule_file("sqrt3_subdivision"));
   ASSERT_TRUE(check_scheme(s3).ok());
-  const GMap tet = make_tetrahedron();
-  const GMap after = applied(tet, s3, 0);
+  const Map tet = make_tetrahedron();
+  const Map after = applied(tet, s3, 0);
   ASSERT_EQ(after.size(), 72u);
   const JointGraph j = joint_from_pair(tet, after, identity_mapping(tet, after));
   InferOptions opt;
@@ -432,7 +432,7 @@ TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   EXPECT_EQ(r.right.size(), 3u);
   EXPECT_TRUE(schemes_isomorphic(r, s3)) << scheme_to_json_text(r);
   const RuleScheme ft = read_scheme_file(rule_file("face_triangulation"));
-  GMap mesh = make_cube();
+  Map mesh = make_cube();
   for (Dart f : orbit_representatives(mesh, ot("<0,1>"))) ASSERT_TRUE(apply_scheme_in_place(mesh, ft, {f}).applied);
   ASSERT_EQ(count_cells(mesh, 2), 24u);
   auto [mine, a1] = apply_scheme(mesh, r, {0});
@@ -447,8 +447,8 @@ namespace {
 
 // Two copies of g side by side (the second's darts shifted by g's capacity): two free cells for
 // the sewing operations' two hooks.
-GMap two_copies(const GMap& g) {
-  GMap u(g.dimension());
+Map two_copies(const Map& g) {
+  Map u(g.dimension());
   u.add_darts(2 * g.capacity());
   const Dart off = g.capacity();
   for (int i = 0; i <= g.dimension(); ++i)
@@ -461,7 +461,7 @@ GMap two_copies(const GMap& g) {
 }
 
 struct HookedExample {
-  GMap before, after;
+  Map before, after;
   DartMapping mapping;
 };
 
@@ -484,13 +484,13 @@ InferenceResult infer_on(const RuleScheme& lib, const HookedExample& e, DimMask 
 TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
   struct Case {
     const char* rule;
-    GMap before;
+    Map before;
     std::vector<Dart> hooks;
     DimMask cut;
     size_t hooks_inferred;
   };
-  const GMap edges = two_copies(make_free_edge()), triangles = two_copies(make_polygon(3, 3));
-  GMap sewn_triangles = triangles;
+  const Map edges = two_copies(make_free_edge()), triangles = two_copies(make_polygon(3, 3));
+  Map sewn_triangles = triangles;
   sew(sewn_triangles, 3, 0, 6);
   const std::vector<Case> cases = {
       {"sew2", edges, {0, 2}, 1u << 1, 2},
@@ -519,7 +519,7 @@ TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
 namespace {
 // A local example (thesis §7.1.2): the hook's <o>-orbit, the darts 1-linked to it (when
 // with_neighbours) and, after, the preserved ones among them plus the created darts.
-HookedExample local_example(const GMap& before, const RuleScheme& lib, Dart hook, const OrbitType& o, bool with_neighbours) {
+HookedExample local_example(const Map& before, const RuleScheme& lib, Dart hook, const OrbitType& o, bool with_neighbours) {
   auto [after, app] = apply_scheme(before, lib, {hook});
   EXPECT_TRUE(app.applied) << app.why;
   std::vector<Dart> sel = orbit(before, o, hook);
@@ -554,7 +554,7 @@ TEST(RuleInference, LocalLibrarySchemesAreRecoveredThroughSelections) {
     SCOPED_TRACE(rule);
     const RuleScheme lib = read_scheme_file(rule_file(rule));
     const bool neighbours = std::string(rule) != "vertex_insertion_folded_2";
-    for (const GMap& g : {make_tetrahedron(), make_cube()}) {
+    for (const Map& g : {make_tetrahedron(), make_cube()}) {
       const HookedExample e = local_example(g, lib, 0, ot("<0,2>"), neighbours);
       EXPECT_EQ(e.mapping.before_selection->size(), 8u - (neighbours ? 0 : 4));
       const InferenceResult res = infer_on(lib, e, 0);

@@ -9,10 +9,10 @@
 
 namespace gmr {
 
-GMap surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t num_vertices,
+Map surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t num_vertices,
                         const SurfaceOptions& opt, std::vector<uint32_t>* vertex_of_dart) {
   if (opt.n < 2) throw Error(ErrorCode::Range, "a surface needs a G-map of dimension >= 2");
-  GMap g(opt.n);
+  Map g(opt.n);
   size_t total = 0;
   for (size_t f = 0; f < faces.size(); ++f) {
     const auto& face = faces[f];
@@ -82,17 +82,17 @@ GMap surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t 
   return g;
 }
 
-GMap make_free_edge(int n) {
-  GMap g(n);
+Map make_free_edge(int n) {
+  Map g(n);
   g.add_darts(2);
   g.link(0, 0, 1);
   return g;
 }
 
-GMap make_polygon(size_t k, int n) {
+Map make_polygon(size_t k, int n) {
   if (k < 1) throw Error(ErrorCode::Range, "a polygon needs at least one edge");
   if (n < 1) throw Error(ErrorCode::Range, "a polygon needs a G-map of dimension >= 1");
-  GMap g(n);
+  Map g(n);
   g.add_darts(2 * k);
   for (size_t p = 0; p < k; ++p) {
     const auto a = static_cast<Dart>(2 * p);
@@ -108,7 +108,7 @@ static SurfaceOptions with_n(int n) {
   return o;
 }
 
-GMap make_tetrahedron(int n) {
+Map make_tetrahedron(int n) {
   return surface_from_faces({{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}}, 4, with_n(n));
 }
 
@@ -116,13 +116,13 @@ GMap make_tetrahedron(int n) {
 static const std::vector<std::vector<uint32_t>> kCubeFaces = {
     {0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
 
-GMap make_cube(int n) { return surface_from_faces(kCubeFaces, 8, with_n(n)); }
+Map make_cube(int n) { return surface_from_faces(kCubeFaces, 8, with_n(n)); }
 
-GMap make_square_pyramid(int n) {
+Map make_square_pyramid(int n) {
   return surface_from_faces({{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}, 5, with_n(n));
 }
 
-GMap make_prism(size_t k, int n) {
+Map make_prism(size_t k, int n) {
   if (k < 3) throw Error(ErrorCode::Range, "a prism needs a base with at least 3 sides");
   std::vector<std::vector<uint32_t>> faces(2);
   for (size_t p = 0; p < k; ++p) {
@@ -134,7 +134,7 @@ GMap make_prism(size_t k, int n) {
   return surface_from_faces(faces, 2 * k, with_n(n));
 }
 
-GMap make_grid(size_t w, size_t h, int n) {
+Map make_grid(size_t w, size_t h, int n) {
   if (w < 1 || h < 1) throw Error(ErrorCode::Range, "a grid needs at least 1x1 quads");
   std::vector<std::vector<uint32_t>> faces;
   auto id = [&](size_t x, size_t y) { return static_cast<uint32_t>(y * (w + 1) + x); };
@@ -143,7 +143,7 @@ GMap make_grid(size_t w, size_t h, int n) {
   return surface_from_faces(faces, (w + 1) * (h + 1), with_n(n));
 }
 
-GMap make_torus(size_t w, size_t h, int n) {
+Map make_torus(size_t w, size_t h, int n) {
   if (w < 3 || h < 3) throw Error(ErrorCode::Range, "a torus grid needs at least 3x3 quads");
   std::vector<std::vector<uint32_t>> faces;
   faces.reserve(w * h);
@@ -153,8 +153,8 @@ GMap make_torus(size_t w, size_t h, int n) {
   return surface_from_faces(faces, w * h, with_n(n));
 }
 
-GMap make_polycube(const std::vector<Voxel>& voxels) {
-  GMap g(3);
+Map make_polycube(const std::vector<Voxel>& voxels) {
+  Map g(3);
   // A dart of a voxel cube is identified, in space, by (face centre, vertex, other end of its
   // edge) in doubled integer coordinates; the darts of two face-adjacent voxels with the same key
   // are the ones 3-sewing pairs.
@@ -169,7 +169,7 @@ GMap make_polycube(const std::vector<Voxel>& voxels) {
                                          std::to_string(vx[1]) + "," + std::to_string(vx[2]) + ")",
                   "voxel " + std::to_string(k));
     std::vector<uint32_t> corner_of;
-    GMap cube = surface_from_faces(kCubeFaces, 8, with_n(3), &corner_of);
+    Map cube = surface_from_faces(kCubeFaces, 8, with_n(3), &corner_of);
     const Dart base = g.add_darts(cube.capacity());
     for (int i = 0; i <= 2; ++i)
       for (Dart d = 0; d < cube.capacity(); ++d) g.set_alpha(i, base + d, base + cube.alpha(i, d));
@@ -222,9 +222,9 @@ std::vector<Voxel> menger_polycube_voxels(int l, int m, int k) {
   return out;
 }
 
-GMap make_stacked_cubes() { return make_polycube({{0, 0, 0}, {0, 0, 1}}); }
+Map make_stacked_cubes() { return make_polycube({{0, 0, 0}, {0, 0, 1}}); }
 
-GMap orient(const GMap& g, Dart d, bool keep_boundary) {
+Map orient(const Map& g, Dart d, bool keep_boundary) {
   if (g.is_omap()) throw Error(ErrorCode::Usage, "orient expects a G-map");
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
   const int n = g.dimension();
@@ -252,7 +252,7 @@ GMap orient(const GMap& g, Dart d, bool keep_boundary) {
     if (parity[v] == 0) even.push_back(v);
   std::unordered_map<Dart, Dart> index;
   for (size_t k = 0; k < even.size(); ++k) index[even[k]] = static_cast<Dart>(k);
-  GMap o(n, MapKind::OMap);
+  Map o(n, MapKind::OMap);
   o.add_darts(even.size());
   for (size_t k = 0; k < even.size(); ++k)
     for (int i = 1; i <= n; ++i) {
@@ -264,12 +264,12 @@ GMap orient(const GMap& g, Dart d, bool keep_boundary) {
   return o;
 }
 
-GMap lift(const GMap& g, int n) {
+Map lift(const Map& g, int n) {
   if (n < g.dimension() || n >= kMaxDim)
     throw Error(ErrorCode::Usage, "cannot lift a " + std::to_string(g.dimension()) + "-map to dimension " +
                                       std::to_string(n) + " (expected " + std::to_string(g.dimension()) + ".." +
                                       std::to_string(kMaxDim - 1) + ")");
-  GMap out(n, g.kind());
+  Map out(n, g.kind());
   out.add_darts(g.capacity());
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
     for (Dart d = 0; d < g.capacity(); ++d) out.set_alpha(i, d, g.alpha(i, d));

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr {
 
@@ -19,24 +19,24 @@ struct SurfaceOptions {
   bool reject_nonmanifold_vertices = true;
 };
 // vertex_of_dart (optional output): for every dart, the index of its vertex in the face list.
-GMap surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t num_vertices,
+Map surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t num_vertices,
                         const SurfaceOptions& opt = {}, std::vector<uint32_t>* vertex_of_dart = nullptr);
 
-GMap make_free_edge(int n = 2);            // 2 darts, 0-linked
-GMap make_polygon(size_t k, int n = 2);    // 2k darts: one open face
-GMap make_tetrahedron(int n = 2);          // closed surface, 24 darts
-GMap make_cube(int n = 2);                 // closed surface, 48 darts
-GMap make_square_pyramid(int n = 2);       // closed surface, 32 darts
-GMap make_prism(size_t k, int n = 2);      // closed surface over a k-gon
-GMap make_grid(size_t w, size_t h, int n = 2);  // open w x h grid of quads, 8wh darts
+Map make_free_edge(int n = 2);            // 2 darts, 0-linked
+Map make_polygon(size_t k, int n = 2);    // 2k darts: one open face
+Map make_tetrahedron(int n = 2);          // closed surface, 24 darts
+Map make_cube(int n = 2);                 // closed surface, 48 darts
+Map make_square_pyramid(int n = 2);       // closed surface, 32 darts
+Map make_prism(size_t k, int n = 2);      // closed surface over a k-gon
+Map make_grid(size_t w, size_t h, int n = 2);  // open w x h grid of quads, 8wh darts
 
 // Two cubes (3-G-map volumes) 3-sewn along a face: 96 darts (inference paper, §3.3).
-GMap make_stacked_cubes();
+Map make_stacked_cubes();
 
 // Polycube: one cube volume (48 darts) per voxel, 3-sewn along the faces of face-adjacent
 // voxels. Duplicate voxels are rejected (Error(Schema)).
 using Voxel = std::array<int, 3>;
-GMap make_polycube(const std::vector<Voxel>& voxels);
+Map make_polycube(const std::vector<Voxel>& voxels);
 // Menger sponge voxels at `level` (20^level voxels).
 std::vector<Voxel> menger_voxels(int level);
 // One iteration of the (l, m, k)-Menger operation on a unit cube (Menger polycubes, Richaume et al.
@@ -46,12 +46,12 @@ std::vector<Voxel> menger_voxels(int level);
 std::vector<Voxel> menger_polycube_voxels(int l, int m, int k);
 
 // A closed orientable surface of genus 1 (a torus) as a grid of w x h quads with wrap-around.
-GMap make_torus(size_t w, size_t h, int n = 2);
+Map make_torus(size_t w, size_t h, int n = 2);
 
 // The map as an n-G-map (n-O-map) for n >= its dimension: the same darts and links, every new
 // dimension free (loops). A surface lifted to dimension 3 is a 3-G-map with one volume per
 // connected component, so that rules written for volumes apply to it.
-GMap lift(const GMap& g, int n);
+Map lift(const Map& g, int n);
 
 // The O-map of the orientation class of dart `d` of a closed orientable G-map:
 // beta_i = alpha_i o alpha_0 (i >= 1) restricted to the darts reachable from d by even words.
@@ -62,6 +62,6 @@ GMap lift(const GMap& g, int n);
 // satisfy the O-map cycle constraint C(1,i) (beta_i beta_1 beta_i beta_1 (d) = beta_1^2(d) != d
 // on a boundary face): Def. 32 O-maps have no 3-boundary — close the volume first (e.g.
 // double_along_boundary in random_maps.hpp).
-GMap orient(const GMap& g, Dart d = 0, bool keep_boundary = false);
+Map orient(const Map& g, Dart d = 0, bool keep_boundary = false);
 
 }  // namespace gmr

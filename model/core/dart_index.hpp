@@ -8,7 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "model/core/error.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/core/orbit.hpp"
 
 namespace gmr {
@@ -31,14 +31,14 @@ class Embedding {
   const OrbitType& orbit_type() const { return orbit_; }
 
   // Gives value v to the whole <o>-orbit of d.
-  void set(const GMap& g, Dart d, T v) {
+  void set(const Map& g, Dart d, T v) {
     grow(g);
     const auto slot = static_cast<uint32_t>(values_.size());
     values_.push_back(std::move(v));
     for (Dart e : orbit(g, orbit_, d)) slot_[e] = slot;
   }
   // Raw per-dart write (parsers; deliberately inconsistent data in tests).
-  void set_dart(const GMap& g, Dart d, T v) {
+  void set_dart(const Map& g, Dart d, T v) {
     grow(g);
     slot_[d] = static_cast<uint32_t>(values_.size());
     values_.push_back(std::move(v));
@@ -53,7 +53,7 @@ class Embedding {
   }
   void reserve_values(size_t n) { values_.reserve(n); }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
-  void set_slot(const GMap& g, Dart d, uint32_t s) {
+  void set_slot(const Map& g, Dart d, uint32_t s) {
     grow(g);
     slot_[d] = s;
   }
@@ -67,7 +67,7 @@ class Embedding {
   }
 
   // Every orbit whose darts do not all hold one value (values compared with ==).
-  std::vector<EmbeddingIssue> check(const GMap& g) const {
+  std::vector<EmbeddingIssue> check(const Map& g) const {
     require_orbit_type(g, orbit_);
     std::vector<EmbeddingIssue> issues;
     for (Dart rep : orbit_representatives(g, orbit_)) {
@@ -92,7 +92,7 @@ class Embedding {
   }
 
  private:
-  void grow(const GMap& g) {
+  void grow(const Map& g) {
     if (slot_.size() < g.capacity()) slot_.resize(g.capacity(), kNoValue);
   }
   std::string name_;

@@ -7,14 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "model/core/embedding.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr {
 
 using JsonEmbedding = Embedding<nlohmann::json>;
 
 struct GMapFile {
-  GMap map{2};
+  Map map{2};
   std::vector<JsonEmbedding> embeddings;
 
   // The embedding called `name`, or nullptr.

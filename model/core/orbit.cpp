@@ -6,7 +6,7 @@
 
 namespace gmr {
 
-void require_orbit_type(const GMap& g, const OrbitType& o) {
+void require_orbit_type(const Map& g, const OrbitType& o) {
   for (int i : o.dims()) {
     if (i == OrbitType::kHole)
       throw Error(ErrorCode::Usage, "orbit type " + o.str() + " has '_' where a set of dimensions is expected");
@@ -17,11 +17,11 @@ void require_orbit_type(const GMap& g, const OrbitType& o) {
   }
 }
 
-static void require_dart(const GMap& g, Dart d) {
+static void require_dart(const Map& g, Dart d) {
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
 }
 
-std::vector<Dart> orbit(const GMap& g, const OrbitType& o, Dart d) {
+std::vector<Dart> orbit(const Map& g, const OrbitType& o, Dart d) {
   require_orbit_type(g, o);
   require_dart(g, d);
   ScopedMarker seen(g);
@@ -43,23 +43,23 @@ std::vector<Dart> orbit(const GMap& g, const OrbitType& o, Dart d) {
 }
 
 template <class F>
-static size_t for_each_orbit(const GMap& g, DimMask mask, F&& on_representative) {
+static size_t for_each_orbit(const Map& g, DimMask mask, F&& on_representative) {
   return visit_all_orbits(g, mask, on_representative, [](Dart) {});
 }
 
-size_t count_orbits(const GMap& g, const OrbitType& o) {
+size_t count_orbits(const Map& g, const OrbitType& o) {
   require_orbit_type(g, o);
   return for_each_orbit(g, o.mask(), [](Dart) {});
 }
 
-std::vector<Dart> orbit_representatives(const GMap& g, const OrbitType& o) {
+std::vector<Dart> orbit_representatives(const Map& g, const OrbitType& o) {
   require_orbit_type(g, o);
   std::vector<Dart> reps;
   for_each_orbit(g, o.mask(), [&](Dart d) { reps.push_back(d); });
   return reps;
 }
 
-OrbitType cell_type(const GMap& g, int i) {
+OrbitType cell_type(const Map& g, int i) {
   if (i < 0 || i > g.dimension())
     throw Error(ErrorCode::Range, "cell dimension " + std::to_string(i) + " outside 0.." +
                                       std::to_string(g.dimension()));
@@ -74,7 +74,7 @@ OrbitType cell_type(const GMap& g, int i) {
 // O-map vertex traversal: neighbours of v are beta_k(beta_1(v)) for k = 2..n. Each such
 // composition is a permutation, so forward reachability gives the orbit.
 template <class F>
-static size_t visit_omap_vertex_marked(const GMap& g, Dart d, int m, std::vector<Dart>& stack, F&& f) {
+static size_t visit_omap_vertex_marked(const Map& g, Dart d, int m, std::vector<Dart>& stack, F&& f) {
   size_t count = 0;
   stack.clear();
   stack.push_back(d);
@@ -96,7 +96,7 @@ static size_t visit_omap_vertex_marked(const GMap& g, Dart d, int m, std::vector
   return count;
 }
 
-std::vector<Dart> omap_vertex(const GMap& g, Dart d) {
+std::vector<Dart> omap_vertex(const Map& g, Dart d) {
   require_dart(g, d);
   if (!g.is_omap()) return orbit(g, cell_type(g, 0), d);
   ScopedMarker seen(g);
@@ -107,7 +107,7 @@ std::vector<Dart> omap_vertex(const GMap& g, Dart d) {
   return out;
 }
 
-size_t count_cells(const GMap& g, int i) {
+size_t count_cells(const Map& g, int i) {
   if (g.is_omap() && i == 0) {
     ScopedMarker seen(g);
     std::vector<Dart> stack;
@@ -122,22 +122,22 @@ size_t count_cells(const GMap& g, int i) {
   return for_each_orbit(g, cell_type(g, i).mask(), [](Dart) {});
 }
 
-std::vector<size_t> count_all_cells(const GMap& g) {
+std::vector<size_t> count_all_cells(const Map& g) {
   std::vector<size_t> c;
   for (int i = 0; i <= g.dimension(); ++i) c.push_back(count_cells(g, i));
   return c;
 }
 
-long long euler_characteristic(const GMap& g) {
+long long euler_characteristic(const Map& g) {
   long long chi = 0;
   const auto c = count_all_cells(g);
   for (size_t i = 0; i < c.size(); ++i) chi += (i % 2 == 0 ? 1 : -1) * static_cast<long long>(c[i]);
   return chi;
 }
 
-size_t count_components(const GMap& g) { return for_each_orbit(g, g.dims_mask(), [](Dart) {}); }
+size_t count_components(const Map& g) { return for_each_orbit(g, g.dims_mask(), [](Dart) {}); }
 
-std::vector<Dart> free_darts(const GMap& g, int i) {
+std::vector<Dart> free_darts(const Map& g, int i) {
   if (!g.has_dim(i)) throw Error(ErrorCode::Range, "dimension " + std::to_string(i) + " not in map");
   std::vector<Dart> out;
   g.for_each_dart([&](Dart d) {
@@ -146,7 +146,7 @@ std::vector<Dart> free_darts(const GMap& g, int i) {
   return out;
 }
 
-bool is_closed(const GMap& g) {
+bool is_closed(const Map& g) {
   const int n = g.dimension();
   bool closed = true;
   g.for_each_dart([&](Dart d) {
@@ -155,7 +155,7 @@ bool is_closed(const GMap& g) {
   return closed;
 }
 
-size_t count_boundary_cells(const GMap& g) {
+size_t count_boundary_cells(const Map& g) {
   const int n = g.dimension();
   if (n < 1 || g.is_omap()) return 0;
   DimMask mask = 0;
@@ -173,9 +173,9 @@ size_t count_boundary_cells(const GMap& g) {
   return count;
 }
 
-std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const GMap& g,
+std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const Map& g,
                                                                      const OrbitType& o, Dart d,
-                                                                     const GMap& g2,
+                                                                     const Map& g2,
                                                                      const OrbitType& o2, Dart d2,
                                                                      OrbitIsoConflict* conflict) {
   require_orbit_type(g, o);

@@ -8,17 +8,17 @@
 #include <utility>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/core/orbit_type.hpp"
 
 namespace gmr {
 
 // Checks that every dimension of `o` exists in `g` and that `o` has no `_`; throws Error(Range).
-void require_orbit_type(const GMap& g, const OrbitType& o);
+void require_orbit_type(const Map& g, const OrbitType& o);
 
 // Algorithm 4: the darts of the <o>-orbit of d, in BFS order (d first, links visited in the order
 // of `o`).
-std::vector<Dart> orbit(const GMap& g, const OrbitType& o, Dart d);
+std::vector<Dart> orbit(const Map& g, const OrbitType& o, Dart d);
 
 namespace detail {
 // The traversal of visit_orbit_marked on raw arrays: link[p] is the link array of the p-th
@@ -132,7 +132,7 @@ size_t visit_orbit_raw2(const Dart* const* link, uint64_t* words, Dart cap, Dart
 // order. A link to a non-existent index (dangling link of an invalid map) is not followed.
 // The mask's dimensions must be dimensions of g (see require_orbit_type).
 template <class F>
-size_t visit_orbit_marked(const GMap& g, DimMask mask, Dart d, int m, std::vector<Dart>& stack,
+size_t visit_orbit_marked(const Map& g, DimMask mask, Dart d, int m, std::vector<Dart>& stack,
                           F&& f) {
   // Hot loop on raw arrays: the link arrays of the mask's dimensions and the marker's words are
   // hoisted out of the loop (no per-step vector-of-vector indirection).
@@ -154,7 +154,7 @@ size_t visit_orbit_marked(const GMap& g, DimMask mask, Dart d, int m, std::vecto
 // darts in visit_orbit_marked order. Returns the number of orbits. Without deleted darts, the
 // scan for the next unmarked dart skips 64 marked darts at a time.
 template <class R, class F>
-size_t visit_all_orbits(const GMap& g, DimMask mask, R&& on_orbit, F&& on_dart) {
+size_t visit_all_orbits(const Map& g, DimMask mask, R&& on_orbit, F&& on_dart) {
   ScopedMarker seen(g);
   std::vector<Dart> stack;
   size_t n = 0;
@@ -185,31 +185,31 @@ size_t visit_all_orbits(const GMap& g, DimMask mask, R&& on_orbit, F&& on_dart) 
 }
 
 // Number of <o>-orbits of g.
-size_t count_orbits(const GMap& g, const OrbitType& o);
+size_t count_orbits(const Map& g, const OrbitType& o);
 // One representative dart per <o>-orbit, in increasing dart order.
-std::vector<Dart> orbit_representatives(const GMap& g, const OrbitType& o);
+std::vector<Dart> orbit_representatives(const Map& g, const OrbitType& o);
 
 // The orbit type of i-cells: (lowest..n)\{i} (G-maps, and O-maps for i >= 1).
-OrbitType cell_type(const GMap& g, int i);
+OrbitType cell_type(const Map& g, int i);
 // Number of i-cells. For an O-map, 0-cells (vertices) are orbits of {beta_k o beta_1 | 2<=k<=n}
 // (thesis §1.4).
-size_t count_cells(const GMap& g, int i);
+size_t count_cells(const Map& g, int i);
 // counts[i] = number of i-cells, i = 0..n.
-std::vector<size_t> count_all_cells(const GMap& g);
+std::vector<size_t> count_all_cells(const Map& g);
 // sum_i (-1)^i c_i.
-long long euler_characteristic(const GMap& g);
+long long euler_characteristic(const Map& g);
 // Connected components: <lowest..n>-orbits.
-size_t count_components(const GMap& g);
+size_t count_components(const Map& g);
 // The darts of the O-map vertex (0-cell) of d.
-std::vector<Dart> omap_vertex(const GMap& g, Dart d);
+std::vector<Dart> omap_vertex(const Map& g, Dart d);
 
 // Boundary detection. A dart is i-free if it carries an i-loop; the boundary of an n-G-map is the
 // set of n-free darts (an O-map of this library has no boundary: its n-loops, if any, are reported).
-std::vector<Dart> free_darts(const GMap& g, int i);
-bool is_closed(const GMap& g);  // no n-free dart
+std::vector<Dart> free_darts(const Map& g, int i);
+bool is_closed(const Map& g);  // no n-free dart
 // Number of boundary (n-1)-cells: orbits of type <0..n-2> among n-free darts (the boundary's faces
 // in 3D, edges in 2D).
-size_t count_boundary_cells(const GMap& g);
+size_t count_boundary_cells(const Map& g);
 
 // Algorithm 5: isomorphism of the <o>-orbit of d in g with the <o2>-orbit of d2 in g2, where
 // dimension o[p] corresponds to o2[p] (positional relabeling). Returns the dart pairs (x, x') in BFS
@@ -222,9 +222,9 @@ size_t count_boundary_cells(const GMap& g);
 struct OrbitIsoConflict {
   Dart x = kNoDart, x2 = kNoDart, earlier = kNoDart;
 };
-std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const GMap& g,
+std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const Map& g,
                                                                      const OrbitType& o, Dart d,
-                                                                     const GMap& g2,
+                                                                     const Map& g2,
                                                                      const OrbitType& o2, Dart d2,
                                                                      OrbitIsoConflict* conflict = nullptr);
 

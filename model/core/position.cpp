@@ -6,12 +6,12 @@
 
 namespace gmr {
 
-OrbitType vertex_orbit_type(const GMap& g) {
+OrbitType vertex_orbit_type(const Map& g) {
   if (g.dimension() < 1) throw Error(ErrorCode::Range, "a 0-G-map has no vertex orbit with positions");
   return OrbitType::range(1, g.dimension());
 }
 
-JsonEmbedding position_to_json(const GMap& g, const PositionEmbedding& pos) {
+JsonEmbedding position_to_json(const Map& g, const PositionEmbedding& pos) {
   JsonEmbedding out(pos.name(), pos.orbit_type());
   for (Dart rep : orbit_representatives(g, pos.orbit_type())) {
     if (!pos.has(rep)) continue;
@@ -29,7 +29,7 @@ std::optional<std::string> position_value_problem(const nlohmann::json& v) {
   return std::nullopt;
 }
 
-PositionEmbedding position_from_json(const GMap& g, const JsonEmbedding& e) {
+PositionEmbedding position_from_json(const Map& g, const JsonEmbedding& e) {
   PositionEmbedding out(e.name(), e.orbit_type());
   for (Dart rep : orbit_representatives(g, e.orbit_type())) {
     if (!e.has(rep)) continue;

@@ -17,20 +17,20 @@ using PositionEmbedding = Embedding<Vec3>;
 
 // A map with vertex positions (what OFF/OBJ describe).
 struct PositionedMap {
-  GMap map{2};
+  Map map{2};
   PositionEmbedding position{kPositionName, OrbitType{1, 2}};
 };
 
 // The vertex orbit type <1..n> of an n-G-map.
-OrbitType vertex_orbit_type(const GMap& g);
+OrbitType vertex_orbit_type(const Map& g);
 
 // Positions as a JSON embedding: one [x, y, z] per orbit that has a value.
-JsonEmbedding position_to_json(const GMap& g, const PositionEmbedding& pos);
+JsonEmbedding position_to_json(const Map& g, const PositionEmbedding& pos);
 // Why a JSON value is not a position (an array of 3 finite numbers), or nullopt when it is one.
 std::optional<std::string> position_value_problem(const nlohmann::json& v);
 // The typed view of a JSON embedding: every value must be an array of 3 finite numbers
 // (Error(Schema) naming the embedding and a dart of the offending orbit otherwise).
-PositionEmbedding position_from_json(const GMap& g, const JsonEmbedding& e);
+PositionEmbedding position_from_json(const Map& g, const JsonEmbedding& e);
 
 // gmr.gmap content <-> positioned map. `to_positioned` requires a "position" embedding
 // (Error(Schema) when there is none).

@@ -7,20 +7,20 @@
 
 namespace gmr {
 
-OrbitType sew_orbit_type(const GMap& g, int i) {
+OrbitType sew_orbit_type(const Map& g, int i) {
   std::vector<int> dims;
   for (int k = 0; k <= g.dimension(); ++k)
     if (k < i - 1 || k > i + 1) dims.push_back(k);
   return OrbitType(std::move(dims));
 }
 
-static void require_gmap_dim(const GMap& g, int i) {
+static void require_gmap_dim(const Map& g, int i) {
   if (g.is_omap()) throw Error(ErrorCode::Usage, "sewing is implemented for G-maps only (O-map sew: not yet)");
   if (!g.has_dim(i))
     throw Error(ErrorCode::Range, "sew dimension " + std::to_string(i) + " outside 0.." + std::to_string(g.dimension()));
 }
 
-bool is_sewable(const GMap& g, int i, Dart d1, Dart d2, std::string* why) {
+bool is_sewable(const Map& g, int i, Dart d1, Dart d2, std::string* why) {
   require_gmap_dim(g, i);
   auto fail = [&](std::string s) {
     if (why) *why = std::move(s);
@@ -50,7 +50,7 @@ bool is_sewable(const GMap& g, int i, Dart d1, Dart d2, std::string* why) {
   return true;
 }
 
-void sew(GMap& g, int i, Dart d1, Dart d2) {
+void sew(Map& g, int i, Dart d1, Dart d2) {
   std::string why;
   if (!is_sewable(g, i, d1, d2, &why))
     throw Error(ErrorCode::Sew, std::to_string(i) + "-sew refused: " + why,
@@ -60,7 +60,7 @@ void sew(GMap& g, int i, Dart d1, Dart d2) {
   for (auto [x, y] : *pairs) g.link(i, x, y);
 }
 
-void unsew(GMap& g, int i, Dart d) {
+void unsew(Map& g, int i, Dart d) {
   require_gmap_dim(g, i);
   if (!g.alive(d)) throw Error(ErrorCode::Sew, "no such dart", "dart " + std::to_string(d));
   if (g.is_free(i, d))

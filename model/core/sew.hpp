@@ -7,16 +7,16 @@
 // when the orbits overlap in a way that would pair a dart with two partners, or when the result
 // would not be a valid G-map. Unsewing makes the whole <I>-orbit of d i-free again.
 #pragma once
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr {
 
 // The orbit type (0..n)\{i-1,i,i+1} along which i-sewing propagates.
-OrbitType sew_orbit_type(const GMap& g, int i);
+OrbitType sew_orbit_type(const Map& g, int i);
 
 // Whether i-sew(d1,d2) is possible; when not, `why` receives the reason.
-bool is_sewable(const GMap& g, int i, Dart d1, Dart d2, std::string* why = nullptr);
-void sew(GMap& g, int i, Dart d1, Dart d2);
-void unsew(GMap& g, int i, Dart d);
+bool is_sewable(const Map& g, int i, Dart d1, Dart d2, std::string* why = nullptr);
+void sew(Map& g, int i, Dart d1, Dart d2);
+void unsew(Map& g, int i, Dart d);
 
 }  // namespace gmr

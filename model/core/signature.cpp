@@ -22,7 +22,7 @@ namespace {
 // Streams W(M,d) and compares it on the fly with `best` (when given): returns -1 (smaller),
 // 0 (equal), +1 (greater, stopped early). `label` is scratch space indexed by dart, all zero on
 // entry and on exit.
-int stream_word(const GMap& g, Dart d, const std::vector<uint32_t>* flags, const Word* best,
+int stream_word(const Map& g, Dart d, const std::vector<uint32_t>* flags, const Word* best,
                 std::vector<uint32_t>& label, std::vector<Dart>& order, Word* out) {
   const int lo = g.lowest_dim(), n = g.dimension();
   order.clear();
@@ -49,14 +49,14 @@ int stream_word(const GMap& g, Dart d, const std::vector<uint32_t>* flags, const
 
 }  // namespace
 
-std::vector<Dart> bfs_labeling(const GMap& g, Dart d) {
+std::vector<Dart> bfs_labeling(const Map& g, Dart d) {
   std::vector<uint32_t> label(g.capacity(), 0);
   std::vector<Dart> order;
   stream_word(g, d, nullptr, nullptr, label, order, nullptr);
   return order;
 }
 
-Word bfs_word(const GMap& g, Dart d, const std::vector<uint32_t>* flags) {
+Word bfs_word(const Map& g, Dart d, const std::vector<uint32_t>* flags) {
   std::vector<uint32_t> label(g.capacity(), 0);
   std::vector<Dart> order;
   Word w;
@@ -64,7 +64,7 @@ Word bfs_word(const GMap& g, Dart d, const std::vector<uint32_t>* flags) {
   return w;
 }
 
-Word component_signature(const GMap& g, Dart d, const std::vector<uint32_t>* flags) {
+Word component_signature(const Map& g, Dart d, const std::vector<uint32_t>* flags) {
   std::vector<uint32_t> label(g.capacity(), 0);
   std::vector<Dart> order;
   const std::vector<Dart> comp = bfs_labeling(g, d);
@@ -81,7 +81,7 @@ Word component_signature(const GMap& g, Dart d, const std::vector<uint32_t>* fla
   return best;
 }
 
-Signature signature(const GMap& g, const std::vector<uint32_t>* flags) {
+Signature signature(const Map& g, const std::vector<uint32_t>* flags) {
   Signature s;
   s.n = g.dimension();
   s.kind = g.kind();
@@ -91,7 +91,7 @@ Signature signature(const GMap& g, const std::vector<uint32_t>* flags) {
   return s;
 }
 
-bool is_isomorphic(const GMap& g, const GMap& h, const std::vector<uint32_t>* flags_g,
+bool is_isomorphic(const Map& g, const Map& h, const std::vector<uint32_t>* flags_g,
                    const std::vector<uint32_t>* flags_h) {
   if (g.kind() != h.kind() || g.dimension() != h.dimension() || g.size() != h.size()) return false;
   if ((flags_g == nullptr) != (flags_h == nullptr)) return false;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr {
 
@@ -29,17 +29,17 @@ struct Signature {
 };
 
 // W(M,d) on the connected component of d; `flags` (optional, indexed by dart) are appended.
-Word bfs_word(const GMap& g, Dart d, const std::vector<uint32_t>* flags = nullptr);
+Word bfs_word(const Map& g, Dart d, const std::vector<uint32_t>* flags = nullptr);
 // Labels of Algorithm 1: order[k] = the dart labelled k+1.
-std::vector<Dart> bfs_labeling(const GMap& g, Dart d);
+std::vector<Dart> bfs_labeling(const Map& g, Dart d);
 // Minimal word over all darts of the component of d.
-Word component_signature(const GMap& g, Dart d, const std::vector<uint32_t>* flags = nullptr);
-Signature signature(const GMap& g, const std::vector<uint32_t>* flags = nullptr);
+Word component_signature(const Map& g, Dart d, const std::vector<uint32_t>* flags = nullptr);
+Signature signature(const Map& g, const std::vector<uint32_t>* flags = nullptr);
 
 // Isomorphism of two maps (same kind and dimension), preserving flags when given.
 // Connected case: fixes a start dart in g and tries every start dart in h (Theorem 1), stopping at
 // the first mismatch of each word. Several components: compares signatures.
-bool is_isomorphic(const GMap& g, const GMap& h, const std::vector<uint32_t>* flags_g = nullptr,
+bool is_isomorphic(const Map& g, const Map& h, const std::vector<uint32_t>* flags_g = nullptr,
                    const std::vector<uint32_t>* flags_h = nullptr);
 
 }  // namespace gmr

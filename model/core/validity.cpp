@@ -37,7 +37,7 @@ std::string Violation::describe() const {
   return s;
 }
 
-ValidityReport check_validity(const GMap& g, size_t limit) {
+ValidityReport check_validity(const Map& g, size_t limit) {
   ValidityReport r;
   auto add = [&](Violation v) {
     if (r.violations.size() < limit) r.violations.push_back(std::move(v));
@@ -118,6 +118,6 @@ ValidityReport check_validity(const GMap& g, size_t limit) {
   return r;
 }
 
-bool is_valid(const GMap& g) { return check_validity(g, 0).ok(); }
+bool is_valid(const Map& g) { return check_validity(g, 0).ok(); }
 
 }  // namespace gmr

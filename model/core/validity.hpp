@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr {
 
@@ -34,7 +34,7 @@ struct ValidityReport {
 };
 
 // Reports every violation (at most `limit` stored; the rest are counted in `truncated`).
-ValidityReport check_validity(const GMap& g, size_t limit = 1000);
-bool is_valid(const GMap& g);
+ValidityReport check_validity(const Map& g, size_t limit = 1000);
+bool is_valid(const Map& g);
 
 }  // namespace gmr

@@ -9,7 +9,7 @@ std::string dimension_colour(int i) {
   return i >= 0 && i < 8 ? kColours[i] : "gray";
 }
 
-std::string to_dot(const GMap& g, const DotOptions& opt) {
+std::string to_dot(const Map& g, const DotOptions& opt) {
   const bool directed = g.is_omap();
   const std::string arc = directed ? " -> " : " -- ";
   std::string out = std::string(directed ? "digraph " : "graph ") + nlohmann::json(opt.name).dump() + " {\n";

@@ -8,7 +8,7 @@
 #pragma once
 #include <string>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::draw {
 
@@ -20,6 +20,6 @@ struct DotOptions {
 // The colour of dimension i ("black", "red", ...).
 std::string dimension_colour(int i);
 
-std::string to_dot(const GMap& g, const DotOptions& opt = {});
+std::string to_dot(const Map& g, const DotOptions& opt = {});
 
 }  // namespace gmr::draw

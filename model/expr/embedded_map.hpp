@@ -23,7 +23,7 @@ struct EmbeddingField {
 };
 
 struct EmbeddedMap {
-  GMap map{2};
+  Map map{2};
   std::vector<EmbeddingField> fields;
 
   EmbeddingField* find(std::string_view name);

@@ -31,7 +31,7 @@ bool has_duplicate(const std::vector<uint32_t>& v, std::vector<uint32_t>& buffer
 
 }  // namespace
 
-Evaluator::Evaluator(const GMap& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
+Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
     : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
   scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
   vals_.resize(kMaxNesting + 1);

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/expr/ast.hpp"
 #include "model/expr/embedded_map.hpp"
 #include "model/expr/type_check.hpp"
@@ -31,7 +31,7 @@ class Evaluator {
  public:
   static constexpr size_t kMaxNesting = 16;
   // fields[k]: the storage of signature k (nullptr when the map does not have it).
-  Evaluator(const GMap& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields);
+  Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields);
 
   // The value of `e` (a checked expression) with node n at node_darts[n]; `target` is checked
   // (mass of points and vectors). `where` locates errors.
@@ -57,7 +57,7 @@ class Evaluator {
   Val field_value(int embedding, Dart d, const Expr& e);
   [[noreturn]] void fail(const Expr& e, const std::string& msg, Dart d = kNoDart) const;
 
-  const GMap& g_;
+  const Map& g_;
   std::vector<EmbeddingSignature> sigs_;
   std::vector<const EmbeddingField*> fields_;
   const Dart* nodes_ = nullptr;

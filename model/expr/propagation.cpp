@@ -69,7 +69,7 @@ void EmbeddingPropagation::report(std::string code, const EmbeddingField& f, Dar
   if (issues_.size() < 100) issues_.push_back({std::move(code), f.name(), d, std::move(message)});
 }
 
-void EmbeddingPropagation::before_rewrite(const GMap& g, const scheme::SchemeApplication& app,
+void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::SchemeApplication& app,
                                           const scheme::OrbitGraph& O) {
   const scheme::RuleScheme& s = *cs_.scheme;
   const size_t sz = O.size(), nr = s.right.size(), nl = s.left.size();
@@ -119,7 +119,7 @@ void EmbeddingPropagation::before_rewrite(const GMap& g, const scheme::SchemeApp
   }
 }
 
-void EmbeddingPropagation::after_rewrite(const GMap& g, const scheme::SchemeApplication& app,
+void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::SchemeApplication& app,
                                          const scheme::OrbitGraph& O) {
   const scheme::RuleScheme& s = *cs_.scheme;
   const size_t sz = O.size(), nr = s.right.size();

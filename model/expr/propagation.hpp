@@ -39,8 +39,8 @@ class EmbeddingPropagation : public scheme::ApplicationObserver {
   // Error(Schema) when a field of the same name has another orbit type or arity.
   EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m);
 
-  void before_rewrite(const GMap& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
-  void after_rewrite(const GMap& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  void before_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  void after_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
 
   const std::vector<PropagationIssue>& issues() const { return issues_; }
   size_t issue_count() const { return issue_count_; }  // issues() keeps the first 100

@@ -71,7 +71,7 @@ std::vector<Node> DGraph::predecessors(Node v, int label) const {
   return out;
 }
 
-DGraph to_dgraph(const GMap& g) {
+DGraph to_dgraph(const Map& g) {
   DGraph dg;
   std::vector<Node> node_of(g.capacity(), 0);
   g.for_each_dart([&](Dart d) { node_of[d] = dg.add_node(std::to_string(d)); });
@@ -84,8 +84,8 @@ DGraph to_dgraph(const GMap& g) {
   return dg;
 }
 
-GMap to_gmap(const DGraph& dg, int n, MapKind kind) {
-  GMap g(n, kind);
+Map to_gmap(const DGraph& dg, int n, MapKind kind) {
+  Map g(n, kind);
   g.add_darts(dg.num_nodes());
   for (Node v = 0; v < dg.num_nodes(); ++v) {
     for (int i = g.lowest_dim(); i <= n; ++i) {

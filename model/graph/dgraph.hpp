@@ -1,6 +1,6 @@
 // D-graphs: directed arc-labelled multigraphs (thesis §3.1, "topological graphs"), loops and
 // parallel arcs allowed. Labels are dimensions. This is the general carrier of the DPO rewriting
-// and of the three local constraints; a GMap is the compact form of a D-graph that satisfies
+// and of the three local constraints; a Map is the compact form of a D-graph that satisfies
 // incident arcs (one outgoing arc per label) and is convertible both ways.
 #pragma once
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::graph {
 
@@ -56,9 +56,9 @@ class DGraph {
 
 // G-map <-> D-graph. Each dart becomes a node named by its index; an i-link between distinct darts
 // becomes two opposite i-arcs, an i-loop one loop arc.
-DGraph to_dgraph(const GMap& g);
+DGraph to_dgraph(const Map& g);
 // Requires incident arcs on every label of the map (one outgoing i-arc per node); throws
 // Error(InvalidMap) naming the node and label otherwise. Other constraints are not required.
-GMap to_gmap(const DGraph& dg, int n, MapKind kind = MapKind::GMap);
+Map to_gmap(const DGraph& dg, int n, MapKind kind = MapKind::GMap);
 
 }  // namespace gmr::graph

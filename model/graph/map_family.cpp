@@ -75,7 +75,7 @@ bool connected(const std::vector<const Perm*>& s, size_t k) {
 
 }  // namespace
 
-std::vector<GMap> connected_maps(int n, MapKind kind, size_t k) {
+std::vector<Map> connected_maps(int n, MapKind kind, size_t k) {
   if (k == 0) return {};
   const MapSpec spec{n, kind};
   const int lo = spec.lowest_dim();
@@ -84,12 +84,12 @@ std::vector<GMap> connected_maps(int n, MapKind kind, size_t k) {
   const auto perm = kind == MapKind::OMap ? permutations(k) : std::vector<Perm>{};
   std::vector<const Perm*> chosen(static_cast<size_t>(n + 1), nullptr);
   std::set<Word> seen;
-  std::vector<GMap> out;
+  std::vector<Map> out;
   std::function<void(int)> rec = [&](int d) {
     if (d > n) {
       std::vector<const Perm*> s(chosen.begin() + lo, chosen.end());
       if (!connected(s, k)) return;
-      GMap g(n, kind);
+      Map g(n, kind);
       g.add_darts(k);
       for (int i = lo; i <= n; ++i)
         for (Dart x = 0; x < k; ++x) g.set_alpha(i, x, (*chosen[static_cast<size_t>(i)])[x]);
@@ -115,16 +115,16 @@ MapFamily map_family(int n, MapKind kind, size_t max_darts) {
   f.n = n;
   f.kind = kind;
   f.max_darts = max_darts;
-  std::vector<std::vector<GMap>> conn(max_darts + 1);
+  std::vector<std::vector<Map>> conn(max_darts + 1);
   for (size_t s = 1; s <= max_darts; ++s) conn[s] = connected_maps(n, kind, s);
   // Multisets of components, in nondecreasing (size, index) order.
   std::vector<std::pair<size_t, size_t>> pick;
-  std::vector<std::pair<size_t, GMap>> all;
+  std::vector<std::pair<size_t, Map>> all;
   std::function<void(size_t, size_t, size_t)> rec = [&](size_t total, size_t s0, size_t i0) {
     if (!pick.empty()) {
-      GMap g(n, kind);
+      Map g(n, kind);
       for (auto [s, idx] : pick) {
-        const GMap& c = conn[s][idx];
+        const Map& c = conn[s][idx];
         const Dart base = g.add_darts(s);
         for (int i = g.lowest_dim(); i <= n; ++i)
           for (Dart x = 0; x < s; ++x) g.set_alpha(i, base + x, base + c.alpha(i, x));

@@ -12,18 +12,18 @@
 #pragma once
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/graph/dgraph.hpp"
 
 namespace gmr::graph {
 
-std::vector<GMap> connected_maps(int n, MapKind kind, size_t darts);
+std::vector<Map> connected_maps(int n, MapKind kind, size_t darts);
 
 struct MapFamily {
   int n = 0;
   MapKind kind = MapKind::GMap;
   size_t max_darts = 0;
-  std::vector<GMap> maps;
+  std::vector<Map> maps;
   std::vector<DGraph> graphs;  // to_dgraph(maps[k])
 };
 MapFamily map_family(int n, MapKind kind, size_t max_darts);

@@ -10,7 +10,7 @@
 
 namespace gmr::io {
 
-FaceList face_list_from_map(const GMap& g, const PositionEmbedding& pos) {
+FaceList face_list_from_map(const Map& g, const PositionEmbedding& pos) {
   if (g.is_omap() || g.dimension() != 2)
     throw Error(ErrorCode::Usage, std::string("a face list needs a 2-G-map, not a ") + std::to_string(g.dimension()) +
                                       "-" + (g.is_omap() ? "O-map" : "G-map"));

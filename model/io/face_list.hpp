@@ -34,7 +34,7 @@ struct FaceList {
 // face with fewer than 3 sides, Error(NonManifold) for a map a face list cannot describe
 // faithfully (a face through one vertex twice, two edges joining the same two vertices), each
 // naming a dart.
-FaceList face_list_from_map(const GMap& g, const PositionEmbedding& pos);
+FaceList face_list_from_map(const Map& g, const PositionEmbedding& pos);
 
 // Builds the 2-G-map (dimension opt.n) of the face list with positions on <1,2>. Errors of
 // surface_from_faces propagate (Error(NonManifold) naming the edge or vertex, Error(Schema) naming

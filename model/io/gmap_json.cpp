@@ -21,7 +21,7 @@ bool parse_dim_key(const std::string& key, int& dim) {
 
 // Checks the dimension keys of "alpha" and that each link array has one entry per dart, before
 // any dart is allocated (a small file may declare billions of darts).
-void check_link_arrays(const JsonAt& alpha, const GMap& g, Dart n_darts) {
+void check_link_arrays(const JsonAt& alpha, const Map& g, Dart n_darts) {
   alpha.require_object();
   const int lo = g.lowest_dim(), n = g.dimension();
   const std::string dims = std::to_string(lo) + ".." + std::to_string(n);
@@ -39,7 +39,7 @@ void check_link_arrays(const JsonAt& alpha, const GMap& g, Dart n_darts) {
   }
 }
 
-void read_links(const JsonAt& alpha, GMap& g, Dart n_darts) {
+void read_links(const JsonAt& alpha, Map& g, Dart n_darts) {
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
     const JsonAt links = alpha[std::to_string(i)];
     const nlohmann::json& arr = links.value();
@@ -58,7 +58,7 @@ void read_links(const JsonAt& alpha, GMap& g, Dart n_darts) {
   }
 }
 
-JsonEmbedding read_embedding(const JsonAt& at, const GMap& g, Dart n_darts) {
+JsonEmbedding read_embedding(const JsonAt& at, const Map& g, Dart n_darts) {
   at.require_object();
   at.allow_only({"name", "orbit", "values"});
   const JsonAt name_at = at["name"];
@@ -113,7 +113,7 @@ GMapFile gmap_from_json(const JsonAt& doc) {
   const auto n = static_cast<int>(doc["dimension"].as_int(MapSpec{0, kind}.lowest_dim(), kMaxDim - 1));
   const auto n_darts = static_cast<Dart>(doc["darts"].as_int(0, static_cast<int64_t>(kNoDart) - 1));
   GMapFile f;
-  f.map = GMap(n, kind);
+  f.map = Map(n, kind);
   check_dart_limit(n_darts, doc["darts"].location());
   check_link_arrays(doc["alpha"], f.map, n_darts);
   f.map.add_darts(n_darts);
@@ -139,7 +139,7 @@ GMapFile read_gmap_json_file(const std::filesystem::path& path) {
   return read_gmap_json(read_text_file(path), path.string());
 }
 
-nlohmann::ordered_json gmap_to_json(const GMap& g, const std::vector<JsonEmbedding>& embeddings) {
+nlohmann::ordered_json gmap_to_json(const Map& g, const std::vector<JsonEmbedding>& embeddings) {
   // Dense renumbering of the live darts.
   std::vector<Dart> index(g.capacity(), kNoDart);
   Dart next = 0;
@@ -183,7 +183,7 @@ nlohmann::ordered_json gmap_to_json(const GMap& g, const std::vector<JsonEmbeddi
   return j;
 }
 
-std::string write_gmap_json(const GMap& g, const std::vector<JsonEmbedding>& embeddings) {
+std::string write_gmap_json(const Map& g, const std::vector<JsonEmbedding>& embeddings) {
   return dump_json(gmap_to_json(g, embeddings));
 }
 

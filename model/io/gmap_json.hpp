@@ -49,8 +49,8 @@ GMapFile gmap_from_json(const JsonAt& at);
 GMapFile read_gmap_json(std::string_view text, const std::string& source = {});
 GMapFile read_gmap_json_file(const std::filesystem::path& path);
 
-nlohmann::ordered_json gmap_to_json(const GMap& g, const std::vector<JsonEmbedding>& embeddings = {});
-std::string write_gmap_json(const GMap& g, const std::vector<JsonEmbedding>& embeddings = {});
+nlohmann::ordered_json gmap_to_json(const Map& g, const std::vector<JsonEmbedding>& embeddings = {});
+std::string write_gmap_json(const Map& g, const std::vector<JsonEmbedding>& embeddings = {});
 inline std::string write_gmap_json(const GMapFile& f) { return write_gmap_json(f.map, f.embeddings); }
 void write_gmap_json_file(const std::filesystem::path& path, const GMapFile& f);
 

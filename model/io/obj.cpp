@@ -104,9 +104,9 @@ std::string write_obj(const FaceList& fl) {
   return out;
 }
 
-std::string write_obj(const GMap& g, const PositionEmbedding& pos) { return write_obj(face_list_from_map(g, pos)); }
+std::string write_obj(const Map& g, const PositionEmbedding& pos) { return write_obj(face_list_from_map(g, pos)); }
 
-void write_obj_file(const std::filesystem::path& path, const GMap& g, const PositionEmbedding& pos) {
+void write_obj_file(const std::filesystem::path& path, const Map& g, const PositionEmbedding& pos) {
   write_file_atomic(path, write_obj(g, pos));
 }
 

@@ -23,7 +23,7 @@ FaceList parse_obj(std::string_view text, const std::string& source = {}, FaceLi
 PositionedMap read_obj(std::string_view text, const std::string& source = {});
 
 std::string write_obj(const FaceList& fl);
-std::string write_obj(const GMap& g, const PositionEmbedding& pos);
-void write_obj_file(const std::filesystem::path& path, const GMap& g, const PositionEmbedding& pos);
+std::string write_obj(const Map& g, const PositionEmbedding& pos);
+void write_obj_file(const std::filesystem::path& path, const Map& g, const PositionEmbedding& pos);
 
 }  // namespace gmr::io

@@ -217,9 +217,9 @@ std::string write_off(const FaceList& fl) {
   return out;
 }
 
-std::string write_off(const GMap& g, const PositionEmbedding& pos) { return write_off(face_list_from_map(g, pos)); }
+std::string write_off(const Map& g, const PositionEmbedding& pos) { return write_off(face_list_from_map(g, pos)); }
 
-void write_off_file(const std::filesystem::path& path, const GMap& g, const PositionEmbedding& pos) {
+void write_off_file(const std::filesystem::path& path, const Map& g, const PositionEmbedding& pos) {
   write_file_atomic(path, write_off(g, pos));
 }
 

@@ -39,8 +39,8 @@ PositionedMap read_off(std::string_view text, const std::string& source = {});
 PositionedMap read_off_file(const std::filesystem::path& path);
 
 std::string write_off(const FaceList& fl);
-std::string write_off(const GMap& g, const PositionEmbedding& pos);
-void write_off_file(const std::filesystem::path& path, const GMap& g, const PositionEmbedding& pos);
+std::string write_off(const Map& g, const PositionEmbedding& pos);
+void write_off_file(const std::filesystem::path& path, const Map& g, const PositionEmbedding& pos);
 
 // Shortest decimal text that reads back as the same double (std::to_chars).
 std::string format_coordinate(double x);

@@ -31,7 +31,7 @@ struct Volumes {
 };
 
 Volumes volumes_of(const FlaggedMap& m, double root) {
-  const GMap& g = m.map;
+  const Map& g = m.map;
   Volumes v;
   v.of.assign(g.capacity(), UINT32_MAX);
   for (Dart rep : orbit_representatives(g, cell_type(g, 3))) {
@@ -56,7 +56,7 @@ Volumes volumes_of(const FlaggedMap& m, double root) {
 // their edges between two corners (flagged ends), f-patterns on their faces (one dart per face),
 // the v-pattern on the volumes; then flags every dart of the new hexahedra.
 void refine_group(FlaggedMap& m, const PatternStore& store, const std::vector<Dart>& group, MeshingLevel& r) {
-  GMap& g = m.map;
+  Map& g = m.map;
   for (Dart h : group)
     for (Dart x : orbit(g, cell_type(g, 3), h))
       if (m.flag[x] && m.flag[g.alpha(0, x)]) split_edge(m, x, 2);
@@ -101,7 +101,7 @@ FlaggedMap box_hexahedron(const Vec3& lo, double size) {
 
 std::vector<MeshingLevel> refine_adaptively(FlaggedMap& m, const PatternStore& store, int levels,
                                             const BoxTest& meets_surface) {
-  GMap& g = m.map;
+  Map& g = m.map;
   if (g.dimension() != 3 || !m.positioned()) throw Error(ErrorCode::InvalidMap, "adaptive meshing needs a positioned 3-G-map");
   double root = 0;
   {

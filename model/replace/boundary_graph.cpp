@@ -6,7 +6,7 @@
 
 namespace gmr::replace {
 
-Dart boundary_successor(const GMap& g, int i, Dart d) {
+Dart boundary_successor(const Map& g, int i, Dart d) {
   Dart x = g.alpha(i, d);
   for (size_t steps = 0; !g.is_free(i + 1, x); ++steps) {
     if (steps > g.capacity())
@@ -57,7 +57,7 @@ void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, co
 
 }  // namespace
 
-BoundaryGraph cell_boundary(const GMap& g, int i, Dart d, const std::vector<uint32_t>& flag,
+BoundaryGraph cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
                             const std::vector<uint8_t>& positive) {
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
   // One breadth-first traversal of the <0..i-1>-orbit (neighbours by increasing dimension, the
@@ -91,7 +91,7 @@ BoundaryGraph cell_boundary(const GMap& g, int i, Dart d, const std::vector<uint
   return b;
 }
 
-BoundaryGraph pattern_boundary(const GMap& p, const std::vector<uint32_t>& flag,
+BoundaryGraph pattern_boundary(const Map& p, const std::vector<uint32_t>& flag,
                                const std::vector<uint8_t>& positive) {
   const int n = p.dimension();
   BoundaryGraph b;

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::replace {
 
@@ -28,15 +28,15 @@ struct BoundaryGraph {
 };
 
 // The boundary successor used for dimension i of a pattern boundary (Damiand & Nivoliers §4.2.1).
-Dart boundary_successor(const GMap& g, int i, Dart d);
+Dart boundary_successor(const Map& g, int i, Dart d);
 
 // `flag` and `positive` are indexed by dart (positive may be empty: every dart positive).
 // The i-cell orbit <0..i-1> of d of a target map (a half-face for i = 2, a volume for i = 3).
-BoundaryGraph cell_boundary(const GMap& g, int i, Dart d, const std::vector<uint32_t>& flag,
+BoundaryGraph cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
                             const std::vector<uint8_t>& positive);
 // The n-free darts of an n-G-map pattern (its boundary), neighbours alpha_0..alpha_{n-2} and the
 // boundary successor for n-1.
-BoundaryGraph pattern_boundary(const GMap& p, const std::vector<uint32_t>& flag,
+BoundaryGraph pattern_boundary(const Map& p, const std::vector<uint32_t>& flag,
                                const std::vector<uint8_t>& positive);
 
 // Whether the local graph is connected.

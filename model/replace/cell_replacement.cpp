@@ -34,8 +34,8 @@ void place_interior(FlaggedMap& target, const Pattern& p, const std::vector<Dart
 }  // namespace
 
 size_t replace_cell(FlaggedMap& target, const Pattern& p, const std::vector<Dart>& f) {
-  GMap& g = target.map;
-  const GMap& q = p.map.map;
+  Map& g = target.map;
+  const Map& q = p.map.map;
   const int i = p.cell_dim, n = g.dimension();
   if (n != i && n != i + 1)
     throw Error(ErrorCode::Usage, "a " + std::string(p.kind()) + " replaces cells of " + std::to_string(i) + "- or " +

@@ -11,7 +11,7 @@ namespace gmr::replace {
 namespace {
 
 // Every non-empty subset of `edges` (one dart per edge) split in 2 on a copy of `base`.
-ConfigurationSet subsets(std::string name, int cell_dim, const GMap& base, const std::vector<Dart>& edges) {
+ConfigurationSet subsets(std::string name, int cell_dim, const Map& base, const std::vector<Dart>& edges) {
   ConfigurationSet set;
   set.generator = std::move(name);
   set.cell_dim = cell_dim;
@@ -31,7 +31,7 @@ ConfigurationSet subsets(std::string name, int cell_dim, const GMap& base, const
 }
 
 // The edges of the polygon of dart 0 in cyclic order: one dart each, alpha_1 then alpha_0 steps.
-std::vector<Dart> polygon_edges(const GMap& g) {
+std::vector<Dart> polygon_edges(const Map& g) {
   std::vector<Dart> edges;
   Dart d = 0;
   do {
@@ -53,7 +53,7 @@ const std::vector<std::vector<uint32_t>> kHexFaces = {{0, 2, 3, 1}, {4, 5, 7, 6}
 // a corner or the midpoint (8 + e) of a cube edge e at that corner.
 void flag_corners(FlaggedMap& m, const std::vector<uint32_t>& vertex, const std::vector<std::array<int, 2>>& edges) {
   m.resize_flags();
-  const GMap& g = m.map;
+  const Map& g = m.map;
   g.for_each_dart([&](Dart d) {
     const uint32_t v = vertex[d], w = vertex[g.alpha(0, d)];
     const bool on_edge = w < 8 || (w < 20 && (edges[w - 8][0] == int(v) || edges[w - 8][1] == int(v)));
@@ -197,14 +197,14 @@ std::vector<std::array<int, 2>> cube_edges() {
 
 ConfigurationSet generate_configurations(std::string_view generator) {
   if (generator == "square-edges" || generator == "triangle-edges") {
-    const GMap g = make_polygon(generator == "square-edges" ? 4 : 3);
+    const Map g = make_polygon(generator == "square-edges" ? 4 : 3);
     return subsets(std::string(generator), 2, g, polygon_edges(g));
   }
   if (generator == "hex-conformal") return hex_conformal();
   if (generator == "marching-cubes") return marching_cubes();
   if (generator == "hex-edges") {
     std::vector<uint32_t> vertex;
-    const GMap g = surface_from_faces({{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}},
+    const Map g = surface_from_faces({{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}},
                                       8, {}, &vertex);
     std::vector<Dart> edges;
     for (const auto& [a, b] : cube_edges()) {

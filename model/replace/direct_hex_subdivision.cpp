@@ -9,7 +9,7 @@ namespace {
 
 // Every volume a combinatorial hexahedron: no free dart below 3, quadrangular faces and three
 // edges at every corner of every volume.
-void require_hexahedra(const GMap& g) {
+void require_hexahedra(const Map& g) {
   if (g.is_omap() || g.dimension() != 3) throw Error(ErrorCode::InvalidMap, "hexahedral subdivision works on 3-G-maps");
   g.for_each_dart([&](Dart d) {
     for (int i = 0; i < 3; ++i)
@@ -31,7 +31,7 @@ Vec3 mean(const Vec3& a, const Vec3& b) { return {(a[0] + b[0]) / 2, (a[1] + b[1
 
 // Per dart: the centre of its face and of its volume (averages over the orbits' darts, each
 // vertex counted equally often).
-void centres(const GMap& g, const std::vector<Vec3>& p, std::vector<Vec3>& face, std::vector<Vec3>& cell) {
+void centres(const Map& g, const std::vector<Vec3>& p, std::vector<Vec3>& face, std::vector<Vec3>& cell) {
   face.assign(g.capacity(), Vec3{0, 0, 0});
   cell.assign(g.capacity(), Vec3{0, 0, 0});
   std::vector<uint8_t> done(g.capacity(), 0);
@@ -66,13 +66,13 @@ constexpr uint32_t swap12(uint32_t w) { return (w & 1) | (w & 2) << 1 | (w >> 1 
 }  // namespace
 
 FlaggedMap subdivide_hexahedra(const FlaggedMap& m) {
-  const GMap& g = m.map;
+  const Map& g = m.map;
   require_hexahedra(g);
   std::vector<Dart> index(g.capacity(), kNoDart);
   Dart n = 0;
   g.for_each_dart([&](Dart d) { index[d] = n++; });
-  FlaggedMap r{GMap(3), {}, {}};
-  GMap& h = r.map;
+  FlaggedMap r{Map(3), {}, {}};
+  Map& h = r.map;
   h.add_darts(size_t(n) * 8);
   g.for_each_dart([&](Dart d) {
     const Dart base = index[d] * 8, a1 = index[g.alpha(1, d)] * 8, a2 = index[g.alpha(2, d)] * 8;

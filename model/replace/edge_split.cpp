@@ -10,7 +10,7 @@ namespace gmr::replace {
 size_t split_edge(FlaggedMap& m, Dart d, unsigned k) {
   if (k == 0) throw Error(ErrorCode::Usage, "an edge is split into at least 1 edge");
   if (k == 1) return 0;
-  GMap& g = m.map;
+  Map& g = m.map;
   const std::vector<Dart> edge = orbit(g, cell_type(g, 1), d);
   const Dart len = 2 * (k - 1);
   // chain of x: first new dart and direction (+1 from x's side, -1 from the other end).

@@ -15,7 +15,7 @@ namespace gmr::replace {
 inline constexpr const char* kFlagEmbedding = "flag";
 
 struct FlaggedMap {
-  GMap map{2};
+  Map map{2};
   std::vector<uint32_t> flag;  // indexed by dart, 0: unflagged (sized to map.capacity())
   std::vector<Vec3> position;  // per dart (its vertex's position); empty: no geometry
 

@@ -20,7 +20,7 @@ double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 // The boundary faces of the pattern as cycles of boundary darts, one dart per corner (f-pattern:
 // one polygon along alpha_0 and the boundary successor; v-pattern: the <0,1>-orbits of 3-free
 // darts).
-std::vector<std::vector<Dart>> boundary_polygons(const GMap& p, const std::vector<uint8_t>& positive) {
+std::vector<std::vector<Dart>> boundary_polygons(const Map& p, const std::vector<uint8_t>& positive) {
   const int n = p.dimension();
   std::vector<std::vector<Dart>> polys;
   std::vector<uint8_t> seen(p.capacity(), 0);
@@ -42,7 +42,7 @@ std::vector<std::vector<Dart>> boundary_polygons(const GMap& p, const std::vecto
 
 }  // namespace
 
-std::vector<InteriorVertex> mean_value_coordinates(const GMap& p, const std::vector<Vec3>& pos,
+std::vector<InteriorVertex> mean_value_coordinates(const Map& p, const std::vector<Vec3>& pos,
                                                    const std::vector<uint8_t>& positive) {
   const int n = p.dimension();
   const auto polys = boundary_polygons(p, positive);

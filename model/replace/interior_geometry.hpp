@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/core/vec3.hpp"
 
 namespace gmr::replace {
@@ -23,7 +23,7 @@ struct InteriorVertex {
 // position: per pattern dart; positive: the orientation classes (boundary faces of a v-pattern are
 // walked from a dart of D+, so that the triangles are consistently oriented). Returns the interior
 // vertices (vertex orbits without an n-free dart) with their coordinates.
-std::vector<InteriorVertex> mean_value_coordinates(const GMap& p, const std::vector<Vec3>& position,
+std::vector<InteriorVertex> mean_value_coordinates(const Map& p, const std::vector<Vec3>& position,
                                                    const std::vector<uint8_t>& positive);
 
 }  // namespace gmr::replace

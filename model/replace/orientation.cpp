@@ -4,7 +4,7 @@
 
 namespace gmr::replace {
 
-std::vector<uint8_t> orientation_classes(const GMap& g) {
+std::vector<uint8_t> orientation_classes(const Map& g) {
   constexpr uint8_t kUnset = 2;
   std::vector<uint8_t> colour(g.capacity(), kUnset);
   std::vector<Dart> stack;

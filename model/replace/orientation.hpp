@@ -7,12 +7,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::replace {
 
 // positive[d] = 1 for darts of D+, indexed by dart. Throws Error(InvalidMap) naming a dart of a
 // non-orientable component.
-std::vector<uint8_t> orientation_classes(const GMap& g);
+std::vector<uint8_t> orientation_classes(const Map& g);
 
 }  // namespace gmr::replace

@@ -10,7 +10,7 @@ namespace gmr::replace {
 
 Pattern make_pattern(std::string name, FlaggedMap m) {
   auto reject = [&](const std::string& why) { throw Error(ErrorCode::Schema, "not a pattern: " + why, name); };
-  const GMap& g = m.map;
+  const Map& g = m.map;
   const int n = g.dimension();
   if (g.is_omap()) reject("patterns are G-maps");
   if (n != 2 && n != 3) reject("an f-pattern is a 2-G-map and a v-pattern a 3-G-map (dimension " + std::to_string(n) + ")");

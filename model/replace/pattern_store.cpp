@@ -34,7 +34,7 @@ Word store_key(const BoundaryGraph& b, int cell_dim, Mode mode, StoreEntry* entr
 
 bool boundary_automorphisms_extend(const Pattern& p, Mode mode, const StoreEntry& e) {
   const BoundaryGraph& b = p.boundary;
-  const GMap& g = p.map.map;
+  const Map& g = p.map.map;
   const Word best = boundary_word(b, e.start);
   const std::vector<uint32_t> ref = boundary_labeling(b, e.start);
   for (uint32_t s = 0; s < b.size(); ++s) {

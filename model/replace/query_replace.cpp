@@ -20,7 +20,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
                                  const std::function<void()>& after_each,
                                  const std::function<void(size_t, size_t)>& progress,
                                  const DuplicateSelector& select, const std::vector<Dart>* only) {
-  GMap& g = target.map;
+  Map& g = target.map;
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
   if (cell_dim != 2 && cell_dim != 3) throw Error(ErrorCode::Usage, "cells are faces (2) or volumes (3)", "--cells");

@@ -6,7 +6,7 @@
 
 namespace gmr::replace {
 
-std::vector<Vec3> unit_hex_positions(const GMap& g, double length) {
+std::vector<Vec3> unit_hex_positions(const Map& g, double length) {
   if (g.is_omap() || g.dimension() != 3) throw Error(ErrorCode::InvalidMap, "unit hexahedra are laid out in 3-G-maps");
   using Frame = std::array<Vec3, 3>;
   std::vector<Vec3> pos(g.capacity(), Vec3{0, 0, 0});

@@ -13,6 +13,6 @@ namespace gmr::replace {
 
 // Throws Error(InvalidMap) when the map is not a 3-G-map or two paths give a vertex different
 // positions (the map is not a mesh of unit cubes).
-std::vector<Vec3> unit_hex_positions(const GMap& g, double length = 1.0);
+std::vector<Vec3> unit_hex_positions(const Map& g, double length = 1.0);
 
 }  // namespace gmr::replace

@@ -228,7 +228,7 @@ bool same_derivation(const Derivation& a, const Derivation& b, std::string* why)
 
 namespace {
 
-void check_rule_fits_map(const Rule& r, const GMap& g) {
+void check_rule_fits_map(const Rule& r, const Map& g) {
   if (r.kind() != g.kind())
     throw Error(ErrorCode::Usage, std::string("a ") + to_string(r.kind()) + " rule applied to a " + to_string(g.kind()), "rule");
   if (r.dimension() > g.dimension())
@@ -240,7 +240,7 @@ void check_rule_fits_map(const Rule& r, const GMap& g) {
 
 }  // namespace
 
-std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const GMap& g, size_t limit) {
+std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const Map& g, size_t limit) {
   check_rule_fits_map(r, g);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
@@ -255,7 +255,7 @@ std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const GMap& g, si
   return out;
 }
 
-MapDerivation apply_to_map(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+MapDerivation apply_to_map(const Rule& r, const Map& g, const std::vector<Dart>& match) {
   check_rule_fits_map(r, g);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
@@ -287,7 +287,7 @@ MapDerivation apply_to_map(const Rule& r, const GMap& g, const std::vector<Dart>
 namespace {
 
 // The unique x with alpha_i(x) == d in a valid map; throws Error(InvalidMap) when there is none.
-Dart predecessor(const GMap& g, int i, Dart d) {
+Dart predecessor(const Map& g, int i, Dart d) {
   if (g.is_involutive_dim(i)) {
     const Dart x = g.alpha(i, d);
     if (g.alpha(i, x) != d) throw Error(ErrorCode::InvalidMap, "input map: alpha_" + std::to_string(i) + " is not an involution", "dart " + std::to_string(d));
@@ -303,7 +303,7 @@ Dart predecessor(const GMap& g, int i, Dart d) {
 
 // Phase 1: the match is injective and every L arc has its image; L has at most one arc per label
 // at a node. Returns the L node matched to each dart of g (kNoNode elsewhere).
-std::vector<Node> check_map_match(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+std::vector<Node> check_map_match(const Rule& r, const Map& g, const std::vector<Dart>& match) {
   const DGraph& L = r.left();
   std::vector<Node> lnode_of(g.capacity(), kNoNode);
   for (Node v = 0; v < L.num_nodes(); ++v) {
@@ -328,7 +328,7 @@ std::vector<Node> check_map_match(const Rule& r, const GMap& g, const std::vecto
 
 // Phase 2, gluing (dangling condition): every i-arc at the image of a deleted node is the image of
 // an L arc.
-void check_map_gluing(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+void check_map_gluing(const Rule& r, const Map& g, const std::vector<Dart>& match) {
   const DGraph& L = r.left();
   for (Node v : r.deleted_nodes()) {
     const Dart d = match[v];
@@ -359,7 +359,7 @@ struct LinkRewrite {
 
 // Phase 4: removes the deleted L arcs and writes the added R arcs into H (at the comatch darts).
 // Throws Error(InvalidMap) when an added arc would be a second out-arc of its label.
-LinkRewrite rewrite_links(const Rule& r, GMap& H, const std::vector<Dart>& match, const std::vector<Dart>& comatch) {
+LinkRewrite rewrite_links(const Rule& r, Map& H, const std::vector<Dart>& match, const std::vector<Dart>& comatch) {
   const DGraph &L = r.left(), &R = r.right();
   const int lo = H.lowest_dim(), n = H.dimension();
   LinkRewrite w;
@@ -408,8 +408,8 @@ void check_result_combinatorial(const Rule& r, const std::vector<Node>& lnode_of
 
 // Phase 6: removes the darts of the deleted nodes (detached first: remove_dart must not touch live
 // darts) and fills the dart track G -> H.
-void remove_deleted_darts(const Rule& r, const GMap& g, const std::vector<Dart>& match, MapDerivation& out) {
-  GMap& H = out.H;
+void remove_deleted_darts(const Rule& r, const Map& g, const std::vector<Dart>& match, MapDerivation& out) {
+  Map& H = out.H;
   out.g_to_h.assign(g.capacity(), kNoDart);
   g.for_each_dart([&](Dart d) { out.g_to_h[d] = d; });
   for (Node v : r.deleted_nodes()) {
@@ -422,7 +422,7 @@ void remove_deleted_darts(const Rule& r, const GMap& g, const std::vector<Dart>&
 
 }  // namespace
 
-MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>& match) {
+MapDerivation apply_in_map(const Rule& r, const Map& g, const std::vector<Dart>& match) {
   check_rule_fits_map(r, g);
   const DGraph &R = r.right();
   if (match.size() != r.left().num_nodes()) throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");

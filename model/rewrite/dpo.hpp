@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/rewrite/match.hpp"
 #include "model/rewrite/rule.hpp"
 
@@ -58,13 +58,13 @@ Derivation derive_in_place(const Rule& r, const DGraph& G, const Match& m);
 bool same_derivation(const Derivation& a, const Derivation& b, std::string* why = nullptr);
 
 struct MapDerivation {
-  GMap H{0};
+  Map H{0};
   std::vector<Dart> g_to_h;   // dart of G -> dart of H (kNoDart for deleted darts)
   std::vector<Dart> comatch;  // R node -> dart of H
 };
 // Matches are node maps L node -> dart.
-std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const GMap& g, size_t limit = SIZE_MAX);
-MapDerivation apply_to_map(const Rule& r, const GMap& g, const std::vector<Dart>& match);
-MapDerivation apply_in_map(const Rule& r, const GMap& g, const std::vector<Dart>& match);
+std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const Map& g, size_t limit = SIZE_MAX);
+MapDerivation apply_to_map(const Rule& r, const Map& g, const std::vector<Dart>& match);
+MapDerivation apply_in_map(const Rule& r, const Map& g, const std::vector<Dart>& match);
 
 }  // namespace gmr::rewrite

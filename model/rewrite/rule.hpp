@@ -21,7 +21,7 @@
 
 #include "model/graph/dgraph.hpp"
 #include "model/graph/elem_status.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::rewrite {
 using graph::ArcId;

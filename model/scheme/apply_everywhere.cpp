@@ -18,7 +18,7 @@ size_t EverywhereApplication::darts_deleted() const {
   return n;
 }
 
-EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool keep_tables,
+EverywhereApplication apply_everywhere(const SchemeEngine& engine, Map& g, bool keep_tables,
                                        ApplicationObserver* observer) {
   const RuleScheme& s = engine.scheme();
   if (s.hooks.size() != 1)

@@ -18,7 +18,7 @@
 #pragma once
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/scheme/scheme_engine.hpp"
 
 namespace gmr::scheme {
@@ -39,7 +39,7 @@ struct EverywhereApplication {
 // Applies `engine` at every dart of g (see above). With keep_tables == false, the orbit, match and
 // comatch tables of each application are dropped (they grow with the number of applications).
 // `observer` (optional) sees every successful application (scheme_engine.hpp).
-EverywhereApplication apply_everywhere(const SchemeEngine& engine, GMap& g, bool keep_tables = true,
+EverywhereApplication apply_everywhere(const SchemeEngine& engine, Map& g, bool keep_tables = true,
                                        ApplicationObserver* observer = nullptr);
 
 }  // namespace gmr::scheme

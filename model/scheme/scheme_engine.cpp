@@ -121,7 +121,7 @@ bool fail(SchemeApplication& res, NotApplicableReason r, std::string why) {
 
 }  // namespace
 
-void SchemeEngine::check_call(const GMap& g, const std::vector<Dart>& hook_darts) const {
+void SchemeEngine::check_call(const Map& g, const std::vector<Dart>& hook_darts) const {
   if (g.kind() != MapKind::GMap)
     throw Error(ErrorCode::Usage, "rule schemes apply to G-maps only", "scheme " + s_.name);
   if (g.dimension() != s_.dimension)
@@ -139,7 +139,7 @@ void SchemeEngine::check_call(const GMap& g, const std::vector<Dart>& hook_darts
       throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(hook_darts[k]));
 }
 
-OrbitGraph SchemeEngine::hook_orbit(const GMap& g, const std::vector<Dart>& hook_darts,
+OrbitGraph SchemeEngine::hook_orbit(const Map& g, const std::vector<Dart>& hook_darts,
                                     SchemeApplication& res) const {
   OrbitGraph O = hooks_.empty() ? single_dart_orbit(s_.orbit.size())
                                 : orbit_graph(g, s_.left.nodes[hooks_[0]].label, hook_darts[0]);
@@ -151,7 +151,7 @@ OrbitGraph SchemeEngine::hook_orbit(const GMap& g, const std::vector<Dart>& hook
   return O;
 }
 
-bool SchemeEngine::match_other_hooks(const GMap& g, const std::vector<Dart>& hook_darts,
+bool SchemeEngine::match_other_hooks(const Map& g, const std::vector<Dart>& hook_darts,
                                      const OrbitGraph& O, SchemeApplication& res) const {
   if (hooks_.size() < 2) return true;
   const size_t s = O.size();
@@ -183,12 +183,12 @@ bool SchemeEngine::match_other_hooks(const GMap& g, const std::vector<Dart>& hoo
   return true;
 }
 
-void SchemeEngine::propagate_match(const GMap& g, size_t s, std::vector<Dart>& M) const {
+void SchemeEngine::propagate_match(const Map& g, size_t s, std::vector<Dart>& M) const {
   for (const Step& st : steps_)
     for (uint32_t b = 0; b < s; ++b) M[st.v * s + b] = g.alpha(st.dim, M[st.from * s + b]);
 }
 
-bool SchemeEngine::check_match(const GMap& g, const OrbitGraph& O, SchemeApplication& res) const {
+bool SchemeEngine::check_match(const Map& g, const OrbitGraph& O, SchemeApplication& res) const {
   const size_t s = O.size();
   const size_t nl = s_.left.size();
   const std::vector<Dart>& M = res.match;
@@ -250,7 +250,7 @@ bool SchemeEngine::check_match(const GMap& g, const OrbitGraph& O, SchemeApplica
   return true;
 }
 
-void SchemeEngine::place_right_darts(GMap& g, size_t s, SchemeApplication& res) const {
+void SchemeEngine::place_right_darts(Map& g, size_t s, SchemeApplication& res) const {
   const size_t nr = s_.right.size();
   const std::vector<Dart>& M = res.match;
   std::vector<Dart>& T = res.comatch;
@@ -269,7 +269,7 @@ void SchemeEngine::place_right_darts(GMap& g, size_t s, SchemeApplication& res) 
   }
 }
 
-void SchemeEngine::write_right_links(GMap& g, const OrbitGraph& O, const std::vector<Dart>& T) const {
+void SchemeEngine::write_right_links(Map& g, const OrbitGraph& O, const std::vector<Dart>& T) const {
   const size_t s = O.size();
   for (uint32_t v = 0; v < s_.right.size(); ++v) {
     const Dart* Tv = &T[v * s];
@@ -287,7 +287,7 @@ void SchemeEngine::write_right_links(GMap& g, const OrbitGraph& O, const std::ve
   }
 }
 
-void SchemeEngine::remove_deleted_darts(GMap& g, size_t s, const std::vector<Dart>& M) const {
+void SchemeEngine::remove_deleted_darts(Map& g, size_t s, const std::vector<Dart>& M) const {
   // The deleted darts' own links become loops first, so that remove_dart touches no surviving dart
   // (their links were all overwritten in step 6, by I_S).
   for (uint32_t v : deleted_)
@@ -298,7 +298,7 @@ void SchemeEngine::remove_deleted_darts(GMap& g, size_t s, const std::vector<Dar
     }
 }
 
-SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_darts,
+SchemeApplication SchemeEngine::apply(Map& g, const std::vector<Dart>& hook_darts,
                                      ApplicationObserver* observer) const {
   check_call(g, hook_darts);
   SchemeApplication res;
@@ -323,14 +323,14 @@ SchemeApplication SchemeEngine::apply(GMap& g, const std::vector<Dart>& hook_dar
   return res;
 }
 
-SchemeApplication apply_scheme_in_place(GMap& g, const RuleScheme& s, const std::vector<Dart>& hook_darts) {
+SchemeApplication apply_scheme_in_place(Map& g, const RuleScheme& s, const std::vector<Dart>& hook_darts) {
   return SchemeEngine(s).apply(g, hook_darts);
 }
 
-std::pair<GMap, SchemeApplication> apply_scheme(const GMap& g, const RuleScheme& s,
+std::pair<Map, SchemeApplication> apply_scheme(const Map& g, const RuleScheme& s,
                                                const std::vector<Dart>& hook_darts) {
   SchemeEngine e(s);
-  GMap h = g;
+  Map h = g;
   SchemeApplication a = e.apply(h, hook_darts);
   return {std::move(h), std::move(a)};
 }

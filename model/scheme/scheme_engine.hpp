@@ -42,7 +42,7 @@
 #include <utility>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/scheme/rule_scheme.hpp"
 #include "model/scheme/scheme_instantiation.hpp"
 
@@ -83,8 +83,8 @@ struct SchemeApplication {
 class ApplicationObserver {
  public:
   virtual ~ApplicationObserver() = default;
-  virtual void before_rewrite(const GMap& g, const SchemeApplication& app, const OrbitGraph& O) = 0;
-  virtual void after_rewrite(const GMap& g, const SchemeApplication& app, const OrbitGraph& O) = 0;
+  virtual void before_rewrite(const Map& g, const SchemeApplication& app, const OrbitGraph& O) = 0;
+  virtual void after_rewrite(const Map& g, const SchemeApplication& app, const OrbitGraph& O) = 0;
 };
 
 // A scheme prepared for repeated application.
@@ -99,21 +99,21 @@ class SchemeEngine {
   const std::string& not_combinatorial() const { return not_combinatorial_; }
 
   // Applies in place. `hook_darts[k]` is the dart for hooks[k].
-  SchemeApplication apply(GMap& g, const std::vector<Dart>& hook_darts,
+  SchemeApplication apply(Map& g, const std::vector<Dart>& hook_darts,
                           ApplicationObserver* observer = nullptr) const;
 
  private:
   // The phases of apply, numbered as in the header comment. check_call throws on misuse; a check
   // that fails marks `res` as not applicable and returns false.
-  void check_call(const GMap& g, const std::vector<Dart>& hook_darts) const;
-  OrbitGraph hook_orbit(const GMap& g, const std::vector<Dart>& hook_darts, SchemeApplication& res) const;  // 1
-  bool match_other_hooks(const GMap& g, const std::vector<Dart>& hook_darts, const OrbitGraph& O,
+  void check_call(const Map& g, const std::vector<Dart>& hook_darts) const;
+  OrbitGraph hook_orbit(const Map& g, const std::vector<Dart>& hook_darts, SchemeApplication& res) const;  // 1
+  bool match_other_hooks(const Map& g, const std::vector<Dart>& hook_darts, const OrbitGraph& O,
                          SchemeApplication& res) const;                                // 2
-  void propagate_match(const GMap& g, size_t s, std::vector<Dart>& M) const;           // 3
-  bool check_match(const GMap& g, const OrbitGraph& O, SchemeApplication& res) const;  // 4
-  void place_right_darts(GMap& g, size_t s, SchemeApplication& res) const;             // 5
-  void write_right_links(GMap& g, const OrbitGraph& O, const std::vector<Dart>& T) const;  // 6
-  void remove_deleted_darts(GMap& g, size_t s, const std::vector<Dart>& M) const;      // 7
+  void propagate_match(const Map& g, size_t s, std::vector<Dart>& M) const;           // 3
+  bool check_match(const Map& g, const OrbitGraph& O, SchemeApplication& res) const;  // 4
+  void place_right_darts(Map& g, size_t s, SchemeApplication& res) const;             // 5
+  void write_right_links(Map& g, const OrbitGraph& O, const std::vector<Dart>& T) const;  // 6
+  void remove_deleted_darts(Map& g, size_t s, const std::vector<Dart>& M) const;      // 7
 
   struct Step {
     uint32_t v, from;
@@ -135,9 +135,9 @@ class SchemeEngine {
   std::string not_combinatorial_;
 };
 
-SchemeApplication apply_scheme_in_place(GMap& g, const RuleScheme& s, const std::vector<Dart>& hook_darts);
+SchemeApplication apply_scheme_in_place(Map& g, const RuleScheme& s, const std::vector<Dart>& hook_darts);
 // Copy-based wrapper: the result map (a copy of g, unchanged when not applicable) and the report.
-std::pair<GMap, SchemeApplication> apply_scheme(const GMap& g, const RuleScheme& s,
+std::pair<Map, SchemeApplication> apply_scheme(const Map& g, const RuleScheme& s,
                                                const std::vector<Dart>& hook_darts);
 
 // Incident arcs I_S(d) for d in 0..n (thesis Alg. 1 on the core): the first failure as text, or "".

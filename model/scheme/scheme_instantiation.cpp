@@ -7,7 +7,7 @@
 namespace gmr::scheme {
 using namespace gmr::rewrite;
 
-OrbitGraph orbit_graph(const GMap& g, const OrbitType& t, Dart d) {
+OrbitGraph orbit_graph(const Map& g, const OrbitType& t, Dart d) {
   require_orbit_type(g, t);
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
   OrbitGraph O;
@@ -106,7 +106,7 @@ Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O) {
   return Rule(std::move(ir.left.graph), std::move(ir.right.graph), r.dimension, MapKind::GMap, r.name);
 }
 
-OrbitGraph hook_orbit_graph(const GMap& g, const RuleScheme& r, Dart hook_dart) {
+OrbitGraph hook_orbit_graph(const Map& g, const RuleScheme& r, Dart hook_dart) {
   if (r.hooks.empty()) return single_dart_orbit(r.orbit.size());
   const auto hooks = r.hook_nodes();
   const OrbitType& t = r.left.nodes[hooks[0]].label;

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "model/graph/dgraph.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/rewrite/rule.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
@@ -36,7 +36,7 @@ struct OrbitGraph {
 // The <t>-orbit of d in g (Algorithm 4, BFS), its darts indexed in BFS order (d gets 0), position p
 // of the orbit graph following dimension t[p]. `t` has no `_`. Throws Error(Range) for a dead dart
 // or a dimension the map lacks.
-OrbitGraph orbit_graph(const GMap& g, const OrbitType& t, Dart d);
+OrbitGraph orbit_graph(const Map& g, const OrbitType& t, Dart d);
 // One abstract dart, free at every position (the orbit used when L has no hook).
 OrbitGraph single_dart_orbit(size_t arity);
 
@@ -71,6 +71,6 @@ Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O);
 // The orbit graph a scheme is instantiated on when applied at `hook_dart` (reference hook): the
 // orbit of the reference hook's label, positions in the order of that label (so that position p
 // stands for o[p]). For a scheme with no hook, single_dart_orbit.
-OrbitGraph hook_orbit_graph(const GMap& g, const RuleScheme& r, Dart hook_dart);
+OrbitGraph hook_orbit_graph(const Map& g, const RuleScheme& r, Dart hook_dart);
 
 }  // namespace gmr::scheme

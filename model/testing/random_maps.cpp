@@ -43,14 +43,14 @@ size_t draw(Rng& rng, size_t lo, size_t hi, const char* what) {
 
 // Appends a copy of `piece` (same dimension and kind, no deleted darts) to g; returns the index
 // of its first dart in g.
-Dart append(GMap& g, const GMap& piece) {
+Dart append(Map& g, const Map& piece) {
   const Dart base = g.add_darts(piece.capacity());
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
     for (Dart d = 0; d < piece.capacity(); ++d) g.set_alpha(i, base + d, base + piece.alpha(i, d));
   return base;
 }
 
-std::vector<Dart> free_in(const GMap& g, int i) {
+std::vector<Dart> free_in(const Map& g, int i) {
   std::vector<Dart> out;
   g.for_each_dart([&](Dart d) {
     if (g.is_free(i, d)) out.push_back(d);
@@ -59,7 +59,7 @@ std::vector<Dart> free_in(const GMap& g, int i) {
 }
 
 // All (dimension, dart) with the dart not free in that dimension, each link once (d < partner).
-std::vector<std::pair<int, Dart>> sewn_links(const GMap& g) {
+std::vector<std::pair<int, Dart>> sewn_links(const Map& g) {
   std::vector<std::pair<int, Dart>> out;
   for (int i = 0; i <= g.dimension(); ++i)
     g.for_each_dart([&](Dart d) {
@@ -68,7 +68,7 @@ std::vector<std::pair<int, Dart>> sewn_links(const GMap& g) {
   return out;
 }
 
-void require_gmap(const GMap& g, const char* what) {
+void require_gmap(const Map& g, const char* what) {
   if (g.is_omap())
     throw Error(ErrorCode::Usage, std::string(what) + " expects a G-map, not an O-map");
 }
@@ -77,10 +77,10 @@ void require_gmap(const GMap& g, const char* what) {
 
 // --- generators ----------------------------------------------------------------------------
 
-GMap random_glued_polygons(Rng& rng, const GluedPolygonsOptions& opt) {
+Map random_glued_polygons(Rng& rng, const GluedPolygonsOptions& opt) {
   if (opt.n < 2) throw Error(ErrorCode::Range, "glued polygons need a G-map of dimension >= 2");
   if (opt.min_sides < 1) throw Error(ErrorCode::Range, "a polygon needs at least one side");
-  GMap g(opt.n);
+  Map g(opt.n);
   const size_t faces = draw(rng, opt.min_faces, opt.max_faces, "faces");
   for (size_t f = 0; f < faces; ++f) {
     const size_t k = draw(rng, opt.min_sides, opt.max_sides, "sides");
@@ -122,15 +122,15 @@ std::vector<Voxel> random_voxels(Rng& rng, size_t count) {
   return vox;
 }
 
-GMap random_polycube(Rng& rng, const PolycubeOptions& opt) {
+Map random_polycube(Rng& rng, const PolycubeOptions& opt) {
   const size_t count = draw(rng, opt.min_voxels, opt.max_voxels, "voxels");
-  if (count == 0) return GMap(3);
+  if (count == 0) return Map(3);
   return make_polycube(random_voxels(rng, count));
 }
 
-GMap random_sewn_cells(Rng& rng, const SewSequenceOptions& opt) {
+Map random_sewn_cells(Rng& rng, const SewSequenceOptions& opt) {
   const int n = opt.n;
-  GMap g(n);
+  Map g(n);
   const size_t cells = draw(rng, opt.min_cells, opt.max_cells, "cells");
   for (size_t c = 0; c < cells; ++c) {
     const size_t kinds = n >= 2 ? 5 : n >= 1 ? 3 : 2;
@@ -195,7 +195,7 @@ std::vector<Generator> generators_for(int n) {
   return out;
 }
 
-GMap random_gmap(Rng& rng, Generator gen, int n) {
+Map random_gmap(Rng& rng, Generator gen, int n) {
   switch (gen) {
     case Generator::GluedPolygons: {
       GluedPolygonsOptions o;
@@ -214,9 +214,9 @@ GMap random_gmap(Rng& rng, Generator gen, int n) {
   throw Error(ErrorCode::Usage, "unknown generator");
 }
 
-GMap random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt) {
+Map random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt) {
   const size_t k = draw(rng, std::max<size_t>(opt.min_darts, 1), opt.max_darts, "random_permutation_omap");
-  GMap o(2, MapKind::OMap);
+  Map o(2, MapKind::OMap);
   o.add_darts(k);
   const std::vector<Dart> beta1 = random_permutation(rng, k);
   for (Dart d = 0; d < k; ++d) o.set_alpha(1, d, beta1[d]);
@@ -235,9 +235,9 @@ GMap random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt) {
   return o;
 }
 
-GMap double_along_boundary(const GMap& g) {
+Map double_along_boundary(const Map& g) {
   require_gmap(g, "double_along_boundary");
-  GMap out(g.dimension());
+  Map out(g.dimension());
   std::vector<Dart> a(g.capacity(), kNoDart), b(g.capacity(), kNoDart);
   g.for_each_dart([&](Dart d) { a[d] = out.add_dart(); });
   g.for_each_dart([&](Dart d) { b[d] = out.add_dart(); });
@@ -256,9 +256,9 @@ GMap double_along_boundary(const GMap& g) {
   return out;
 }
 
-GMap oriented_components(const GMap& g) {
+Map oriented_components(const Map& g) {
   require_gmap(g, "oriented_components");
-  GMap out(g.dimension(), MapKind::OMap);
+  Map out(g.dimension(), MapKind::OMap);
   std::vector<bool> seen(g.capacity(), false);
   const OrbitType all = OrbitType::range(0, g.dimension());
   g.for_each_dart([&](Dart d) {
@@ -275,7 +275,7 @@ GMap oriented_components(const GMap& g) {
 
 // --- edits ---------------------------------------------------------------------------------
 
-GMap permute_darts(const GMap& g, const std::vector<Dart>& perm) {
+Map permute_darts(const Map& g, const std::vector<Dart>& perm) {
   const Dart cap = g.capacity();
   if (perm.size() != cap)
     throw Error(ErrorCode::Usage, "permute_darts: permutation of size " + std::to_string(perm.size()) +
@@ -288,7 +288,7 @@ GMap permute_darts(const GMap& g, const std::vector<Dart>& perm) {
                   "index " + std::to_string(d));
     hit[perm[d]] = true;
   }
-  GMap h(g.dimension(), g.kind());
+  Map h(g.dimension(), g.kind());
   h.add_darts(cap);
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
     g.for_each_dart([&](Dart d) {
@@ -311,7 +311,7 @@ std::string Mutation::str() const {
          std::to_string(partner) + ")";
 }
 
-Mutation mutate_one_link(GMap& g, Rng& rng) {
+Mutation mutate_one_link(Map& g, Rng& rng) {
   require_gmap(g, "mutate_one_link");
   Mutation m;
   const auto links = sewn_links(g);
@@ -333,7 +333,7 @@ Mutation mutate_one_link(GMap& g, Rng& rng) {
   return {Mutation::Kind::Sew, i, ds[a], ds[b]};
 }
 
-Mutation resew_one_link(GMap& g, Rng& rng, size_t tries) {
+Mutation resew_one_link(Map& g, Rng& rng, size_t tries) {
   require_gmap(g, "resew_one_link");
   const auto links = sewn_links(g);
   if (links.empty()) return {};

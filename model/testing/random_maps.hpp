@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "model/core/builders.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::testing {
 
@@ -51,7 +51,7 @@ struct GluedPolygonsOptions {
   bool connected = true;
   size_t max_extra_sews = 8;  // extra random 2-sew attempts, count uniform in [0, max]
 };
-GMap random_glued_polygons(Rng& rng, const GluedPolygonsOptions& opt = {});
+Map random_glued_polygons(Rng& rng, const GluedPolygonsOptions& opt = {});
 
 // `count` distinct voxels, face-connected, grown from (0,0,0) by random face neighbours.
 std::vector<Voxel> random_voxels(Rng& rng, size_t count);
@@ -60,7 +60,7 @@ struct PolycubeOptions {
   size_t min_voxels = 1, max_voxels = 6;
 };
 // A connected polycube 3-G-map (48 darts per voxel).
-GMap random_polycube(Rng& rng, const PolycubeOptions& opt = {});
+Map random_polycube(Rng& rng, const PolycubeOptions& opt = {});
 
 struct SewSequenceOptions {
   int n = 2;                            // dimension, >= 0
@@ -72,7 +72,7 @@ struct SewSequenceOptions {
   unsigned unsew_percent = 15;  // chance that a step unsews (when something is sewn)
   size_t tries = 24;            // random dart pairs tried for one sew before giving up the step
 };
-GMap random_sewn_cells(Rng& rng, const SewSequenceOptions& opt = {});
+Map random_sewn_cells(Rng& rng, const SewSequenceOptions& opt = {});
 
 enum class Generator { GluedPolygons, Polycube, SewSequence };
 const char* to_string(Generator g);
@@ -80,7 +80,7 @@ const char* to_string(Generator g);
 // SewSequence (n >= 0).
 std::vector<Generator> generators_for(int n);
 // One map of the given family with default options (Polycube requires n == 3).
-GMap random_gmap(Rng& rng, Generator gen, int n);
+Map random_gmap(Rng& rng, Generator gen, int n);
 
 // --- random O-maps (Def. 32: beta_1 a permutation, beta_2..n involutions, cycle constraint on
 // (1..n)_{+2}) -------------------------------------------------------------------------------
@@ -92,25 +92,25 @@ struct PermutationOMapOptions {
 // A 2-O-map drawn directly: beta_1 a uniformly random permutation (its cycles are the oriented
 // faces), beta_2 a random involution with ~loop_percent fixed points. For n = 2 there is no cycle
 // constraint on O-maps, so every such pair is a valid 2-O-map (possibly several components).
-GMap random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt = {});
+Map random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt = {});
 
 // The double of g along its boundary: g, a copy of g, and every n-free dart n-sewn to its copy
 // (a closed n-G-map; valid because the boundary of a valid G-map is closed under alpha_0..n-2).
 // Orientable when g is. Used to build closed volumes (n = 3) for random O-maps.
-GMap double_along_boundary(const GMap& g);
+Map double_along_boundary(const Map& g);
 
 // The O-maps of the orientable components of g (orient(g, d, keep_boundary = true) on one dart
 // per component), as one O-map; components that cannot be oriented (not orientable, or with 0- or
 // 1-free darts, or 3-free ones) are skipped. Used on random glued polygons (n = 2) and doubled
 // polycubes (n = 3).
-GMap oriented_components(const GMap& g);
+Map oriented_components(const Map& g);
 
 // --- edits ---------------------------------------------------------------------------------
 
 // An isomorphic copy of g with dart d renamed perm[d]. perm must be a permutation of
 // 0..capacity()-1 (else Error(Usage)); alpha'_i(perm[d]) = perm[alpha_i(d)], deleted darts of g
 // are deleted in the copy (at their new index). Kind and dimension are kept. Works for O-maps.
-GMap permute_darts(const GMap& g, const std::vector<Dart>& perm);
+Map permute_darts(const Map& g, const std::vector<Dart>& perm);
 
 struct Mutation {
   enum class Kind { None, Unsew, Sew, Resew };
@@ -130,13 +130,13 @@ struct Mutation {
 // Guarantees, when g is a valid G-map: g stays valid, keeps its darts, and the number of i-free
 // darts (i = result.dim) strictly changes, so the result is NOT isomorphic to the input (every
 // isomorphism preserves the number of i-free darts for each i).
-Mutation mutate_one_link(GMap& g, Rng& rng);
+Mutation mutate_one_link(Map& g, Rng& rng);
 
 // i-unsews a random sewn orbit and i-sews one of its darts to a different i-free dart (possibly
 // of the same orbit it was sewn to, in another pairing: a flipped gluing), trying up to `tries`
 // partners; when none is sewable, the original sew is restored and Kind::None is returned.
 // Guarantees: g stays valid and keeps its darts. The result may or may not be isomorphic to the
 // input — it keeps most cheap invariants, which makes it a hard case for isomorphism tests.
-Mutation resew_one_link(GMap& g, Rng& rng, size_t tries = 64);
+Mutation resew_one_link(Map& g, Rng& rng, size_t tries = 64);
 
 }  // namespace gmr::testing

@@ -47,7 +47,7 @@ PatternGraph pattern_graph(const DGraph& G, const std::vector<PathWord>& W) {
   return P;
 }
 
-PatternGraph pattern_graph(const GMap& g, const std::vector<PathWord>& W) { return pattern_graph(to_dgraph(g), W); }
+PatternGraph pattern_graph(const Map& g, const std::vector<PathWord>& W) { return pattern_graph(to_dgraph(g), W); }
 
 namespace {
 std::vector<Node> bfs(const DGraph& g, Node v, std::vector<bool>& seen) {

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "model/graph/dgraph.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/words/word_rewriting.hpp"
 
 namespace gmr::words {
@@ -44,7 +44,7 @@ Node follow_word(const DGraph& G, Node v, const PathWord& w);
 // P_(D,W)(G). Duplicate words of W are ignored.
 PatternGraph pattern_graph(const DGraph& G, const std::vector<PathWord>& W);
 // On a map: through to_dgraph (node k = k-th live dart, named by the dart index).
-PatternGraph pattern_graph(const GMap& g, const std::vector<PathWord>& W);
+PatternGraph pattern_graph(const Map& g, const std::vector<PathWord>& W);
 
 // P_v: the component of v, nodes in BFS order (v first), names and `origin` carried over (origin
 // composes with the one of P).

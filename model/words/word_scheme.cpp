@@ -124,7 +124,7 @@ std::optional<std::vector<Node>> propagate_match(const WordRuleScheme& S, const 
   return m;
 }
 
-WordSchemeApplication apply_word_scheme(const GMap& g, const WordRuleScheme& S, const std::vector<PathWord>& W, Dart d) {
+WordSchemeApplication apply_word_scheme(const Map& g, const WordRuleScheme& S, const std::vector<PathWord>& W, Dart d) {
   if (!g.alive(d)) throw Error(ErrorCode::Usage, "no dart " + std::to_string(d), "hook dart");
   const DGraph G = to_dgraph(g);
   const std::vector<Dart> darts = g.darts();  // node k of G is darts[k]

@@ -23,7 +23,7 @@
 
 #include "model/graph/dgraph.hpp"
 #include "model/rewrite/dpo.hpp"
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/words/pattern_graph.hpp"
 #include "model/rewrite/rule.hpp"
 #include "model/words/word_rewriting.hpp"
@@ -91,6 +91,6 @@ struct WordSchemeApplication {
   MapDerivation result;     // DPO on the map (apply_to_map)
 };
 // Applies S at dart d of g with the word set W. Throws Error(Usage) when the propagated match fails.
-WordSchemeApplication apply_word_scheme(const GMap& g, const WordRuleScheme& S, const std::vector<PathWord>& W, Dart d);
+WordSchemeApplication apply_word_scheme(const Map& g, const WordRuleScheme& S, const std::vector<PathWord>& W, Dart d);
 
 }  // namespace gmr::words

@@ -15,7 +15,7 @@
 //   valid      full validity check; gmr::is_valid vs CGAL is_valid;
 //   cells      number of i-cells for every i and of connected components; gmr::count_all_cells +
 //              count_components vs CGAL count_all_cells.
-// Memory (bytes per dart) is printed after the benchmarks: gmr GMap::memory_bytes()/size(), and
+// Memory (bytes per dart) is printed after the benchmarks: gmr Map::memory_bytes()/size(), and
 // for both libraries the heap growth measured with mallinfo2 around the construction.
 //
 // GMR_BENCH_SCALE (environment, default 1.0) scales the number of darts (e.g. 0.05 for a quick
@@ -40,7 +40,7 @@
 using namespace gmr;
 
 using gmr::Dart;
-using gmr::GMap;
+using gmr::Map;
 
 namespace {
 
@@ -59,19 +59,19 @@ size_t heap_bytes() {
 // A box of X*Y*Z voxels, voxel (x,y,z) at index x + X*(y + Y*z), built like make_polycube of that
 // voxel list but in O(darts): the cube of one voxel and the 3-link patterns between two voxels
 // adjacent along each axis are taken from make_polycube itself.
-GMap make_box(int X, int Y, int Z) {
-  const GMap one = gmr::make_polycube({{0, 0, 0}});
+Map make_box(int X, int Y, int Z) {
+  const Map one = gmr::make_polycube({{0, 0, 0}});
   const Dart per = one.capacity();  // 48
   std::vector<std::pair<Dart, Dart>> pattern[3];
   for (int axis = 0; axis < 3; ++axis) {
     gmr::Voxel next{0, 0, 0};
     next[axis] = 1;
-    const GMap two = gmr::make_polycube({{0, 0, 0}, next});
+    const Map two = gmr::make_polycube({{0, 0, 0}, next});
     for (Dart d = 0; d < per; ++d)
       if (!two.is_free(3, d)) pattern[axis].emplace_back(d, two.alpha(3, d) - per);
   }
   const size_t voxels = size_t(X) * Y * Z;
-  GMap g(3);
+  Map g(3);
   g.add_darts(voxels * per);
   for (size_t v = 0; v < voxels; ++v) {
     const Dart base = static_cast<Dart>(v * per);
@@ -100,7 +100,7 @@ bool check_box_against_polycube() {
   for (int z = 0; z < 3; ++z)
     for (int y = 0; y < 2; ++y)
       for (int x = 0; x < 4; ++x) vox.push_back({x, y, z});
-  const GMap a = make_box(4, 2, 3), b = gmr::make_polycube(vox);
+  const Map a = make_box(4, 2, 3), b = gmr::make_polycube(vox);
   if (a.capacity() != b.capacity()) return false;
   for (int i = 0; i <= 3; ++i)
     if (a.links(i) != b.links(i)) return false;
@@ -111,7 +111,7 @@ template <unsigned N>
 using CMap = CGAL::Generalized_map<N>;
 
 template <unsigned N>
-void to_cgal(const GMap& g, CMap<N>& m) {
+void to_cgal(const Map& g, CMap<N>& m) {
   std::vector<typename CMap<N>::Dart_handle> h(g.capacity());
   g.for_each_dart([&](Dart d) { h[d] = m.create_dart(); });
   for (unsigned i = 0; i <= N; ++i)
@@ -123,7 +123,7 @@ void to_cgal(const GMap& g, CMap<N>& m) {
 
 struct Memory {
   size_t darts = 0;
-  size_t gmr_memory_bytes = 0;  // GMap::memory_bytes()
+  size_t gmr_memory_bytes = 0;  // Map::memory_bytes()
   size_t gmr_heap = 0;   // heap growth while building the gmr map (builder temporaries freed)
   size_t cgal_heap = 0;  // heap growth while copying it into CGAL (handle table freed)
   size_t cgal_sizeof_dart = 0;
@@ -133,7 +133,7 @@ std::map<std::string, Memory> g_memory;
 
 template <unsigned N>
 struct Fixture {
-  GMap g{static_cast<int>(N)};
+  Map g{static_cast<int>(N)};
   CMap<N> c;
 };
 
@@ -187,7 +187,7 @@ Fixture<3>& box() {
 // gmr: every <mask>-orbit once (visit_all_orbits: marker + visit_orbit_marked per orbit).
 template <unsigned N>
 void gmr_orbits(benchmark::State& state, Fixture<N>& f, gmr::DimMask mask) {
-  const GMap& g = f.g;
+  const Map& g = f.g;
   size_t orbits = 0, darts = 0;
   for (auto _ : state) {
     darts = 0;

@@ -66,13 +66,13 @@ RuleScheme jerboa_rule(const std::string& name) {
 
 // One prepared case: an object, a rule, its hooks.
 struct Case {
-  GMap object{2};
+  Map object{2};
   std::unique_ptr<SchemeEngine> engine;
   std::vector<Dart> hooks;
 };
 
 // Torus of about `darts` darts (8wh darts, w = h).
-GMap torus_of(double darts) {
+Map torus_of(double darts) {
   const auto w = static_cast<size_t>(std::max(3.0, std::round(std::sqrt(darts / 8))));
   return make_torus(w, w);
 }
@@ -100,7 +100,7 @@ Case merge_case(double darts) {
   for (Dart d : c.object.darts())
     if (!c.object.is_free(3, d) && d < c.object.alpha(3, d)) shared.push_back(d);
   c.hooks = {shared[shared.size() / 2]};
-  GMap probe = c.object;
+  Map probe = c.object;
   if (!c.engine->apply(probe, c.hooks)) throw std::runtime_error("MergeHFaces does not apply to the stack");
   return c;
 }
@@ -135,13 +135,13 @@ void run(benchmark::State& state, const std::string& scenario, Factory f, double
   size_t events = 0, traversed = 0;
   // A fresh copy, prepared as a map that lives in a modeler (room for new darts, a marker already
   // allocated), so that neither method pays for growing the arrays.
-  auto fresh = [](const GMap& object) {
-    GMap g = object;
+  auto fresh = [](const Map& object) {
+    Map g = object;
     g.reserve(g.capacity() + 4096);
     ScopedMarker(g).set_clean();
     return g;
   };
-  auto step = [&](const Case& k, GMap& g) {
+  auto step = [&](const Case& k, Map& g) {
     switch (m) {
       case Method::Apply: {
         const auto app = k.engine->apply(g, k.hooks);
@@ -166,8 +166,8 @@ void run(benchmark::State& state, const std::string& scenario, Factory f, double
     // Not timed: the copy, then the same method once on a copy of the small object. Copying a large
     // object evicts the code and the rule's data from the caches, which a modeler applying one
     // operation after another does not; the warm-up puts every size in the same state.
-    GMap g = fresh(c.object);
-    GMap gw = fresh(w.object);
+    Map g = fresh(c.object);
+    Map gw = fresh(w.object);
     step(w, gw);
     const double t0 = cpu_seconds();
     step(c, g);

@@ -35,7 +35,7 @@ std::string rule_path(const std::string& name) {
 }
 
 struct Example {
-  GMap before{2}, after{2};
+  Map before{2}, after{2};
   DartMapping mapping;
   OrbitType orbit;
   size_t right_nodes = 0;  // expected size of R

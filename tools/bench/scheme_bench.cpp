@@ -36,7 +36,7 @@
 using namespace gmr;
 
 using gmr::Dart;
-using gmr::GMap;
+using gmr::Map;
 
 namespace {
 
@@ -54,7 +54,7 @@ struct Items {
 using CMap = CGAL::Generalized_map<2, Items>;
 using DH = CMap::Dart_handle;
 
-void to_cgal(const GMap& g, CMap& m) {
+void to_cgal(const Map& g, CMap& m) {
   std::vector<DH> h(g.capacity());
   g.for_each_dart([&](Dart d) { h[d] = m.create_dart(); });
   for (unsigned i = 0; i <= 2; ++i)
@@ -64,8 +64,8 @@ void to_cgal(const GMap& g, CMap& m) {
     });
 }
 
-GMap from_cgal(CMap& m) {
-  GMap g(2);
+Map from_cgal(CMap& m) {
+  Map g(2);
   g.add_darts(m.number_of_darts());
   std::uint32_t k = 0;
   for (auto it = m.darts().begin(); it != m.darts().end(); ++it) m.info(it) = k++;
@@ -109,12 +109,12 @@ size_t cgal_quad_subdivision(CMap& m) {
 }
 
 struct Fixture {
-  GMap torus{2};
+  Map torus{2};
   CMap ctorus;
   std::unique_ptr<gmr::scheme::SchemeEngine> engine;
 };
 
-bool same_cells(const GMap& g, CMap& c) {
+bool same_cells(const Map& g, CMap& c) {
   auto gc = gmr::count_all_cells(g);
   gc.push_back(gmr::count_components(g));
   const auto cc = c.count_all_cells();
@@ -128,7 +128,7 @@ Fixture& fixture() {
   f->engine = std::make_unique<gmr::scheme::SchemeEngine>(gmr::io::read_scheme_file(GMR_RULES_DIR "/quad_subdivision.json"));
   // Correctness on a small torus: the CGAL result is isomorphic to the engine's.
   {
-    GMap g = gmr::make_torus(5, 7);
+    Map g = gmr::make_torus(5, 7);
     CMap c;
     to_cgal(g, c);
     if (!f->engine->apply(g, {0}).applied) std::abort();
@@ -140,7 +140,7 @@ Fixture& fixture() {
   const auto side = static_cast<size_t>(std::lround(250 * std::sqrt(scale())));
   f->torus = gmr::make_torus(side, side);
   to_cgal(f->torus, f->ctorus);
-  GMap g = f->torus;
+  Map g = f->torus;
   CMap c(f->ctorus);
   if (!f->engine->apply(g, {0}).applied) std::abort();
   cgal_quad_subdivision(c);
@@ -156,13 +156,13 @@ void quadsub_gmr(benchmark::State& state) {
   size_t added = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    GMap g = f.torus;
+    Map g = f.torus;
     state.ResumeTiming();
     const gmr::scheme::SchemeApplication a = f.engine->apply(g, {0});
     benchmark::DoNotOptimize(a.darts_added);
     added += a.darts_added;
     state.PauseTiming();
-    { GMap dead = std::move(g); }  // freeing is not timed
+    { Map dead = std::move(g); }  // freeing is not timed
     state.ResumeTiming();
   }
   state.counters["darts_per_second"] = benchmark::Counter(static_cast<double>(added), benchmark::Counter::kIsRate);

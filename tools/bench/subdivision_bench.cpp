@@ -95,7 +95,7 @@ void run_gmr_topology(benchmark::State& state, const char* rule) {
   const gmr::scheme::SchemeEngine engine(s);
   for (auto _ : state) {
     state.PauseTiming();
-    gmr::GMap g = f.map.map;
+    gmr::Map g = f.map.map;
     state.ResumeTiming();
     for (int k = 0; k < kIterations; ++k) gmr::scheme::apply_everywhere(engine, g, /*keep_tables=*/false);
     benchmark::DoNotOptimize(g.size());

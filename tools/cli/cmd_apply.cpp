@@ -52,14 +52,14 @@ struct ApplyArgs {
 // atomically. The result is the scheme engine's: the DPO's up to the indices of the created darts
 // (the engine appends them, the DPO reuses the indices of deleted darts first), so that the log
 // names the darts of the map written by -o. False (printed) when the engine refuses the rule.
-bool log_concrete_application(const Rule& r, const GMap& g, const std::vector<Dart>& md,
+bool log_concrete_application(const Rule& r, const Map& g, const std::vector<Dart>& md,
                               const std::vector<OrbitType>& types, const std::string& log_file, MapDerivation& d) {
   const scheme::RuleScheme s = events::scheme_of_concrete_rule(r);
   const scheme::SchemeEngine engine(s);
   std::vector<Dart> hooks;
   for (const std::string& h : s.hooks) hooks.push_back(md[*s.left.find(h)]);
   const events::StaticEvents st = events::analyse(s, types);
-  GMap h = g;
+  Map h = g;
   events::LoggedApplication la = events::apply_with_events(engine, st, h, hooks);
   if (!la.application) {
     std::cout << r.name() << " as a scheme on <>: " << la.application.why << "\n";
@@ -86,7 +86,7 @@ int run_apply(const ApplyArgs& a) {
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
   const Rule& r = *in.concrete;
   const GMapFile f = load_map(a.input, a.from);
-  const GMap& g = f.map;
+  const Map& g = f.map;
   const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_match_pairs(r, g, a.match);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();

@@ -56,7 +56,7 @@ FaceList torus_mesh(size_t w, size_t h) {
 struct Object {
   std::string name;
   std::string origin;
-  GMap map;
+  Map map;
   std::optional<bool> matches_builder;  // for objects also built by a builder
 };
 
@@ -79,7 +79,7 @@ int run_demo(const DemoArgs& a) {
   if (ec) throw Error(ErrorCode::Io, "cannot create the output directory: " + ec.message(), out.string());
   std::vector<std::string> files;
   auto written = [&](const std::filesystem::path& p) { files.push_back(p.string()); };
-  auto draw = [&](const GMap& g, const std::string& stem) {
+  auto draw = [&](const Map& g, const std::string& stem) {
     DotOptions opt;
     opt.name = stem;
     const std::string dot = to_dot(g, opt);

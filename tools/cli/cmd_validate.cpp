@@ -21,7 +21,7 @@ struct ValidateArgs {
 
 // Orbits without one consistent value; for the "position" embedding, also values that are not
 // [x, y, z] (model/core/position.hpp).
-std::vector<EmbeddingIssue> embedding_issues(const GMap& g, const JsonEmbedding& e) {
+std::vector<EmbeddingIssue> embedding_issues(const Map& g, const JsonEmbedding& e) {
   std::vector<EmbeddingIssue> issues = e.check(g);
   if (e.name() != kPositionName) return issues;
   for (Dart rep : orbit_representatives(g, e.orbit_type()))

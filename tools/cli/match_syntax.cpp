@@ -9,7 +9,7 @@ namespace gmr::cli {
 using namespace gmr::graph;
 using namespace gmr::rewrite;
 
-std::vector<std::pair<Node, Dart>> parse_match_pairs(const Rule& r, const GMap& g, const std::string& text) {
+std::vector<std::pair<Node, Dart>> parse_match_pairs(const Rule& r, const Map& g, const std::string& text) {
   std::vector<std::pair<Node, Dart>> out;
   std::stringstream ss(text);
   std::string item;

@@ -5,13 +5,13 @@
 #include <utility>
 #include <vector>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/rewrite/rule.hpp"
 
 namespace gmr::cli {
 
 // Error(Usage) located "--match" naming the first bad pair.
-std::vector<std::pair<graph::Node, Dart>> parse_match_pairs(const rewrite::Rule& r, const GMap& g,
+std::vector<std::pair<graph::Node, Dart>> parse_match_pairs(const rewrite::Rule& r, const Map& g,
                                                             const std::string& text);
 
 }  // namespace gmr::cli

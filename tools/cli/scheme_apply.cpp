@@ -23,7 +23,7 @@ using namespace gmr::scheme;
 
 namespace {
 
-std::vector<Dart> parse_hooks(const std::string& text, const GMap& g) {
+std::vector<Dart> parse_hooks(const std::string& text, const Map& g) {
   std::vector<Dart> out;
   std::stringstream ss(text);
   std::string item;
@@ -94,7 +94,7 @@ void print_not_applicable(const RuleScheme& s, const SchemeApplyArgs& a, NotAppl
 }
 
 // --hook D[,D...] (or no hook): one application; nullopt when not applicable (already printed).
-std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a,
+std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, Map& g, const SchemeApplyArgs& a,
                                       ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> hooks = a.hooks.empty() ? std::vector<Dart>{} : parse_hooks(a.hooks, g);
@@ -118,7 +118,7 @@ std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, GMap& g, const
 }
 
 // --all: apply_everywhere; nullopt when applicable at no dart (already printed).
-std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, GMap& g, const SchemeApplyArgs& a,
+std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, Map& g, const SchemeApplyArgs& a,
                                            ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> darts = g.darts();
@@ -155,7 +155,7 @@ struct Change {
 
 // A surface given to a volume scheme: lifted with --lift (builders.hpp), else a usage error
 // that says so.
-void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, GMap& g) {
+void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, Map& g) {
   if (g.dimension() >= s.dimension || g.is_omap()) return;
   if (!a.lift)
     throw Error(ErrorCode::Usage,
@@ -168,7 +168,7 @@ void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, GMap& g) {
 
 // Prints the applications, the dart counts, the change in cells and the validity of the result.
 void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, const Change& change,
-                   const GMap& g, const ValidityReport& rep, const expr::EmbeddingPropagation& prop,
+                   const Map& g, const ValidityReport& rep, const expr::EmbeddingPropagation& prop,
                    const expr::EmbeddedMap& m) {
   const size_t before = change.darts_before;
   const auto& apps = r.apps;
@@ -255,7 +255,7 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   GMapFile f = load_map(a.input, a.from);
   if (a.no_embeddings) f.embeddings.clear();
   expr::EmbeddedMap m = expr::to_embedded_map(f);
-  GMap& g = m.map;
+  Map& g = m.map;
   lift_to_scheme(s, a, g);
   expr::EmbeddingPropagation prop(cs, m);
   const size_t before = g.size();

@@ -5,7 +5,7 @@
 
 namespace gmr::cli {
 
-std::string map_name(const GMap& g) {
+std::string map_name(const Map& g) {
   return std::to_string(g.dimension()) + (g.is_omap() ? "-O-map" : "-G-map");
 }
 
@@ -16,7 +16,7 @@ std::string per_dimension(const std::vector<size_t>& v, int lo) {
   return s;
 }
 
-MapSummary summarize(const GMap& g) {
+MapSummary summarize(const Map& g) {
   MapSummary s{};
   s.kind = g.kind();
   s.dimension = g.dimension();

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 namespace gmr::cli {
 
@@ -27,9 +27,9 @@ struct MapSummary {
   size_t boundary_cells = 0;
 };
 
-MapSummary summarize(const GMap& g);
+MapSummary summarize(const Map& g);
 // "2-G-map", "3-O-map".
-std::string map_name(const GMap& g);
+std::string map_name(const Map& g);
 // "0:8 1:12 2:6"
 std::string per_dimension(const std::vector<size_t>& v, int lo);
 // Appends the summary's members to the object j.

@@ -41,7 +41,7 @@ TEST(ConcreteScheme, UnsewIsASchemeOnTheEmptyOrbitType) {
 TEST(ConcreteScheme, UnsewOnTheGridAgreesWithDpoAndOracle) {
   const rewrite::Rule r = concrete_rule("F5_fig319a_unsew.json");
   PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
-  GMap& g = m.map;
+  Map& g = m.map;
   const Dart a = edge_dart(m, {1, 1, 0}, {1, 2, 0});
   const std::vector<Dart> match = {a, g.alpha(0, a), g.alpha(2, a), g.alpha(0, g.alpha(2, a))};  // a b c d
   const rewrite::MapDerivation dpo = rewrite::apply_in_map(r, g, match);

@@ -21,7 +21,7 @@ scheme::RuleScheme jerboa_rule(const std::string& name) {
 
 // A stack of three cubes; MergeHFaces at a dart of the shared face of the two lowest.
 struct Stack {
-  GMap g = make_polycube({{0, 0, 0}, {0, 0, 1}, {0, 0, 2}});
+  Map g = make_polycube({{0, 0, 0}, {0, 0, 1}, {0, 0, 2}});
   Dart hook = kNoDart;
   Stack() {
     for (Dart d : g.darts())

@@ -41,7 +41,7 @@ struct Checked {
 
 // Applies `s` at `hooks` on g (in place) with the event log, and the dynamic detector on the same
 // application; every orbit type of dimension n is analysed.
-inline Checked apply_checked(const scheme::RuleScheme& s, GMap& g, const std::vector<Dart>& hooks) {
+inline Checked apply_checked(const scheme::RuleScheme& s, Map& g, const std::vector<Dart>& hooks) {
   const StaticEvents st = analyse(s);
   std::vector<OrbitSnapshot> before;
   for (const auto& t : st.orbits) before.push_back(snapshot(g, t.orbit));
@@ -81,7 +81,7 @@ inline size_t count(const OrbitTypeLog& l, OrbitEventKind k, EventStatus st) {
 }
 
 // (V, E, F, CC) of a 2-G-map.
-inline std::vector<size_t> cells(const GMap& g) {
+inline std::vector<size_t> cells(const Map& g) {
   auto c = count_all_cells(g);
   c.push_back(count_components(g));
   return c;

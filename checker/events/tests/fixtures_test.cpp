@@ -39,7 +39,7 @@ void expect_merged_and_split(const OrbitTypeLog& l) {
   EXPECT_EQ(hs.size(), 2u);
 }
 
-GMap house() { return io::read_gmap_json_file(event_data("house.json")).map; }
+Map house() { return io::read_gmap_json_file(event_data("house.json")).map; }
 
 // A cylinder of circumference one edge and height two quads: each circle (bottom, middle, top) is a
 // single edge whose two ends are one vertex. Quad k has darts 8k..8k+7: bottom side 8k, 8k+1,
@@ -47,8 +47,8 @@ GMap house() { return io::read_gmap_json_file(event_data("house.json")).map; }
 // corner, 8k+1 and 8k+2 at its bottom-right one, and so on). The right side of each quad is 2-sewn to
 // its own left side (so each circle closes on one vertex); the top of the lower quad to the bottom
 // of the upper one (the middle circle, darts 4, 5, 8, 9).
-GMap one_edge_cylinder() {
-  GMap g(2);
+Map one_edge_cylinder() {
+  Map g(2);
   g.add_darts(16);
   for (Dart q = 0; q < 16; q += 8) {
     for (Dart k = 0; k < 8; k += 2) g.link(0, q + k, q + k + 1);
@@ -68,8 +68,8 @@ GMap one_edge_cylinder() {
 // uses non-lowest names). Darts are named a0..h0 and x1, x2 = the copies made by n1, n2; orbits are
 // compared by their lowest dart, computed here by plain traversal of G or H.
 TEST(Fixtures, F1FaceTriangulationTable1) {
-  GMap g = house();
-  const GMap before = g;
+  Map g = house();
+  const Map before = g;
   const Checked c = apply_checked(library_rule("face_triangulation"), g, {0});
   expect_oracle_agrees(c);
   const auto& app = c.logged.application;
@@ -83,7 +83,7 @@ TEST(Fixtures, F1FaceTriangulationTable1) {
     dart[x + "1"] = app.comatch_at(1, b);
     dart[x + "2"] = app.comatch_at(2, b);
   }
-  auto low = [&](const GMap& m, const std::string& o, const std::string& x) {
+  auto low = [&](const Map& m, const std::string& o, const std::string& x) {
     const auto darts = orbit(m, OrbitType::parse(o), dart.at(x));
     return *std::min_element(darts.begin(), darts.end());
   };
@@ -149,7 +149,7 @@ TEST(Fixtures, F1FaceTriangulationTable1) {
 // Fig. 7a -> 7b -> 7c: 2-unsewing twice on the 2x2 grid of quads.
 TEST(Fixtures, F2UnsewTwice) {
   PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
-  GMap& g = m.map;
+  Map& g = m.map;
   const auto rule = library_rule("unsew2");
   // First: the edge (1,1)-(1,2) between the top faces; the surface stays connected.
   const Checked c1 = apply_checked(rule, g, {edge_dart(m, {1, 1, 0}, {1, 2, 0})});
@@ -172,8 +172,8 @@ TEST(Fixtures, F2UnsewTwice) {
 // Fig. 8 (7b -> 7a): 2-sewing with two hooks undoes the first unsewing.
 TEST(Fixtures, F3SewTwoHooks) {
   PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
-  GMap& g = m.map;
-  const GMap grid = g;
+  Map& g = m.map;
+  const Map grid = g;
   const Dart a0 = edge_dart(m, {1, 1, 0}, {1, 2, 0});
   const Dart a1 = g.alpha(2, a0);
   ASSERT_TRUE(apply_checked(library_rule("unsew2"), g, {a0}).logged.application);
@@ -191,7 +191,7 @@ TEST(Fixtures, F3SewTwoHooks) {
 // Fig. 9 (7c -> 7d): deleting the edge (1,0)-(1,1) between the bottom faces merges them.
 TEST(Fixtures, F4EdgeDeletion) {
   PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
-  GMap& g = m.map;
+  Map& g = m.map;
   const auto unsew = library_rule("unsew2");
   ASSERT_TRUE(apply_checked(unsew, g, {edge_dart(m, {1, 1, 0}, {1, 2, 0})}).logged.application);
   ASSERT_TRUE(apply_checked(unsew, g, {edge_dart(m, {0, 1, 0}, {1, 1, 0})}).logged.application);
@@ -212,7 +212,7 @@ TEST(Fixtures, F4EdgeDeletion) {
 // complete and implicitly merged, but the two <1>-orbits stay apart (modified).
 TEST(Fixtures, F4bBorderEdgeDeletionIsNoMerge) {
   PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
-  GMap& g = m.map;
+  Map& g = m.map;
   const auto rule = library_rule("edge_deletion");
   const StaticEvents st = analyse(rule, {OrbitType{1}});
   bool complete_implicit_merge = false;
@@ -232,7 +232,7 @@ TEST(Fixtures, F4bBorderEdgeDeletionIsNoMerge) {
 // (Fig. 1c), which disconnects the disk (a G-map has no pinched vertex).
 TEST(Fixtures, F5EdgeCollapseMergeThenMergeAndSplit) {
   PositionedMap m = io::read_off_file(event_data("triangle_grid_2x2.off"));
-  GMap& g = m.map;
+  Map& g = m.map;
   EXPECT_EQ(cells(g), (std::vector<size_t>{9, 16, 8, 1}));
   const auto rule = library_rule("edge_collapse");
   const Checked c1 = apply_checked(rule, g, {edge_dart(m, {1, 1, 0}, {1, 0, 0})});
@@ -256,7 +256,7 @@ TEST(Fixtures, F5EdgeCollapseMergeThenMergeAndSplit) {
 // splits the result; the surface stays connected.
 TEST(Fixtures, F5EdgeCollapseOnCylinder) {
   PositionedMap m = io::read_off_file(event_data("cylinder_4.off"));
-  GMap& g = m.map;
+  Map& g = m.map;
   EXPECT_EQ(cells(g), (std::vector<size_t>{8, 16, 8, 1}));
   const Checked c = apply_checked(library_rule("edge_collapse"), g, {edge_dart(m, {1, 0, 0}, {1, 0, 1})});
   expect_oracle_agrees(c);
@@ -271,7 +271,7 @@ TEST(Fixtures, F5EdgeCollapseOnCylinder) {
 // the one-edge cylinder pinches the cylinder there, and a G-map has no pinched vertex, so its
 // vertex is split into the lower and the upper one, without any merge; the two halves fall apart.
 TEST(Fixtures, F5EdgeCollapseSplitOnlyOnCylinder) {
-  GMap g = one_edge_cylinder();
+  Map g = one_edge_cylinder();
   EXPECT_EQ(cells(g), (std::vector<size_t>{3, 5, 2, 1}));
   const auto vertex = orbit(g, OrbitType{1, 2}, 4);
   EXPECT_NE(std::find(vertex.begin(), vertex.end(), Dart{5}), vertex.end());  // both ends: one vertex
@@ -300,12 +300,12 @@ TEST(Fixtures, StaticModificationRefutedOnALoop) {
   const StaticEvents st = analyse(rule, {OrbitType{0, 1}});
   ASSERT_EQ(st.orbits[0].events.size(), 1u);
   EXPECT_EQ(st.orbits[0].events[0].kind, PatternEventKind::Modification);
-  GMap dart = io::read_gmap_json_file(event_data("free_dart.json")).map;
+  Map dart = io::read_gmap_json_file(event_data("free_dart.json")).map;
   const Checked c1 = apply_checked(rule, dart, {0});
   expect_oracle_agrees(c1);
   EXPECT_EQ(count(c1.log("<0,1>"), OrbitEventKind::NonModification, EventStatus::Refuted), 1u);
   EXPECT_EQ(count(c1.log("<0,1>"), OrbitEventKind::Modification), 0u);
-  GMap corner = io::read_gmap_json_file(event_data("one_corner.json")).map;
+  Map corner = io::read_gmap_json_file(event_data("one_corner.json")).map;
   const Checked c2 = apply_checked(rule, corner, {0});
   expect_oracle_agrees(c2);
   EXPECT_EQ(count(c2.log("<0,1>"), OrbitEventKind::Modification, EventStatus::Certain), 1u);

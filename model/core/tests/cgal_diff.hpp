@@ -16,7 +16,7 @@
 
 #include "model/testing/cgal_generalized_map.hpp"
 
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 #include "model/core/orbit.hpp"
 #include "model/testing/random_maps.hpp"
 #include "model/core/signature.hpp"
@@ -25,13 +25,13 @@
 namespace cgal_diff {
 
 using gmr::Dart;
-using gmr::GMap;
+using gmr::Map;
 
 template <unsigned N>
 using CMap = CGAL::Generalized_map<N>;
 
 template <unsigned N>
-void to_cgal(const GMap& g, CMap<N>& m) {
+void to_cgal(const Map& g, CMap<N>& m) {
   m.clear();
   std::vector<typename CMap<N>::Dart_handle> h(g.capacity());
   g.for_each_dart([&](Dart d) { h[d] = m.create_dart(); });
@@ -112,7 +112,7 @@ std::vector<size_t> cgal_cells(const CMap<N>& m) {
   return std::vector<size_t>(c.begin(), c.end());
 }
 
-inline std::vector<size_t> gmr_cells(const GMap& g) {
+inline std::vector<size_t> gmr_cells(const Map& g) {
   auto c = gmr::count_all_cells(g);
   c.push_back(gmr::count_components(g));
   return c;
@@ -121,7 +121,7 @@ inline std::vector<size_t> gmr_cells(const GMap& g) {
 // Breaks the involution of alpha_i at one dart: d -> x one way only, x != alpha_i(d) (then
 // alpha_i(alpha_i(d)) = alpha_i(x) != d since the map was valid). Returns false when no such
 // (i, d, x) was found (fewer than 3 darts may leave none).
-inline bool break_involution(GMap& g, gmr::testing::Rng& rng) {
+inline bool break_involution(Map& g, gmr::testing::Rng& rng) {
   if (g.size() < 2) return false;
   const auto ds = g.darts();
   for (int t = 0; t < 100; ++t) {
@@ -139,7 +139,7 @@ inline bool break_involution(GMap& g, gmr::testing::Rng& rng) {
 // e = alpha_j(d) != d and d' = alpha_i(d) not in {d, e}, d' not j-free, and makes d' j-free
 // (with its partner). Then alpha_j alpha_i alpha_j alpha_i (d) = e != d. Returns false when the map
 // has no such dart.
-inline bool break_cycle(GMap& g, gmr::testing::Rng& rng) {
+inline bool break_cycle(Map& g, gmr::testing::Rng& rng) {
   struct C {
     int i, j;
     Dart d;
@@ -179,7 +179,7 @@ struct Stats {
 // Compares gmr and CGAL on one valid map g and on variants of it (see the file comment of
 // cgal_diff_cgal_test.cpp). `rng` drives the variants.
 template <unsigned N>
-void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
+void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
   using gmr::testing::Mutation;
   ++st.maps;
   st.darts += g.size();
@@ -195,7 +195,7 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
 
   // Isomorphic pair: a random relabeling.
   {
-    GMap h = gmr::testing::permute_darts(g, gmr::testing::random_permutation(rng, g.capacity()));
+    Map h = gmr::testing::permute_darts(g, gmr::testing::random_permutation(rng, g.capacity()));
     to_cgal<N>(h, ch);
     const bool gi = gmr::is_isomorphic(g, h), ci = cgal_isomorphic<N>(cg, ch);
     EXPECT_TRUE(gi) << "gmr: relabeled copy not isomorphic";
@@ -206,11 +206,11 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
   }
   // Non-isomorphic pair: one orbit unsewn (or sewn), then relabeled.
   {
-    GMap m = g;
+    Map m = g;
     const Mutation mu = gmr::testing::mutate_one_link(m, rng);
     if (mu.kind != Mutation::Kind::None) {
       SCOPED_TRACE(mu.str());
-      GMap h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
+      Map h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
       to_cgal<N>(h, ch);
       EXPECT_TRUE(gmr::is_valid(h));
       EXPECT_TRUE(cgal_is_valid(ch));
@@ -224,13 +224,13 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
   }
   // Hard pair: one orbit re-glued elsewhere; no expected verdict, gmr must agree with CGAL.
   {
-    GMap m = g;
+    Map m = g;
     const Mutation mu = gmr::testing::resew_one_link(m, rng);
     if (mu.kind == Mutation::Kind::None) {
       ++st.resew_none;
     } else {
       SCOPED_TRACE(mu.str());
-      GMap h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
+      Map h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
       to_cgal<N>(h, ch);
       EXPECT_TRUE(gmr::is_valid(h));
       EXPECT_TRUE(cgal_is_valid(ch));
@@ -243,7 +243,7 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
   }
   // Invalid maps: both must report them.
   {
-    GMap b = g;
+    Map b = g;
     if (break_involution(b, rng)) {
       to_cgal<N>(b, ch);
       const auto rep = gmr::check_validity(b);
@@ -256,7 +256,7 @@ void compare_one(const GMap& g, gmr::testing::Rng& rng, Stats& st) {
     }
   }
   {
-    GMap b = g;
+    Map b = g;
     if (break_cycle(b, rng)) {
       to_cgal<N>(b, ch);
       const auto rep = gmr::check_validity(b);

@@ -24,7 +24,7 @@ void sweep(const char* what, uint64_t salt, Make&& make) {
   const uint64_t k = seeds();
   for (uint64_t s = 0; s < k; ++s) {
     Rng rng(s * 104729 + salt);
-    const GMap g = make(rng);
+    const Map g = make(rng);
     SCOPED_TRACE(std::string(what) + " seed=" + std::to_string(s));
     compare_one<N>(g, rng, st);
     if (::testing::Test::HasFatalFailure()) break;

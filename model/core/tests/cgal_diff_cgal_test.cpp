@@ -28,7 +28,7 @@ Stats sweep(Generator gen, uint64_t seeds) {
   Stats st;
   for (uint64_t s = 0; s < seeds; ++s) {
     Rng rng(s * 7919 + N * 101 + static_cast<uint64_t>(gen));
-    const GMap g = gmr::testing::random_gmap(rng, gen, static_cast<int>(N));
+    const Map g = gmr::testing::random_gmap(rng, gen, static_cast<int>(N));
     SCOPED_TRACE(std::string(gmr::testing::to_string(gen)) + " n=" + std::to_string(N) +
                  " seed=" + std::to_string(s));
     compare_one<N>(g, rng, st);
@@ -95,7 +95,7 @@ namespace {
 // Re-glues the i-sewn orbit of d with a twist: e = alpha_i(d); i-unsew d; i-sew d to alpha_k(e)
 // (k in the i-sew orbit type, so alpha_k(e) was in the orbit sewn to d's). Returns false (and
 // leaves g unchanged) when not possible.
-bool twist(GMap& g, int i, int k, Dart d) {
+bool twist(Map& g, int i, int k, Dart d) {
   if (g.is_free(i, d)) return false;
   const Dart e = g.alpha(i, d), x = g.alpha(k, e);
   if (x == e) return false;
@@ -113,13 +113,13 @@ bool twist(GMap& g, int i, int k, Dart d) {
 // isomorphic; on other maps it depends on the two darts. gmr and CGAL must agree; returns the
 // number of isomorphic / non-isomorphic pairs.
 template <unsigned N>
-std::pair<size_t, size_t> twisted_pairs(const GMap& base, int i, int k, uint64_t seed, size_t pairs,
+std::pair<size_t, size_t> twisted_pairs(const Map& base, int i, int k, uint64_t seed, size_t pairs,
                                         bool regular) {
   Rng rng(seed);
   size_t iso = 0, non = 0;
   const auto ds = base.darts();
   for (size_t p = 0; p < pairs; ++p) {
-    GMap a = base, b = base;
+    Map a = base, b = base;
     const Dart da = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)],
                db = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)];
     if (!twist(a, i, k, da) || !twist(b, i, k, db)) continue;
@@ -167,7 +167,7 @@ TEST(CgalDiff, TwistedPairsOccurBothWays) {
 TEST(CgalDiff, NamedInvalidMaps) {
   // A square whose alpha_0 is not an involution at dart 0.
   {
-    GMap g = gmr::make_polygon(4);
+    Map g = gmr::make_polygon(4);
     g.set_alpha(0, 0, 2);
     CMap<2> c;
     to_cgal<2>(g, c);
@@ -177,7 +177,7 @@ TEST(CgalDiff, NamedInvalidMaps) {
   // Two quads 2-sewn along an edge, then one of the two 2-links of the edge removed: the
   // 0202-path from the remaining sewn dart does not close.
   {
-    GMap g = gmr::make_grid(2, 1);
+    Map g = gmr::make_grid(2, 1);
     CMap<2> c;
     to_cgal<2>(g, c);
     ASSERT_TRUE(gmr::is_valid(g));
@@ -194,7 +194,7 @@ TEST(CgalDiff, NamedInvalidMaps) {
   }
   // Stacked cubes with one 3-link of the shared face removed: C(0,3) and C(1,3) break.
   {
-    GMap g = gmr::make_stacked_cubes();
+    Map g = gmr::make_stacked_cubes();
     Dart d = gmr::kNoDart;
     g.for_each_dart([&](Dart x) {
       if (d == gmr::kNoDart && !g.is_free(3, x)) d = x;

@@ -9,7 +9,7 @@
 using namespace gmr;
 
 TEST(Embedding, PositionsOnVertices) {
-  GMap g = make_cube();
+  Map g = make_cube();
   Embedding<std::array<double, 3>> pos("position", OrbitType{1, 2});
   EXPECT_FALSE(pos.check(g).empty());  // nothing set yet: 8 vertices without value
   EXPECT_EQ(pos.check(g).size(), 8u);
@@ -27,7 +27,7 @@ TEST(Embedding, PositionsOnVertices) {
 }
 
 TEST(Embedding, ColourOnFacesAnyType) {
-  GMap g = make_cube();
+  Map g = make_cube();
   Embedding<std::string> colour("colour", OrbitType{0, 1});
   for (Dart rep : orbit_representatives(g, OrbitType{0, 1})) colour.set(g, rep, "red");
   EXPECT_TRUE(colour.check(g).empty());

@@ -9,7 +9,7 @@ using namespace gmr;
 
 TEST(PaperFacts, StackedCubesLinkCounts) {
   // Inference paper §3.3 / thesis Ch. 6: 96 darts, 48 0-links, 48 1-links, 48 2-links, 88 3-links.
-  GMap g = make_stacked_cubes();
+  Map g = make_stacked_cubes();
   EXPECT_TRUE(is_valid(g));
   EXPECT_EQ(g.size(), 96u);
   EXPECT_EQ(g.count_links(0), 48u);
@@ -24,7 +24,7 @@ TEST(PaperFacts, StackedCubesLinkCounts) {
 }
 
 TEST(PaperFacts, CubeSurface) {
-  GMap g = make_cube(2);
+  Map g = make_cube(2);
   EXPECT_TRUE(is_valid(g));
   EXPECT_EQ(g.size(), 48u);
   EXPECT_EQ(count_cells(g, 0), 8u);
@@ -37,7 +37,7 @@ TEST(PaperFacts, CubeSurface) {
 TEST(PaperFacts, CellOrbitTypes) {
   // Inference paper §3.3: 2D vertex <1,2>, edge <0,2>, face <0,1>; 3D vertex <1,2,3>, edge
   // <0,2,3>, face <0,1,3>, volume <0,1,2>.
-  GMap g2(2), g3(3);
+  Map g2(2), g3(3);
   EXPECT_EQ(cell_type(g2, 0).str(), "<1,2>");
   EXPECT_EQ(cell_type(g2, 1).str(), "<0,2>");
   EXPECT_EQ(cell_type(g2, 2).str(), "<0,1>");
@@ -47,7 +47,7 @@ TEST(PaperFacts, CellOrbitTypes) {
   EXPECT_EQ(cell_type(g3, 3).str(), "<0,1,2>");
   // On the stacked cubes: a vertex of the shared face has 12 darts (3 edges x 2 faces x 2
   // volumes), a half-face <0,1> has 8 darts, a volume 48.
-  GMap s = make_stacked_cubes();
+  Map s = make_stacked_cubes();
   EXPECT_EQ(orbit(s, OrbitType{0, 1, 2}, 0).size(), 48u);
   EXPECT_EQ(orbit(s, OrbitType{0, 1}, 0).size(), 8u);
 }

@@ -9,17 +9,17 @@
 
 using namespace gmr;
 
-static GMap two_squares() {
-  GMap g = make_polygon(4, 2);
+static Map two_squares() {
+  Map g = make_polygon(4, 2);
   const Dart base = g.add_darts(8);
-  GMap h = make_polygon(4, 2);
+  Map h = make_polygon(4, 2);
   for (int i = 0; i <= 1; ++i)
     for (Dart d = 0; d < 8; ++d) g.set_alpha(i, base + d, base + h.alpha(i, d));
   return g;
 }
 
 TEST(Sew, TwoSewGluesAnEdge) {
-  GMap g = two_squares();
+  Map g = two_squares();
   EXPECT_EQ(sew_orbit_type(g, 2).str(), "<0>");
   sew(g, 2, 0, 8);
   EXPECT_TRUE(is_valid(g));
@@ -34,7 +34,7 @@ TEST(Sew, TwoSewGluesAnEdge) {
 }
 
 TEST(Sew, RefusesNonFreeAndSelf) {
-  GMap g = two_squares();
+  Map g = two_squares();
   sew(g, 2, 0, 8);
   std::string why;
   EXPECT_FALSE(is_sewable(g, 2, 0, 2, &why));
@@ -51,8 +51,8 @@ TEST(Sew, RefusesNonFreeAndSelf) {
 
 TEST(Sew, RefusesNonIsomorphicOrbits) {
   // 3-sew of a square face onto a triangle face: the <0,1>-orbits differ.
-  GMap g(3);
-  GMap sq = make_polygon(4, 3), tr = make_polygon(3, 3);
+  Map g(3);
+  Map sq = make_polygon(4, 3), tr = make_polygon(3, 3);
   g.add_darts(14);
   for (int i = 0; i <= 1; ++i) {
     for (Dart d = 0; d < 8; ++d) g.set_alpha(i, d, sq.alpha(i, d));
@@ -63,7 +63,7 @@ TEST(Sew, RefusesNonIsomorphicOrbits) {
   EXPECT_NE(why.find("not isomorphic"), std::string::npos);
   EXPECT_TRUE(is_valid(g));
   // Two squares do 3-sew, and the whole face is linked.
-  GMap h(3);
+  Map h(3);
   h.add_darts(16);
   for (int i = 0; i <= 1; ++i)
     for (Dart d = 0; d < 8; ++d) {
@@ -77,7 +77,7 @@ TEST(Sew, RefusesNonIsomorphicOrbits) {
 
 TEST(Sew, OneSewClosesAPolygon) {
   // An open polyline of 3 edges 1-sewn at its ends makes a triangle.
-  GMap g(2);
+  Map g(2);
   g.add_darts(6);
   g.link(0, 0, 1);
   g.link(1, 1, 2);

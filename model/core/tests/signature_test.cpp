@@ -10,12 +10,12 @@
 
 using namespace gmr;
 
-static GMap permuted(const GMap& g, unsigned seed) {
+static Map permuted(const Map& g, unsigned seed) {
   std::vector<Dart> perm(g.capacity());
   std::iota(perm.begin(), perm.end(), 0);
   std::mt19937 rng(seed);
   std::shuffle(perm.begin(), perm.end(), rng);
-  GMap h(g.dimension(), g.kind());
+  Map h(g.dimension(), g.kind());
   h.add_darts(g.capacity());
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
     for (Dart d = 0; d < g.capacity(); ++d) h.set_alpha(i, perm[d], perm[g.alpha(i, d)]);
@@ -24,14 +24,14 @@ static GMap permuted(const GMap& g, unsigned seed) {
 
 TEST(Signature, WordOfAnEdge) {
   // Free edge in a 2-G-map from dart 0: d1=0 (alpha0 -> 2, alpha1 -> 1, alpha2 -> 1), d2=1 ...
-  GMap g = make_free_edge(2);
+  Map g = make_free_edge(2);
   EXPECT_EQ(bfs_word(g, 0), (Word{2, 1, 1, 1, 2, 2}));
   EXPECT_EQ(bfs_labeling(g, 1), (std::vector<Dart>{1, 0}));
 }
 
 TEST(Signature, InvariantUnderRelabeling) {
-  for (GMap g : {make_cube(), make_stacked_cubes(), make_torus(3, 4), make_square_pyramid()}) {
-    GMap h = permuted(g, 7);
+  for (Map g : {make_cube(), make_stacked_cubes(), make_torus(3, 4), make_square_pyramid()}) {
+    Map h = permuted(g, 7);
     EXPECT_EQ(signature(g), signature(h));
     EXPECT_TRUE(is_isomorphic(g, h));
   }
@@ -45,7 +45,7 @@ TEST(Signature, DistinguishesNonIsomorphic) {
   EXPECT_NE(signature(make_grid(2, 3)), signature(make_grid(1, 6)));
   EXPECT_FALSE(is_isomorphic(make_cube(2), make_cube(3)));
   // Same darts count, one link changed.
-  GMap a = make_polygon(6), b = make_polygon(6);
+  Map a = make_polygon(6), b = make_polygon(6);
   b.unlink(1, 1);
   b.unlink(1, 5);
   b.link(1, 1, 5);
@@ -53,7 +53,7 @@ TEST(Signature, DistinguishesNonIsomorphic) {
 }
 
 TEST(Signature, FlagsRestrictMatches) {
-  GMap g = make_polygon(4);
+  Map g = make_polygon(4);
   std::vector<uint32_t> f1(8, 0), f2(8, 0), f3(8, 0);
   f1[0] = 1;
   f2[2] = 1;  // another corner: same up to rotation
@@ -69,18 +69,18 @@ TEST(Signature, FlagsRestrictMatches) {
 }
 
 TEST(Signature, SeveralComponents) {
-  GMap g = make_cube();
-  GMap t = make_tetrahedron();
+  Map g = make_cube();
+  Map t = make_tetrahedron();
   const Dart base = g.add_darts(t.capacity());
   for (int i = 0; i <= 2; ++i)
     for (Dart d = 0; d < t.capacity(); ++d) g.set_alpha(i, base + d, base + t.alpha(i, d));
-  GMap h = permuted(g, 3);
+  Map h = permuted(g, 3);
   EXPECT_EQ(signature(g).components.size(), 2u);
   EXPECT_TRUE(is_isomorphic(g, h));
 }
 
 TEST(Signature, OMaps) {
-  GMap o = orient(make_cube());
+  Map o = orient(make_cube());
   EXPECT_TRUE(is_isomorphic(o, permuted(o, 11)));
   EXPECT_FALSE(is_isomorphic(o, orient(make_prism(5))));
 }

@@ -16,7 +16,7 @@ namespace {
 
 // Plain stack DFS: pop, visit, push unmarked neighbours in increasing dimension order; links to
 // non-existent indices are not followed.
-std::vector<Dart> ref_visit(const GMap& g, DimMask mask, Dart d, std::vector<bool>& seen) {
+std::vector<Dart> ref_visit(const Map& g, DimMask mask, Dart d, std::vector<bool>& seen) {
   std::vector<Dart> out, stack{d};
   seen[d] = true;
   while (!stack.empty()) {
@@ -35,7 +35,7 @@ std::vector<Dart> ref_visit(const GMap& g, DimMask mask, Dart d, std::vector<boo
 }
 
 // The validity check as first written (before the fast paths).
-ValidityReport ref_validity(const GMap& g, size_t limit) {
+ValidityReport ref_validity(const Map& g, size_t limit) {
   ValidityReport r;
   auto add = [&](Violation v) {
     if (r.violations.size() < limit)
@@ -93,7 +93,7 @@ bool same(const ValidityReport& a, const ValidityReport& b) {
 
 // Every orbit type over the map's dimensions (all subsets), each traversed from every dart, and
 // the all-orbits scan, against the reference.
-void check_traversals(const GMap& g, const std::string& what) {
+void check_traversals(const Map& g, const std::string& what) {
   SCOPED_TRACE(what);
   const DimMask all = g.dims_mask();
   std::vector<Dart> stack;
@@ -131,7 +131,7 @@ void check_traversals(const GMap& g, const std::string& what) {
 }
 
 // Corrupts g: `k` random one-way writes, some dangling (target >= capacity) when `dangling`.
-void corrupt(GMap& g, Rng& rng, int k, bool dangling) {
+void corrupt(Map& g, Rng& rng, int k, bool dangling) {
   const auto ds = g.darts();
   if (ds.empty()) return;
   for (int t = 0; t < k; ++t) {
@@ -171,7 +171,7 @@ TEST(TraversalEquivalence, StandardObjects) {
 TEST(TraversalEquivalence, InvalidMaps) {
   for (uint64_t seed = 0; seed < 60; ++seed) {
     Rng rng(seed);
-    GMap g = random_gmap(rng, seed % 2 ? Generator::SewSequence : Generator::GluedPolygons,
+    Map g = random_gmap(rng, seed % 2 ? Generator::SewSequence : Generator::GluedPolygons,
                          2 + int(seed % 3 == 0));
     corrupt(g, rng, 1 + static_cast<int>(seed % 4), seed % 5 == 0);
     check_traversals(g, "corrupted seed=" + std::to_string(seed));
@@ -179,7 +179,7 @@ TEST(TraversalEquivalence, InvalidMaps) {
   }
   for (uint64_t seed = 0; seed < 20; ++seed) {
     Rng rng(seed);
-    GMap o = orient(make_torus(3, 3));
+    Map o = orient(make_torus(3, 3));
     corrupt(o, rng, 2, seed % 3 == 0);
     check_traversals(o, "corrupted O-map seed=" + std::to_string(seed));
     if (HasFatalFailure()) return;
@@ -189,7 +189,7 @@ TEST(TraversalEquivalence, InvalidMaps) {
 TEST(TraversalEquivalence, MapsWithDeletedDarts) {
   for (uint64_t seed = 0; seed < 30; ++seed) {
     Rng rng(seed);
-    GMap g = random_gmap(rng, Generator::SewSequence, 2 + int(seed % 2));
+    Map g = random_gmap(rng, Generator::SewSequence, 2 + int(seed % 2));
     // Delete a few darts (their partners become free in that dimension: possibly invalid, which
     // is fine here).
     const auto ds = g.darts();

@@ -7,7 +7,7 @@
 using namespace gmr;
 
 TEST(Validity, BrokenInvolutionReported) {
-  GMap g = make_cube(2);
+  Map g = make_cube(2);
   const Dart d = 0, e = g.alpha(2, 0);
   g.set_alpha(2, d, g.alpha(0, d));  // d -2-> its 0-neighbour, one direction only
   auto r = check_validity(g);
@@ -21,8 +21,8 @@ TEST(Validity, BrokenInvolutionReported) {
 }
 
 TEST(Validity, CycleConstraintReportsPath) {
-  GMap g = make_polygon(3, 2);
-  GMap h = make_polygon(3, 2);
+  Map g = make_polygon(3, 2);
+  Map h = make_polygon(3, 2);
   // Link only one dart of a face to a dart of another polygon by alpha_2: breaks C(0,2).
   const Dart base = g.add_darts(h.capacity());
   for (int i = 0; i <= 1; ++i)
@@ -42,13 +42,13 @@ TEST(Validity, CycleConstraintReportsPath) {
 }
 
 TEST(Validity, DanglingLinkAndLimit) {
-  GMap g = make_cube(3);
+  Map g = make_cube(3);
   g.set_alpha(3, 5, 1000);
   auto r = check_validity(g);
   ASSERT_EQ(r.violations.size(), 1u);
   EXPECT_EQ(r.violations[0].kind, ViolationKind::DanglingLink);
   EXPECT_EQ(r.violations[0].dart, 5u);
-  GMap big = make_grid(10, 10, 2);
+  Map big = make_grid(10, 10, 2);
   // Loops on the even darts while their 1-partners still point back: many non-involutions.
   big.for_each_dart([&](Dart d) {
     if (d % 2 == 0) big.set_alpha(1, d, d);
@@ -60,7 +60,7 @@ TEST(Validity, DanglingLinkAndLimit) {
 }
 
 TEST(Validity, OMapPermutation) {
-  GMap o = orient(make_cube(2));
+  Map o = orient(make_cube(2));
   EXPECT_TRUE(is_valid(o));
   o.set_alpha(1, 0, o.alpha(1, 1));  // two darts share a beta_1 image
   auto r = check_validity(o);
@@ -70,7 +70,7 @@ TEST(Validity, OMapPermutation) {
 
 TEST(Validity, HighDimensions) {
   for (int n = 0; n <= 7; ++n) {
-    GMap g(n);
+    Map g(n);
     g.add_darts(4);
     EXPECT_TRUE(is_valid(g)) << n;
     if (n >= 2) {

@@ -28,7 +28,7 @@ TEST(IoDot, ColoursPerDimension) {
 }
 
 TEST(IoDot, StackedCubesOneEdgePerLink) {
-  const GMap g = make_stacked_cubes();
+  const Map g = make_stacked_cubes();
   const std::string dot = to_dot(g);
   EXPECT_EQ(dot.rfind("graph \"gmap\" {", 0), 0u);
   // 48 0-links, 48 1-links, 48 2-links; 88 3-links of which 80 are loops (not drawn by default).
@@ -46,7 +46,7 @@ TEST(IoDot, StackedCubesOneEdgePerLink) {
 }
 
 TEST(IoDot, OMapBetaOneIsDirected) {
-  const GMap o = orient(make_cube());  // 24 darts, beta_1 a permutation, beta_2 an involution
+  const Map o = orient(make_cube());  // 24 darts, beta_1 a permutation, beta_2 an involution
   const std::string dot = to_dot(o);
   EXPECT_EQ(dot.rfind("digraph", 0), 0u);
   EXPECT_EQ(count(dot, "[color=red]"), 24u);
@@ -54,7 +54,7 @@ TEST(IoDot, OMapBetaOneIsDirected) {
 }
 
 TEST(IoDot, NonReciprocatedLinksAreDashedArrows) {
-  GMap g(1);
+  Map g(1);
   g.add_darts(3);
   g.set_alpha(0, 0, 1);  // 0 -> 1 but 1 -> 2
   g.set_alpha(0, 1, 2);

@@ -316,7 +316,7 @@ TEST(ExpressionEvaluation, CollectOnAFaceThroughOneVertexFourTimes) {
   // The 1x1 torus: one square face whose four corners are one vertex. One value, not four
   // (thesis §5.5.2); the face's pieces share a slot, so the evaluator marks the vertex orbit.
   EmbeddedMap m;
-  m.map = GMap(2);
+  m.map = Map(2);
   m.map.add_darts(8);  // the square's darts in order; bottom 0-1, right 2-3, top 4-5, left 6-7
   for (Dart k = 0; k < 8; k += 2) m.map.link(0, k, k + 1);
   for (Dart k = 1; k < 8; k += 2) m.map.link(1, k, (k + 1) % 8);

@@ -83,7 +83,7 @@ TEST(Constraints, LabelOutsideDimensionSet) {
 }
 
 TEST(Constraints, OMapDimensionOneMayBeOriented) {
-  GMap o = orient(make_cube(2));
+  Map o = orient(make_cube(2));
   DGraph dg = to_dgraph(o);
   EXPECT_TRUE(check_gmap_constraints(dg, 2, MapKind::OMap).empty());
   // As a G-map over 1..2 the oriented 1-arcs break non-orientation.

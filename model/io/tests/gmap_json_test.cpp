@@ -70,7 +70,7 @@ TEST(IoJson, RoundTripCubeWithPositions) {
 }
 
 TEST(IoJson, RoundTripStackedCubesAndOMap) {
-  for (const GMap& g : {make_stacked_cubes(), orient(make_cube()), make_grid(2, 3), GMap(0)}) {
+  for (const Map& g : {make_stacked_cubes(), orient(make_cube()), make_grid(2, 3), Map(0)}) {
     const GMapFile back = read_gmap_json(write_gmap_json(g));
     EXPECT_EQ(back.map.kind(), g.kind());
     EXPECT_EQ(back.map.dimension(), g.dimension());
@@ -81,7 +81,7 @@ TEST(IoJson, RoundTripStackedCubesAndOMap) {
 }
 
 TEST(IoJson, DeletedDartsAreCompacted) {
-  GMap g = make_cube();
+  Map g = make_cube();
   const Dart extra = g.add_dart();
   const Dart first_square = g.add_darts(8);
   (void)first_square;

@@ -182,7 +182,7 @@ TEST(IoOff, OpenSurfacesAndConsistentOrientation) {
 }
 
 TEST(IoOff, WriterRequirements) {
-  const GMap cube = make_cube();
+  const Map cube = make_cube();
   PositionEmbedding none(kPositionName, OrbitType{1, 2});
   try {
     write_off(cube, none);
@@ -193,7 +193,7 @@ TEST(IoOff, WriterRequirements) {
   }
   EXPECT_THROW(write_off(make_stacked_cubes(), none), Error);  // not a 2-G-map
   // A dangling edge: its face is not a closed polygon.
-  GMap edge = make_free_edge(2);
+  Map edge = make_free_edge(2);
   PositionEmbedding pos(kPositionName, OrbitType{1, 2});
   pos.set(edge, 0, {0, 0, 0});
   pos.set(edge, 1, {1, 0, 0});
@@ -205,11 +205,11 @@ TEST(IoOff, WriterRequirements) {
     EXPECT_NE(e.message().find("open face"), std::string::npos);
   }
   // A square face is written; a 2-gon is refused.
-  GMap square = make_polygon(4);
+  Map square = make_polygon(4);
   PositionEmbedding sq(kPositionName, OrbitType{1, 2});
   for (Dart rep : orbit_representatives(square, OrbitType{1, 2})) sq.set(square, rep, {double(rep), 0, 0});
   EXPECT_EQ(face_list_from_map(square, sq).faces.size(), 1u);
-  GMap digon = make_polygon(2);
+  Map digon = make_polygon(2);
   PositionEmbedding dg(kPositionName, OrbitType{1, 2});
   for (Dart rep : orbit_representatives(digon, OrbitType{1, 2})) dg.set(digon, rep, {double(rep), 0, 0});
   EXPECT_THROW(write_off(digon, dg), Error);
@@ -233,7 +233,7 @@ TEST(IoObj, WritesVerticesAndOneBasedFaces) {
 // as another map: found by the off_roundtrip property). A "pillow" (two quads glued along their
 // four edges, a sphere) round-trips; with one edge unsewn, two edges join the same two vertices.
 TEST(IoOff, WriterRefusesUnfaithfulMaps) {
-  GMap g = surface_from_faces({{0, 1, 3, 2}, {1, 0, 2, 3}}, 4);
+  Map g = surface_from_faces({{0, 1, 3, 2}, {1, 0, 2, 3}}, 4);
   ASSERT_TRUE(is_valid(g));
   ASSERT_EQ(euler_characteristic(g), 2);
   PositionEmbedding pos(kPositionName, OrbitType{1, 2});

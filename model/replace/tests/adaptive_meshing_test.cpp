@@ -46,7 +46,7 @@ TEST(AdaptiveMeshing, SphereFourLevelsValidAndBalanced) {
   EXPECT_EQ(levels[1].volume_replacements, 8u);  // the sphere meets all 8 octants
   EXPECT_TRUE(is_valid(m.map));
   // Balance: per volume its level (its size), compared over every vertex.
-  const GMap& g = m.map;
+  const Map& g = m.map;
   std::vector<int> level(g.capacity(), -1);
   for (Dart rep : orbit_representatives(g, cell_type(g, 3))) {
     const std::vector<Dart> darts = orbit(g, cell_type(g, 3), rep);

@@ -68,7 +68,7 @@ TEST(FaceReplacement, SquareWithSplitEdgesBecomesFourQuads) {
 // tetrahedron's faces cut in 3 quads (96 darts).
 TEST(FaceReplacement, CubeAndTetrahedronBoundaries) {
   struct Case {
-    GMap polyhedron;
+    Map polyhedron;
     const char* pattern;
     size_t darts, flagged;
     uint32_t aut_oriented, aut_unoriented;
@@ -179,9 +179,9 @@ TEST(FaceReplacement, OpenGridAndMapWithHoles) {
   EXPECT_EQ(query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }).replaced(), 4u);
   EXPECT_EQ(count_cells(m.map, 2), 16u);
   // Deleted darts leave holes in the index range: build a square after a deleted component.
-  GMap g(2);
+  Map g(2);
   const Dart junk = g.add_dart();
-  GMap sq = make_polygon(4);
+  Map sq = make_polygon(4);
   const Dart base = g.add_darts(sq.size());
   sq.for_each_dart([&](Dart x) {
     for (int i = 0; i <= 2; ++i) g.set_alpha(i, base + x, base + sq.alpha(i, x));
@@ -198,7 +198,7 @@ TEST(FaceReplacement, RefusesInvalidTargetsAndWrongDimensions) {
   m.map.set_alpha(0, 0, 5);  // breaks the involution
   const PatternStore store = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
   EXPECT_THROW(query_replace(m, store, 2), Error);
-  FlaggedMap one{GMap(1), {}, {}};
+  FlaggedMap one{Map(1), {}, {}};
   EXPECT_THROW(query_replace(one, store, 2), Error);
 }
 

@@ -11,7 +11,7 @@
 namespace gmr::replace {
 namespace {
 
-BoundaryGraph face_of(const GMap& g, const std::vector<uint32_t>& flag = {}) {
+BoundaryGraph face_of(const Map& g, const std::vector<uint32_t>& flag = {}) {
   return cell_boundary(g, 2, 0, flag, orientation_classes(g));
 }
 
@@ -31,13 +31,13 @@ TEST(FlaggedWord, SquareAndTriangleWordsFromEveryStart) {
 
 // The generic word without flags is the core library's BFS word of the same orbit.
 TEST(FlaggedWord, AgreesWithCoreWordOnAClosedSurface) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   const BoundaryGraph b = cell_boundary(cube, 3, 0, {}, {});
   for (uint32_t k = 0; k < b.size(); k += 7) EXPECT_EQ(boundary_word(b, k, false), bfs_word(cube, b.dart[k])) << k;
 }
 
 TEST(FlaggedWord, CubeAutomorphismsAndFlaggedWordPrefix) {
-  const GMap cube = make_cube(2);
+  const Map cube = make_cube(2);
   const std::vector<uint32_t> flags(cube.capacity(), 1);
   const BoundaryGraph b = cell_boundary(cube, 3, 0, flags, orientation_classes(cube));
   ASSERT_EQ(b.size(), 48u);
@@ -52,7 +52,7 @@ TEST(FlaggedWord, CubeAutomorphismsAndFlaggedWordPrefix) {
 
 // Flags break symmetry: one flagged dart on a square leaves only the identity.
 TEST(FlaggedWord, FlagsKillAutomorphisms) {
-  const GMap sq = make_polygon(4);
+  const Map sq = make_polygon(4);
   std::vector<uint32_t> flags(sq.capacity(), 0);
   flags[0] = 1;
   const CellSignature s = minimal_signature(face_of(sq, flags), Mode::Unoriented);
@@ -64,7 +64,7 @@ TEST(FlaggedWord, FlagsKillAutomorphisms) {
 
 // Oriented mode needs a 2-colouring flipped by every link: an odd cycle of links has none.
 TEST(FlaggedWord, OrientationClassesRejectOddCycles) {
-  GMap g(2);
+  Map g(2);
   g.add_darts(3);
   g.link(0, 0, 1);
   g.link(1, 1, 2);

@@ -20,7 +20,7 @@ struct TempDir {
     fs::create_directories(path);
   }
   ~TempDir() { fs::remove_all(path); }
-  void write(const std::string& file, const GMap& g) {
+  void write(const std::string& file, const Map& g) {
     io::write_gmap_json_file(path / file, GMapFile{g, {}});
   }
 };
@@ -53,7 +53,7 @@ TEST(PatternFolder, LoadsTheConformalFaceSetInNameOrder) {
 
 TEST(PatternFolder, RejectsNonPatternsByName) {
   TempDir d("reject");
-  auto expect_reject = [&](const std::string& file, const GMap& g, const std::string& why) {
+  auto expect_reject = [&](const std::string& file, const Map& g, const std::string& why) {
     d.write(file, g);
     try {
       load_pattern(d.path / file);
@@ -66,8 +66,8 @@ TEST(PatternFolder, RejectsNonPatternsByName) {
   expect_reject("closed.json", make_cube(2), "no boundary");
   expect_reject("open.json", make_free_edge(2), "1-free");
   expect_reject("dim1.json", make_polygon(3, 1), "dimension 1");
-  GMap two = make_polygon(4);
-  const GMap tri = make_polygon(3);
+  Map two = make_polygon(4);
+  const Map tri = make_polygon(3);
   const Dart base = two.add_darts(tri.size());
   tri.for_each_dart([&](Dart x) {
     for (int i = 0; i <= 2; ++i) two.set_alpha(i, base + x, base + tri.alpha(i, x));

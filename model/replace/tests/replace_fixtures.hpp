@@ -24,7 +24,7 @@ inline Pattern pattern_file(const std::string& set, const std::string& name) {
 
 // Every dart flagged: each dart of a polyhedron built by the builders is at a corner and on an
 // original edge (Damiand & Nivoliers §7: inputs flagged at their corners).
-inline FlaggedMap all_flagged(GMap g) {
+inline FlaggedMap all_flagged(Map g) {
   FlaggedMap m{std::move(g), {}, {}};
   m.flag.assign(m.map.capacity(), 1);
   return m;

@@ -32,7 +32,7 @@ std::pair<QueryReplaceReport, QueryReplaceReport> refine(FlaggedMap& m, const Pa
 }
 
 // Every volume is a combinatorial hexahedron: its unflagged boundary signature is the cube's.
-void expect_all_hexahedra(const GMap& g) {
+void expect_all_hexahedra(const Map& g) {
   const Word cube = minimal_signature(cell_boundary(make_cube(2), 3, 0, {}, {}), Mode::Unoriented, false).word;
   for (Dart v : orbit_representatives(g, cell_type(g, 3)))
     ASSERT_EQ(minimal_signature(cell_boundary(g, 3, v, {}, {}), Mode::Unoriented, false).word, cube) << "volume of dart " << v;

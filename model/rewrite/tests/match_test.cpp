@@ -24,7 +24,7 @@ const char* kSew = R"({"format":"gmr.rule","version":1,"kind":"concrete","map":"
 
 TEST(Match, EnumeratesAllInjectiveMatches) {
   const Rule r = parse_rule(kSew);
-  GMap g(2);
+  Map g(2);
   g.add_darts(4);  // two free edges 0-1 and 2-3 (1-loops)
   g.link(0, 0, 1);
   g.link(0, 2, 3);
@@ -40,7 +40,7 @@ TEST(Match, EnumeratesAllInjectiveMatches) {
 
 TEST(Match, AnchoredMatchingPropagates) {
   const Rule r = parse_rule(kSew);
-  GMap g(2);
+  Map g(2);
   g.add_darts(4);
   g.link(0, 0, 1);
   g.link(0, 2, 3);
@@ -60,7 +60,7 @@ TEST(Match, AnchoredMatchingPropagates) {
 
 TEST(Dpo, SewOnMapsBothWays) {
   const Rule r = parse_rule(kSew);
-  GMap g(2);
+  Map g(2);
   g.add_darts(4);
   g.link(0, 0, 1);
   g.link(0, 2, 3);
@@ -77,7 +77,7 @@ TEST(Dpo, DanglingArcIsNamed) {
   DGraph L, R;
   L.add_node("a");
   const Rule r(L, R, 1);
-  GMap g(1);
+  Map g(1);
   g.add_darts(2);
   g.link(0, 0, 1);
   const DGraph dg = to_dgraph(g);
@@ -105,7 +105,7 @@ TEST(Dpo, NonCombinatorialResultIsAnError) {
   R.add_link(0, 1, 0);
   R.add_arc(1, 1, 1);
   const Rule r(L, R, 1);
-  GMap g(1);
+  Map g(1);
   g.add_darts(1);
   EXPECT_THROW(apply_in_map(r, g, {0}), Error);
   EXPECT_THROW(apply_to_map(r, g, {0}), Error);

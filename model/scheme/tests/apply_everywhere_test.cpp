@@ -15,8 +15,8 @@ using namespace gmr::fixtures;
 namespace {
 
 // The disjoint union of a and b (b's darts shifted by a.capacity()); both without holes.
-GMap disjoint_union(const GMap& a, const GMap& b) {
-  GMap g = a;
+Map disjoint_union(const Map& a, const Map& b) {
+  Map g = a;
   const Dart off = g.add_darts(b.capacity());
   for (Dart d = 0; d < b.capacity(); ++d)
     for (int i = 0; i <= b.dimension(); ++i) g.set_alpha(i, off + d, off + b.alpha(i, d));
@@ -24,14 +24,14 @@ GMap disjoint_union(const GMap& a, const GMap& b) {
 }
 
 // Applies the scheme at the given hooks one after the other, as apply_everywhere reports them.
-GMap replay(const GMap& g0, const RuleScheme& s, const std::vector<Dart>& hooks) {
-  GMap g = g0;
+Map replay(const Map& g0, const RuleScheme& s, const std::vector<Dart>& hooks) {
+  Map g = g0;
   const SchemeEngine e(s);
   for (Dart d : hooks) EXPECT_TRUE(e.apply(g, {d}).applied);
   return g;
 }
 
-bool same_links(const GMap& a, const GMap& b) {
+bool same_links(const Map& a, const Map& b) {
   if (a.capacity() != b.capacity() || a.size() != b.size()) return false;
   for (Dart d = 0; d < a.capacity(); ++d) {
     if (a.alive(d) != b.alive(d)) return false;
@@ -45,8 +45,8 @@ bool same_links(const GMap& a, const GMap& b) {
 }  // namespace
 
 TEST(ApplyEverywhere, QuadSubdivisionOncePerComponent) {
-  const GMap cube = make_cube(2);
-  GMap g = cube;
+  const Map cube = make_cube(2);
+  Map g = cube;
   const EverywhereApplication one = apply_everywhere(SchemeEngine(quad_subdivision()), g);
   ASSERT_EQ(one.count(), 1u);
   EXPECT_EQ(one.hooks, std::vector<Dart>{0});
@@ -55,8 +55,8 @@ TEST(ApplyEverywhere, QuadSubdivisionOncePerComponent) {
   EXPECT_EQ(one.darts_deleted(), 0u);
   EXPECT_TRUE(is_valid(g));
 
-  const GMap two_cubes = disjoint_union(cube, cube);
-  GMap h = two_cubes;
+  const Map two_cubes = disjoint_union(cube, cube);
+  Map h = two_cubes;
   const EverywhereApplication two = apply_everywhere(SchemeEngine(quad_subdivision()), h);
   ASSERT_EQ(two.count(), 2u);
   EXPECT_EQ(two.hooks, (std::vector<Dart>{0, 48}));
@@ -66,8 +66,8 @@ TEST(ApplyEverywhere, QuadSubdivisionOncePerComponent) {
 }
 
 TEST(ApplyEverywhere, VertexInsertionOncePerEdge) {
-  const GMap cube = make_cube(2);
-  GMap g = cube;
+  const Map cube = make_cube(2);
+  Map g = cube;
   const EverywhereApplication all = apply_everywhere(SchemeEngine(vertex_insertion()), g);
   ASSERT_EQ(all.count(), 12u);  // the cube's 12 edges
   EXPECT_EQ(all.darts_added(), 48u);
@@ -77,7 +77,7 @@ TEST(ApplyEverywhere, VertexInsertionOncePerEdge) {
   for (size_t k = 1; k < all.hooks.size(); ++k) EXPECT_LT(all.hooks[k - 1], all.hooks[k]);
   EXPECT_TRUE(same_links(g, replay(cube, vertex_insertion(), all.hooks)));
 
-  GMap h = cube;
+  Map h = cube;
   const EverywhereApplication lean = apply_everywhere(SchemeEngine(vertex_insertion()), h, false);
   EXPECT_EQ(lean.hooks, all.hooks);
   EXPECT_TRUE(lean.applications.front().match.empty());
@@ -87,18 +87,18 @@ TEST(ApplyEverywhere, VertexInsertionOncePerEdge) {
 TEST(ApplyEverywhere, NotApplicableAnywhereAndMisuse) {
   RuleScheme r = vertex_insertion();
   r.right.nodes[1].label = ot("<_,2>");  // breaks incident arcs: never applicable
-  GMap g = make_cube(2);
+  Map g = make_cube(2);
   const EverywhereApplication none = apply_everywhere(SchemeEngine(r), g);
   EXPECT_EQ(none.count(), 0u);
   EXPECT_FALSE(none.last_failure.applied);
   EXPECT_EQ(none.last_failure.reason, NotApplicableReason::NotCombinatorial);
   EXPECT_EQ(g.size(), 48u);
 
-  GMap empty(2);
+  Map empty(2);
   const EverywhereApplication nothing = apply_everywhere(SchemeEngine(quad_subdivision()), empty);
   EXPECT_EQ(nothing.count(), 0u);
   EXPECT_EQ(nothing.last_failure.reason, NotApplicableReason::None);
 
-  GMap c = make_cube(2);
+  Map c = make_cube(2);
   EXPECT_THROW(apply_everywhere(SchemeEngine(sew2()), c), Error);  // two hooks
 }

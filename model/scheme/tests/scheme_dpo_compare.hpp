@@ -31,10 +31,10 @@ struct EngineVsDpo {
   bool engine_applied = false;
   bool dpo_applied = false;
   std::string problem;  // empty when both agree
-  GMap result{0};       // the engine's result (when applied)
+  Map result{0};       // the engine's result (when applied)
 };
 
-inline EngineVsDpo compare_engine_dpo(const GMap& g, const RuleScheme& s, const std::vector<Dart>& hooks) {
+inline EngineVsDpo compare_engine_dpo(const Map& g, const RuleScheme& s, const std::vector<Dart>& hooks) {
   EngineVsDpo out;
   auto [h, a] = apply_scheme(g, s, hooks);
   out.engine_applied = a.applied;

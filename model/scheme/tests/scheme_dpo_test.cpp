@@ -23,7 +23,7 @@ namespace {
 std::string root() { return gmr::testing::source_path("."); }
 
 // Runs the comparison at up to `samples` hook choices; returns (applied, refused) counts.
-std::pair<size_t, size_t> sweep(const GMap& g, const RuleScheme& s, size_t samples) {
+std::pair<size_t, size_t> sweep(const Map& g, const RuleScheme& s, size_t samples) {
   size_t applied = 0, refused = 0;
   const auto darts = g.darts();
   const size_t hooks = s.hooks.size();
@@ -43,7 +43,7 @@ TEST(EngineVsDpo, LibrarySchemes) {
   size_t applied = 0;
   for (const auto& e : std::filesystem::directory_iterator(root() + "/tools/data/rules")) {
     const RuleScheme s = read_scheme_file(e.path());
-    std::vector<GMap> objects;
+    std::vector<Map> objects;
     if (s.dimension == 2) {
       objects.push_back(make_cube(2));
       objects.push_back(make_grid(2, 2));
@@ -52,7 +52,7 @@ TEST(EngineVsDpo, LibrarySchemes) {
       objects.push_back(make_stacked_cubes());
       objects.push_back(make_cube(3));
     }
-    for (const GMap& g : objects) applied += sweep(g, s, 12).first;
+    for (const Map& g : objects) applied += sweep(g, s, 12).first;
   }
   EXPECT_GT(applied, 100u);
 }
@@ -69,7 +69,7 @@ TEST(EngineVsDpo, JerboaFixtureRules) {
     }
     if (!e->not_combinatorial().empty()) continue;
     ++compared;
-    for (const GMap& g : {make_stacked_cubes(), make_cube(3), make_polycube({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}})})
+    for (const Map& g : {make_stacked_cubes(), make_cube(3), make_polycube({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}})})
       applied += sweep(g, s, 10).first;
   }
   EXPECT_GE(compared, 40u);

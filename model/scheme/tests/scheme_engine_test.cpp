@@ -41,7 +41,7 @@ TEST(RuleScheme, RolesAndStructure) {
 }
 
 TEST(Instantiation, NodeArcAndRule) {
-  GMap cube = make_cube(2);
+  Map cube = make_cube(2);
   OrbitGraph O = orbit_graph(cube, ot("<0,1>"), 0);  // a quad face
   ASSERT_EQ(O.size(), 8u);
   // Def. 88: <0,1> -> <_,2> keeps only the 1-links, relabelled 2.
@@ -76,7 +76,7 @@ TEST(Instantiation, NodeArcAndRule) {
 }
 
 TEST(Engine, QuadSubdivisionOfCube) {
-  GMap g = make_cube(2);
+  Map g = make_cube(2);
   SchemeApplication a = apply_scheme_in_place(g, quad_subdivision(), {0});
   ASSERT_TRUE(a.applied) << a.why;
   EXPECT_EQ(g.size(), 192u);
@@ -88,12 +88,12 @@ TEST(Engine, QuadSubdivisionOfCube) {
 }
 
 TEST(Engine, VertexInsertionFreeAndSewnEdge) {
-  GMap e = make_free_edge(2);
+  Map e = make_free_edge(2);
   auto [h, a] = apply_scheme(e, vertex_insertion(), {0});
   ASSERT_TRUE(a.applied) << a.why;
   EXPECT_EQ(h.size(), 4u);
   EXPECT_TRUE(is_valid(h));
-  GMap cube = make_cube(2);
+  Map cube = make_cube(2);
   auto [h2, a2] = apply_scheme(cube, vertex_insertion(), {0});
   ASSERT_TRUE(a2.applied);
   EXPECT_EQ(h2.size(), 52u);
@@ -102,8 +102,8 @@ TEST(Engine, VertexInsertionFreeAndSewnEdge) {
 }
 
 TEST(Engine, SewTwoHooksAndNotApplicable) {
-  GMap g = make_polygon(3, 2);
-  GMap t2 = make_polygon(3, 2);
+  Map g = make_polygon(3, 2);
+  Map t2 = make_polygon(3, 2);
   // Two disjoint triangles in one map: copy t2's darts after g's.
   const Dart off = g.add_darts(t2.size());
   for (Dart d = 0; d < t2.size(); ++d)
@@ -135,8 +135,8 @@ TEST(Engine, HookOrbitsNotIsomorphic) {
   for (auto* side : {&r.left, &r.right})
     for (auto& n : side->nodes) n.label = ot("<0,1>");
   // r now sews two faces along all their edges: a triangle and a quad are not isomorphic.
-  GMap g = make_polygon(3, 2);
-  GMap q = make_polygon(4, 2);
+  Map g = make_polygon(3, 2);
+  Map q = make_polygon(4, 2);
   const Dart off = g.add_darts(q.size());
   for (Dart d = 0; d < q.size(); ++d)
     for (int i = 0; i <= 2; ++i) g.set_alpha(i, off + d, off + q.alpha(i, d));
@@ -149,7 +149,7 @@ TEST(Engine, HookOrbitsNotIsomorphic) {
 TEST(Engine, NotCombinatorialScheme) {
   RuleScheme r = vertex_insertion();
   r.right.nodes[1].label = ot("<_,2>");  // added node without 1-arc
-  GMap e = make_free_edge(2);
+  Map e = make_free_edge(2);
   auto [h, a] = apply_scheme(e, r, {0});
   EXPECT_FALSE(a.applied);
   EXPECT_EQ(a.reason, NotApplicableReason::NotCombinatorial);

@@ -13,13 +13,13 @@ using namespace gmr::testing;
 
 namespace {
 
-std::vector<std::vector<Dart>> links_of(const GMap& g) {
+std::vector<std::vector<Dart>> links_of(const Map& g) {
   std::vector<std::vector<Dart>> l;
   for (int i = 0; i <= g.dimension(); ++i) l.push_back(g.links(i));
   return l;
 }
 
-size_t free_count(const GMap& g, int i) { return free_darts(g, i).size(); }
+size_t free_count(const Map& g, int i) { return free_darts(g, i).size(); }
 
 }  // namespace
 
@@ -65,8 +65,8 @@ TEST(RandomMaps, GeneratorsGiveValidDeterministicMaps) {
     for (Generator gen : generators_for(n)) {
       for (uint64_t seed = 0; seed < 40; ++seed) {
         Rng r1(seed), r2(seed);
-        GMap g = random_gmap(r1, gen, n);
-        GMap h = random_gmap(r2, gen, n);
+        Map g = random_gmap(r1, gen, n);
+        Map h = random_gmap(r2, gen, n);
         SCOPED_TRACE(std::string(to_string(gen)) + " n=" + std::to_string(n) +
                      " seed=" + std::to_string(seed));
         EXPECT_EQ(g.dimension(), n);
@@ -85,7 +85,7 @@ TEST(RandomMaps, GluedPolygonsAreConnectedWithoutMonogons) {
     GluedPolygonsOptions o;
     o.min_sides = 2;
     o.n = 2 + static_cast<int>(seed % 2);
-    GMap g = random_glued_polygons(rng, o);
+    Map g = random_glued_polygons(rng, o);
     EXPECT_TRUE(is_valid(g));
     EXPECT_EQ(count_components(g), 1u) << seed;
   }
@@ -96,7 +96,7 @@ TEST(RandomMaps, PolycubesAreConnectedAndSized) {
     Rng rng(seed);
     auto vox = random_voxels(rng, 1 + seed % 7);
     EXPECT_EQ(vox.size(), 1 + seed % 7);
-    GMap g = make_polycube(vox);
+    Map g = make_polycube(vox);
     EXPECT_EQ(g.size(), 48 * vox.size());
     EXPECT_EQ(count_components(g), 1u);
     EXPECT_EQ(count_cells(g, 3), vox.size());
@@ -111,7 +111,7 @@ TEST(RandomMaps, SewSequencesUseEveryDimension) {
     SewSequenceOptions o;
     o.n = 3;
     o.steps = 30;
-    GMap g = random_sewn_cells(rng, o);
+    Map g = random_sewn_cells(rng, o);
     ASSERT_TRUE(is_valid(g));
     for (int i = 0; i <= 3; ++i) sewn[i] += g.size() - free_count(g, i);
   }
@@ -121,29 +121,29 @@ TEST(RandomMaps, SewSequencesUseEveryDimension) {
 TEST(RandomMaps, RelabelIsAnIsomorphicCopy) {
   for (uint64_t seed = 0; seed < 30; ++seed) {
     Rng rng(seed);
-    GMap g = random_gmap(rng, Generator::SewSequence, 2 + static_cast<int>(seed % 2));
+    Map g = random_gmap(rng, Generator::SewSequence, 2 + static_cast<int>(seed % 2));
     const auto perm = random_permutation(rng, g.capacity());
-    GMap h = permute_darts(g, perm);
+    Map h = permute_darts(g, perm);
     ASSERT_TRUE(is_valid(h));
     for (int i = 0; i <= g.dimension(); ++i)
       for (Dart d = 0; d < g.capacity(); ++d) EXPECT_EQ(h.alpha(i, perm[d]), perm[g.alpha(i, d)]);
     EXPECT_TRUE(is_isomorphic(g, h));
   }
-  GMap g = make_cube(2);
+  Map g = make_cube(2);
   EXPECT_THROW(permute_darts(g, {0, 1}), Error);
   std::vector<Dart> bad(g.capacity(), 0);
   EXPECT_THROW(permute_darts(g, bad), Error);
 }
 
 TEST(RandomMaps, RelabelKeepsHoles) {
-  GMap g = make_polygon(4);
+  Map g = make_polygon(4);
   g.add_darts(2);
   g.link(0, 8, 9);
   g.remove_dart(8);
   g.remove_dart(9);
   Rng rng(3);
   const auto perm = random_permutation(rng, g.capacity());
-  GMap h = permute_darts(g, perm);
+  Map h = permute_darts(g, perm);
   EXPECT_EQ(h.size(), 8u);
   EXPECT_FALSE(h.alive(perm[8]));
   EXPECT_FALSE(h.alive(perm[9]));
@@ -156,8 +156,8 @@ TEST(RandomMaps, MutationIsValidAndNotIsomorphic) {
     for (Generator gen : generators_for(n)) {
       for (uint64_t seed = 0; seed < 25; ++seed) {
         Rng rng(seed);
-        const GMap g = random_gmap(rng, gen, n);
-        GMap h = g;
+        const Map g = random_gmap(rng, gen, n);
+        Map h = g;
         const Mutation m = mutate_one_link(h, rng);
         SCOPED_TRACE(std::string(to_string(gen)) + " n=" + std::to_string(n) +
                      " seed=" + std::to_string(seed) + " " + m.str());
@@ -173,7 +173,7 @@ TEST(RandomMaps, MutationIsValidAndNotIsomorphic) {
       }
     }
   }
-  GMap two(2);
+  Map two(2);
   two.add_darts(2);
   Rng rng(0);
   EXPECT_EQ(mutate_one_link(two, rng).kind, Mutation::Kind::Sew);
@@ -185,9 +185,9 @@ TEST(RandomMaps, ResewIsValid) {
   size_t changed = 0;
   for (uint64_t seed = 0; seed < 60; ++seed) {
     Rng rng(seed);
-    const GMap g = random_gmap(rng, seed % 2 ? Generator::GluedPolygons : Generator::SewSequence,
+    const Map g = random_gmap(rng, seed % 2 ? Generator::GluedPolygons : Generator::SewSequence,
                                2 + int(seed % 3 == 0));
-    GMap h = g;
+    Map h = g;
     const Mutation m = resew_one_link(h, rng);
     EXPECT_TRUE(is_valid(h)) << m.str();
     EXPECT_EQ(h.size(), g.size());
@@ -205,7 +205,7 @@ TEST(RandomMaps, RandomOMapsAreValid) {
   size_t with_boundary = 0, nonempty = 0;
   for (uint64_t seed = 0; seed < 200; ++seed) {
     Rng r1(seed), r2(seed);
-    const GMap p = random_permutation_omap(r1);
+    const Map p = random_permutation_omap(r1);
     ASSERT_TRUE(p.is_omap());
     ASSERT_TRUE(is_valid(p)) << "seed " << seed;
     ASSERT_TRUE(is_isomorphic(p, random_permutation_omap(r2)));
@@ -213,8 +213,8 @@ TEST(RandomMaps, RandomOMapsAreValid) {
     Rng r3(seed);
     GluedPolygonsOptions go;
     go.max_faces = 4;
-    const GMap g = seed % 2 ? random_glued_polygons(r3, go) : double_along_boundary(random_polycube(r3, {1, 3}));
-    const GMap o = oriented_components(g);
+    const Map g = seed % 2 ? random_glued_polygons(r3, go) : double_along_boundary(random_polycube(r3, {1, 3}));
+    const Map o = oriented_components(g);
     ASSERT_TRUE(o.is_omap());
     ASSERT_EQ(o.dimension(), g.dimension());
     ASSERT_TRUE(is_valid(o)) << "seed " << seed;

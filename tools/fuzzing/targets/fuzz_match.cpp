@@ -8,8 +8,8 @@ void gmr::fuzzing::fuzz_one(std::string_view text) {
     "name": "unsew", "map": "gmap", "n": 2,
     "left": {"nodes": ["a", "b", "c", "d"], "links": [{"nodes": ["a", "b"], "label": 0}]},
     "right": {"nodes": ["a", "b", "c", "d"], "links": [{"nodes": ["a", "b"], "label": 0}]}})");
-  static const GMap map = [] {
-    GMap g(2);
+  static const Map map = [] {
+    Map g(2);
     g.add_darts(48);
     return g;
   }();

@@ -10,8 +10,8 @@
 
 using namespace gmr;
 
-TEST(GMap, RemoveAndReuseDarts) {
-  GMap g = make_polygon(3, 2);
+TEST(Map, RemoveAndReuseDarts) {
+  Map g = make_polygon(3, 2);
   const Dart d = 2, p0 = g.alpha(0, d), p1 = g.alpha(1, d);
   g.remove_dart(d);
   EXPECT_FALSE(g.alive(d));
@@ -27,8 +27,8 @@ TEST(GMap, RemoveAndReuseDarts) {
   EXPECT_THROW(g.remove_dart(100), Error);
 }
 
-TEST(GMap, OMapRemoveFixesPredecessor) {
-  GMap o = orient(make_cube(2));
+TEST(Map, OMapRemoveFixesPredecessor) {
+  Map o = orient(make_cube(2));
   const Dart d = 0;
   Dart pred = d;
   while (o.alpha(1, pred) != d) pred = o.alpha(1, pred);
@@ -36,8 +36,8 @@ TEST(GMap, OMapRemoveFixesPredecessor) {
   EXPECT_TRUE(o.is_free(1, pred));
 }
 
-TEST(GMap, MarkersAreReusable) {
-  GMap g = make_cube(2);
+TEST(Map, MarkersAreReusable) {
+  Map g = make_cube(2);
   const int m1 = g.reserve_marker();
   const int m2 = g.reserve_marker();
   EXPECT_NE(m1, m2);
@@ -58,19 +58,19 @@ TEST(GMap, MarkersAreReusable) {
   EXPECT_FALSE(again.test(7));  // cleared on release
 }
 
-TEST(GMap, MemoryPerDart) {
+TEST(Map, MemoryPerDart) {
   for (int n : {2, 3}) {
-    GMap g = n == 2 ? make_torus(100, 100, 2) : make_polycube(menger_voxels(2));
+    Map g = n == 2 ? make_torus(100, 100, 2) : make_polycube(menger_voxels(2));
     const double per = double(g.memory_bytes()) / double(g.size());
     EXPECT_LE(per, 4.0 * (n + 1) + 8) << n;
   }
 }
 
-TEST(GMap, RejectsBadDimensions) {
-  EXPECT_THROW(GMap(-1), Error);
-  EXPECT_THROW(GMap(40), Error);
-  EXPECT_THROW(GMap(0, MapKind::OMap), Error);
-  GMap o(3, MapKind::OMap);
+TEST(Map, RejectsBadDimensions) {
+  EXPECT_THROW(Map(-1), Error);
+  EXPECT_THROW(Map(40), Error);
+  EXPECT_THROW(Map(0, MapKind::OMap), Error);
+  Map o(3, MapKind::OMap);
   EXPECT_FALSE(o.has_dim(0));
   EXPECT_TRUE(o.has_dim(1));
   EXPECT_FALSE(o.is_involutive_dim(1));
@@ -78,9 +78,9 @@ TEST(GMap, RejectsBadDimensions) {
 }
 
 TEST(Builders, LiftAddsFreeDimensions) {
-  GMap cube = make_cube();
+  Map cube = make_cube();
   cube.remove_dart(cube.add_dart());  // a hole in the index range is kept as a hole
-  const GMap lifted = lift(cube, 3);
+  const Map lifted = lift(cube, 3);
   EXPECT_EQ(lifted.dimension(), 3);
   EXPECT_EQ(lifted.size(), 48u);
   EXPECT_FALSE(lifted.alive(48));
@@ -95,7 +95,7 @@ TEST(Builders, LiftAddsFreeDimensions) {
 }
 
 TEST(Builders, PolycubeAndMenger) {
-  GMap m = make_polycube(menger_voxels(1));
+  Map m = make_polycube(menger_voxels(1));
   EXPECT_TRUE(is_valid(m));
   EXPECT_EQ(m.size(), 20u * 48u);
   EXPECT_EQ(count_cells(m, 3), 20u);
@@ -115,7 +115,7 @@ TEST(Builders, MengerPolycube) {
   EXPECT_EQ(sorted(menger_polycube_voxels(1, 1, 1)), sorted(menger_voxels(1)));
   // (2,2,2): the inference paper's §9.2.2 counts (81 volumes; its 270 faces and 216 vertices are
   // those of the boundary surface, of genus 28).
-  const GMap m = make_polycube(menger_polycube_voxels(2, 2, 2));
+  const Map m = make_polycube(menger_polycube_voxels(2, 2, 2));
   EXPECT_TRUE(is_valid(m));
   EXPECT_EQ(count_cells(m, 3), 81u);
   EXPECT_EQ(count_cells(m, 2), 81u * 6 - 108);  // 108 faces shared by two voxels

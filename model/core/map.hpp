@@ -11,7 +11,7 @@
 //
 // Markers are reusable bitsets (as in CGAL and Jerboa): reserve one, mark darts, unmark them (or
 // clear the marker), release it. They live in `mutable` storage so that const traversals can use
-// them; a GMap is therefore not safe for concurrent traversals.
+// them; a Map is therefore not safe for concurrent traversals.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -46,11 +46,11 @@ class Bitset {
   size_t size_ = 0;
 };
 
-class GMap {
+class Map {
  public:
   // An n-G-map (dimensions 0..n) or an n-O-map (dimensions 1..n). n in [0, kMaxDim-1]; for O-maps
   // n >= 1.
-  explicit GMap(int n, MapKind kind = MapKind::GMap);
+  explicit Map(int n, MapKind kind = MapKind::GMap);
 
   int dimension() const { return n_; }
   MapKind kind() const { return kind_; }
@@ -133,7 +133,7 @@ class GMap {
 // not unmark every dart, then releases it.
 class ScopedMarker {
  public:
-  explicit ScopedMarker(const GMap& g) : g_(g), m_(g.reserve_marker()) {}
+  explicit ScopedMarker(const Map& g) : g_(g), m_(g.reserve_marker()) {}
   ~ScopedMarker() {
     if (!clean_) g_.clear_marker(m_);
     g_.release_marker(m_);
@@ -148,7 +148,7 @@ class ScopedMarker {
   void unmark(Dart d) const { g_.unmark(d, m_); }
 
  private:
-  const GMap& g_;
+  const Map& g_;
   int m_;
   bool clean_ = false;
 };

@@ -1,4 +1,4 @@
-#include "model/core/gmap.hpp"
+#include "model/core/map.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -23,7 +23,7 @@ size_t Bitset::count() const {
   return c;
 }
 
-GMap::GMap(int n, MapKind kind) : n_(n), kind_(kind) {
+Map::Map(int n, MapKind kind) : n_(n), kind_(kind) {
   if (n < 0 || n >= kMaxDim)
     throw Error(ErrorCode::Range, "dimension " + std::to_string(n) + " outside 0.." +
                                       std::to_string(kMaxDim - 1));
@@ -32,17 +32,17 @@ GMap::GMap(int n, MapKind kind) : n_(n), kind_(kind) {
   link_.resize(static_cast<size_t>(n) + 1);
 }
 
-DimMask GMap::dims_mask() const {
+DimMask Map::dims_mask() const {
   DimMask m = 0;
   for (int i = lowest_dim(); i <= n_; ++i) m |= DimMask(1) << i;
   return m;
 }
 
-void GMap::reserve(size_t k) {
+void Map::reserve(size_t k) {
   for (int i = lowest_dim(); i <= n_; ++i) link_[i].reserve(k);
 }
 
-Dart GMap::add_darts(size_t k) {
+Dart Map::add_darts(size_t k) {
   if (capacity_ + k >= kNoDart)
     throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")");
   const Dart first = capacity();
@@ -59,7 +59,7 @@ Dart GMap::add_darts(size_t k) {
   return first;
 }
 
-Dart GMap::add_dart() {
+Dart Map::add_dart() {
   if (!free_list_.empty()) {
     const Dart d = free_list_.back();
     free_list_.pop_back();
@@ -70,7 +70,7 @@ Dart GMap::add_dart() {
   return add_darts(1);
 }
 
-void GMap::remove_dart(Dart d) {
+void Map::remove_dart(Dart d) {
   if (!alive(d)) throw Error(ErrorCode::Range, "remove of a dart that does not exist", "dart " + std::to_string(d));
   for (int i = lowest_dim(); i <= n_; ++i) {
     auto& l = link_[i];
@@ -94,25 +94,25 @@ void GMap::remove_dart(Dart d) {
   free_list_.push_back(d);
 }
 
-std::vector<Dart> GMap::darts() const {
+std::vector<Dart> Map::darts() const {
   std::vector<Dart> out;
   out.reserve(size());
   for_each_dart([&](Dart d) { out.push_back(d); });
   return out;
 }
 
-void GMap::link(int i, Dart a, Dart b) {
+void Map::link(int i, Dart a, Dart b) {
   link_[i][a] = b;
   if (is_involutive_dim(i)) link_[i][b] = a;
 }
 
-void GMap::unlink(int i, Dart d) {
+void Map::unlink(int i, Dart d) {
   const Dart e = link_[i][d];
   link_[i][d] = d;
   if (is_involutive_dim(i) && e != d && link_[i][e] == d) link_[i][e] = e;
 }
 
-size_t GMap::count_links(int i) const {
+size_t Map::count_links(int i) const {
   size_t loops = 0, arcs = 0;
   const auto& l = link_[i];
   for_each_dart([&](Dart d) {
@@ -122,7 +122,7 @@ size_t GMap::count_links(int i) const {
   return is_involutive_dim(i) ? loops + arcs / 2 : loops + arcs;
 }
 
-int GMap::reserve_marker() const {
+int Map::reserve_marker() const {
   for (size_t m = 0; m < marker_used_.size(); ++m) {
     if (!marker_used_[m]) {
       marker_used_[m] = true;
@@ -136,9 +136,9 @@ int GMap::reserve_marker() const {
   return static_cast<int>(marks_.size() - 1);
 }
 
-void GMap::release_marker(int m) const { marker_used_[static_cast<size_t>(m)] = false; }
+void Map::release_marker(int m) const { marker_used_[static_cast<size_t>(m)] = false; }
 
-size_t GMap::memory_bytes() const {
+size_t Map::memory_bytes() const {
   size_t b = sizeof(*this) + dead_.bytes() + free_list_.capacity() * sizeof(Dart);
   for (const auto& l : link_) b += l.capacity() * sizeof(Dart);
   for (const auto& m : marks_) b += m.bytes();
