@@ -51,45 +51,61 @@ const SchemeCondition* find_builtin_scheme_condition(const std::string& name) {
   return nullptr;
 }
 
+std::vector<bool> evaluate_scheme_condition(const SchemeCondition& c, const std::vector<RuleScheme>& schemes) {
+  std::vector<bool> holds;
+  for (const RuleScheme& s : schemes) holds.push_back(c.holds(s));
+  return holds;
+}
+
 SchemeValidationReport validate_scheme_condition(const SchemeCondition& c,
                                                  const std::vector<RuleScheme>& schemes,
                                                  unsigned bound) {
-  std::vector<bool> holds;
-  for (const RuleScheme& s : schemes) holds.push_back(c.holds(s));
-  return validate_scheme_condition(c.name, holds, schemes, bound);
+  return validate_scheme_condition(c.name, evaluate_scheme_condition(c, schemes), schemes, bound);
 }
 
 SchemeValidationReport validate_scheme_condition(const std::string& name,
                                                  const std::vector<bool>& verdicts,
                                                  const std::vector<RuleScheme>& schemes,
                                                  unsigned bound) {
+  return classify_scheme_condition(name, verdicts, schemes, verify_scheme_family(schemes, bound));
+}
+
+SchemeFamilyVerdicts verify_scheme_family(const std::vector<RuleScheme>& schemes, unsigned bound) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SchemeFamilyVerdicts out;
+  out.bound = bound;
+  EncodingOptions eo;
+  eo.semantics = Semantics::Consistency;
+  out.results.reserve(schemes.size());
+  for (const RuleScheme& s : schemes) out.results.push_back(verify_scheme(s, bound, Engine::Smt, 0, eo));
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+SchemeValidationReport classify_scheme_condition(const std::string& name, const std::vector<bool>& holds,
+                                                 const std::vector<RuleScheme>& schemes,
+                                                 const SchemeFamilyVerdicts& verdicts) {
   const auto t0 = std::chrono::steady_clock::now();
   SchemeValidationReport rep;
   rep.condition = name;
-  rep.bound = bound;
-  EncodingOptions eo;
-  eo.semantics = Semantics::Consistency;
+  rep.bound = verdicts.bound;
+  const auto darts = [](const SchemeVerifyResult& r) { return r.result->counterexample->G.size(); };
   for (size_t k = 0; k < schemes.size(); ++k) {
-    const RuleScheme& s = schemes[k];
+    const SchemeVerifyResult& v = verdicts.results[k];
     ++rep.schemes;
-    const bool holds = verdicts[k];
-    (holds ? rep.holds : rep.fails)++;
-    SchemeVerifyResult v = verify_scheme(s, bound, Engine::Smt, 0, eo);
+    (holds[k] ? rep.holds : rep.fails)++;
     if (v.applicable == 0 && v.preserves) {
       ++rep.vacuous;
-    } else if (holds && !v.preserves) {
+    } else if (holds[k] && !v.preserves) {
       ++rep.unsound;
-      const auto darts = [](const SchemeVerifyResult& r) {
-        return r.result->counterexample->G.size();
-      };
       if (!rep.smallest_unsound || darts(v) < darts(rep.smallest_unsound->result))
-        rep.smallest_unsound = SchemeWitness{s, std::move(v)};
-    } else if (!holds && v.preserves) {
+        rep.smallest_unsound = SchemeWitness{schemes[k], v};
+    } else if (!holds[k] && v.preserves) {
       ++rep.incomplete;
-      if (!rep.first_incomplete) rep.first_incomplete = s;
+      if (!rep.first_incomplete) rep.first_incomplete = schemes[k];
     }
   }
-  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  rep.seconds = verdicts.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return rep;
 }
 

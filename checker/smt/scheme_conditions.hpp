@@ -55,6 +55,20 @@ struct SchemeValidationReport {
 SchemeValidationReport validate_scheme_condition(const SchemeCondition& c,
                                                  const std::vector<RuleScheme>& schemes,
                                                  unsigned bound);
+
+// The two phases of a validation, for several conditions over one family: the verdict of every
+// scheme (verify_scheme, consistency semantics; independent of any condition), then a condition's
+// classification against them (holds[k] and verdicts[k] for schemes[k]).
+struct SchemeFamilyVerdicts {
+  unsigned bound = 0;
+  std::vector<SchemeVerifyResult> results;  // results[k] for schemes[k]
+  double seconds = 0;
+};
+SchemeFamilyVerdicts verify_scheme_family(const std::vector<RuleScheme>& schemes, unsigned bound);
+SchemeValidationReport classify_scheme_condition(const std::string& name, const std::vector<bool>& holds,
+                                                 const std::vector<RuleScheme>& schemes,
+                                                 const SchemeFamilyVerdicts& verdicts);
+std::vector<bool> evaluate_scheme_condition(const SchemeCondition& c, const std::vector<RuleScheme>& schemes);
 // The same with the condition's verdicts given (holds[k] for schemes[k]: a plug-in's, evaluated in
 // its guarded child, condition_plugin.hpp).
 SchemeValidationReport validate_scheme_condition(const std::string& name,
