@@ -9,7 +9,9 @@
 
 #include "checker/rule_check.hpp"
 #include "checker/smt/counterexample.hpp"
+#include "checker/smt/cycle_components.hpp"
 #include "checker/smt/rule_space.hpp"
+#include "checker/smt/symbolic_cycle.hpp"
 #include "checker/smt/symbolic_derivation.hpp"
 #include "model/core/error.hpp"
 #include "model/io/rule_json.hpp"
@@ -62,16 +64,6 @@ z3::expr condition(const SymbolicRule& rule, const ThesisParts& parts,
   return extra ? rule.condition(parts) && extra(rule) : rule.condition(parts);
 }
 
-// The labels of the model's cycle pairs: C_r reads the node statuses and these labels' arcs only
-// (the ij-completion, the O-completion of these labels, optimal paths and coherence, Defs. 38-40).
-std::vector<int> cycle_labels(const MapSpec& spec) {
-  std::vector<int> out;
-  for (auto [i, j] : spec.cycle_pairs())
-    for (int l : {i, j})
-      if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
-  return out;
-}
-
 // How the named condition reads C_r, and the condition itself (for the cross-check).
 struct CondSpec {
   CycleReading reading;
@@ -89,6 +81,7 @@ struct Query {
   z3::solver solver;
   z3::expr theorems12, cycle_holds;
   std::vector<int> cycle_label_set;
+  SymbolicCycle cycle;  // C_r by components (symbolic_cycle.hpp)
   CycleReading reading;
   const BuiltinCondition* builtin;  // the whole condition, to cross-check (nullptr: extra given)
   size_t* lemmas;
@@ -104,13 +97,19 @@ struct Query {
         cycle_holds(MapSpec{o.n, o.kind}.cycle_pairs().empty() ? ctx.bool_val(true)
                                                                : ctx.bool_const("cycle_holds")),
         cycle_label_set(cycle_labels(MapSpec{o.n, o.kind})),
+        cycle(rule, cycle_label_set),
         reading(cs.reading),
         builtin(extra ? nullptr : cs.builtin),
         lemmas(lemma_count) {
     solver.add(rule.family());
     solver.add(map.constraints());
     solver.add(der.match());
-    if (!cycle_label_set.empty()) solver.add(z3::implies(cycle_untouched(), cycle_holds));
+    if (!cycle_label_set.empty()) {
+      solver.add(z3::implies(cycle_untouched(), cycle_holds));
+      // Theorems 1-2 include w-I_r on the cycle labels: C_r is then the conjunction over the
+      // components (cycle_components.hpp).
+      solver.add(cycle.axioms(theorems12, cycle_holds));
+    }
   }
   // No added node and no deleted or added arc on the labels of the cycle pairs: C_r holds in every
   // reading (the completions add preserved arcs only, so there is no optimal path, no rewired
@@ -133,9 +132,10 @@ struct Query {
     return r;
   }
   // check() whose models give `cycle_holds` the concrete checker's verdict on their rule whenever
-  // Theorems 1-2 hold (when they fail, C_r does not matter): a model that disagrees yields the
-  // lemma "rules with these node statuses and cycle-label arcs have C_r = verdict" (valid for the
-  // whole family, since C_r reads nothing else) and the query is solved again.
+  // Theorems 1-2 hold (when they fail, C_r does not matter): in a model that disagrees, some
+  // component's `ok` differs from the checker's verdict on that component; each such component
+  // yields the lemma "every placement of this component's pattern has ok = verdict"
+  // (symbolic_cycle.hpp; valid for the whole family) and the query is solved again.
   // z3::unknown: the time limit hit between lemmas.
   z3::check_result solve(const z3::expr_vector& assumptions) {
     while (true) {
@@ -150,8 +150,21 @@ struct Query {
         throw std::logic_error("the cycle oracle disagrees with condition " + builtin->name +
                                " on " + rule_text(r) + " (encoding error)");
       if (m.eval(cycle_holds, true).is_true() == verdict) return z3::sat;
-      solver.add(z3::implies(rule.equals_on(m, cycle_label_set), cycle_holds == ctx.bool_val(verdict)));
-      ++*lemmas;
+      size_t learnt = 0;
+      for (const auto& nodes : rule_components(r, cycle_label_set)) {
+        const unsigned mask = cycle.mask_of(nodes);
+        if (!m.eval(cycle.component(mask), true).is_true())
+          throw std::logic_error("a component of " + rule_text(r) +
+                                 " is not one in the symbolic rule (encoding error)");
+        const bool ok = cycle_condition(restrict_rule(r, nodes, cycle_label_set), reading);
+        if (m.eval(cycle.ok(mask), true).is_true() == ok) continue;
+        solver.add(cycle.lemma(m, mask, ok));
+        ++learnt;
+      }
+      if (learnt == 0)
+        throw std::logic_error("C_r of " + rule_text(r) +
+                               " is not the conjunction over its components (encoding error)");
+      *lemmas += learnt;
     }
   }
   Map map_of(const z3::model& m) const {
