@@ -280,6 +280,11 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
   Query q(o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
   q.out_of_time = [&] { return o.time_limit > 0 && since(start) > o.time_limit; };
   q.solver.add(!q.whole());
+  // ... and it glues and preserves: a witness has only preserving matches, so this loses none,
+  // and it excludes at once every failing rule that breaks on every map it matches (the rules
+  // failing Theorems 1-2), leaving the refinements to the others.
+  q.solver.add(q.der.h_definitions());
+  q.solver.add(!q.der.breaks_consistency());
   EncodingOptions eo;
   eo.semantics = Semantics::Consistency;
   SmtSession session(MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes), eo);
