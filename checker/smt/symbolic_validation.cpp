@@ -247,8 +247,44 @@ Map relabel(const Map& G, const std::vector<Node>& match) {
   return out;
 }
 
+// The labels whose links no cycle pair of the model reads and which are involutions: on them a
+// map may take any involution (the map constraints of Def. 32 are independent of it).
+std::vector<int> free_labels(const MapSpec& spec) {
+  const std::vector<int> cyc = cycle_labels(spec);
+  std::vector<int> out;
+  for (int i : spec.labels())
+    if (spec.is_involutive_dim(i) && std::find(cyc.begin(), cyc.end(), i) == cyc.end()) out.push_back(i);
+  return out;
+}
+
+// alpha_i(d) of the map G_r: G with, on a free label i, the involution that the rule's L i-arcs
+// ask for on the matched darts (slot x on dart x) and loops elsewhere, when L's i-arcs can be
+// matched at all on G's darts (no arc to a slot beyond G, no path x -> y -> z with z != x);
+// otherwise G's own alpha_i. Either way an involution: G_r is a map, whatever the rule.
+z3::expr free_label_target(Query& q, const MapEncoding& M, const Map& G, int i, Dart d) {
+  const SymbolicRule& r = q.rule;
+  const int slots = r.slots();
+  z3::expr_vector realizable(q.ctx);
+  for (int x = 0; x < slots; ++x)
+    for (int y = 0; y < slots; ++y) {
+      if (static_cast<size_t>(x) >= G.size() || static_cast<size_t>(y) >= G.size())
+        realizable.push_back(!r.arc(false, i, x, y));
+      for (int z = 0; z < slots; ++z)
+        if (z != x) realizable.push_back(!(r.arc(false, i, x, y) && r.arc(false, i, y, z)));
+    }
+  z3::expr target = M.dart(d);
+  if (d < static_cast<Dart>(slots))
+    for (int y = 0; y < slots && static_cast<size_t>(y) < G.size(); ++y) {
+      target = z3::ite(r.arc(false, i, y, static_cast<int>(d)), M.dart(static_cast<unsigned>(y)), target);
+      target = z3::ite(r.arc(false, i, static_cast<int>(d), y), M.dart(static_cast<unsigned>(y)), target);
+    }
+  return z3::ite(z3::mk_and(realizable), target, M.dart(G.alpha(i, d)));
+}
+
 // "The match of the rule on this concrete map glues and yields a map" as a constraint on the rule.
-void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t,
+// With `generalise`, the map is G_r (free_label_target): the constraint then also speaks of the
+// rules that differ from the candidate on the free labels' arcs, each on its own map G_r.
+void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t, bool generalise,
             std::vector<std::unique_ptr<MapEncoding>>& maps,
             std::vector<std::unique_ptr<SymbolicDerivation>>& ders) {
   const std::string prefix = "r" + std::to_string(t) + "_";
@@ -256,9 +292,14 @@ void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t,
                                                static_cast<unsigned>(o.max_nodes), DartSort::BitVec,
                                                prefix));
   const MapEncoding& M = *maps.back();
+  const std::vector<int> free = generalise ? free_labels(M.spec()) : std::vector<int>{};
   q.solver.add(M.size() == M.dart(static_cast<unsigned>(G.size())));
   for (int i : M.spec().labels())
     for (Dart d = 0; d < G.size(); ++d) {
+      if (std::find(free.begin(), free.end(), i) != free.end()) {
+        q.solver.add(M.alpha(i, M.dart(d)) == free_label_target(q, M, G, i, d));
+        continue;
+      }
       q.solver.add(M.alpha(i, M.dart(d)) == M.dart(G.alpha(i, d)));
       if (!M.spec().is_involutive_dim(i)) {
         for (Dart e = 0; e < G.size(); ++e)
@@ -316,13 +357,17 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
         rep.complete_seconds = since(t0);
         return;
       }
-      refine(q, o, relabel(v.counterexample->G, v.counterexample->match.node), rep.refinements++,
-             maps, ders);
+      // The refinement on G_r first; the candidate's own G if that does not exclude it.
+      const Map G = relabel(v.counterexample->G, v.counterexample->match.node);
+      const bool generalise = !free_labels(MapSpec{o.n, o.kind}).empty();
+      refine(q, o, G, rep.refinements++, generalise, maps, ders);
       // The refinement must exclude the candidate (else the loop would not progress).
       z3::expr_vector fixed(q.ctx);  // a new vector: copies of an expr_vector share it
       for (const auto& e : a) fixed.push_back(e);
       fixed.push_back(
           assume(q.solver, q.rule.equals(model), "candidate" + std::to_string(rep.refinements)));
+      if (generalise && q.check(fixed) != z3::unsat)
+        refine(q, o, G, rep.refinements++, false, maps, ders);
       if (q.check(fixed) != z3::unsat)
         throw std::logic_error("a refinement does not exclude its candidate (encoding error): " +
                                rule_text(r));
