@@ -4,7 +4,8 @@
 // (C_r reads no other label) that satisfies w-I_r on 0 and 2, in each reading of C_r,
 //   (1) C_r of the rule = AND over its components of C_r of the component, and
 //   (2) C_r is the same on every renaming and reordering of the rule's nodes and arcs
-//       (the lemmas place a component's pattern on any slots).
+//       (the lemmas place a component's pattern on any slots), and with the labels 0 and 2
+//       swapped (the lemmas place the swapped pattern too).
 // Without w-I_r, (1) fails on some rule (looked for on one rule in 64 of those): the guard of the
 // decomposition is needed.
 #include <gtest/gtest.h>
@@ -43,6 +44,18 @@ Rule renamed(const Rule& r, const std::string& perm) {
   return Rule(side(r.left()), side(r.right()), r.dimension(), r.kind(), r.name());
 }
 
+// The rule with the labels 0 and 2 swapped.
+Rule swapped_02(const Rule& r) {
+  auto side = [&](const DGraph& g) {
+    DGraph out;
+    for (Node v = 0; v < g.num_nodes(); ++v) out.add_node(g.name(v));
+    for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+      if (g.arc_alive(a)) out.add_arc(g.arc(a).src, g.arc(a).tgt, g.arc(a).label == 1 ? 1 : 2 - g.arc(a).label);
+    return out;
+  };
+  return Rule(side(r.left()), side(r.right()), r.dimension(), r.kind(), r.name());
+}
+
 size_t node_count(const Rule& r) { return r.left().num_nodes() + r.added_nodes().size(); }
 
 void prove_decomposition(int nodes) {
@@ -71,6 +84,7 @@ void prove_decomposition(int nodes) {
         for (const auto& k : components) failing += !cycle_condition(restrict_rule(r, k, {0, 2}), reading);
         if (failing > 0 && failing < components.size()) ++split_mixed;
       }
+      EXPECT_EQ(cycle_condition(swapped_02(r), reading), whole) << name << " on " << rule_text(r) << ", 0 and 2 swapped";
       std::string perm = std::string("abcd").substr(0, node_count(r));
       while (std::next_permutation(perm.begin(), perm.end()))
         EXPECT_EQ(cycle_condition(renamed(r, perm), reading), whole) << name << " on " << rule_text(r) << ", renamed " << perm;

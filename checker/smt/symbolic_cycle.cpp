@@ -102,6 +102,9 @@ z3::expr SymbolicCycle::lemma(const z3::model& m, unsigned mask, bool verdict) c
   z3::expr_vector lemmas(rule_.ctx());
   std::vector<int> to;
   std::vector<bool> used(static_cast<size_t>(rule_.slots()), false);
+  // With one cycle pair {i, j}, C_r is symmetric in i and j (Defs. 38-40 and the completions
+  // treat both labels alike): the pattern with i and j swapped gets the same verdict.
+  std::vector<int> image_label = labels_;
   std::function<void()> place = [&] {
     if (to.size() == k) {
       z3::expr_vector same(rule_.ctx());
@@ -112,9 +115,9 @@ z3::expr SymbolicCycle::lemma(const z3::model& m, unsigned mask, bool verdict) c
         same.push_back(rule_.in_right(to[i]) == rule_.ctx().bool_val(val(rule_.in_right(from[i]))));
         for (size_t j = 0; j < k; ++j)
           for (bool right : {false, true})
-            for (int l : labels_) {
-              const z3::expr a = rule_.arc(right, l, to[i], to[j]);
-              same.push_back(val(rule_.arc(right, l, from[i], from[j])) ? a : !a);
+            for (size_t l = 0; l < labels_.size(); ++l) {
+              const z3::expr a = rule_.arc(right, image_label[l], to[i], to[j]);
+              same.push_back(val(rule_.arc(right, labels_[l], from[i], from[j])) ? a : !a);
             }
       }
       lemmas.push_back(z3::implies(z3::mk_and(same), ok_[image] == rule_.ctx().bool_val(verdict)));
@@ -135,6 +138,10 @@ z3::expr SymbolicCycle::lemma(const z3::model& m, unsigned mask, bool verdict) c
     }
   };
   place();
+  if (labels_.size() == 2) {
+    std::swap(image_label[0], image_label[1]);
+    place();
+  }
   return z3::mk_and(lemmas);
 }
 

@@ -17,7 +17,8 @@
 // has ok = the checker's verdict on the component" holds for the whole family because C_r of a
 // component does not depend on the names or order of its nodes. Placements that break the
 // family's status order (preserved < deleted < added along the slots) are left out: no rule of the
-// family has them.
+// family has them. With one cycle pair {i, j} (2-G-maps), the pattern with the labels i and j
+// swapped is placed too: C_r treats both labels of a pair alike.
 #pragma once
 #include <z3++.h>
 
