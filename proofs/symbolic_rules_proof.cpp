@@ -17,3 +17,13 @@ TEST(Proof, Thm1And2_Symbolic_1GMaps_Labels01_Nodes3_Darts8) {
 TEST(Proof, Thm1And2_Symbolic_2OMaps_Labels12_Nodes3_Darts8) {
   prove_conditions_symbolic(2, MapKind::OMap, {1, 2}, 3, 8);
 }
+
+// 1-G-maps, labels 0 and 1, 4 nodes (2016665962 rules), 8 darts.
+TEST(Proof, Thm1And2_Symbolic_1GMaps_Labels01_Nodes4_Darts8) {
+  prove_conditions_symbolic(1, MapKind::GMap, {0, 1}, 4, 8);
+}
+
+// 2-O-maps, labels 1 and 2, 4 nodes, 8 darts.
+TEST(Proof, Thm1And2_Symbolic_2OMaps_Labels12_Nodes4_Darts8) {
+  prove_conditions_symbolic(2, MapKind::OMap, {1, 2}, 4, 8);
+}

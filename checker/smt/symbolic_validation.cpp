@@ -9,7 +9,9 @@
 
 #include "checker/rule_check.hpp"
 #include "checker/smt/counterexample.hpp"
+#include "checker/smt/cycle_components.hpp"
 #include "checker/smt/rule_space.hpp"
+#include "checker/smt/symbolic_cycle.hpp"
 #include "checker/smt/symbolic_derivation.hpp"
 #include "model/core/error.hpp"
 #include "model/io/rule_json.hpp"
@@ -62,16 +64,6 @@ z3::expr condition(const SymbolicRule& rule, const ThesisParts& parts,
   return extra ? rule.condition(parts) && extra(rule) : rule.condition(parts);
 }
 
-// The labels of the model's cycle pairs: C_r reads the node statuses and these labels' arcs only
-// (the ij-completion, the O-completion of these labels, optimal paths and coherence, Defs. 38-40).
-std::vector<int> cycle_labels(const MapSpec& spec) {
-  std::vector<int> out;
-  for (auto [i, j] : spec.cycle_pairs())
-    for (int l : {i, j})
-      if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
-  return out;
-}
-
 // How the named condition reads C_r, and the condition itself (for the cross-check).
 struct CondSpec {
   CycleReading reading;
@@ -89,6 +81,7 @@ struct Query {
   z3::solver solver;
   z3::expr theorems12, cycle_holds;
   std::vector<int> cycle_label_set;
+  SymbolicCycle cycle;  // C_r by components (symbolic_cycle.hpp)
   CycleReading reading;
   const BuiltinCondition* builtin;  // the whole condition, to cross-check (nullptr: extra given)
   size_t* lemmas;
@@ -104,13 +97,19 @@ struct Query {
         cycle_holds(MapSpec{o.n, o.kind}.cycle_pairs().empty() ? ctx.bool_val(true)
                                                                : ctx.bool_const("cycle_holds")),
         cycle_label_set(cycle_labels(MapSpec{o.n, o.kind})),
+        cycle(rule, cycle_label_set),
         reading(cs.reading),
         builtin(extra ? nullptr : cs.builtin),
         lemmas(lemma_count) {
     solver.add(rule.family());
     solver.add(map.constraints());
     solver.add(der.match());
-    if (!cycle_label_set.empty()) solver.add(z3::implies(cycle_untouched(), cycle_holds));
+    if (!cycle_label_set.empty()) {
+      solver.add(z3::implies(cycle_untouched(), cycle_holds));
+      // Theorems 1-2 include w-I_r on the cycle labels: C_r is then the conjunction over the
+      // components (cycle_components.hpp).
+      solver.add(cycle.axioms(theorems12, cycle_holds));
+    }
   }
   // No added node and no deleted or added arc on the labels of the cycle pairs: C_r holds in every
   // reading (the completions add preserved arcs only, so there is no optimal path, no rewired
@@ -133,9 +132,10 @@ struct Query {
     return r;
   }
   // check() whose models give `cycle_holds` the concrete checker's verdict on their rule whenever
-  // Theorems 1-2 hold (when they fail, C_r does not matter): a model that disagrees yields the
-  // lemma "rules with these node statuses and cycle-label arcs have C_r = verdict" (valid for the
-  // whole family, since C_r reads nothing else) and the query is solved again.
+  // Theorems 1-2 hold (when they fail, C_r does not matter): in a model that disagrees, some
+  // component's `ok` differs from the checker's verdict on that component; each such component
+  // yields the lemma "every placement of this component's pattern has ok = verdict"
+  // (symbolic_cycle.hpp; valid for the whole family) and the query is solved again.
   // z3::unknown: the time limit hit between lemmas.
   z3::check_result solve(const z3::expr_vector& assumptions) {
     while (true) {
@@ -150,8 +150,21 @@ struct Query {
         throw std::logic_error("the cycle oracle disagrees with condition " + builtin->name +
                                " on " + rule_text(r) + " (encoding error)");
       if (m.eval(cycle_holds, true).is_true() == verdict) return z3::sat;
-      solver.add(z3::implies(rule.equals_on(m, cycle_label_set), cycle_holds == ctx.bool_val(verdict)));
-      ++*lemmas;
+      size_t learnt = 0;
+      for (const auto& nodes : rule_components(r, cycle_label_set)) {
+        const unsigned mask = cycle.mask_of(nodes);
+        if (!m.eval(cycle.component(mask), true).is_true())
+          throw std::logic_error("a component of " + rule_text(r) +
+                                 " is not one in the symbolic rule (encoding error)");
+        const bool ok = cycle_condition(restrict_rule(r, nodes, cycle_label_set), reading);
+        if (m.eval(cycle.ok(mask), true).is_true() == ok) continue;
+        solver.add(cycle.lemma(m, mask, ok));
+        ++learnt;
+      }
+      if (learnt == 0)
+        throw std::logic_error("C_r of " + rule_text(r) +
+                               " is not the conjunction over its components (encoding error)");
+      *lemmas += learnt;
     }
   }
   Map map_of(const z3::model& m) const {
@@ -234,8 +247,44 @@ Map relabel(const Map& G, const std::vector<Node>& match) {
   return out;
 }
 
+// The labels whose links no cycle pair of the model reads and which are involutions: on them a
+// map may take any involution (the map constraints of Def. 32 are independent of it).
+std::vector<int> free_labels(const MapSpec& spec) {
+  const std::vector<int> cyc = cycle_labels(spec);
+  std::vector<int> out;
+  for (int i : spec.labels())
+    if (spec.is_involutive_dim(i) && std::find(cyc.begin(), cyc.end(), i) == cyc.end()) out.push_back(i);
+  return out;
+}
+
+// alpha_i(d) of the map G_r: G with, on a free label i, the involution that the rule's L i-arcs
+// ask for on the matched darts (slot x on dart x) and loops elsewhere, when L's i-arcs can be
+// matched at all on G's darts (no arc to a slot beyond G, no path x -> y -> z with z != x);
+// otherwise G's own alpha_i. Either way an involution: G_r is a map, whatever the rule.
+z3::expr free_label_target(Query& q, const MapEncoding& M, const Map& G, int i, Dart d) {
+  const SymbolicRule& r = q.rule;
+  const int slots = r.slots();
+  z3::expr_vector realizable(q.ctx);
+  for (int x = 0; x < slots; ++x)
+    for (int y = 0; y < slots; ++y) {
+      if (static_cast<size_t>(x) >= G.size() || static_cast<size_t>(y) >= G.size())
+        realizable.push_back(!r.arc(false, i, x, y));
+      for (int z = 0; z < slots; ++z)
+        if (z != x) realizable.push_back(!(r.arc(false, i, x, y) && r.arc(false, i, y, z)));
+    }
+  z3::expr target = M.dart(d);
+  if (d < static_cast<Dart>(slots))
+    for (int y = 0; y < slots && static_cast<size_t>(y) < G.size(); ++y) {
+      target = z3::ite(r.arc(false, i, y, static_cast<int>(d)), M.dart(static_cast<unsigned>(y)), target);
+      target = z3::ite(r.arc(false, i, static_cast<int>(d), y), M.dart(static_cast<unsigned>(y)), target);
+    }
+  return z3::ite(z3::mk_and(realizable), target, M.dart(G.alpha(i, d)));
+}
+
 // "The match of the rule on this concrete map glues and yields a map" as a constraint on the rule.
-void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t,
+// With `generalise`, the map is G_r (free_label_target): the constraint then also speaks of the
+// rules that differ from the candidate on the free labels' arcs, each on its own map G_r.
+void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t, bool generalise,
             std::vector<std::unique_ptr<MapEncoding>>& maps,
             std::vector<std::unique_ptr<SymbolicDerivation>>& ders) {
   const std::string prefix = "r" + std::to_string(t) + "_";
@@ -243,9 +292,14 @@ void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t,
                                                static_cast<unsigned>(o.max_nodes), DartSort::BitVec,
                                                prefix));
   const MapEncoding& M = *maps.back();
+  const std::vector<int> free = generalise ? free_labels(M.spec()) : std::vector<int>{};
   q.solver.add(M.size() == M.dart(static_cast<unsigned>(G.size())));
   for (int i : M.spec().labels())
     for (Dart d = 0; d < G.size(); ++d) {
+      if (std::find(free.begin(), free.end(), i) != free.end()) {
+        q.solver.add(M.alpha(i, M.dart(d)) == free_label_target(q, M, G, i, d));
+        continue;
+      }
       q.solver.add(M.alpha(i, M.dart(d)) == M.dart(G.alpha(i, d)));
       if (!M.spec().is_involutive_dim(i)) {
         for (Dart e = 0; e < G.size(); ++e)
@@ -267,6 +321,11 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
   Query q(o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
   q.out_of_time = [&] { return o.time_limit > 0 && since(start) > o.time_limit; };
   q.solver.add(!q.whole());
+  // ... and it glues and preserves: a witness has only preserving matches, so this loses none,
+  // and it excludes at once every failing rule that breaks on every map it matches (the rules
+  // failing Theorems 1-2), leaving the refinements to the others.
+  q.solver.add(q.der.h_definitions());
+  q.solver.add(!q.der.breaks_consistency());
   EncodingOptions eo;
   eo.semantics = Semantics::Consistency;
   SmtSession session(MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes), eo);
@@ -298,13 +357,17 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
         rep.complete_seconds = since(t0);
         return;
       }
-      refine(q, o, relabel(v.counterexample->G, v.counterexample->match.node), rep.refinements++,
-             maps, ders);
+      // The refinement on G_r first; the candidate's own G if that does not exclude it.
+      const Map G = relabel(v.counterexample->G, v.counterexample->match.node);
+      const bool generalise = !free_labels(MapSpec{o.n, o.kind}).empty();
+      refine(q, o, G, rep.refinements++, generalise, maps, ders);
       // The refinement must exclude the candidate (else the loop would not progress).
       z3::expr_vector fixed(q.ctx);  // a new vector: copies of an expr_vector share it
       for (const auto& e : a) fixed.push_back(e);
       fixed.push_back(
           assume(q.solver, q.rule.equals(model), "candidate" + std::to_string(rep.refinements)));
+      if (generalise && q.check(fixed) != z3::unsat)
+        refine(q, o, G, rep.refinements++, false, maps, ders);
       if (q.check(fixed) != z3::unsat)
         throw std::logic_error("a refinement does not exclude its candidate (encoding error): " +
                                rule_text(r));
