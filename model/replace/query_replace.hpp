@@ -45,4 +45,10 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
                                  const DuplicateSelector& select = {},
                                  const std::vector<Dart>* only = nullptr);
 
+// An upper bound of the darts query_replace(target, store, cell_dim) adds: per cell, the largest
+// interior of the store's patterns of that dimension, twice for a face of a 3-G-map with two
+// half-faces. Splitting edges changes no cell, so the bound computed before an e-pattern holds
+// after it: a sequence (edges, faces, volumes) can reserve its final size once (FlaggedMap::reserve).
+size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim);
+
 }  // namespace gmr::replace
