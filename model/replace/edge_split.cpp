@@ -80,6 +80,8 @@ size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k) {
   }
   for (Dart x : darts)
     if (g.is_free(0, x)) throw Error(ErrorCode::InvalidMap, "a 0-free dart has no edge to split", "dart " + std::to_string(x));
+  if (double(k - 1) * double(darts.size()) >= double(kNoDart - g.capacity()))
+    throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")", "split in " + std::to_string(k));
   // 2. One chain of len new darts per pair (x, alpha_0 x), all added at once: near[x] is its end
   // next to x, near[alpha_0 x] the other end.
   const Dart first = g.add_darts(size_t(len) * (darts.size() / 2));

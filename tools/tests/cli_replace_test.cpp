@@ -103,6 +103,12 @@ TEST_F(CliReplace, BadInputsExitTwoAndLeaveNoOutput) {
                        " --cells 3 -o " + out, "", "3-cells");
   expect_bad_input("query-replace " + q(patterns("conformal-faces")) + " " + q(tools_data("cube.off")) + " --cells 4 -o " + out,
                    "usage");
+  expect_bad_input("query-replace " + q(patterns("conformal-faces")) + " " + q(tools_data("cube.off")) +
+                       " --split-edges 4000000000 -o " + out,
+                   "--split-edges", "not in range");
+  expect_bad_input("query-replace " + q(patterns("conformal-faces")) + " " + q(tools_data("cube.off")) +
+                       " --cells 3 --split-edges 2 -o " + out,
+                   "", "3-cells");
   EXPECT_EQ(outputs(), 0u);
 }
 

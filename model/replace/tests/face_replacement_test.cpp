@@ -91,6 +91,8 @@ TEST(EdgeSplit, SplitEdgesEqualsSplittingOneEdgeAfterTheOther) {
   // An edge named twice (two darts of one edge), a 0-free dart.
   FlaggedMap twice = all_flagged(make_cube(2));
   EXPECT_THROW(split_edges(twice, {0, twice.map.alpha(0, 0)}, 2), Error);
+  EXPECT_THROW(split_edges(twice, {0}, 3000000000u), Error);  // more darts than can be numbered
+  EXPECT_EQ(twice.map.size(), 48u);
   FlaggedMap open{Map(2), {}, {}};
   open.map.add_darts(2);
   open.map.link(1, 0, 1);
