@@ -35,7 +35,7 @@ declare -A tunables=(
 for regime in cold warm default; do
   GLIBC_TUNABLES=${tunables[$regime]} "$build/tools/bench/gmr_bench_replace" --benchmark_filter=HexSubdivision \
     --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
-    --benchmark_out="$data/$regime.json" --benchmark_out_format=json >/dev/null
+    --benchmark_out="$data/$regime.json" --benchmark_out_format=json >/dev/null 2>&1
 done
 echo "load after:  $(cut -d' ' -f1-3 /proc/loadavg)"
 python3 - "$data" <<'PY'
