@@ -53,9 +53,15 @@ FlaggedMap cone_of_surface(const FlaggedMap& surface) {
   c.flag.assign(g.capacity(), 0);
   for (Dart d = 0; d < n && d < surface.flag.size(); ++d) c.flag[b(d)] = surface.flag[d];
   if (surface.positioned()) {
+    // The corners (vertices with a flagged dart), or every vertex when none is flagged.
+    bool any_flag = false;
+    for (Dart d = 0; d < n && d < surface.flag.size(); ++d) any_flag |= surface.flag[d] != 0;
     Vec3 apex{0, 0, 0};
     size_t vertices = 0;
     for (Dart r : orbit_representatives(s, cell_type(s, 0))) {
+      bool corner = !any_flag;
+      for (Dart x : orbit(s, cell_type(s, 0), r)) corner |= x < surface.flag.size() && surface.flag[x] != 0;
+      if (!corner) continue;
       for (int k = 0; k < 3; ++k) apex[k] += surface.position[r][k];
       ++vertices;
     }

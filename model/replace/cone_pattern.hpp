@@ -11,8 +11,9 @@
 // for (b, t0, t1, t2). Each is an involution and alpha_i alpha_j (j >= i + 2) is one because S's
 // alpha_0 alpha_2 is; the boundary successor abar_2(b(d)) = alpha_2 alpha_3 alpha_2 (b(d)) = b(a2 d),
 // so the boundary is S itself, with its orientation (b(d) = d keeps the parity of every dart).
-// With positions on S, the apex is the mean of S's vertices (each vertex once) and the pattern gets
-// mean value coordinates when it is made.
+// With positions on S, the apex is the mean of S's corners (its vertices with a flagged dart: the
+// cell's corners, docs/query-replace.md, Flags; every vertex when nothing is flagged), each once,
+// and the pattern gets mean value coordinates when it is made (§5.2).
 #pragma once
 #include <string>
 #include <vector>

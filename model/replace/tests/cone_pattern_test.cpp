@@ -10,6 +10,9 @@
 #include "model/replace/coverage.hpp"
 #include "model/replace/query_replace.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
+#include "model/replace/unit_hex_positions.hpp"
+
+#include <cmath>
 
 namespace gmr::replace {
 namespace {
@@ -36,7 +39,7 @@ TEST(ConePattern, ConeOfTheCubeIsSixPyramidsWithTheCubeAsBoundary) {
     EXPECT_EQ(query_replace(target, s, 3, [&] { ASSERT_TRUE(is_valid(target.map)); }).replaced(), 1u);
     EXPECT_EQ(count_cells(target.map, 3), 6u);
   }
-  // With positions, the apex is the mean of the vertices.
+  // With positions, the apex is the mean of the corners (here every vertex is one).
   FlaggedMap unit = testing::all_flagged(make_cube(2));
   unit.position.resize(unit.map.capacity());
   for (Dart v : orbit_representatives(unit.map, cell_type(unit.map, 0))) {
@@ -100,6 +103,36 @@ TEST(ConePattern, RefinesAHexahedronWithSplitEdgesAndACutFace) {
   EXPECT_EQ(v.replaced(), 1u);
   EXPECT_TRUE(v.unmatched.empty());
   EXPECT_EQ(count_cells(m.map, 3), faces);  // one pyramid per boundary face
+}
+
+// The generated patterns carry the unit cube's geometry: applied to an affine image of the unit
+// cube (edges split, a face cut, all positioned), the apex goes to the image of the centre.
+TEST(ConePattern, ApexAtTheCentreOfAPositionedHexahedron) {
+  PatternStore store(Mode::Unoriented);
+  for (Pattern& p : conformal_volume_patterns(Mode::Unoriented)) store.add(std::move(p));
+  store.add(testing::pattern_file("conformal-faces", "split4"));
+  FlaggedMap m = testing::all_flagged(make_polycube({{0, 0, 0}}));
+  m.position = unit_hex_positions(m.map);
+  // An affine map x -> A x + t.
+  auto affine = [](const Vec3& p) {
+    return Vec3{2 * p[0] + 0.5 * p[1] + 1, 3 * p[1] - 0.25 * p[2] - 2, 1.5 * p[2] + 0.5 * p[0] + 4};
+  };
+  for (Vec3& p : m.position) p = affine(p);
+  split_edges(m, orbit_representatives(m.map, cell_type(m.map, 1)), 2);
+  const std::vector<Dart> face{0};
+  EXPECT_EQ(query_replace(m, store, 2, {}, {}, {}, &face).replaced(), 1u);
+  const Dart first_new = m.map.capacity();
+  const size_t boundary = orbit(m.map, cell_type(m.map, 3), 0).size();
+  const QueryReplaceReport v = query_replace(m, store, 3);
+  ASSERT_EQ(v.replaced(), 1u);
+  const Vec3 centre = affine({0.5, 0.5, 0.5});
+  size_t at_apex = 0;
+  for (Dart d = first_new; d < m.map.capacity(); ++d) {
+    const Vec3& p = m.position[d];
+    if (std::abs(p[0] - centre[0]) + std::abs(p[1] - centre[1]) + std::abs(p[2] - centre[2]) < 1e-9) ++at_apex;
+  }
+  EXPECT_EQ(at_apex, boundary);  // t2(d) for every boundary dart d
+  EXPECT_TRUE(is_valid(m.map));
 }
 
 }  // namespace
