@@ -48,7 +48,6 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   // up in the input map, and a match is kept as its pattern and its boundary darts in label order
   // (the isomorphism f, replacement_template.hpp).
   struct Match {
-    Dart rep;
     uint32_t pattern;
     size_t targets;  // offset of the cell's boundary darts in `targets`
     bool shared;     // a face of a 3-G-map with two half-faces
@@ -95,7 +94,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     const uint32_t pattern = static_cast<uint32_t>((*hits)[choice].pattern);
     boundary_labeling(c, match.start, order);
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
-    matches.push_back({rep, pattern, targets.size(), shared});
+    matches.push_back({pattern, targets.size(), shared});
     for (uint32_t k : order) targets.push_back(c.dart[k]);
     added += size_t(store.replacement(pattern).interior) * (shared ? 2 : 1);
   }
