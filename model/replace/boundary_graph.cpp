@@ -59,14 +59,22 @@ void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, co
 
 BoundaryGraph cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
                             const std::vector<uint8_t>& positive) {
+  BoundaryGraph b;
+  b.dart.reserve(256);
+  b.nbr.reserve(size_t(256) * i);
+  cell_boundary(g, i, d, flag, positive, b);
+  return b;
+}
+
+void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
+                   const std::vector<uint8_t>& positive, BoundaryGraph& b) {
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
   // One breadth-first traversal of the <0..i-1>-orbit (neighbours by increasing dimension, the
   // order of orbit()) numbers the darts and records their neighbours.
-  BoundaryGraph b;
   b.arity = i;
+  b.dart.clear();
+  b.nbr.clear();
   std::vector<uint32_t>& local = local_index(g.capacity());
-  b.dart.reserve(256);
-  b.nbr.reserve(size_t(256) * i);
   b.dart.push_back(d);
   local[d] = 0;
   for (uint32_t k = 0; k < b.dart.size(); ++k) {
@@ -88,7 +96,6 @@ BoundaryGraph cell_boundary(const Map& g, int i, Dart d, const std::vector<uint3
     b.flag[k] = x < flag.size() ? flag[x] : 0;
     b.positive[k] = positive.empty() ? 1 : positive[x];
   }
-  return b;
 }
 
 BoundaryGraph pattern_boundary(const Map& p, const std::vector<uint32_t>& flag,

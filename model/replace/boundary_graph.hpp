@@ -34,6 +34,9 @@ Dart boundary_successor(const Map& g, int i, Dart d);
 // The i-cell orbit <0..i-1> of d of a target map (a half-face for i = 2, a volume for i = 3).
 BoundaryGraph cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
                             const std::vector<uint8_t>& positive);
+// The same into `out`, whose arrays are reused (no allocation once they are large enough).
+void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
+                   const std::vector<uint8_t>& positive, BoundaryGraph& out);
 // The n-free darts of an n-G-map pattern (its boundary), neighbours alpha_0..alpha_{n-2} and the
 // boundary successor for n-1.
 BoundaryGraph pattern_boundary(const Map& p, const std::vector<uint32_t>& flag,

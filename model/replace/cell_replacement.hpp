@@ -17,12 +17,14 @@
 #include <vector>
 
 #include "model/replace/flagged_map.hpp"
-#include "model/replace/pattern.hpp"
+#include "model/replace/replacement_template.hpp"
 
 namespace gmr::replace {
 
-// f: indexed by pattern dart, the target dart of each boundary dart (kNoDart for interior darts).
-// The target's dimension must be i or i + 1. Returns the number of darts added.
-size_t replace_cell(FlaggedMap& target, const Pattern& p, const std::vector<Dart>& f);
+// f: the matched cell's boundary darts in label order (t.boundary of them). The copies are
+// written into existing free darts: first .. first + k - 1, and for a shared face the mirror copies
+// first + k .. first + 2k - 1 (k = t.interior); flags and positions must be sized to the map. The
+// target's dimension must be i or i + 1 (query_replace checks it). Returns the darts written.
+size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first, bool shared);
 
 }  // namespace gmr::replace

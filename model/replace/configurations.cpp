@@ -73,6 +73,16 @@ ConfigurationSet hex_conformal() {
         return e;
     throw Error(ErrorCode::Range, "not a cube edge");
   };
+  // Positions on the unit cube: corners by their coordinate bits, midpoints, face centres.
+  std::array<Vec3, 26> point;
+  for (uint32_t v = 0; v < 8; ++v) point[v] = {double(v & 1), double(v >> 1 & 1), double(v >> 2 & 1)};
+  for (size_t e = 0; e < 12; ++e)
+    for (int k = 0; k < 3; ++k) point[8 + e][k] = (point[edges[e][0]][k] + point[edges[e][1]][k]) / 2;
+  for (size_t f = 0; f < 6; ++f)
+    for (int k = 0; k < 3; ++k) {
+      point[20 + f][k] = 0;
+      for (uint32_t c : kHexFaces[f]) point[20 + f][k] += point[c][k] / 4;
+    }
   ConfigurationSet set;
   set.generator = "hex-conformal";
   set.cell_dim = 3;
@@ -107,6 +117,8 @@ ConfigurationSet hex_conformal() {
       std::vector<uint32_t> vertex;
       conf.map.map = surface_from_faces(faces, 26, {}, &vertex);
       flag_corners(conf.map, vertex, edges);
+      conf.map.position.resize(conf.map.map.capacity());
+      conf.map.map.for_each_dart([&](Dart d) { conf.map.position[d] = point[vertex[d]]; });
       for (int e = 0; e < 12; ++e)
         if (mask >> e & 1) conf.split.push_back(e);
       for (int f : cut_faces) conf.split.push_back(100 + f);  // faces cut in 4: 100 + face index

@@ -8,7 +8,8 @@
 //    12 edges split in 2 (4095 configurations);
 //  * hex-conformal: a hexahedron with a non-empty set of split edges, and any subset of its faces
 //    whose 4 edges are split already cut into 4 quads (the configurations of conformal refinement,
-//    §7.3: 6209). `split` lists the split edges, then 100 + f for each cut face f;
+//    §7.3: 6209). `split` lists the split edges, then 100 + f for each cut face f. With positions
+//    on the unit cube (corners, edge midpoints, face centres);
 //  * marching-cubes: the boundary of a hexahedron after the face step of marching cubes (§7.2) for
 //    every non-constant corner labelling, both resolutions of each face with 4 cuts (654).
 // Edges are numbered: polygons in cyclic order from dart 0; the cube by its vertex pairs (a, b),

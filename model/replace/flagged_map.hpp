@@ -25,6 +25,13 @@ struct FlaggedMap {
     if (positioned()) position.resize(map.capacity(), Vec3{0, 0, 0});
   }
   size_t flagged() const;
+  // Room for `darts` darts in the links, flags and positions (a sequence of replacements whose
+  // growth is bounded beforehand then grows no array, query_replace.hpp).
+  void reserve(size_t darts) {
+    map.reserve(darts);
+    flag.reserve(darts);
+    if (positioned()) position.reserve(darts);
+  }
 };
 
 // Reads the flags of a gmr.gmap content; throws Error(Schema) at `where` for an embedding "flag"

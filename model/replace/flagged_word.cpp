@@ -104,6 +104,12 @@ std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start) 
   return order;
 }
 
+void boundary_labeling(const BoundaryGraph& b, uint32_t start, std::vector<uint32_t>& order) {
+  thread_local std::vector<uint32_t> label;
+  if (label.size() < b.size()) label.resize(b.size(), 0);  // all zero between calls
+  stream_word(b, start, false, nullptr, label, order, nullptr);
+}
+
 // The start darts (Def. 5 with flags): the flagged darts (in D+ in oriented mode) if there are
 // some, else every dart (of D+ in oriented mode), in local order. For volume boundaries
 // (arity 3) only those whose pair (size of their face, size of the face across their edge) is

@@ -28,6 +28,8 @@ const char* to_string(Mode m);
 Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags = true);
 // The local darts in label order from `start` (order[k] has label k+1).
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start);
+// The same into `order` (reused; no allocation once it is large enough).
+void boundary_labeling(const BoundaryGraph& b, uint32_t start, std::vector<uint32_t>& order);
 
 // The start darts of Def. 5 with flags: the flagged darts if any dart is flagged, else all darts
 // (only those of D+ in oriented mode); for volume boundaries (arity 3), only those whose pair

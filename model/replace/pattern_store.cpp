@@ -85,6 +85,7 @@ void PatternStore::add(Pattern p) {
   list.push_back(e);
   key_of_.push_back(std::move(key));
   entries_.push_back(e);
+  templates_.push_back(compile_replacement(p, boundary_labeling(p.boundary, e.start)));
   patterns_.push_back(std::move(p));
 }
 

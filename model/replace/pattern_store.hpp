@@ -10,6 +10,7 @@
 
 #include "model/replace/flagged_word.hpp"
 #include "model/replace/pattern.hpp"
+#include "model/replace/replacement_template.hpp"
 
 namespace gmr::replace {
 
@@ -42,6 +43,8 @@ class PatternStore {
   void add(Pattern p);
   const std::vector<Pattern>& patterns() const { return patterns_; }
   const StoreEntry& entry(size_t pattern) const { return entries_[pattern]; }
+  // The pattern's interior compiled against its boundary in the label order of entry().start.
+  const ReplacementTemplate& replacement(size_t pattern) const { return templates_[pattern]; }
 
   // The patterns whose boundary has this key (nullptr if none).
   const std::vector<StoreEntry>* find(const Word& key) const;
@@ -60,6 +63,7 @@ class PatternStore {
   Mode mode_;
   std::vector<Pattern> patterns_;
   std::vector<StoreEntry> entries_;
+  std::vector<ReplacementTemplate> templates_;
   std::vector<Word> key_of_;
   std::unordered_map<Word, std::vector<StoreEntry>, WordHash> table_;
   // Profile -> the distinct keys with that profile: each key's word (without its dimension

@@ -43,23 +43,39 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   for (Dart d : reps)
     if (!g.alive(d)) throw Error(ErrorCode::Usage, "no such dart", "dart " + std::to_string(d));
   r.cells = reps.size();
-  // Room for the copies (at most the largest interior per cell, twice for shared faces), so that
-  // the link, flag and position arrays grow once.
-  size_t most = 0;
-  for (const Pattern& p : store.patterns())
-    if (p.cell_dim == cell_dim) most = std::max(most, p.interior_darts.size());
-  const size_t room = g.capacity() + reps.size() * most * (n > cell_dim ? 2 : 1);
-  g.reserve(room);
-  target.flag.reserve(room);
-  if (target.positioned()) target.position.reserve(room);
-  // Per pattern, its darts in the label order of its minimal start (computed on first use).
-  std::vector<std::vector<uint32_t>> pattern_order(store.patterns().size());
-  std::vector<Dart> f;
+  // 1. Query every cell (§6.3). A replacement relinks only its own cell's darts (and adds new
+  // ones), so the other cells' boundaries are the same before and after it: every cell is looked
+  // up in the input map, and a match is kept as its pattern and its boundary darts in label order
+  // (the isomorphism f, replacement_template.hpp).
+  struct Match {
+    uint32_t pattern;
+    size_t targets;  // offset of the cell's boundary darts in `targets`
+    bool shared;     // a face of a 3-G-map with two half-faces
+  };
+  std::vector<Match> matches;
+  std::vector<Dart> targets;
+  size_t added = 0;
+  BoundaryGraph c;
+  std::vector<uint32_t> order;
+  // `only` may name a cell twice: its darts are marked when it is examined.
+  ScopedMarker listed(g);
+  std::vector<Dart> marked;
   size_t done = 0;
   for (Dart rep : reps) {
     if (progress && done % 4096 == 0) progress(done, reps.size());
     ++done;
-    const BoundaryGraph c = cell_boundary(g, cell_dim, rep, target.flag, positive);
+    if (only && listed.test(rep))
+      throw Error(ErrorCode::Usage, "a cell is listed twice", "dart " + std::to_string(rep));
+    cell_boundary(g, cell_dim, rep, target.flag, positive, c);
+    if (only)
+      for (Dart x : c.dart) {
+        listed.mark(x);
+        marked.push_back(x);
+        if (n > cell_dim && !g.is_free(cell_dim + 1, x)) {
+          listed.mark(g.alpha(cell_dim + 1, x));
+          marked.push_back(g.alpha(cell_dim + 1, x));
+        }
+      }
     const StoreMatch match = store.match(c, cell_dim);
     const std::vector<StoreEntry>* hits = match.hits;
     if (!hits) {
@@ -75,19 +91,40 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
                                           std::to_string(hits->size()),
                     "dart " + std::to_string(rep));
     }
-    const StoreEntry& pe = (*hits)[choice];
-    const Pattern& p = store.patterns()[pe.pattern];
-    const std::vector<uint32_t> oc = boundary_labeling(c, match.start);
-    std::vector<uint32_t>& op = pattern_order[pe.pattern];
-    if (op.empty()) op = boundary_labeling(p.boundary, pe.start);
-    f.assign(p.map.map.capacity(), kNoDart);
-    for (size_t k = 0; k < op.size(); ++k) f[p.boundary.dart[op[k]]] = c.dart[oc[k]];
-    r.darts_added += replace_cell(target, p, f);
-    if (after_each) after_each();
-    ++r.matched[pe.pattern];  // the next cells' darts are not touched: no new darts to orient
+    const uint32_t pattern = static_cast<uint32_t>((*hits)[choice].pattern);
+    boundary_labeling(c, match.start, order);
+    const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
+    matches.push_back({pattern, targets.size(), shared});
+    for (uint32_t k : order) targets.push_back(c.dart[k]);
+    added += size_t(store.replacement(pattern).interior) * (shared ? 2 : 1);
   }
+  for (Dart x : marked) listed.unmark(x);
+  listed.set_clean();
+  // 2. Room for every copy at once: the link, flag and position arrays grow once.
+  Dart next = g.add_darts(added);
+  target.resize_flags();
+  // 3. The replacements, in the order of the cells.
+  for (const Match& m : matches) {
+    next += static_cast<Dart>(replace_cell(target, store.replacement(m.pattern), &targets[m.targets], next, m.shared));
+    if (after_each) after_each();
+    ++r.matched[m.pattern];
+  }
+  r.darts_added = added;
   if (progress) progress(reps.size(), reps.size());
   return r;
+}
+
+size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
+  size_t most = 0;
+  for (const Pattern& p : store.patterns())
+    if (p.cell_dim == cell_dim) most = std::max(most, p.interior_darts.size());
+  if (most == 0) return 0;
+  const int n = g.dimension();
+  size_t halves = 0;
+  visit_all_orbits(
+      g, cell_type(g, cell_dim).mask(), [&](Dart d) { halves += n > cell_dim && !g.is_free(cell_dim + 1, d) ? 2 : 1; },
+      [](Dart) {});
+  return halves * most;
 }
 
 }  // namespace gmr::replace

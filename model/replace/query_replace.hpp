@@ -31,18 +31,29 @@ struct QueryReplaceReport {
 
 // Throws Error(InvalidMap) when the target is not a valid G-map of dimension cell_dim or
 // cell_dim + 1 (or, in oriented mode, not orientable).
-// after_each (optional) runs after every replacement (tests assert validity there); progress
+// Every cell is looked up first, then the copies of all matches are added at once, then the
+// replacements run in the order of the cells (the same result, dart for dart, as replacing each
+// cell when met: a replacement touches no other cell's boundary; docs/query-replace.md).
+// after_each (optional) runs after every replacement (tests assert validity there; the darts of
+// the replacements still to come are then isolated free darts); progress
 // (optional) receives (cells done, cells) every 4096 cells and at the end.
 // select (optional) chooses among the patterns of a key holding several (§6.4: deliberate
 // duplicates need outside information, e.g. geometry or vertex values): it receives the candidates
 // (in insertion order), the target and a dart of the cell, and returns an index into the
 // candidates; without it, the first candidate is used. An index out of range is Error(Usage).
-// only (optional): the cells to examine, one dart each (default: every cell of the map).
+// only (optional): the cells to examine, one dart each (default: every cell of the map); a cell
+// named twice is Error(Usage), before anything is replaced.
 using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each = {},
                                  const std::function<void(size_t, size_t)>& progress = {},
                                  const DuplicateSelector& select = {},
                                  const std::vector<Dart>* only = nullptr);
+
+// An upper bound of the darts query_replace(target, store, cell_dim) adds: per cell, the largest
+// interior of the store's patterns of that dimension, twice for a face of a 3-G-map with two
+// half-faces. Splitting edges changes no cell, so the bound computed before an e-pattern holds
+// after it: a sequence (edges, faces, volumes) can reserve its final size once (FlaggedMap::reserve).
+size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim);
 
 }  // namespace gmr::replace

@@ -6,13 +6,16 @@
 // core isomorphism test (Theorem 1, O(n^2) per test) against each representative in turn until
 // one fits. All find the class of every configuration (the store's patterns are the
 // representatives lifted to 3-G-maps, boundary only).
-// Hexahedral subdivision (§7.1, Table 1 "time-qr" against "time-direct"): one level on a 16^3 block
-// of unit hexahedra with positions, (d) by query-replace (split every edge in 2, f-pattern on the
-// faces, v-pattern on the volumes, queries included) and (e) by the direct subdivision
-// (direct_hex_subdivision.hpp). The input copy is not timed.
+// Hexahedral subdivision (§7.1, Table 1 "time-qr" against "time-direct"): one level on blocks of
+// unit hexahedra with positions, (d) by query-replace (final size reserved, every edge split in 2,
+// f-pattern on the faces, v-pattern on the volumes, queries included) and (e) by the direct
+// subdivision (direct_hex_subdivision.hpp). The input copy is not timed. Both are dominated by
+// the first touch of fresh memory on some machines: tools/bench/replace.sh runs them with the
+// allocator returning memory to the kernel (cold) and keeping it (warm).
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
+#include <map>
 #include <unordered_map>
 
 #include "model/core/builders.hpp"
@@ -98,19 +101,19 @@ void BM_QueryByIsomorphismTests(benchmark::State& state) {
   state.counters["patterns"] = static_cast<double>(d.reps.size());
 }
 
-// A 16^3 block of unit hexahedra, every dart flagged, with positions.
-const FlaggedMap& block() {
-  static const FlaggedMap m = [] {
-    std::vector<Voxel> voxels;
-    for (int x = 0; x < 16; ++x)
-      for (int y = 0; y < 16; ++y)
-        for (int z = 0; z < 16; ++z) voxels.push_back({x, y, z});
-    FlaggedMap b{make_polycube(voxels), {}, {}};
-    b.flag.assign(b.map.capacity(), 1);
-    b.position = unit_hex_positions(b.map);
-    return b;
-  }();
-  return m;
+// A block of side^3 unit hexahedra, every dart flagged, with positions (one per side, kept).
+const FlaggedMap& block(int side) {
+  static std::map<int, FlaggedMap> blocks;
+  auto it = blocks.find(side);
+  if (it != blocks.end()) return it->second;
+  std::vector<Voxel> voxels;
+  for (int x = 0; x < side; ++x)
+    for (int y = 0; y < side; ++y)
+      for (int z = 0; z < side; ++z) voxels.push_back({x, y, z});
+  FlaggedMap b{make_polycube(voxels), {}, {}};
+  b.flag.assign(b.map.capacity(), 1);
+  b.position = unit_hex_positions(b.map);
+  return blocks.emplace(side, std::move(b)).first->second;
 }
 
 const PatternStore& hex_patterns() {
@@ -124,14 +127,24 @@ const PatternStore& hex_patterns() {
   return s;
 }
 
-void BM_HexSubdivisionQueryReplace(benchmark::State& state) {
+// Query-replace as an application runs the sequence: its final size reserved once from the
+// patterns (replacement_room), every edge split in 2 at once, f-pattern on the faces, v-pattern on
+// the volumes. `reserved` false: no reservation and one split_edge per edge (each step grows the
+// arrays, copying them).
+void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved) {
   const PatternStore& store = hex_patterns();
+  const FlaggedMap& input = block(static_cast<int>(state.range(0)));
   size_t volumes = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    FlaggedMap m = block();
+    FlaggedMap m = input;
     state.ResumeTiming();
-    for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
+    if (reserved) {
+      m.reserve(2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3));
+      split_edges(m, orbit_representatives(m.map, cell_type(m.map, 1)), 2);
+    } else {
+      for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
+    }
     const QueryReplaceReport f = query_replace(m, store, 2);
     const QueryReplaceReport v = query_replace(m, store, 3);
     if (!f.unmatched.empty() || !v.unmatched.empty()) state.SkipWithError("a cell was not matched");
@@ -140,10 +153,14 @@ void BM_HexSubdivisionQueryReplace(benchmark::State& state) {
   state.counters["volumes"] = static_cast<double>(volumes);
 }
 
+void BM_HexSubdivisionQueryReplace(benchmark::State& state) { hex_subdivision_by_query_replace(state, true); }
+void BM_HexSubdivisionQueryReplaceUnreserved(benchmark::State& state) { hex_subdivision_by_query_replace(state, false); }
+
 void BM_HexSubdivisionDirect(benchmark::State& state) {
+  const FlaggedMap& input = block(static_cast<int>(state.range(0)));
   size_t darts = 0;
   for (auto _ : state) {
-    FlaggedMap r = subdivide_hexahedra(block());
+    FlaggedMap r = subdivide_hexahedra(input);
     darts = r.map.size();
   }
   state.counters["volumes"] = static_cast<double>(darts / 48);
@@ -152,8 +169,17 @@ void BM_HexSubdivisionDirect(benchmark::State& state) {
 BENCHMARK(BM_QueryByPatternStore)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_QueryBySignature)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_QueryByIsomorphismTests)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond);
+// Block sides 8, 12, 16 and 20 (512 to 8,000 hexahedra, subdivided into 4,096 to 64,000); the
+// two methods alternate per size.
+BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(8);
+BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(8);
+BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(12);
+BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(12);
+BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(16);
+BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(16);
+BENCHMARK(BM_HexSubdivisionQueryReplaceUnreserved)->Unit(benchmark::kMillisecond)->Arg(16);
+BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(20);
+BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(20);
 
 }  // namespace
 

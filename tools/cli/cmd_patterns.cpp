@@ -4,9 +4,14 @@
 // Patterns whose boundary automorphisms do not all extend to their interior are listed as ambiguous
 // (their result depends on the tie-break; not a negative verdict).
 // Exit 1 when the verdict mode (unoriented, or --oriented) has duplicates or missing classes.
+// `gmr patterns generate hex-conformal OUT_DIR [--oriented]`: writes the conformal volume patterns
+// (one cone per configuration class, cone_pattern.hpp) into a new or empty folder, one file each.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "model/core/error.hpp"
+#include "model/replace/cone_pattern.hpp"
 #include "model/replace/coverage.hpp"
 #include "model/replace/pattern_folder.hpp"
 #include "tools/cli/cli.hpp"
@@ -19,6 +24,29 @@ struct PatternsArgs {
   std::string folder, generator;
   bool oriented = false, json = false;
 };
+
+struct GenerateArgs {
+  std::string set, folder;
+  bool oriented = false;
+};
+
+int run_generate(const GenerateArgs& a) {
+  if (a.set != "hex-conformal")
+    throw Error(ErrorCode::Usage, "unknown pattern set '" + a.set + "' (known: hex-conformal)", "generate");
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(a.folder, ec) && (!fs::is_directory(a.folder, ec) || !fs::is_empty(a.folder, ec)))
+    throw Error(ErrorCode::Usage, "the output folder exists and is not an empty folder", a.folder);
+  const replace::Mode mode = a.oriented ? replace::Mode::Oriented : replace::Mode::Unoriented;
+  const std::vector<replace::Pattern> patterns = replace::conformal_volume_patterns(mode);
+  fs::create_directories(a.folder, ec);
+  if (ec) throw Error(ErrorCode::Io, "cannot create the folder: " + ec.message(), a.folder);
+  for (const replace::Pattern& p : patterns)
+    save_map(replace::to_gmap_file(p.map), (fs::path(a.folder) / (p.name + ".json")).string(), Format::Json);
+  std::cout << patterns.size() << " v-patterns (" << replace::to_string(mode) << " classes of hex-conformal) written to "
+            << a.folder << "\n";
+  return kExitOk;
+}
 
 std::string split_text(const std::vector<int>& split) {
   std::string s;
@@ -110,6 +138,12 @@ void register_patterns(CLI::App& app) {
   check->add_flag("--oriented", args->oriented, "Verdict in oriented mode (default: unoriented)");
   check->add_flag("--json", args->json, "Print JSON");
   set_action(check, [args] { return run_check(*args); });
+  auto gen = std::make_shared<GenerateArgs>();
+  CLI::App* generate = sub->add_subcommand("generate", "Write a generated pattern set (hex-conformal: the conformal volume patterns)");
+  generate->add_option("set", gen->set, "Pattern set (hex-conformal)")->required();
+  generate->add_option("folder", gen->folder, "Output folder (new or empty)")->required();
+  generate->add_flag("--oriented", gen->oriented, "One pattern per oriented class (325; default: unoriented, 226)");
+  set_action(generate, [gen] { return run_generate(*gen); });
 }
 
 }  // namespace gmr::cli

@@ -34,11 +34,16 @@ int run_query_replace(const QueryReplaceArgs& a) {
   replace::FlaggedMap m = replace::flagged_map(load_map(a.input, a.from), a.input);
   if (a.flag_all) m.flag.assign(m.map.capacity(), 1);
   size_t split = 0;
-  if (a.split_edges > 1)
-    for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) {
-      replace::split_edge(m, e, a.split_edges);
-      ++split;
-    }
+  if (a.split_edges > 1) {
+    // The arrays grow once: room for the split edges and the replacements (a size beyond the
+    // dart limit is left to split_edges to refuse).
+    const double room = double(m.map.capacity()) + double(m.map.size()) * (a.split_edges - 1) +
+                        (a.cells <= m.map.dimension() ? double(replace::replacement_room(m.map, store, a.cells)) : 0);
+    if (room < double(kNoDart)) m.reserve(static_cast<size_t>(room));
+    const std::vector<Dart> edges = orbit_representatives(m.map, cell_type(m.map, 1));
+    replace::split_edges(m, edges, a.split_edges);
+    split = edges.size();
+  }
   std::function<void(size_t, size_t)> progress;
   if (isatty(STDERR_FILENO) != 0)  // progress on a terminal only, quiet when piped
     progress = [](size_t k, size_t n) {

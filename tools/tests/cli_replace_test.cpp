@@ -103,7 +103,36 @@ TEST_F(CliReplace, BadInputsExitTwoAndLeaveNoOutput) {
                        " --cells 3 -o " + out, "", "3-cells");
   expect_bad_input("query-replace " + q(patterns("conformal-faces")) + " " + q(tools_data("cube.off")) + " --cells 4 -o " + out,
                    "usage");
+  expect_bad_input("query-replace " + q(patterns("conformal-faces")) + " " + q(tools_data("cube.off")) +
+                       " --split-edges 4000000000 -o " + out,
+                   "--split-edges", "not in range");
+  expect_bad_input("query-replace " + q(patterns("conformal-faces")) + " " + q(tools_data("cube.off")) +
+                       " --cells 3 --split-edges 2 -o " + out,
+                   "", "3-cells");
   EXPECT_EQ(outputs(), 0u);
+}
+
+// The conformal volume patterns, generated (one cone per oriented class) and checked: 325 classes,
+// none missing, no duplicate in oriented mode; in unoriented mode the 99 chiral pairs are
+// duplicates. A non-empty output folder and an unknown set are refused.
+TEST_F(CliReplace, GeneratesTheConformalVolumePatterns) {
+  const fs::path out = dir / "out" / "hex-conformal";
+  Result r = run("patterns generate hex-conformal " + q(out) + " --oriented");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("325 v-patterns"), std::string::npos) << r.out;
+  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 325);
+  r = run("patterns check " + q(out) + " --configurations hex-conformal --oriented --json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["oriented"]["classes"], 325);
+  EXPECT_EQ(j["oriented"]["missing_classes"], 0);
+  EXPECT_EQ(j["oriented"]["duplicates"].size(), 0u);
+  EXPECT_EQ(j["unoriented"]["classes"], 226);
+  EXPECT_EQ(j["unoriented"]["missing_classes"], 0);
+  EXPECT_EQ(j["unoriented"]["duplicates"].size(), 99u);
+  expect_bad_input("patterns generate hex-conformal " + q(out), out.string(), "not an empty folder");
+  expect_bad_input("patterns generate hex-edges " + q(dir / "out" / "other"), "generate", "unknown pattern set");
+  EXPECT_FALSE(fs::exists(dir / "out" / "other"));
 }
 
 TEST_F(CliReplace, PatternsCheckCoverageVerdicts) {

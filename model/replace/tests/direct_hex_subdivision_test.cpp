@@ -10,6 +10,7 @@
 #include "model/core/error.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/replace/edge_split.hpp"
 #include "model/replace/query_replace.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 #include "model/replace/unit_hex_positions.hpp"
@@ -68,6 +69,37 @@ TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
   EXPECT_EQ(count_all_cells(direct2.map)[3], 64 * voxels.size());
   EXPECT_TRUE(is_isomorphic(direct2.map, qr.map));
   EXPECT_EQ(position_multiset(direct2), position_multiset(qr));
+}
+
+// The sequence as the benchmark runs it: its final size reserved from replacement_room before
+// any step (no array grows: the link arrays stay in place), every edge split at once
+// (split_edges), then faces and volumes; the bound is exact for hexahedra, and the result is the
+// direct subdivision up to isomorphism, with the same positions, valid after every replacement.
+TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
+  const std::vector<Voxel> voxels{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};
+  PatternStore store(Mode::Unoriented);
+  for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
+  FlaggedMap qr = positioned_polycube(voxels);
+  FlaggedMap direct = positioned_polycube(voxels);
+  for (int level = 1; level <= 2; ++level) {
+    direct = subdivide_hexahedra(direct);
+    const size_t darts = qr.map.size();
+    const size_t faces = replacement_room(qr.map, store, 2), volumes = replacement_room(qr.map, store, 3);
+    qr.reserve(2 * darts + faces + volumes);
+    const Dart* links = qr.map.links(0).data();
+    EXPECT_EQ(split_edges(qr, orbit_representatives(qr.map, cell_type(qr.map, 1)), 2), darts);
+    auto valid = [&] { ASSERT_TRUE(is_valid(qr.map)); };
+    const QueryReplaceReport f = query_replace(qr, store, 2, valid);
+    const QueryReplaceReport v = query_replace(qr, store, 3, valid);
+    EXPECT_TRUE(f.unmatched.empty() && v.unmatched.empty());
+    EXPECT_EQ(f.darts_added, faces);
+    EXPECT_EQ(v.darts_added, volumes);
+    EXPECT_EQ(qr.map.links(0).data(), links) << "an array grew beyond the reserved size";
+    EXPECT_EQ(qr.map.size(), direct.map.size());
+    EXPECT_TRUE(is_isomorphic(direct.map, qr.map)) << level;
+    EXPECT_EQ(position_multiset(direct), position_multiset(qr)) << level;
+    qr.flag.assign(qr.map.capacity(), 1);
+  }
 }
 
 TEST(DirectHexSubdivision, RejectsNonHexahedra) {

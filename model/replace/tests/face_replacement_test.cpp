@@ -2,7 +2,10 @@
 // for G-maps), with validity asserted after every replacement.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
+#include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 #include "model/replace/orientation.hpp"
 #include "model/replace/query_replace.hpp"
@@ -46,6 +49,55 @@ TEST(EdgeSplit, SplitsEveryDartPairAndKeepsFlagsOnOldDarts) {
     EXPECT_EQ(m.map.size(), darts + orbit_size * (k - 1));
     EXPECT_EQ(m.flagged(), darts);  // new darts are unflagged
   }
+}
+
+// split_edges on a list of edges is split_edge on each in turn, up to the numbering of the new
+// darts: the same map up to isomorphism, with the same flags and positions; a map with holes and
+// a positioned polycube; an edge named twice and a 0-free dart are refused.
+TEST(EdgeSplit, SplitEdgesEqualsSplittingOneEdgeAfterTheOther) {
+  for (unsigned k : {2u, 3u}) {
+    FlaggedMap one = all_flagged(make_stacked_cubes());
+    // Every other edge, so that split and unsplit edges meet.
+    std::vector<Dart> edges = orbit_representatives(one.map, cell_type(one.map, 1));
+    std::erase_if(edges, [&](Dart e) { return e % 3 == 0; });
+    FlaggedMap all = one;
+    size_t added = 0;
+    for (Dart e : edges) added += split_edge(one, e, k);
+    EXPECT_EQ(split_edges(all, edges, k), added);
+    EXPECT_TRUE(is_valid(all.map));
+    EXPECT_EQ(all.map.size(), one.map.size());
+    EXPECT_EQ(all.flagged(), one.flagged());
+    EXPECT_TRUE(is_isomorphic(one.map, all.map, &one.flag, &all.flag)) << k;
+  }
+  // Positions: the new vertices at the same places.
+  FlaggedMap cube{lift(make_cube(2), 3), {}, {}};
+  cube.flag.assign(cube.map.capacity(), 1);
+  cube.position.resize(cube.map.capacity());
+  cube.map.for_each_dart([&](Dart d) { cube.position[d] = {double(d % 7), double(d % 5), double(d % 3)}; });
+  // A vertex position per vertex orbit (its smallest dart's made up position).
+  for (Dart v : orbit_representatives(cube.map, cell_type(cube.map, 0)))
+    for (Dart x : orbit(cube.map, cell_type(cube.map, 0), v)) cube.position[x] = cube.position[v];
+  FlaggedMap a = cube, b = cube;
+  for (Dart e : orbit_representatives(a.map, cell_type(a.map, 1))) split_edge(a, e, 3);
+  split_edges(b, orbit_representatives(b.map, cell_type(b.map, 1)), 3);
+  auto points = [](const FlaggedMap& m) {
+    std::vector<Vec3> p;
+    m.map.for_each_dart([&](Dart d) { p.push_back(m.position[d]); });
+    std::sort(p.begin(), p.end());
+    return p;
+  };
+  EXPECT_EQ(points(a), points(b));
+  EXPECT_TRUE(is_isomorphic(a.map, b.map));
+  // An edge named twice (two darts of one edge), a 0-free dart.
+  FlaggedMap twice = all_flagged(make_cube(2));
+  EXPECT_THROW(split_edges(twice, {0, twice.map.alpha(0, 0)}, 2), Error);
+  EXPECT_THROW(split_edges(twice, {0}, 3000000000u), Error);  // more darts than can be numbered
+  EXPECT_EQ(twice.map.size(), 48u);
+  FlaggedMap open{Map(2), {}, {}};
+  open.map.add_darts(2);
+  open.map.link(1, 0, 1);
+  open.resize_flags();
+  EXPECT_THROW(split_edges(open, {0}, 2), Error);
 }
 
 TEST(FaceReplacement, SquareWithSplitEdgesBecomesFourQuads) {
@@ -200,6 +252,18 @@ TEST(FaceReplacement, RefusesInvalidTargetsAndWrongDimensions) {
   EXPECT_THROW(query_replace(m, store, 2), Error);
   FlaggedMap one{Map(1), {}, {}};
   EXPECT_THROW(query_replace(one, store, 2), Error);
+  // A cell listed twice (two darts of one face, on its two half-faces) is refused, the map kept.
+  FlaggedMap cubes = all_flagged(make_stacked_cubes());
+  split_all_edges(cubes, 2);
+  Dart shared = kNoDart;
+  cubes.map.for_each_dart([&](Dart d) {
+    if (shared == kNoDart && !cubes.map.is_free(3, d)) shared = d;
+  });
+  ASSERT_NE(shared, kNoDart);
+  const std::vector<Dart> twice{shared, cubes.map.alpha(3, shared)};
+  const size_t darts = cubes.map.size();
+  EXPECT_THROW(query_replace(cubes, store, 2, {}, {}, {}, &twice), Error);
+  EXPECT_EQ(cubes.map.size(), darts);
 }
 
 }  // namespace
