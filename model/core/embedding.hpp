@@ -57,6 +57,8 @@ class Embedding {
     grow(g);
     slot_[d] = s;
   }
+  // Sizes the slot table to g's capacity (new darts without value), for set_slot_unchecked.
+  void fit(const Map& g) { grow(g); }
   // set_slot without sizing: d must be below the size reached by an earlier set_slot/set.
   void set_slot_unchecked(Dart d, uint32_t s) { slot_[d] = s; }
   const T& value(uint32_t s) const { return values_[s]; }
