@@ -4,12 +4,14 @@
 // Consistency (every dart of an <o>-orbit holds the same value; every dart holds one) is checked by
 // `check`, which reports each offending orbit.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/map.hpp"
 #include "model/core/orbit.hpp"
 
@@ -51,7 +53,7 @@ class Embedding {
     values_.push_back(std::move(v));
     return static_cast<uint32_t>(values_.size() - 1);
   }
-  void reserve_values(size_t n) { values_.reserve(n); }
+  void reserve_values(size_t n) { reserve_in_huge_pages(values_, n); }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
   void set_slot(const Map& g, Dart d, uint32_t s) {
     grow(g);
@@ -95,7 +97,9 @@ class Embedding {
 
  private:
   void grow(const Map& g) {
-    if (slot_.size() < g.capacity()) slot_.resize(g.capacity(), kNoValue);
+    if (slot_.size() >= g.capacity()) return;
+    if (slot_.capacity() < g.capacity()) reserve_in_huge_pages(slot_, std::max<size_t>(g.capacity(), 2 * slot_.size()));
+    slot_.resize(g.capacity(), kNoValue);
   }
   std::string name_;
   OrbitType orbit_;

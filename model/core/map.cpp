@@ -5,6 +5,7 @@
 #include <ranges>
 
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 
 namespace gmr {
 
@@ -39,7 +40,7 @@ DimMask Map::dims_mask() const {
 }
 
 void Map::reserve(size_t k) {
-  for (int i = lowest_dim(); i <= n_; ++i) link_[i].reserve(k);
+  for (int i = lowest_dim(); i <= n_; ++i) reserve_in_huge_pages(link_[i], k);
 }
 
 Dart Map::add_darts(size_t k) {
@@ -51,7 +52,7 @@ Dart Map::add_darts(size_t k) {
   const auto fresh = std::views::iota(first, static_cast<Dart>(capacity_));
   for (int i = lowest_dim(); i <= n_; ++i) {
     auto& l = link_[i];
-    if (l.capacity() < capacity_) l.reserve(std::max(capacity_, 2 * l.size()));
+    if (l.capacity() < capacity_) reserve_in_huge_pages(l, std::max(capacity_, 2 * l.size()));
     l.insert(l.end(), fresh.begin(), fresh.end());
   }
   dead_.resize(capacity_);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
 #include "model/expr/propagation.hpp"
 
@@ -63,6 +64,7 @@ void EmbeddingPropagation::derive_class_kinds() {
 // of their first orbit dart. Returns their number.
 uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
   const size_t sz = c.size();
+  reserve_in_huge_pages(k.class_of, sz);
   k.class_of.assign(sz, kNone);
   const Dart* link[kMaxDim];
   int nd = 0;

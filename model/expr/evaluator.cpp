@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
 
 namespace gmr::expr {
@@ -47,8 +48,11 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
   const DimMask mo = collect.orbit.mask();
   for (auto& m : memos_)
     if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
-  memos_.push_back({call.function, mo, collect.embedding, std::vector<uint32_t>(g_.capacity(), kNone), {}});
-  memos_.back().values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
+  memos_.push_back({call.function, mo, collect.embedding, {}, {}});
+  CollectMemo& m = memos_.back();
+  reserve_in_huge_pages(m.at, g_.capacity());
+  m.at.assign(g_.capacity(), kNone);
+  reserve_in_huge_pages(m.values, g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
 }
 
