@@ -21,7 +21,8 @@ void EmbeddingPropagation::derive_class_kinds() {
   const scheme::RuleScheme& s = *cs_.scheme;
   const OrbitType& t = s.left.nodes[s.hook_nodes()[0]].label;
   const size_t nr = s.right.size();
-  kinds_.assign(m_.fields.size(), {});
+  kinds_.clear();
+  kinds_.resize(m_.fields.size());
   for (size_t fi = 0; fi < m_.fields.size(); ++fi) {
     const DimMask mask = m_.fields[fi].orbit().mask();
     std::vector<uint32_t> comp(nr);
@@ -64,17 +65,18 @@ void EmbeddingPropagation::derive_class_kinds() {
 // of their first orbit dart. Returns their number.
 uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
   const size_t sz = c.size();
-  reserve_in_huge_pages(k.class_of, sz);
-  k.class_of.assign(sz, kNone);
+  std::vector<uint32_t>& class_of = *k.class_of;
+  reserve_in_huge_pages(class_of, sz);
+  class_of.assign(sz, kNone);
   const Dart* link[kMaxDim];
   int nd = 0;
   for (DimMask rest = k.dims; rest; rest &= rest - 1) link[nd++] = g.links(__builtin_ctz(rest)).data();
   const uint32_t* index = c.index->data();
   uint32_t classes = 0;
   for (uint32_t b = 0; b < sz; ++b) {
-    if (k.class_of[b] != kNone) continue;
+    if (class_of[b] != kNone) continue;
     const uint32_t id = classes++;
-    k.class_of[b] = id;
+    class_of[b] = id;
     stack_.clear();
     stack_.push_back(b);
     while (!stack_.empty()) {
@@ -82,8 +84,8 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
       stack_.pop_back();
       for (int p = 0; p < nd; ++p) {
         const uint32_t y = index[link[p][x]];
-        if (k.class_of[y] == kNone) {
-          k.class_of[y] = id;
+        if (class_of[y] == kNone) {
+          class_of[y] = id;
           stack_.push_back(y);
         }
       }
@@ -111,7 +113,7 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
                                 ", embedding " + cs_.embeddings[e].name;
       k.values.reserve(classes);
       for (uint32_t b = 0; b < sz; ++b) {
-        if (k.class_of[b] != k.values.size()) continue;  // not the first orbit dart of its class
+        if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
         const Dart node_dart = c.darts[b];               // the hook, L's only node
         k.values.push_back(Evaluator::to_storage(ev.evaluate(x, &node_dart, cs_.embeddings[e].type, where)));
         ++evaluations_;
@@ -130,7 +132,7 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
   const size_t sz = c.size();
   std::vector<uint32_t> first_b;  // per class, in class order
   for (uint32_t b = 0; b < sz; ++b)
-    if (k.class_of[b] == first_b.size()) first_b.push_back(b);
+    if ((*k.class_of)[b] == first_b.size()) first_b.push_back(b);
   const size_t classes = first_b.size();
   std::vector<uint32_t> chosen(classes, kNoValue);
   std::vector<bool> mixed(classes, false), reported(classes, false);
@@ -138,7 +140,7 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
   for (uint32_t v : k.nodes) {
     if (!preserved(v)) continue;
     for (uint32_t b = 0; b < sz; ++b) {
-      const uint32_t sl = E.slot(c.darts[b]), id = k.class_of[b];
+      const uint32_t sl = E.slot(c.darts[b]), id = (*k.class_of)[b];
       if (sl == kNoValue) continue;
       if (chosen[id] == kNoValue) chosen[id] = sl;
       else if (sl != chosen[id]) mixed[id] = true;
@@ -164,7 +166,7 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
   for (uint32_t v : k.nodes) {
     if (!preserved(v)) continue;
     for (uint32_t b = 0; b < sz; ++b) {
-      const uint32_t sl = E.slot(c.darts[b]), id = k.class_of[b];
+      const uint32_t sl = E.slot(c.darts[b]), id = (*k.class_of)[b];
       if (!mixed[id] || reported[id] || sl == kNoValue || detail::same_value(E.value(sl), E.value(chosen[id]))) continue;
       report("E-merge", f, c.darts[b],
              "the rewrite merges orbits of values " + detail::text(E.value(chosen[id]), f.arity) + " and " +
@@ -178,7 +180,7 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
         report("E-no-value", f, c.comatch(k.nodes[0], first_b[id]),
                "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
   for (uint32_t v : k.nodes)
-    for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.comatch(v, b), chosen[k.class_of[b]]);
+    for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.comatch(v, b), chosen[(*k.class_of)[b]]);
 }
 
 void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentInstance& c) {
@@ -195,10 +197,10 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
       for (const Vec3& x : k.values) E.add_value(x);
       for (uint32_t v : k.nodes) {
         if (c.engine->added_rank(v) == scheme::SchemeEngine::kAdded) {
-          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.darts[b], base + k.class_of[b]);
+          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.darts[b], base + (*k.class_of)[b]);
         } else {
           const Dart first = c.comatch(v, 0);
-          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(first + b, base + k.class_of[b]);
+          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(first + b, base + (*k.class_of)[b]);
         }
       }
     }

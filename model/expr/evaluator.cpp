@@ -50,9 +50,9 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
     if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
   memos_.push_back({call.function, mo, collect.embedding, {}, {}});
   CollectMemo& m = memos_.back();
-  reserve_in_huge_pages(m.at, g_.capacity());
-  m.at.assign(g_.capacity(), kNone);
-  reserve_in_huge_pages(m.values, g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
+  reserve_in_huge_pages(*m.at, g_.capacity());
+  m.at->assign(g_.capacity(), kNone);
+  reserve_in_huge_pages(*m.values, g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
 }
 
@@ -242,7 +242,7 @@ Val Evaluator::eval(const Expr& e) {
         CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
         if (cm) {
           const Dart d = dart_of(arg.ref, arg);
-          if (cm->at[d] != kNone) return cm->values[cm->at[d]];
+          if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
         }
         // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
         std::vector<Val>& m = vals_[vars_.size()];
@@ -256,9 +256,9 @@ Val Evaluator::eval(const Expr& e) {
           else if (e.function == Function::Middle && n > 0) r = scale(acc, 1.0 / static_cast<double>(n));
           if (e.function != Function::Middle || n > 0) {
             // members() left the darts of the <o>-orbit in this depth's first scratch list.
-            const auto idx = static_cast<uint32_t>(cm->values.size());
-            cm->values.push_back(r);
-            for (Dart x : scratch_[3 * vars_.size()]) cm->at[x] = idx;
+            const auto idx = static_cast<uint32_t>(cm->values->size());
+            cm->values->push_back(r);
+            for (Dart x : scratch_[3 * vars_.size()]) (*cm->at)[x] = idx;
           }
         }
       } else {

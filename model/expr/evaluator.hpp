@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "model/core/buffer_pool.hpp"
 #include "model/core/map.hpp"
 #include "model/expr/ast.hpp"
 #include "model/expr/embedded_map.hpp"
@@ -71,8 +72,8 @@ class Evaluator {
     Function function;
     DimMask orbit;
     int embedding;
-    std::vector<uint32_t> at;  // per dart: index in values, or kNone
-    std::vector<Val> values;
+    Pooled<uint32_t> at;  // per dart: index in values, or kNone
+    Pooled<Val> values;
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);

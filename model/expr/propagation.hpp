@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "model/core/buffer_pool.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/embedded_map.hpp"
 #include "model/expr/evaluator.hpp"
@@ -82,7 +83,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     DimMask dims = 0;
     int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
     uint32_t expression_node = 0;    // its R node
-    std::vector<uint32_t> class_of;  // per orbit dart b: the class (computed before the rewrite)
+    Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
     std::vector<Vec3> values;        // per class: the value (computed classes)
   };
   void derive_class_kinds();

@@ -1,5 +1,6 @@
 #include "model/scheme/component_rewrite.hpp"
 
+#include "model/core/buffer_pool.hpp"
 #include "model/core/error.hpp"
 #include "model/core/huge_pages.hpp"
 
@@ -16,11 +17,15 @@ bool rewrites_whole_components(const SchemeEngine& engine, const Map& g) {
 
 namespace {
 
-// The flat tables of one call, reused by its components.
+// The flat tables of one call, reused by its components (their storage kept by the thread for its
+// next calls, buffer_pool.hpp).
 struct Workspace {
-  std::vector<uint32_t> index;  // per dart of the map before the call: its b, or kNone (not yet met)
-  std::vector<Dart> darts;      // O.darts of the current component
-  std::vector<uint32_t> nb;     // O's links
+  Pooled<uint32_t> index_pool;  // per dart of the map before the call: its b, or kNone (not yet met)
+  Pooled<Dart> darts_pool;      // O.darts of the current component
+  Pooled<uint32_t> nb_pool;     // O's links
+  std::vector<uint32_t>& index = *index_pool;
+  std::vector<Dart>& darts = *darts_pool;
+  std::vector<uint32_t>& nb = *nb_pool;
 };
 
 // Phase 1: the component of `hook` in the BFS order of orbit_graph, with O's links.
