@@ -41,7 +41,20 @@ Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::ve
 void Evaluator::memoise_collects(bool on) {
   memo_on_ = on;
   memos_.clear();
+  ids_.clear();
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
+}
+
+const uint32_t* Evaluator::orbit_ids(DimMask mask) {
+  for (auto& o : ids_)
+    if (o.mask == mask) return o.ids->data();
+  ids_.push_back({mask, {}});
+  std::vector<uint32_t>& v = *ids_.back().ids;
+  reserve_in_huge_pages(v, g_.capacity());
+  v.assign(g_.capacity(), kNone);
+  uint32_t count = 0;
+  visit_all_orbits(g_, mask, [&](Dart) { ++count; }, [&](Dart x) { v[x] = count - 1; });
+  return v.data();
 }
 
 Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collect) {
@@ -128,9 +141,33 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   std::vector<Dart>& stack = scratch_[3 * depth + 2];
   in_orbit.clear();
   in_classes.clear();
-  ScopedMarker mo_mark(g_), mc_mark(g_);
+  ScopedMarker mo_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
+  if (memo_on_ && n <= kSmallOrbit) {
+    // The <c>-orbits told apart by their numbers (orbit_ids) instead of marking each one met:
+    // the same first darts, in the same order.
+    const uint32_t* ids = orbit_ids(mc);
+    uint32_t met[kSmallOrbit];
+    size_t count = 0;
+    for (size_t k = 0; k < n; ++k) {
+      const Dart x = in_orbit[k];
+      const uint32_t id = ids[x];
+      if (std::find(met, met + count, id) != met + count) continue;
+      met[count++] = id;
+      if (e.op == Expr::Op::Collect) {
+        out.push_back(field_value(e.embedding, x, e));
+      } else {
+        vars_.push_back(x);
+        out.push_back(eval(*e.args[0]));
+        vars_.pop_back();
+      }
+    }
+    for (Dart x : in_orbit) mo_mark.unmark(x);
+    mo_mark.set_clean();
+    return;
+  }
+  ScopedMarker mc_mark(g_);
   if (e.op == Expr::Op::Collect && collect_by_slots(e, mc, mc_mark, out)) {
     for (Dart x : in_orbit) mo_mark.unmark(x);
     mo_mark.set_clean();

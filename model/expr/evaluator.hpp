@@ -43,7 +43,9 @@ class Evaluator {
   // the dart it is reached from (up to the order of the floating-point sum). Worth it when the
   // expressions of one application visit most of the map: a table of capacity entries per
   // (function, <o>, pi) is filled lazily (Catmull-Clark reads every face's barycentre from
-  // 2k + 1 places). The map must not change while it is on.
+  // 2k + 1 places). Comprehensions and collects then tell the <c>-orbits met apart by a numbering
+  // of all the <c>-orbits of the map (one sweep per <c>) instead of marking each. The map must not
+  // change while it is on.
   void memoise_collects(bool on);
 
   // Storage conversion of a value of type t, and back.
@@ -77,6 +79,14 @@ class Evaluator {
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);
+  // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
+  struct OrbitIds {
+    DimMask mask;
+    Pooled<uint32_t> ids;
+  };
+  const uint32_t* orbit_ids(DimMask mask);
+  std::vector<OrbitIds> ids_;
+  static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
   std::vector<CollectMemo> memos_;
 };
