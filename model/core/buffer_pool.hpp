@@ -1,21 +1,63 @@
-// Scratch vectors kept by the thread between uses.
+// Scratch and large vectors kept by the thread between uses.
 //
-// A whole-map rewrite needs tables as large as the map (orbit indices, classes, memoised values),
-// and fresh memory is paid page by page on first touch (a page fault per 4 KiB; several
-// microseconds each on a virtual machine). Applying a scheme again and again (subdivision
-// iterations) would pay it at every call: a Pooled<T> takes a vector, with its storage, from the
-// thread's pool and gives it back when destroyed, so the next call writes into pages already
-// mapped. The pool keeps at most 16 vectors per element type; contents are cleared on take.
+// A whole-map rewrite writes tables as large as the map (the map's own link arrays and embedding
+// slots, orbit indices, classes, memoised values), and fresh memory is paid page by page on first
+// touch (a page fault per 4 KiB; several microseconds each on a virtual machine, where this is most
+// of a subdivision's time: docs/embeddings.md "Measured"). Applying a scheme again and again would
+// pay it at every call. So:
+//  * take_buffer / give_buffer: a per-thread pool of large vectors (at least 1 MiB of storage; at
+//    most 16 per element type, the smallest dropped first); take_buffer(n) returns the smallest
+//    pooled vector holding n elements, emptied, or an empty vector when none does;
+//  * Pooled<T>: a scratch vector taken from the pool and given back when destroyed.
+// Map and Embedding give their large arrays back when destroyed and take them when they grow, so
+// the storage of a map dropped after one subdivision serves the next (memory is kept by the
+// thread until it ends, as a malloc arena keeps its free chunks).
 #pragma once
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace gmr {
 
+namespace detail {
+template <class T>
+std::vector<std::vector<T>>& buffer_pool() {
+  thread_local std::vector<std::vector<T>> p;
+  return p;
+}
+}  // namespace detail
+
+template <class T>
+std::vector<T> take_buffer(size_t min_capacity = 0) {
+  auto& p = detail::buffer_pool<T>();
+  size_t best = p.size();
+  for (size_t k = 0; k < p.size(); ++k)
+    if (p[k].capacity() >= min_capacity && (best == p.size() || p[k].capacity() < p[best].capacity())) best = k;
+  if (best == p.size()) return {};
+  std::vector<T> v = std::move(p[best]);
+  p.erase(p.begin() + static_cast<std::ptrdiff_t>(best));
+  v.clear();
+  return v;
+}
+
+template <class T>
+void give_buffer(std::vector<T>&& v) {
+  constexpr size_t kMinBytes = size_t(1) << 20;
+  constexpr size_t kMaxBuffers = 16;
+  if (v.capacity() * sizeof(T) < kMinBytes) return;
+  auto& p = detail::buffer_pool<T>();
+  p.push_back(std::move(v));
+  if (p.size() > kMaxBuffers) {
+    auto smallest = std::min_element(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.capacity() < b.capacity(); });
+    p.erase(smallest);
+  }
+}
+
 template <class T>
 class Pooled {
  public:
-  Pooled() : v_(take()) {}
-  ~Pooled() { give(std::move(v_)); }
+  Pooled() : v_(take_buffer<T>()) {}
+  ~Pooled() { give_buffer(std::move(v_)); }
   Pooled(Pooled&& o) noexcept : v_(std::move(o.v_)) {}
   Pooled& operator=(Pooled&& o) noexcept {
     std::swap(v_, o.v_);
@@ -30,23 +72,6 @@ class Pooled {
   const std::vector<T>* operator->() const { return &v_; }
 
  private:
-  static std::vector<std::vector<T>>& pool() {
-    thread_local std::vector<std::vector<T>> p;
-    return p;
-  }
-  static std::vector<T> take() {
-    auto& p = pool();
-    if (p.empty()) return {};
-    std::vector<T> v = std::move(p.back());
-    p.pop_back();
-    v.clear();
-    return v;
-  }
-  static void give(std::vector<T>&& v) {
-    if (v.capacity() == 0) return;
-    auto& p = pool();
-    if (p.size() < 16) p.push_back(std::move(v));
-  }
   std::vector<T> v_;
 };
 

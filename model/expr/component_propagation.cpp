@@ -55,6 +55,8 @@ void EmbeddingPropagation::derive_class_kinds() {
           k.expression_node = v;
         }
       }
+      for (size_t p = 0; p < t.size(); ++p)
+        if (k.dims >> t[p] & 1u) k.positions.push_back(p);
       kinds_[fi].push_back(std::move(k));
     }
   }
@@ -68,10 +70,10 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   std::vector<uint32_t>& class_of = *k.class_of;
   reserve_in_huge_pages(class_of, sz);
   class_of.assign(sz, kNone);
-  const Dart* link[kMaxDim];
-  int nd = 0;
-  for (DimMask rest = k.dims; rest; rest &= rest - 1) link[nd++] = g.links(__builtin_ctz(rest)).data();
-  const uint32_t* index = c.index->data();
+  // O's links at the kind's positions (the orbit's own table: no dart index lookup).
+  const uint32_t* nb = c.nb.data();
+  const size_t arity = c.arity;
+  (void)g;
   uint32_t classes = 0;
   for (uint32_t b = 0; b < sz; ++b) {
     if (class_of[b] != kNone) continue;
@@ -80,10 +82,10 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
     stack_.clear();
     stack_.push_back(b);
     while (!stack_.empty()) {
-      const Dart x = c.darts[stack_.back()];
+      const uint32_t x = stack_.back();
       stack_.pop_back();
-      for (int p = 0; p < nd; ++p) {
-        const uint32_t y = index[link[p][x]];
+      for (size_t p : k.positions) {
+        const uint32_t y = nb[x * arity + p];
         if (class_of[y] == kNone) {
           class_of[y] = id;
           stack_.push_back(y);

@@ -106,8 +106,9 @@ Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
 Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
   const EmbeddingField* f = fields_[static_cast<size_t>(embedding)];
   const EmbeddingSignature& s = sigs_[static_cast<size_t>(embedding)];
-  if (!f || !f->values.has(d)) fail(e, "no '" + s.name + "' value on this dart", d);
-  return from_storage(f->values.get(d), s.type);
+  const uint32_t slot = f ? f->values.slot(d) : Embedding<Vec3>::kNoValue;
+  if (slot == Embedding<Vec3>::kNoValue) fail(e, "no '" + s.name + "' value on this dart", d);
+  return from_storage(f->values.value(slot), s.type);
 }
 
 void Evaluator::members(const Expr& e, std::vector<Val>& out) {

@@ -80,7 +80,8 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   // dimensions of the map before whose orbits are the B's, and the expression evaluated for it.
   struct ClassKind {
     std::vector<uint32_t> nodes;
-    DimMask dims = 0;
+    DimMask dims = 0;                // as a set of dimensions of the map before
+    std::vector<size_t> positions;   // the same as positions of O (o[p] in dims)
     int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
     uint32_t expression_node = 0;    // its R node
     Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
