@@ -42,6 +42,7 @@ void Evaluator::memoise_collects(bool on) {
   memo_on_ = on;
   memos_.clear();
   ids_.clear();
+  for (auto& w : last_walk_) w.valid = false;
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
 }
 
@@ -140,32 +141,24 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   std::vector<Dart>& in_orbit = scratch_[3 * depth];
   std::vector<Dart>& in_classes = scratch_[3 * depth + 1];
   std::vector<Dart>& stack = scratch_[3 * depth + 2];
-  in_orbit.clear();
   in_classes.clear();
+  LastWalk& last = last_walk_[depth];
+  if (memo_on_ && last.valid && last.mask == mo && last.dart == d && in_orbit.size() <= kSmallOrbit) {
+    // The same <o>-orbit from the same dart as the previous walk at this depth (Catmull-Clark's
+    // vertex point walks one vertex three times): its darts, in order, are still in in_orbit.
+    memo_members(e, mc, in_orbit, out);
+    return;
+  }
+  in_orbit.clear();
+  last.valid = false;
   ScopedMarker mo_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
   if (memo_on_ && n <= kSmallOrbit) {
-    // The <c>-orbits told apart by their numbers (orbit_ids) instead of marking each one met:
-    // the same first darts, in the same order.
-    const uint32_t* ids = orbit_ids(mc);
-    uint32_t met[kSmallOrbit];
-    size_t count = 0;
-    for (size_t k = 0; k < n; ++k) {
-      const Dart x = in_orbit[k];
-      const uint32_t id = ids[x];
-      if (std::find(met, met + count, id) != met + count) continue;
-      met[count++] = id;
-      if (e.op == Expr::Op::Collect) {
-        out.push_back(field_value(e.embedding, x, e));
-      } else {
-        vars_.push_back(x);
-        out.push_back(eval(*e.args[0]));
-        vars_.pop_back();
-      }
-    }
     for (Dart x : in_orbit) mo_mark.unmark(x);
     mo_mark.set_clean();
+    last = {mo, d, true};
+    memo_members(e, mc, in_orbit, out);
     return;
   }
   ScopedMarker mc_mark(g_);
@@ -192,6 +185,26 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   for (Dart x : in_classes) mc_mark.unmark(x);
   mo_mark.set_clean();
   mc_mark.set_clean();
+}
+
+// Memo mode, the <o>-orbit in in_orbit: one member per <c>-orbit met, at its first dart, the
+// <c>-orbits told apart by their numbers (orbit_ids) instead of marking each one met.
+void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
+  const uint32_t* ids = orbit_ids(mc);
+  uint32_t met[kSmallOrbit];
+  size_t count = 0;
+  for (const Dart x : in_orbit) {
+    const uint32_t id = ids[x];
+    if (std::find(met, met + count, id) != met + count) continue;
+    met[count++] = id;
+    if (e.op == Expr::Op::Collect) {
+      out.push_back(field_value(e.embedding, x, e));
+    } else {
+      vars_.push_back(x);
+      out.push_back(eval(*e.args[0]));
+      vars_.pop_back();
+    }
+  }
 }
 
 // The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one

@@ -86,6 +86,13 @@ class Evaluator {
   };
   const uint32_t* orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;
+  void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
+  struct LastWalk {
+    DimMask mask = 0;
+    Dart dart = kNoDart;
+    bool valid = false;
+  };
+  LastWalk last_walk_[kMaxNesting];  // memo mode: the <o>-orbit left in each depth's scratch list
   static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
   std::vector<CollectMemo> memos_;
