@@ -8,7 +8,8 @@
 //  * take_buffer / give_buffer: a per-thread pool of large vectors (at least 1 MiB of storage; at
 //    most 16 per element type, the smallest dropped first); take_buffer(n) returns the smallest
 //    pooled vector holding n elements, emptied, or an empty vector when none does;
-//  * Pooled<T>: a scratch vector taken from the pool and given back when destroyed.
+//  * Pooled<T>: a scratch vector taken from the pool (reserve(n) takes one with room for n) and
+//    given back when destroyed.
 // Map and Embedding give their large arrays back when destroyed and take them when they grow, so
 // the storage of a map dropped after one subdivision serves the next (memory is kept by the
 // thread until it ends, as a malloc arena keeps its free chunks).
@@ -16,6 +17,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <vector>
+
+#include "model/core/huge_pages.hpp"
 
 namespace gmr {
 
@@ -65,6 +68,20 @@ class Pooled {
   }
   Pooled(const Pooled&) = delete;
   Pooled& operator=(const Pooled&) = delete;
+
+  // Room for n elements: the smallest pooled vector that has it (this one given back), else this
+  // one grown in huge pages (huge_pages.hpp). Contents are kept only when no swap happens.
+  void reserve(size_t n) {
+    if (v_.capacity() >= n) return;
+    std::vector<T> other = take_buffer<T>(n);
+    if (other.capacity() >= n) {
+      std::swap(v_, other);
+      give_buffer(std::move(other));
+      return;
+    }
+    give_buffer(std::move(other));
+    reserve_in_huge_pages(v_, n);
+  }
 
   std::vector<T>& operator*() { return v_; }
   const std::vector<T>& operator*() const { return v_; }

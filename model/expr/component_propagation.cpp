@@ -67,8 +67,8 @@ void EmbeddingPropagation::derive_class_kinds() {
 // of their first orbit dart. Returns their number.
 uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
   const size_t sz = c.size();
+  k.class_of.reserve(sz);
   std::vector<uint32_t>& class_of = *k.class_of;
-  reserve_in_huge_pages(class_of, sz);
   class_of.assign(sz, kNone);
   // O's links at the kind's positions (the orbit's own table: no dart index lookup).
   const uint32_t* nb = c.nb.data();

@@ -50,8 +50,8 @@ const uint32_t* Evaluator::orbit_ids(DimMask mask) {
   for (auto& o : ids_)
     if (o.mask == mask) return o.ids->data();
   ids_.push_back({mask, {}});
+  ids_.back().ids.reserve(g_.capacity());
   std::vector<uint32_t>& v = *ids_.back().ids;
-  reserve_in_huge_pages(v, g_.capacity());
   v.assign(g_.capacity(), kNone);
   uint32_t count = 0;
   visit_all_orbits(g_, mask, [&](Dart) { ++count; }, [&](Dart x) { v[x] = count - 1; });
@@ -64,9 +64,9 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
     if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
   memos_.push_back({call.function, mo, collect.embedding, {}, {}});
   CollectMemo& m = memos_.back();
-  reserve_in_huge_pages(*m.at, g_.capacity());
+  m.at.reserve(g_.capacity());
   m.at->assign(g_.capacity(), kNone);
-  reserve_in_huge_pages(*m.values, g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
+  m.values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
 }
 

@@ -91,10 +91,10 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   EverywhereApplication out;
   Workspace w;
   const Dart cap0 = g.capacity();
-  reserve_in_huge_pages(w.index, cap0);
+  w.index_pool.reserve(cap0);
   w.index.assign(cap0, ComponentInstance::kNone);
-  reserve_in_huge_pages(w.darts, cap0);  // bounds; pages untouched beyond the largest component
-  reserve_in_huge_pages(w.nb, cap0 * t.size());
+  w.darts_pool.reserve(cap0);  // bounds; pages untouched beyond the largest component
+  w.nb_pool.reserve(cap0 * t.size());
   for (Dart d = 0; d < cap0; ++d) {
     if (!g.alive(d) || w.index[d] != ComponentInstance::kNone) continue;  // dead, or used
     component_orbit(g, t, d, w);  // 1
