@@ -103,8 +103,7 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
     if (observer) observer->before_rewrite(g, c);
     if (engine.added_count() > 0) c.base = g.add_darts(engine.added_count() * sz);  // 5
     write_links(g, engine, c);                                                        // 6
-    for (uint32_t v : engine.deleted_nodes()) {                                       // 7
-      (void)v;  // the only L node is the hook: its darts are the orbit's
+    if (!engine.deleted_nodes().empty()) {  // 7: the hook, L's only node, is deleted: its darts are O's
       for (uint32_t b = 0; b < sz; ++b) {
         const Dart x = w.darts[b];
         for (int i = 0; i <= g.dimension(); ++i) g.set_alpha(i, x, x);
