@@ -4,12 +4,15 @@
 // Consistency (every dart of an <o>-orbit holds the same value; every dart holds one) is checked by
 // `check`, which reports each offending orbit.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "model/core/buffer_pool.hpp"
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/map.hpp"
 #include "model/core/orbit.hpp"
 
@@ -26,6 +29,15 @@ class Embedding {
   static constexpr uint32_t kNoValue = UINT32_MAX;
 
   Embedding(std::string name, OrbitType orbit_type) : name_(std::move(name)), orbit_(std::move(orbit_type)) {}
+  // The slot table and the values go back to the thread's buffer pool (buffer_pool.hpp).
+  ~Embedding() {
+    give_buffer(std::move(slot_));
+    give_buffer(std::move(values_));
+  }
+  Embedding(const Embedding&) = default;
+  Embedding(Embedding&&) noexcept = default;
+  Embedding& operator=(const Embedding&) = default;
+  Embedding& operator=(Embedding&&) noexcept = default;
 
   const std::string& name() const { return name_; }
   const OrbitType& orbit_type() const { return orbit_; }
@@ -51,12 +63,16 @@ class Embedding {
     values_.push_back(std::move(v));
     return static_cast<uint32_t>(values_.size() - 1);
   }
-  void reserve_values(size_t n) { values_.reserve(n); }
+  void reserve_values(size_t n) {
+    if (values_.capacity() < n) regrow(values_, std::max(n, 2 * values_.capacity()));
+  }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
   void set_slot(const Map& g, Dart d, uint32_t s) {
     grow(g);
     slot_[d] = s;
   }
+  // Sizes the slot table to g's capacity (new darts without value), for set_slot_unchecked.
+  void fit(const Map& g) { grow(g); }
   // set_slot without sizing: d must be below the size reached by an earlier set_slot/set.
   void set_slot_unchecked(Dart d, uint32_t s) { slot_[d] = s; }
   const T& value(uint32_t s) const { return values_[s]; }
@@ -93,7 +109,18 @@ class Embedding {
 
  private:
   void grow(const Map& g) {
-    if (slot_.size() < g.capacity()) slot_.resize(g.capacity(), kNoValue);
+    if (slot_.size() >= g.capacity()) return;
+    if (slot_.capacity() < g.capacity()) regrow(slot_, std::max<size_t>(g.capacity(), 2 * slot_.size()));
+    slot_.resize(g.capacity(), kNoValue);
+  }
+  // v with room for n elements: a pooled or fresh (huge-page) array, the old one pooled.
+  template <class V>
+  static void regrow(V& v, size_t n) {
+    V grown = take_buffer<typename V::value_type>(n);
+    reserve_in_huge_pages(grown, n);
+    grown.assign(v.begin(), v.end());
+    give_buffer(std::move(v));
+    v = std::move(grown);
   }
   std::string name_;
   OrbitType orbit_;

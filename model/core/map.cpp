@@ -4,7 +4,9 @@
 #include <bit>
 #include <ranges>
 
+#include "model/core/buffer_pool.hpp"
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 
 namespace gmr {
 
@@ -32,6 +34,10 @@ Map::Map(int n, MapKind kind) : n_(n), kind_(kind) {
   link_.resize(static_cast<size_t>(n) + 1);
 }
 
+Map::~Map() {
+  for (auto& l : link_) give_buffer(std::move(l));
+}
+
 DimMask Map::dims_mask() const {
   DimMask m = 0;
   for (int i = lowest_dim(); i <= n_; ++i) m |= DimMask(1) << i;
@@ -39,7 +45,7 @@ DimMask Map::dims_mask() const {
 }
 
 void Map::reserve(size_t k) {
-  for (int i = lowest_dim(); i <= n_; ++i) link_[i].reserve(k);
+  for (int i = lowest_dim(); i <= n_; ++i) reserve_in_huge_pages(link_[i], k);
 }
 
 Dart Map::add_darts(size_t k) {
@@ -51,7 +57,14 @@ Dart Map::add_darts(size_t k) {
   const auto fresh = std::views::iota(first, static_cast<Dart>(capacity_));
   for (int i = lowest_dim(); i <= n_; ++i) {
     auto& l = link_[i];
-    if (l.capacity() < capacity_) l.reserve(std::max(capacity_, 2 * l.size()));
+    if (l.capacity() < capacity_) {  // into a pooled or a fresh (huge-page) array, the old one pooled
+      const size_t want = std::max(capacity_, 2 * l.size());
+      std::vector<Dart> grown = take_buffer<Dart>(want);
+      reserve_in_huge_pages(grown, want);
+      grown.assign(l.begin(), l.end());
+      give_buffer(std::move(l));
+      l = std::move(grown);
+    }
     l.insert(l.end(), fresh.begin(), fresh.end());
   }
   dead_.resize(capacity_);

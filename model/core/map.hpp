@@ -51,6 +51,12 @@ class Map {
   // An n-G-map (dimensions 0..n) or an n-O-map (dimensions 1..n). n in [0, kMaxDim-1]; for O-maps
   // n >= 1.
   explicit Map(int n, MapKind kind = MapKind::GMap);
+  // The link arrays go back to the thread's buffer pool (buffer_pool.hpp) when the map is dropped.
+  ~Map();
+  Map(const Map&) = default;
+  Map(Map&&) noexcept = default;
+  Map& operator=(const Map&) = default;
+  Map& operator=(Map&&) noexcept = default;
 
   int dimension() const { return n_; }
   MapKind kind() const { return kind_; }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
 
 namespace gmr::expr {
@@ -40,15 +41,32 @@ Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::ve
 void Evaluator::memoise_collects(bool on) {
   memo_on_ = on;
   memos_.clear();
+  ids_.clear();
+  for (auto& w : last_walk_) w.valid = false;
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
+}
+
+const uint32_t* Evaluator::orbit_ids(DimMask mask) {
+  for (auto& o : ids_)
+    if (o.mask == mask) return o.ids->data();
+  ids_.push_back({mask, {}});
+  ids_.back().ids.reserve(g_.capacity());
+  std::vector<uint32_t>& v = *ids_.back().ids;
+  v.assign(g_.capacity(), kNone);
+  uint32_t count = 0;
+  visit_all_orbits(g_, mask, [&](Dart) { ++count; }, [&](Dart x) { v[x] = count - 1; });
+  return v.data();
 }
 
 Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collect) {
   const DimMask mo = collect.orbit.mask();
   for (auto& m : memos_)
     if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
-  memos_.push_back({call.function, mo, collect.embedding, std::vector<uint32_t>(g_.capacity(), kNone), {}});
-  memos_.back().values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
+  memos_.push_back({call.function, mo, collect.embedding, {}, {}});
+  CollectMemo& m = memos_.back();
+  m.at.reserve(g_.capacity());
+  m.at->assign(g_.capacity(), kNone);
+  m.values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
 }
 
@@ -89,8 +107,9 @@ Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
 Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
   const EmbeddingField* f = fields_[static_cast<size_t>(embedding)];
   const EmbeddingSignature& s = sigs_[static_cast<size_t>(embedding)];
-  if (!f || !f->values.has(d)) fail(e, "no '" + s.name + "' value on this dart", d);
-  return from_storage(f->values.get(d), s.type);
+  const uint32_t slot = f ? f->values.slot(d) : Embedding<Vec3>::kNoValue;
+  if (slot == Embedding<Vec3>::kNoValue) fail(e, "no '" + s.name + "' value on this dart", d);
+  return from_storage(f->values.value(slot), s.type);
 }
 
 void Evaluator::members(const Expr& e, std::vector<Val>& out) {
@@ -122,11 +141,27 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   std::vector<Dart>& in_orbit = scratch_[3 * depth];
   std::vector<Dart>& in_classes = scratch_[3 * depth + 1];
   std::vector<Dart>& stack = scratch_[3 * depth + 2];
-  in_orbit.clear();
   in_classes.clear();
-  ScopedMarker mo_mark(g_), mc_mark(g_);
+  LastWalk& last = last_walk_[depth];
+  if (memo_on_ && last.valid && last.mask == mo && last.dart == d && in_orbit.size() <= kSmallOrbit) {
+    // The same <o>-orbit from the same dart as the previous walk at this depth (Catmull-Clark's
+    // vertex point walks one vertex three times): its darts, in order, are still in in_orbit.
+    memo_members(e, mc, in_orbit, out);
+    return;
+  }
+  in_orbit.clear();
+  last.valid = false;
+  ScopedMarker mo_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
+  if (memo_on_ && n <= kSmallOrbit) {
+    for (Dart x : in_orbit) mo_mark.unmark(x);
+    mo_mark.set_clean();
+    last = {mo, d, true};
+    memo_members(e, mc, in_orbit, out);
+    return;
+  }
+  ScopedMarker mc_mark(g_);
   if (e.op == Expr::Op::Collect && collect_by_slots(e, mc, mc_mark, out)) {
     for (Dart x : in_orbit) mo_mark.unmark(x);
     mo_mark.set_clean();
@@ -150,6 +185,26 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   for (Dart x : in_classes) mc_mark.unmark(x);
   mo_mark.set_clean();
   mc_mark.set_clean();
+}
+
+// Memo mode, the <o>-orbit in in_orbit: one member per <c>-orbit met, at its first dart, the
+// <c>-orbits told apart by their numbers (orbit_ids) instead of marking each one met.
+void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
+  const uint32_t* ids = orbit_ids(mc);
+  uint32_t met[kSmallOrbit];
+  size_t count = 0;
+  for (const Dart x : in_orbit) {
+    const uint32_t id = ids[x];
+    if (std::find(met, met + count, id) != met + count) continue;
+    met[count++] = id;
+    if (e.op == Expr::Op::Collect) {
+      out.push_back(field_value(e.embedding, x, e));
+    } else {
+      vars_.push_back(x);
+      out.push_back(eval(*e.args[0]));
+      vars_.pop_back();
+    }
+  }
 }
 
 // The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one
@@ -238,7 +293,7 @@ Val Evaluator::eval(const Expr& e) {
         CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
         if (cm) {
           const Dart d = dart_of(arg.ref, arg);
-          if (cm->at[d] != kNone) return cm->values[cm->at[d]];
+          if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
         }
         // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
         std::vector<Val>& m = vals_[vars_.size()];
@@ -252,9 +307,9 @@ Val Evaluator::eval(const Expr& e) {
           else if (e.function == Function::Middle && n > 0) r = scale(acc, 1.0 / static_cast<double>(n));
           if (e.function != Function::Middle || n > 0) {
             // members() left the darts of the <o>-orbit in this depth's first scratch list.
-            const auto idx = static_cast<uint32_t>(cm->values.size());
-            cm->values.push_back(r);
-            for (Dart x : scratch_[3 * vars_.size()]) cm->at[x] = idx;
+            const auto idx = static_cast<uint32_t>(cm->values->size());
+            cm->values->push_back(r);
+            for (Dart x : scratch_[3 * vars_.size()]) (*cm->at)[x] = idx;
           }
         }
       } else {

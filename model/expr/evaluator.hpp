@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "model/core/buffer_pool.hpp"
 #include "model/core/map.hpp"
 #include "model/expr/ast.hpp"
 #include "model/expr/embedded_map.hpp"
@@ -42,7 +43,9 @@ class Evaluator {
   // the dart it is reached from (up to the order of the floating-point sum). Worth it when the
   // expressions of one application visit most of the map: a table of capacity entries per
   // (function, <o>, pi) is filled lazily (Catmull-Clark reads every face's barycentre from
-  // 2k + 1 places). The map must not change while it is on.
+  // 2k + 1 places). Comprehensions and collects then tell the <c>-orbits met apart by a numbering
+  // of all the <c>-orbits of the map (one sweep per <c>) instead of marking each. The map must not
+  // change while it is on.
   void memoise_collects(bool on);
 
   // Storage conversion of a value of type t, and back.
@@ -71,11 +74,26 @@ class Evaluator {
     Function function;
     DimMask orbit;
     int embedding;
-    std::vector<uint32_t> at;  // per dart: index in values, or kNone
-    std::vector<Val> values;
+    Pooled<uint32_t> at;  // per dart: index in values, or kNone
+    Pooled<Val> values;
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);
+  // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
+  struct OrbitIds {
+    DimMask mask;
+    Pooled<uint32_t> ids;
+  };
+  const uint32_t* orbit_ids(DimMask mask);
+  std::vector<OrbitIds> ids_;
+  void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
+  struct LastWalk {
+    DimMask mask = 0;
+    Dart dart = kNoDart;
+    bool valid = false;
+  };
+  LastWalk last_walk_[kMaxNesting];  // memo mode: the <o>-orbit left in each depth's scratch list
+  static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
   std::vector<CollectMemo> memos_;
 };

@@ -26,6 +26,10 @@ void unite(std::vector<uint32_t>& p, uint32_t a, uint32_t b) {
   else p[a] = b;
 }
 
+}  // namespace
+
+namespace detail {
+
 bool same_value(const Vec3& a, const Vec3& b) {
   for (size_t k = 0; k < 3; ++k) {
     const double scale = std::max({1.0, std::fabs(a[k]), std::fabs(b[k])});
@@ -39,7 +43,10 @@ std::string text(const Vec3& v, int arity) {
   return "(" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
 }
 
-}  // namespace
+}  // namespace detail
+
+using detail::same_value;
+using detail::text;
 
 EmbeddingPropagation::EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m) : cs_(cs), m_(m) {
   for (const auto& sig : cs.embeddings) {

@@ -14,17 +14,38 @@
 // orbit of added darts without value (E-no-value). Embeddings of the map the scheme does not declare
 // are propagated by steps 2–3 only. A declared embedding the map lacks is left out (the map is not
 // embedded for it; expressions reading it from another embedding's expression fail at evaluation).
+//
+// Whole components (model/scheme/component_rewrite.hpp: L is the hook alone, labelled with every
+// dimension): every link of the rewritten component comes from the instantiated R, so the classes
+// of step 1 are the <o_pi>-orbits of the result, and they have a form known from the scheme alone:
+// a class is V × B, with V a set of R nodes joined by explicit arcs of dimensions in <o_pi> and B
+// an orbit of O under the label positions p of V's nodes with o^v[p] in <o_pi>, i.e. the darts of
+// an orbit of the map before under the dimensions o[p] of those positions (O's links follow o[p]).
+// So the classes are derived once per scheme and embedding (V and those dimensions), each class's
+// expression is evaluated at its first node with an expression and its first orbit dart (the
+// order of step 1), its darts receive one slot in one sweep (step 2), and a class without
+// expression takes the slot of its preserved darts (step 3). No overlap can occur (each orbit of
+// the result is one class); E-merge and E-no-value are reported as above. Tested equal to the
+// general path (values per dart, issues) in model/expr/tests/component_propagation_test.cpp.
 #pragma once
 #include <string>
 #include <vector>
 
+#include "model/core/buffer_pool.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/embedded_map.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/scheme/apply_everywhere.hpp"
+#include "model/scheme/component_rewrite.hpp"
 #include "model/scheme/scheme_engine.hpp"
 
 namespace gmr::expr {
+
+namespace detail {
+// Values compared with a relative tolerance of 1e-9 (E-overlap, E-merge), and their text.
+bool same_value(const Vec3& a, const Vec3& b);
+std::string text(const Vec3& v, int arity);
+}  // namespace detail
 
 struct PropagationIssue {
   std::string code;  // "E-overlap", "E-merge", "E-no-value"
@@ -33,7 +54,7 @@ struct PropagationIssue {
   std::string message;
 };
 
-class EmbeddingPropagation : public scheme::ApplicationObserver {
+class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::ComponentObserver {
  public:
   // Binds the declarations to m's fields (declarations the map lacks are left out).
   // Error(Schema) when a field of the same name has another orbit type or arity.
@@ -41,6 +62,9 @@ class EmbeddingPropagation : public scheme::ApplicationObserver {
 
   void before_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
   void after_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  // The same for one whole component (component_propagation.cpp).
+  void before_rewrite(const Map& g, const scheme::ComponentInstance& c) override;
+  void after_rewrite(const Map& g, const scheme::ComponentInstance& c) override;
 
   const std::vector<PropagationIssue>& issues() const { return issues_; }
   size_t issue_count() const { return issue_count_; }  // issues() keeps the first 100
@@ -52,6 +76,22 @@ class EmbeddingPropagation : public scheme::ApplicationObserver {
     Vec3 value;
   };
   void report(std::string code, const EmbeddingField& f, Dart d, std::string message);
+  // A kind of class of a whole component (see the header): the R nodes V (increasing), the
+  // dimensions of the map before whose orbits are the B's, and the expression evaluated for it.
+  struct ClassKind {
+    std::vector<uint32_t> nodes;
+    DimMask dims = 0;                // as a set of dimensions of the map before
+    std::vector<size_t> positions;   // the same as positions of O (o[p] in dims)
+    int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
+    uint32_t expression_node = 0;    // its R node
+    Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
+    std::vector<Vec3> values;        // per class: the value (computed classes)
+  };
+  void derive_class_kinds();
+  uint32_t label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k);
+  void inherit_values(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f, ClassKind& k);
+  std::vector<std::vector<ClassKind>> kinds_;  // per field, in order of expression node
+  bool kinds_derived_ = false;
 
   const CompiledScheme& cs_;
   EmbeddedMap& m_;

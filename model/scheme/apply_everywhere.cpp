@@ -3,6 +3,7 @@
 #include <string>
 
 #include "model/core/error.hpp"
+#include "model/scheme/component_rewrite.hpp"
 
 namespace gmr::scheme {
 
@@ -20,6 +21,14 @@ size_t EverywhereApplication::darts_deleted() const {
 
 EverywhereApplication apply_everywhere(const SchemeEngine& engine, Map& g, bool keep_tables,
                                        ApplicationObserver* observer) {
+  auto* by_components = dynamic_cast<ComponentObserver*>(observer);
+  if ((observer == nullptr || by_components != nullptr) && rewrites_whole_components(engine, g))
+    return apply_everywhere_by_components(engine, g, keep_tables, by_components);
+  return apply_everywhere_at_each_dart(engine, g, keep_tables, observer);
+}
+
+EverywhereApplication apply_everywhere_at_each_dart(const SchemeEngine& engine, Map& g, bool keep_tables,
+                                                    ApplicationObserver* observer) {
   const RuleScheme& s = engine.scheme();
   if (s.hooks.size() != 1)
     throw Error(ErrorCode::Usage,

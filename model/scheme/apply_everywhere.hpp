@@ -39,7 +39,13 @@ struct EverywhereApplication {
 // Applies `engine` at every dart of g (see above). With keep_tables == false, the orbit, match and
 // comatch tables of each application are dropped (they grow with the number of applications).
 // `observer` (optional) sees every successful application (scheme_engine.hpp).
+// When the scheme rewrites whole components (component_rewrite.hpp) and the observer is absent or
+// is also a ComponentObserver, the same result is computed by apply_everywhere_by_components.
 EverywhereApplication apply_everywhere(const SchemeEngine& engine, Map& g, bool keep_tables = true,
                                        ApplicationObserver* observer = nullptr);
+// The contract above, always one SchemeEngine::apply per visited dart (the reference the
+// whole-component path is tested against).
+EverywhereApplication apply_everywhere_at_each_dart(const SchemeEngine& engine, Map& g, bool keep_tables = true,
+                                                    ApplicationObserver* observer = nullptr);
 
 }  // namespace gmr::scheme

@@ -10,7 +10,7 @@
 namespace gmr::scheme {
 
 namespace {
-constexpr uint32_t kAdded = UINT32_MAX;
+constexpr uint32_t kAdded = SchemeEngine::kAdded;
 }
 
 const char* to_string(NotApplicableReason r) {

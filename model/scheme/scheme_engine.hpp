@@ -102,6 +102,14 @@ class SchemeEngine {
   SchemeApplication apply(Map& g, const std::vector<Dart>& hook_darts,
                           ApplicationObserver* observer = nullptr) const;
 
+  // The tables of phases 5-7, for the whole-component path (component_rewrite.hpp).
+  static constexpr uint32_t kAdded = UINT32_MAX;
+  uint32_t right_source(uint32_t v) const { return r_source_[v]; }  // L node of R node v, or kAdded
+  uint32_t added_rank(uint32_t v) const { return added_rank_[v]; }  // rank among added R nodes, or kAdded
+  size_t added_count() const { return num_added_; }
+  const std::vector<uint32_t>& deleted_nodes() const { return deleted_; }
+  const std::vector<uint32_t>& hook_nodes() const { return hooks_; }
+
  private:
   // The phases of apply, numbered as in the header comment. check_call throws on misuse; a check
   // that fails marks `res` as not applicable and returns false.

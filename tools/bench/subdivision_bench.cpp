@@ -4,6 +4,10 @@
 // elephant, 33,348 darts -> 2,134,272 after 3 iterations; GMR_BENCH_MESH names another mesh of
 // CGAL's data.tar.gz, e.g. bunny00). The mesh is unpacked from Debian's libcgal-demo archive into
 // the working directory. Each iteration starts from a copy of the loaded mesh (copy not timed).
+// The schemes rewrite whole components, so apply_everywhere takes its whole-component path
+// (model/scheme/component_rewrite.hpp; tested equal to one engine application per dart). Both
+// libraries reuse memory across iterations the way they normally do: CGAL through malloc's free
+// chunks, gmr through the thread's buffer pool (model/core/buffer_pool.hpp); nothing is tuned.
 // Counters: darts_per_second (darts of the result per second of subdivision: gmr's darts; for
 // CGAL the same number, the results being isomorphic — model/expr/tests/subdivision_slow_test.cpp)
 // and vertices_per_second (vertices of the result per second). `gmr_topology_only` runs the same

@@ -1,0 +1,95 @@
+// Scratch and large vectors kept by the thread between uses.
+//
+// A whole-map rewrite writes tables as large as the map (the map's own link arrays and embedding
+// slots, orbit indices, classes, memoised values), and fresh memory is paid page by page on first
+// touch (a page fault per 4 KiB; several microseconds each on a virtual machine, where this is most
+// of a subdivision's time: docs/embeddings.md "Measured"). Applying a scheme again and again would
+// pay it at every call. So:
+//  * take_buffer / give_buffer: a per-thread pool of large vectors (at least 1 MiB of storage; at
+//    most 16 per element type, the smallest dropped first); take_buffer(n) returns the smallest
+//    pooled vector holding n elements, emptied, or an empty vector when none does;
+//  * Pooled<T>: a scratch vector taken from the pool (reserve(n) takes one with room for n) and
+//    given back when destroyed.
+// Map and Embedding give their large arrays back when destroyed and take them when they grow, so
+// the storage of a map dropped after one subdivision serves the next (memory is kept by the
+// thread until it ends, as a malloc arena keeps its free chunks).
+#pragma once
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "model/core/huge_pages.hpp"
+
+namespace gmr {
+
+namespace detail {
+template <class T>
+std::vector<std::vector<T>>& buffer_pool() {
+  thread_local std::vector<std::vector<T>> p;
+  return p;
+}
+}  // namespace detail
+
+template <class T>
+std::vector<T> take_buffer(size_t min_capacity = 0) {
+  auto& p = detail::buffer_pool<T>();
+  size_t best = p.size();
+  for (size_t k = 0; k < p.size(); ++k)
+    if (p[k].capacity() >= min_capacity && (best == p.size() || p[k].capacity() < p[best].capacity())) best = k;
+  if (best == p.size()) return {};
+  std::vector<T> v = std::move(p[best]);
+  p.erase(p.begin() + static_cast<std::ptrdiff_t>(best));
+  v.clear();
+  return v;
+}
+
+template <class T>
+void give_buffer(std::vector<T>&& v) {
+  constexpr size_t kMinBytes = size_t(1) << 20;
+  constexpr size_t kMaxBuffers = 16;
+  if (v.capacity() * sizeof(T) < kMinBytes) return;
+  auto& p = detail::buffer_pool<T>();
+  p.push_back(std::move(v));
+  if (p.size() > kMaxBuffers) {
+    auto smallest = std::min_element(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.capacity() < b.capacity(); });
+    p.erase(smallest);
+  }
+}
+
+template <class T>
+class Pooled {
+ public:
+  Pooled() : v_(take_buffer<T>()) {}
+  ~Pooled() { give_buffer(std::move(v_)); }
+  Pooled(Pooled&& o) noexcept : v_(std::move(o.v_)) {}
+  Pooled& operator=(Pooled&& o) noexcept {
+    std::swap(v_, o.v_);
+    return *this;
+  }
+  Pooled(const Pooled&) = delete;
+  Pooled& operator=(const Pooled&) = delete;
+
+  // Room for n elements: the smallest pooled vector that has it (this one given back), else this
+  // one grown in huge pages (huge_pages.hpp). Contents are kept only when no swap happens.
+  void reserve(size_t n) {
+    if (v_.capacity() >= n) return;
+    std::vector<T> other = take_buffer<T>(n);
+    if (other.capacity() >= n) {
+      std::swap(v_, other);
+      give_buffer(std::move(other));
+      return;
+    }
+    give_buffer(std::move(other));
+    reserve_in_huge_pages(v_, n);
+  }
+
+  std::vector<T>& operator*() { return v_; }
+  const std::vector<T>& operator*() const { return v_; }
+  std::vector<T>* operator->() { return &v_; }
+  const std::vector<T>* operator->() const { return &v_; }
+
+ private:
+  std::vector<T> v_;
+};
+
+}  // namespace gmr

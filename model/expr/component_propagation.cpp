@@ -1,0 +1,215 @@
+// EmbeddingPropagation on whole components (propagation.hpp, "Whole components"): classes derived
+// from the scheme once, labelled by one sweep over the orbit before the rewrite, values written by
+// one sweep over the R nodes after it.
+#include <algorithm>
+#include <numeric>
+
+#include "model/core/huge_pages.hpp"
+#include "model/core/orbit.hpp"
+#include "model/expr/propagation.hpp"
+
+namespace gmr::expr {
+
+namespace {
+constexpr uint32_t kNone = UINT32_MAX;
+}
+
+// For each field: the R nodes joined by explicit arcs of dimensions in <o_pi> (one kind per
+// connected set V), the dimensions o[p] of V's label positions p with o^v[p] in <o_pi>, and the
+// first node of V with an expression for the field's declaration.
+void EmbeddingPropagation::derive_class_kinds() {
+  const scheme::RuleScheme& s = *cs_.scheme;
+  const OrbitType& t = s.left.nodes[s.hook_nodes()[0]].label;
+  const size_t nr = s.right.size();
+  kinds_.clear();
+  kinds_.resize(m_.fields.size());
+  for (size_t fi = 0; fi < m_.fields.size(); ++fi) {
+    const DimMask mask = m_.fields[fi].orbit().mask();
+    std::vector<uint32_t> comp(nr);
+    std::iota(comp.begin(), comp.end(), 0u);
+    for (bool changed = true; changed;) {  // smallest node of each connected set (R is small)
+      changed = false;
+      for (const auto& a : s.right.arcs) {
+        if (!(mask >> a.dim & 1u)) continue;
+        const uint32_t m = std::min(comp[a.a], comp[a.b]);
+        if (comp[a.a] != m || comp[a.b] != m) {
+          comp[a.a] = comp[a.b] = m;
+          changed = true;
+        }
+      }
+    }
+    int decl = -1;
+    for (size_t e = 0; e < field_of_decl_.size(); ++e)
+      if (field_of_decl_[e] == static_cast<int>(fi) && cs_.has_expressions(e)) decl = static_cast<int>(e);
+    for (uint32_t root = 0; root < nr; ++root) {
+      if (comp[root] != root) continue;
+      ClassKind k;
+      for (uint32_t v = 0; v < nr; ++v) {
+        if (comp[v] != root) continue;
+        k.nodes.push_back(v);
+        const OrbitType& label = s.right.nodes[v].label;
+        for (size_t p = 0; p < label.size(); ++p)
+          if (label[p] != OrbitType::kHole && (mask >> label[p] & 1u)) k.dims |= DimMask(1) << t[p];
+        if (decl >= 0 && k.declaration < 0 && cs_.right[static_cast<size_t>(decl)][v]) {
+          k.declaration = decl;
+          k.expression_node = v;
+        }
+      }
+      for (size_t p = 0; p < t.size(); ++p)
+        if (k.dims >> t[p] & 1u) k.positions.push_back(p);
+      kinds_[fi].push_back(std::move(k));
+    }
+  }
+  kinds_derived_ = true;
+}
+
+// class_of[b] for every orbit dart: the orbits of the map before under k.dims, numbered in order
+// of their first orbit dart. Returns their number.
+uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
+  const size_t sz = c.size();
+  k.class_of.reserve(sz);
+  std::vector<uint32_t>& class_of = *k.class_of;
+  class_of.assign(sz, kNone);
+  // O's links at the kind's positions (the orbit's own table: no dart index lookup).
+  const uint32_t* nb = c.nb.data();
+  const size_t arity = c.arity;
+  (void)g;
+  uint32_t classes = 0;
+  for (uint32_t b = 0; b < sz; ++b) {
+    if (class_of[b] != kNone) continue;
+    const uint32_t id = classes++;
+    class_of[b] = id;
+    stack_.clear();
+    stack_.push_back(b);
+    while (!stack_.empty()) {
+      const uint32_t x = stack_.back();
+      stack_.pop_back();
+      for (size_t p : k.positions) {
+        const uint32_t y = nb[x * arity + p];
+        if (class_of[y] == kNone) {
+          class_of[y] = id;
+          stack_.push_back(y);
+        }
+      }
+    }
+  }
+  return classes;
+}
+
+void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentInstance& c) {
+  if (!kinds_derived_) derive_class_kinds();
+  const scheme::RuleScheme& s = *cs_.scheme;
+  const size_t sz = c.size();
+  std::vector<const EmbeddingField*> fields;
+  for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
+  Evaluator ev(g, cs_.embeddings, fields);
+  ev.memoise_collects(sz * 8 >= g.capacity());
+  for (auto& kinds : kinds_)
+    for (ClassKind& k : kinds) {
+      const uint32_t classes = label_classes(g, c, k);
+      k.values.clear();
+      if (k.declaration < 0) continue;
+      const auto e = static_cast<size_t>(k.declaration);
+      const Expr& x = *cs_.right[e][k.expression_node];
+      const std::string where = "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name +
+                                ", embedding " + cs_.embeddings[e].name;
+      k.values.reserve(classes);
+      for (uint32_t b = 0; b < sz; ++b) {
+        if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
+        const Dart node_dart = c.darts[b];               // the hook, L's only node
+        k.values.push_back(Evaluator::to_storage(ev.evaluate(x, &node_dart, cs_.embeddings[e].type, where)));
+        ++evaluations_;
+      }
+    }
+}
+
+// Step 3 on one kind without expression: each class takes the slot of its preserved darts. When
+// they hold different slots, the one taken is the general path's: the first met by the traversal
+// of the orbit of the result from the class's first dart in comatch order (its first node, its
+// first orbit dart).
+void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f,
+                                          ClassKind& k) {
+  constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
+  Embedding<Vec3>& E = f.values;
+  const size_t sz = c.size();
+  std::vector<uint32_t> first_b;  // per class, in class order
+  for (uint32_t b = 0; b < sz; ++b)
+    if ((*k.class_of)[b] == first_b.size()) first_b.push_back(b);
+  const size_t classes = first_b.size();
+  std::vector<uint32_t> chosen(classes, kNoValue);
+  std::vector<bool> mixed(classes, false), reported(classes, false);
+  auto preserved = [&](uint32_t v) { return c.engine->added_rank(v) == scheme::SchemeEngine::kAdded; };
+  for (uint32_t v : k.nodes) {
+    if (!preserved(v)) continue;
+    for (uint32_t b = 0; b < sz; ++b) {
+      const uint32_t sl = E.slot(c.darts[b]), id = (*k.class_of)[b];
+      if (sl == kNoValue) continue;
+      if (chosen[id] == kNoValue) chosen[id] = sl;
+      else if (sl != chosen[id]) mixed[id] = true;
+    }
+  }
+  for (uint32_t id = 0; id < classes; ++id) {
+    if (!mixed[id]) continue;
+    ScopedMarker mk(g);
+    orbit_darts_.clear();
+    visit_orbit_marked(g, f.orbit().mask(), c.comatch(k.nodes[0], first_b[id]), mk.id(), stack_,
+                       [&](Dart y) { orbit_darts_.push_back(y); });
+    for (Dart y : orbit_darts_) mk.unmark(y);
+    mk.set_clean();
+    for (Dart y : orbit_darts_) {
+      // Added darts have no value yet: only preserved darts (below the added ones) count.
+      if (y >= c.base && y < c.base + c.engine->added_count() * sz) continue;
+      if (E.slot(y) != kNoValue) {
+        chosen[id] = E.slot(y);
+        break;
+      }
+    }
+  }
+  for (uint32_t v : k.nodes) {
+    if (!preserved(v)) continue;
+    for (uint32_t b = 0; b < sz; ++b) {
+      const uint32_t sl = E.slot(c.darts[b]), id = (*k.class_of)[b];
+      if (!mixed[id] || reported[id] || sl == kNoValue || detail::same_value(E.value(sl), E.value(chosen[id]))) continue;
+      report("E-merge", f, c.darts[b],
+             "the rewrite merges orbits of values " + detail::text(E.value(chosen[id]), f.arity) + " and " +
+                 detail::text(E.value(sl), f.arity) + " and no expression gives the merged orbit a value");
+      reported[id] = true;
+    }
+  }
+  if (E.num_values() > 0)
+    for (uint32_t id = 0; id < classes; ++id)
+      if (chosen[id] == kNoValue)
+        report("E-no-value", f, c.comatch(k.nodes[0], first_b[id]),
+               "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
+  for (uint32_t v : k.nodes)
+    for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.comatch(v, b), chosen[(*k.class_of)[b]]);
+}
+
+void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentInstance& c) {
+  const size_t sz = c.size();
+  for (size_t fi = 0; fi < m_.fields.size(); ++fi) {
+    EmbeddingField& f = m_.fields[fi];
+    Embedding<Vec3>& E = f.values;
+    E.fit(g);
+    // 2. computed values: one slot per class, written node by node.
+    for (ClassKind& k : kinds_[fi]) {
+      if (k.declaration < 0) continue;
+      const auto base = static_cast<uint32_t>(E.num_values());
+      E.reserve_values(E.num_values() + k.values.size());
+      for (const Vec3& x : k.values) E.add_value(x);
+      for (uint32_t v : k.nodes) {
+        if (c.engine->added_rank(v) == scheme::SchemeEngine::kAdded) {
+          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.darts[b], base + (*k.class_of)[b]);
+        } else {
+          const Dart first = c.comatch(v, 0);
+          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(first + b, base + (*k.class_of)[b]);
+        }
+      }
+    }
+    // 3. inherited values.
+    for (ClassKind& k : kinds_[fi])
+      if (k.declaration < 0) inherit_values(g, c, f, k);
+  }
+}
+
+}  // namespace gmr::expr

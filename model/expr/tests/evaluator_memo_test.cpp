@@ -1,0 +1,90 @@
+// The evaluator's memo mode (memoise_collects: memoised collects, <c>-orbits told apart by orbit
+// numbers) gives the values of the plain evaluation (orbits marked one by one), at every dart of
+// random surfaces, for collects, comprehensions and the subdivision masks.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/core/orbit.hpp"
+#include "model/expr/evaluator.hpp"
+#include "model/expr/parser.hpp"
+#include "model/expr/type_check.hpp"
+#include "model/testing/random_maps.hpp"
+
+using namespace gmr;
+using namespace gmr::expr;
+namespace gt = gmr::testing;
+
+namespace {
+
+struct MemoCase {
+  const char* code;
+  ValueType type;
+};
+const MemoCase kMemoExpressions[] = {
+    {"middle(<0,1>_position(n0))", ValueType::Point},
+    {"count(<0,1>_position(n0))", ValueType::Scalar},
+    {"sum(<0,1,2>_position(n0@1)) - count(<0,1,2>_position(n0)) * n0.position", ValueType::Vector},
+    {"count([0 | e in <1,2>/<0,2>(n0)])", ValueType::Scalar},
+    {"count([0 | e in <0,1,2>/<1>(n0)])", ValueType::Scalar},
+    {"middle([e@0.position | e in <1,2>/<0,2>(n0)])", ValueType::Point},
+    {"middle([middle(<0,1>_position(f)) | f in <1,2>/<0,1>(n0)])", ValueType::Point},
+    {"middle([middle([x@0.position | x in <0,1>/<1,2>(f)]) | f in <1,2>/<0,1>(n0)])", ValueType::Point},
+    {"let n = count([0 | e in <1,2>/<0,2>(n0)]) in (middle([middle(<0,1>_position(f)) | f in <1,2>/<0,1>(n0)]) + "
+     "2 * middle([middle(<0>_position(e)) | e in <1,2>/<0,2>(n0)]) + (n - 3) * n0.position) / n",
+     ValueType::Point},
+    {"(n0.position + n0@0.position + middle(<0,1>_position(n0)) + middle(<0,1>_position(n0@2))) / 4",
+     ValueType::Point},
+};
+
+bool memo_close(double a, double b) { return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)}); }
+
+TEST(EvaluatorMemo, MemoModeGivesThePlainValuesEverywhere) {
+  const std::vector<EmbeddingSignature> sigs{{"position", OrbitType{1, 2}, ValueType::Point}};
+  CheckContext ctx;
+  ctx.nodes = {"n0"};
+  ctx.embeddings = sigs;
+  size_t compared = 0;
+  for (uint64_t seed = 0; seed < 30; ++seed) {
+    gt::Rng rng(300 + seed);
+    gt::GluedPolygonsOptions opt;
+    opt.min_sides = seed % 2 == 0 ? 1 : 3;  // 1-gons and 2-gons: faces through one vertex twice
+    opt.max_extra_sews = 16;
+    opt.connected = seed % 3 != 0;
+    const Map g = gt::random_glued_polygons(rng, opt);
+    EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+    for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
+      pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)), static_cast<double>(gt::uniform(rng, 0, 1000)),
+                            static_cast<double>(gt::uniform(rng, 0, 1000))});
+    for (const auto& [code, t] : kMemoExpressions) {
+      auto e = parse_expression(code);
+      check_expression(*e, ctx, t);
+      Evaluator plain(g, sigs, {&pos});
+      Evaluator memo(g, sigs, {&pos});
+      memo.memoise_collects(true);
+      for (Dart d : g.darts()) {
+        Val a, b;
+        bool fa = false, fb = false;
+        try {
+          a = plain.evaluate(*e, &d, t, "test");
+        } catch (const Error&) {
+          fa = true;
+        }
+        try {
+          b = memo.evaluate(*e, &d, t, "test");
+        } catch (const Error&) {
+          fb = true;
+        }
+        ASSERT_EQ(fa, fb) << code << ", seed " << seed << ", dart " << d;
+        if (fa) continue;
+        ASSERT_TRUE(memo_close(a.x, b.x) && memo_close(a.y, b.y) && memo_close(a.z, b.z) && memo_close(a.w, b.w))
+            << code << ", seed " << seed << ", dart " << d << ": " << a.x << " vs " << b.x;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000u);
+}
+
+}  // namespace
