@@ -171,13 +171,7 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   for (size_t k = 0; k < n; ++k) {
     const Dart x = in_orbit[k];
     if (mc_mark.test(x)) continue;
-    if (e.op == Expr::Op::Collect) {
-      out.push_back(field_value(e.embedding, x, e));
-    } else {
-      vars_.push_back(x);
-      out.push_back(eval(*e.args[0]));
-      vars_.pop_back();
-    }
+    out.push_back(member_value(e, x));
     // eval may have used deeper scratch lists, never this depth's.
     visit_orbit_marked(g_, mc, x, mc_mark.id(), stack, [&](Dart y) { in_classes.push_back(y); });
   }
@@ -185,6 +179,16 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   for (Dart x : in_classes) mc_mark.unmark(x);
   mo_mark.set_clean();
   mc_mark.set_clean();
+}
+
+// The value one member contributes: the embedding's value at x for a collect, the body evaluated
+// with x bound for a comprehension.
+Val Evaluator::member_value(const Expr& e, Dart x) {
+  if (e.op == Expr::Op::Collect) return field_value(e.embedding, x, e);
+  vars_.push_back(x);
+  Val v = eval(*e.args[0]);
+  vars_.pop_back();
+  return v;
 }
 
 // Memo mode, the <o>-orbit in in_orbit: one member per <c>-orbit met, at its first dart, the
@@ -197,13 +201,7 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
     const uint32_t id = ids[x];
     if (std::find(met, met + count, id) != met + count) continue;
     met[count++] = id;
-    if (e.op == Expr::Op::Collect) {
-      out.push_back(field_value(e.embedding, x, e));
-    } else {
-      vars_.push_back(x);
-      out.push_back(eval(*e.args[0]));
-      vars_.pop_back();
-    }
+    out.push_back(member_value(e, x));
   }
 }
 

@@ -87,6 +87,7 @@ class Evaluator {
   const uint32_t* orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
+  Val member_value(const Expr& e, Dart x);
   struct LastWalk {
     DimMask mask = 0;
     Dart dart = kNoDart;
