@@ -2,7 +2,7 @@
 # Installs what gmr needs from Debian's packages, if missing (apt-get as root; nothing else is
 # downloaded). Used by tools/demo.sh and tools/test.sh.
 set -euo pipefail
-pkgs=(cmake g++ make ninja-build ccache libz3-dev librapidcheck-dev libgtest-dev libgmock-dev graphviz
+pkgs=(cmake g++ make ninja-build ccache lld libz3-dev librapidcheck-dev libgtest-dev libgmock-dev graphviz
       libgraphviz-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev libbenchmark-dev libcgal-dev libcgal-demo pkg-config)
 missing=()
 for p in "${pkgs[@]}"; do
