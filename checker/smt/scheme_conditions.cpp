@@ -64,10 +64,10 @@ SchemeValidationReport validate_scheme_condition(const SchemeCondition& c,
 }
 
 SchemeValidationReport validate_scheme_condition(const std::string& name,
-                                                 const std::vector<bool>& verdicts,
+                                                 const std::vector<bool>& holds,
                                                  const std::vector<RuleScheme>& schemes,
                                                  unsigned bound) {
-  return classify_scheme_condition(name, verdicts, schemes, verify_scheme_family(schemes, bound));
+  return classify_scheme_condition(name, holds, schemes, verify_scheme_family(schemes, bound));
 }
 
 SchemeFamilyVerdicts verify_scheme_family(const std::vector<RuleScheme>& schemes, unsigned bound) {

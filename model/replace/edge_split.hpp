@@ -11,13 +11,14 @@
 
 namespace gmr::replace {
 
-// Splits the edge of d into k >= 1 edges (k = 1: nothing). Throws Error(InvalidMap) when a dart
-// of the edge is 0-free. Returns the number of darts added.
+// Splits the edge of d into k >= 1 edges (k = 1: nothing): split_edges on that one edge. Throws
+// Error(InvalidMap), before any change, when a dart of the edge is 0-free. Returns the number of
+// darts added.
 size_t split_edge(FlaggedMap& m, Dart d, unsigned k);
-// Splits every listed edge (one dart each) into k, as split_edge on each in turn but with the link,
-// flag and position arrays grown once and no per-edge tables. Throws Error(Usage) when two darts
-// name the same edge. The new darts are numbered edge by edge (another order than split_edge's,
-// the same map up to isomorphism). Returns the number of darts added.
+// Splits every listed edge (one dart each) into k, with the link, flag and position arrays grown
+// once and no per-edge tables: the same map up to isomorphism as splitting the edges one after the
+// other (the new darts are numbered in another order). Throws Error(Usage) when two darts name the
+// same edge. Returns the number of darts added.
 size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k);
 
 }  // namespace gmr::replace
