@@ -39,8 +39,7 @@ int stream_word(const BoundaryGraph& b, uint32_t start, bool with_flags, const W
 // Sizes of the orbits of the first m neighbours (all but the last): for a volume boundary
 // (alpha_0, alpha_1, alpha_2 or abar_2) the number of darts of each face of the boundary surface.
 // Isomorphisms commute with the neighbours, so these sizes are invariants of the darts.
-// Also counts the faces and sums their squared sizes (two more invariants).
-const std::vector<uint32_t>& face_sizes(const BoundaryGraph& b, uint32_t& faces, uint64_t& squares) {
+const std::vector<uint32_t>& face_sizes(const BoundaryGraph& b) {
   thread_local std::vector<uint32_t> size, stack;
   size.assign(b.size(), 0);
   for (uint32_t k = 0; k < b.size(); ++k) {
@@ -56,8 +55,6 @@ const std::vector<uint32_t>& face_sizes(const BoundaryGraph& b, uint32_t& faces,
         }
       }
     for (uint32_t y : stack) size[y] = static_cast<uint32_t>(stack.size());
-    ++faces;
-    squares += uint64_t(stack.size()) * stack.size();
   }
   return size;
 }
@@ -98,6 +95,12 @@ Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags) {
   return w;
 }
 
+void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out) {
+  thread_local std::vector<uint32_t> label, order;
+  if (label.size() < b.size()) label.resize(b.size(), 0);  // all zero between calls
+  stream_word(b, start, true, nullptr, label, order, &out);
+}
+
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start) {
   std::vector<uint32_t> label(b.size(), 0), order;
   stream_word(b, start, false, nullptr, label, order, nullptr);
@@ -126,15 +129,10 @@ StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags) {
   StartSet s;
   s.darts = std::move(flagged.empty() ? all : flagged);
   if (b.arity < 3 || s.darts.empty()) return s;
-  const std::vector<uint32_t>& size = face_sizes(b, s.faces, s.face_squares);
+  const std::vector<uint32_t>& size = face_sizes(b);
   auto key = [&](uint32_t k) { return uint64_t(size[k]) << 32 | size[b.neighbour(k, b.arity - 1)]; };
   s.invariant = UINT64_MAX;
-  for (uint32_t k : s.darts) {
-    s.invariant = std::min(s.invariant, key(k));
-    // A sum of mixes: the multiset of (pair, whether the alpha_0-neighbour is flagged).
-    uint64_t h = (key(k) << 1 | (b.flag[b.neighbour(k, 0)] != 0)) * 0x9e3779b97f4a7c15ull;
-    s.pair_sum += h ^ (h >> 29);
-  }
+  for (uint32_t k : s.darts) s.invariant = std::min(s.invariant, key(k));
   std::erase_if(s.darts, [&](uint32_t k) { return key(k) != s.invariant; });
   return s;
 }
@@ -225,14 +223,6 @@ CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& start_se
   s.automorphisms = static_cast<uint32_t>(alive.size());
   for (uint32_t c : alive) drop(c);
   return s;
-}
-
-uint32_t first_start_with_word(const BoundaryGraph& b, const StartSet& starts, const Word& word, bool with_flags) {
-  thread_local std::vector<uint32_t> label, order;
-  label.assign(b.size(), 0);
-  for (uint32_t k : starts.darts)
-    if (stream_word(b, k, with_flags, &word, label, order, nullptr) == 0) return k;
-  return UINT32_MAX;
 }
 
 size_t WordHash::operator()(const Word& w) const noexcept {

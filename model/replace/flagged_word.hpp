@@ -26,6 +26,8 @@ const char* to_string(Mode m);
 
 // W(B, s) with flags (with_flags) or without them (the unflagged words of Alg. 1).
 Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags = true);
+// W(B, s) with flags, appended to `out` (no allocation once `out` is large enough).
+void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out);
 // The local darts in label order from `start` (order[k] has label k+1).
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start);
 // The same into `order` (reused; no allocation once it is large enough).
@@ -37,16 +39,9 @@ void boundary_labeling(const BoundaryGraph& b, uint32_t start, std::vector<uint3
 // pair (0 for other arities). The pair is an isomorphism invariant, so the set is mapped onto
 // itself by every isomorphism: the minimum over it is a canonical form and every start reaching
 // it is kept (the automorphism count is unchanged). In local order.
-// For arity 3, `faces` and `face_squares` count the faces of the boundary and sum their squared
-// sizes, and `pair_sum` sums a mix of the pairs of all candidate starts before the restriction,
-// each with whether its alpha_0-neighbour is flagged (more invariants, for the store's profiles; 0
-// otherwise).
 struct StartSet {
   std::vector<uint32_t> darts;
   uint64_t invariant = 0;
-  uint32_t faces = 0;
-  uint64_t face_squares = 0;
-  uint64_t pair_sum = 0;
 };
 StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags = true);
 
@@ -59,11 +54,6 @@ struct CellSignature {
 // All starts are streamed in lockstep, dropping a start as soon as its word exceeds the smallest.
 CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_flags = true);
 CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& starts, bool with_flags = true);
-// The first start (in local order) whose word is `word`, or UINT32_MAX: the cell's signature is
-// `word` iff there is one (Theorem 1), and it is then the start minimal_signature picks.
-uint32_t first_start_with_word(const BoundaryGraph& b, const StartSet& starts, const Word& word,
-                               bool with_flags = true);
-
 struct WordHash {
   size_t operator()(const Word& w) const noexcept;
 };

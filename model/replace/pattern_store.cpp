@@ -1,19 +1,12 @@
 #include "model/replace/pattern_store.hpp"
 
+#include <stdexcept>
+
 #include "model/core/error.hpp"
 
 namespace gmr::replace {
 
 namespace {
-
-// Cheap isomorphism invariants of a boundary: cell dimension, darts, start darts and their
-// invariant, faces and their squared sizes, the mixed sum of the start pairs (flagged_word.hpp).
-Word profile(const BoundaryGraph& b, int cell_dim, const StartSet& starts) {
-  return {static_cast<uint32_t>(cell_dim), b.size(), static_cast<uint32_t>(starts.darts.size()),
-          static_cast<uint32_t>(starts.invariant >> 32), static_cast<uint32_t>(starts.invariant), starts.faces,
-          static_cast<uint32_t>(starts.face_squares), static_cast<uint32_t>(starts.pair_sum >> 32),
-          static_cast<uint32_t>(starts.pair_sum)};
-}
 
 Word key_of(CellSignature s, int cell_dim) {
   Word key = std::move(s.word);
@@ -79,14 +72,38 @@ void PatternStore::add(Pattern p) {
   Word key = store_key(p.boundary, p.cell_dim, mode_, &e);
   e.ambiguous = !boundary_automorphisms_extend(p, mode_, e);
   auto& list = table_[key];
-  if (list.empty())
-    profiles_[profile(p.boundary, p.cell_dim, start_darts(p.boundary, mode_))].push_back(
-        {Word(key.begin() + 1, key.end()), &list});
   list.push_back(e);
+  const std::vector<uint32_t> ref = boundary_labeling(p.boundary, e.start);
+  index_start_words(p, list, ref);
   key_of_.push_back(std::move(key));
   entries_.push_back(e);
-  templates_.push_back(compile_replacement(p, boundary_labeling(p.boundary, e.start)));
+  templates_.push_back(compile_replacement(p, ref));
   patterns_.push_back(std::move(p));
+}
+
+// The word of every start dart q of the pattern (the first of automorphic starts only), with the
+// ranks of the pattern's template order `ref` in the label order from q.
+void PatternStore::index_start_words(const Pattern& p, const std::vector<StoreEntry>& list,
+                                     const std::vector<uint32_t>& ref) {
+  const BoundaryGraph& b = p.boundary;
+  std::vector<uint32_t> order, position(b.size());
+  for (uint32_t q : start_darts(b, mode_).darts) {
+    Word w{static_cast<uint32_t>(p.cell_dim)};
+    boundary_word(b, q, w);
+    Lookup& l = lookup_[w];
+    if (!l.entries) {
+      l.entries = &list;
+      lookup_letters_ += w.size();
+    }
+    // Equal words mean isomorphic boundaries, hence equal keys.
+    if (l.entries != &list) throw std::logic_error("a start word of two keys: " + p.name);
+    if (l.ranks.size() == list.size()) continue;  // an automorphic start of this pattern came first
+    boundary_labeling(b, q, order);
+    for (uint32_t k = 0; k < order.size(); ++k) position[order[k]] = k;
+    std::vector<uint32_t> rank(ref.size());
+    for (size_t k = 0; k < ref.size(); ++k) rank[k] = position[ref[k]];
+    l.ranks.push_back(std::move(rank));
+  }
 }
 
 const std::vector<StoreEntry>* PatternStore::find(const Word& key) const {
@@ -96,17 +113,17 @@ const std::vector<StoreEntry>* PatternStore::find(const Word& key) const {
 
 StoreMatch PatternStore::match(const BoundaryGraph& cell, int cell_dim) const {
   const StartSet starts = start_darts(cell, mode_);
-  const auto bucket = profiles_.find(profile(cell, cell_dim, starts));
-  if (bucket == profiles_.end()) return {};
-  if (bucket->second.size() == 1) {
-    const Keyed& only = bucket->second.front();
-    const uint32_t s = first_start_with_word(cell, starts, only.word);
-    if (s == UINT32_MAX) return {};
-    return {only.entries, s};
-  }
-  CellSignature sig = minimal_signature(cell, starts);
-  const uint32_t s = sig.start;
-  return {find(key_of(std::move(sig), cell_dim)), s};
+  if (starts.darts.empty()) return {};
+  thread_local Word key;
+  key.assign(1, static_cast<uint32_t>(cell_dim));
+  boundary_word(cell, starts.darts.front(), key);
+  return match_word(key, starts.darts.front());
+}
+
+StoreMatch PatternStore::match_word(const Word& key, uint32_t start) const {
+  const auto it = lookup_.find(key);
+  if (it == lookup_.end()) return {};
+  return {it->second.entries, start, &it->second.ranks};
 }
 
 std::vector<std::vector<size_t>> PatternStore::duplicates() const {

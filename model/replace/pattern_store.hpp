@@ -2,7 +2,10 @@
 // patterns, built for one mode. A key may hold several patterns (§6.4 allows deliberate
 // duplicates; query-replace then takes the first one, in insertion order, and counts the case).
 // Keys are the minimal flagged word preceded by the cell dimension, so f- and v-patterns never
-// share a key.
+// share a key. Cells are looked up by one word: the store also keeps the word of every start dart
+// of each pattern's start set (start_darts), so a cell needs the word from any one of its own start
+// darts and a hash lookup (a word from s determines the boundary up to an isomorphism sending s to
+// the start, Theorem 1; the start sets are mapped onto each other by isomorphisms).
 #pragma once
 #include <string>
 #include <unordered_map>
@@ -27,11 +30,15 @@ struct StoreEntry {
 // another minimal start) extends to an automorphism of the pattern preserving flags.
 bool boundary_automorphisms_extend(const Pattern& p, Mode mode, const StoreEntry& e);
 
-// A cell looked up in the store: the patterns of its key (nullptr: none) and the cell's start dart
-// (local index) whose word is the key, the first in local order.
+// A cell looked up in the store: the patterns of its key (nullptr: none), the cell's start dart
+// (local index) whose word was looked up, and per hit the isomorphism onto the pattern's boundary:
+// ranks[h][k] is the position, in the cell's label order from `start`, of the dart matched with the
+// k-th dart of hit h's boundary in its label order from StoreEntry::start (the order of its
+// replacement template).
 struct StoreMatch {
   const std::vector<StoreEntry>* hits = nullptr;
   uint32_t start = 0;
+  const std::vector<std::vector<uint32_t>>* ranks = nullptr;
 };
 
 class PatternStore {
@@ -48,13 +55,17 @@ class PatternStore {
 
   // The patterns whose boundary has this key (nullptr if none).
   const std::vector<StoreEntry>* find(const Word& key) const;
-  // Looks a cell's boundary up (§6.3). Keys are grouped by a profile of cheap isomorphism
-  // invariants (cell dimension, number of darts, number and invariant of the start darts): no key
-  // with the cell's profile is a miss without any word; a single one is compared with the cell's
-  // words start by start, stopping at the first equal word (equal words: equal signatures,
-  // Theorem 1), without computing the cell's minimum; otherwise the signature is computed and
-  // hashed. The three give the same answer and the same start dart.
+  // Looks a cell's boundary up (§6.3) by the word from its first start dart (in local order) and
+  // one hash lookup: the same patterns as find(store_key(cell)) (a word from a start dart equals a
+  // stored word iff the minimal signatures are equal, Theorem 1).
   StoreMatch match(const BoundaryGraph& cell, int cell_dim) const;
+  // The same for a cell whose word from its start dart `start` (a dart of its start set) is
+  // `key`, preceded by the cell dimension.
+  StoreMatch match_word(const Word& key, uint32_t start) const;
+  // Number of stored lookup words (one per pattern start dart, automorphic starts counted once)
+  // and their letters.
+  size_t lookup_words() const { return lookup_.size(); }
+  size_t lookup_letters() const { return lookup_letters_; }
   // Groups of patterns (indices) sharing a key: the duplicates of §6.4.
   std::vector<std::vector<size_t>> duplicates() const;
   size_t keys() const { return table_.size(); }
@@ -66,13 +77,15 @@ class PatternStore {
   std::vector<ReplacementTemplate> templates_;
   std::vector<Word> key_of_;
   std::unordered_map<Word, std::vector<StoreEntry>, WordHash> table_;
-  // Profile -> the distinct keys with that profile: each key's word (without its dimension
-  // prefix) and its patterns in table_ (nodes of an unordered_map do not move).
-  struct Keyed {
-    Word word;
-    const std::vector<StoreEntry>* entries;
+  // Word from a start dart (with the dimension prefix) -> the patterns of its key in table_ (nodes
+  // of an unordered_map do not move) and, per pattern, the ranks of StoreMatch.
+  struct Lookup {
+    const std::vector<StoreEntry>* entries = nullptr;
+    std::vector<std::vector<uint32_t>> ranks;
   };
-  std::unordered_map<Word, std::vector<Keyed>, WordHash> profiles_;
+  std::unordered_map<Word, Lookup, WordHash> lookup_;
+  void index_start_words(const Pattern& p, const std::vector<StoreEntry>& list, const std::vector<uint32_t>& ref);
+  size_t lookup_letters_ = 0;
 };
 
 // The store key of a boundary graph signed in `mode`, with the entry's start and automorphisms.

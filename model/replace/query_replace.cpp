@@ -19,7 +19,8 @@ size_t QueryReplaceReport::replaced() const {
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each,
                                  const std::function<void(size_t, size_t)>& progress,
-                                 const DuplicateSelector& select, const std::vector<Dart>* only) {
+                                 const DuplicateSelector& select, const std::vector<Dart>* only,
+                                 Precondition precondition) {
   Map& g = target.map;
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
@@ -28,8 +29,10 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     throw Error(ErrorCode::InvalidMap, std::to_string(cell_dim) + "-cells are replaced in " + std::to_string(cell_dim) +
                                            "- or " + std::to_string(cell_dim + 1) + "-G-maps, not in a " +
                                            std::to_string(n) + "-G-map");
-  const ValidityReport v = check_validity(g, 1);
-  if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + v.violations.front().describe());
+  if (precondition == Precondition::CheckValidity) {
+    const ValidityReport v = check_validity(g, 1);
+    if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + v.violations.front().describe());
+  }
   target.resize_flags();
   QueryReplaceReport r;
   r.mode = store.mode();
@@ -38,15 +41,18 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   std::vector<uint8_t> positive;
   if (store.mode() == Mode::Oriented) positive = orientation_classes(g);
   // A face of a 3-G-map is a <0,1,3>-orbit; a volume a <0,1,2>-orbit; faces of 2-G-maps <0,1>.
-  const OrbitType cells = cell_type(g, cell_dim);
-  const std::vector<Dart> reps = only ? *only : orbit_representatives(g, cells);
+  // The cells are met by one sweep over the darts (each cell at its smallest dart, in increasing
+  // order, as orbit_representatives lists them), their darts marked when examined; a list of cells
+  // (`only`), or a progress report that needs the number of cells, are listed first.
+  std::vector<Dart> reps;
+  if (only) reps = *only;
+  else if (progress) reps = orbit_representatives(g, cell_type(g, cell_dim));
   for (Dart d : reps)
     if (!g.alive(d)) throw Error(ErrorCode::Usage, "no such dart", "dart " + std::to_string(d));
-  r.cells = reps.size();
   // 1. Query every cell (§6.3). A replacement relinks only its own cell's darts (and adds new
   // ones), so the other cells' boundaries are the same before and after it: every cell is looked
-  // up in the input map, and a match is kept as its pattern and its boundary darts in label order
-  // (the isomorphism f, replacement_template.hpp).
+  // up in the input map, and a match is kept as its pattern and its boundary darts in the order of
+  // the pattern's template (the isomorphism f, replacement_template.hpp).
   struct Match {
     uint32_t pattern;
     size_t targets;  // offset of the cell's boundary darts in `targets`
@@ -57,30 +63,28 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   size_t added = 0;
   BoundaryGraph c;
   std::vector<uint32_t> order;
-  // `only` may name a cell twice: its darts are marked when it is examined.
-  ScopedMarker listed(g);
-  std::vector<Dart> marked;
-  size_t done = 0;
-  for (Dart rep : reps) {
-    if (progress && done % 4096 == 0) progress(done, reps.size());
-    ++done;
-    if (only && listed.test(rep))
-      throw Error(ErrorCode::Usage, "a cell is listed twice", "dart " + std::to_string(rep));
+  Word key;
+  ScopedMarker seen(g);
+  auto examine = [&](Dart rep) {
+    if (progress && r.cells % 4096 == 0) progress(r.cells, reps.size());
+    ++r.cells;
     cell_boundary(g, cell_dim, rep, target.flag, positive, c);
-    if (only)
-      for (Dart x : c.dart) {
-        listed.mark(x);
-        marked.push_back(x);
-        if (n > cell_dim && !g.is_free(cell_dim + 1, x)) {
-          listed.mark(g.alpha(cell_dim + 1, x));
-          marked.push_back(g.alpha(cell_dim + 1, x));
-        }
-      }
-    const StoreMatch match = store.match(c, cell_dim);
+    for (Dart x : c.dart) {
+      seen.mark(x);
+      if (n > cell_dim) seen.mark(g.alpha(cell_dim + 1, x));
+    }
+    // The word from the cell's first start dart, looked up (pattern_store.hpp).
+    const StartSet starts = start_darts(c, store.mode());
+    StoreMatch match;
+    if (!starts.darts.empty()) {
+      key.assign(1, static_cast<uint32_t>(cell_dim));
+      boundary_word(c, starts.darts.front(), key);
+      match = store.match_word(key, starts.darts.front());
+    }
     const std::vector<StoreEntry>* hits = match.hits;
     if (!hits) {
       r.unmatched.push_back(rep);
-      continue;
+      return;
     }
     size_t choice = 0;
     if (hits->size() > 1) {
@@ -95,11 +99,19 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     boundary_labeling(c, match.start, order);
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
     matches.push_back({pattern, targets.size(), shared});
-    for (uint32_t k : order) targets.push_back(c.dart[k]);
+    for (uint32_t k : (*match.ranks)[choice]) targets.push_back(c.dart[order[k]]);
     added += size_t(store.replacement(pattern).interior) * (shared ? 2 : 1);
+  };
+  if (only || progress) {
+    for (Dart rep : reps) {
+      if (seen.test(rep)) throw Error(ErrorCode::Usage, "a cell is listed twice", "dart " + std::to_string(rep));
+      examine(rep);
+    }
+  } else {
+    g.for_each_dart([&](Dart d) {
+      if (!seen.test(d)) examine(d);
+    });
   }
-  for (Dart x : marked) listed.unmark(x);
-  listed.set_clean();
   // 2. Room for every copy at once: the link, flag and position arrays grow once.
   Dart next = g.add_darts(added);
   target.resize_flags();
@@ -110,7 +122,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     ++r.matched[m.pattern];
   }
   r.darts_added = added;
-  if (progress) progress(reps.size(), reps.size());
+  if (progress) progress(r.cells, reps.size());
   return r;
 }
 

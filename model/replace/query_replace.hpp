@@ -43,12 +43,17 @@ struct QueryReplaceReport {
 // candidates; without it, the first candidate is used. An index out of range is Error(Usage).
 // only (optional): the cells to examine, one dart each (default: every cell of the map); a cell
 // named twice is Error(Usage), before anything is replaced.
+// precondition: CheckValidity (default) validates the target first; AssumeValid skips it, for a
+// caller that has validated the map itself (the map is then read as a valid G-map; an invalid one
+// gives undefined results).
+enum class Precondition { CheckValidity, AssumeValid };
 using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each = {},
                                  const std::function<void(size_t, size_t)>& progress = {},
                                  const DuplicateSelector& select = {},
-                                 const std::vector<Dart>* only = nullptr);
+                                 const std::vector<Dart>* only = nullptr,
+                                 Precondition precondition = Precondition::CheckValidity);
 
 // An upper bound of the darts query_replace(target, store, cell_dim) adds: per cell, the largest
 // interior of the store's patterns of that dimension, twice for a face of a 3-G-map with two
