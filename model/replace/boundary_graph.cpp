@@ -68,33 +68,40 @@ BoundaryGraph cell_boundary(const Map& g, int i, Dart d, const std::vector<uint3
 
 void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
                    const std::vector<uint8_t>& positive, BoundaryGraph& b) {
+  std::vector<uint32_t>& local = local_index(g.capacity());
+  cell_boundary(g, i, d, flag, positive, local, b);
+  for (Dart x : b.dart) local[x] = UINT32_MAX;
+}
+
+void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
+                   const std::vector<uint8_t>& positive, std::vector<uint32_t>& local, BoundaryGraph& b) {
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
   // One breadth-first traversal of the <0..i-1>-orbit (neighbours by increasing dimension, the
-  // order of orbit()) numbers the darts and records their neighbours.
+  // order of orbit()) numbers the darts and records their neighbours, flags and classes.
   b.arity = i;
   b.dart.clear();
   b.nbr.clear();
-  std::vector<uint32_t>& local = local_index(g.capacity());
+  b.flag.clear();
+  b.positive.clear();
+  if (g.is_omap() || i < 1 || i > g.dimension() + 1)
+    throw Error(ErrorCode::Usage, "the <0..i-1>-orbit of a G-map, 1 <= i <= n + 1", "i = " + std::to_string(i));
+  const Dart* link[kMaxDim];
+  for (int j = 0; j < i; ++j) link[j] = g.links(j).data();
+  uint32_t* l = local.data();
   b.dart.push_back(d);
-  local[d] = 0;
+  l[d] = 0;
   for (uint32_t k = 0; k < b.dart.size(); ++k) {
     const Dart x = b.dart[k];
     for (int j = 0; j < i; ++j) {
-      const Dart y = g.alpha(j, x);
-      if (local[y] == UINT32_MAX) {
-        local[y] = static_cast<uint32_t>(b.dart.size());
+      const Dart y = link[j][x];
+      if (l[y] == UINT32_MAX) {
+        l[y] = static_cast<uint32_t>(b.dart.size());
         b.dart.push_back(y);
       }
-      b.nbr.push_back(local[y]);
+      b.nbr.push_back(l[y]);
     }
-  }
-  b.flag.resize(b.size());
-  b.positive.resize(b.size());
-  for (uint32_t k = 0; k < b.size(); ++k) {
-    const Dart x = b.dart[k];
-    local[x] = UINT32_MAX;
-    b.flag[k] = x < flag.size() ? flag[x] : 0;
-    b.positive[k] = positive.empty() ? 1 : positive[x];
+    b.flag.push_back(x < flag.size() ? flag[x] : 0);
+    b.positive.push_back(positive.empty() ? 1 : positive[x]);
   }
 }
 

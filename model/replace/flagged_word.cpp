@@ -101,6 +101,42 @@ void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out) {
   stream_word(b, start, true, nullptr, label, order, &out);
 }
 
+void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out, std::vector<uint32_t>& order) {
+  // The loop of stream_word with the letters written in place: per dart in label order, its flag
+  // and the labels of its neighbours (a neighbour labelled when new).
+  thread_local std::vector<uint32_t> label;
+  const uint32_t n = b.size();
+  if (label.size() < n) label.resize(n, 0);  // all zero between calls
+  const int m = b.arity;
+  const size_t base = out.size();
+  out.resize(base + size_t(n) * (m + 1));
+  order.resize(n);
+  uint32_t* w = out.data() + base;
+  uint32_t* o = order.data();
+  uint32_t* l = label.data();
+  const uint32_t* nbr = b.nbr.data();
+  const uint32_t* flag = b.flag.data();
+  uint32_t length = 1;
+  o[0] = start;
+  l[start] = 1;
+  for (uint32_t k = 0; k < length; ++k) {
+    const uint32_t x = o[k];
+    *w++ = flag[x];
+    const uint32_t* nx = nbr + size_t(x) * m;
+    for (int j = 0; j < m; ++j) {
+      const uint32_t y = nx[j];
+      if (!l[y]) {
+        o[length] = y;
+        l[y] = ++length;
+      }
+      *w++ = l[y];
+    }
+  }
+  for (uint32_t k = 0; k < length; ++k) l[o[k]] = 0;
+  out.resize(base + size_t(length) * (m + 1));  // a disconnected graph: the start's component
+  order.resize(length);
+}
+
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start) {
   std::vector<uint32_t> label(b.size(), 0), order;
   stream_word(b, start, false, nullptr, label, order, nullptr);
@@ -135,6 +171,33 @@ StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags) {
   for (uint32_t k : s.darts) s.invariant = std::min(s.invariant, key(k));
   std::erase_if(s.darts, [&](uint32_t k) { return key(k) != s.invariant; });
   return s;
+}
+
+uint32_t first_start_dart(const BoundaryGraph& b, Mode mode) {
+  // start_darts without the lists: the candidates are the flagged darts (of D+) if there are
+  // some, else all darts (of D+); for arity 3 the first candidate with the smallest pair.
+  const uint32_t n = b.size();
+  auto candidate = [&](uint32_t k) { return mode == Mode::Unoriented || b.positive[k]; };
+  bool flagged = false;
+  for (uint32_t k = 0; k < n && !flagged; ++k) flagged = candidate(k) && b.flag[k] != 0;
+  auto in_set = [&](uint32_t k) { return candidate(k) && (!flagged || b.flag[k] != 0); };
+  if (b.arity < 3) {
+    for (uint32_t k = 0; k < n; ++k)
+      if (in_set(k)) return k;
+    return UINT32_MAX;
+  }
+  const std::vector<uint32_t>& size = face_sizes(b);
+  uint64_t least = UINT64_MAX;
+  uint32_t first = UINT32_MAX;
+  for (uint32_t k = 0; k < n; ++k) {
+    if (!in_set(k)) continue;
+    const uint64_t key = uint64_t(size[k]) << 32 | size[b.neighbour(k, b.arity - 1)];
+    if (key < least) {
+      least = key;
+      first = k;
+    }
+  }
+  return first;
 }
 
 constexpr size_t kLockstepLabels = size_t(1) << 22;  // 16 MB of per-start labels at most

@@ -28,6 +28,9 @@ const char* to_string(Mode m);
 Word boundary_word(const BoundaryGraph& b, uint32_t start, bool with_flags = true);
 // W(B, s) with flags, appended to `out` (no allocation once `out` is large enough).
 void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out);
+// The same, and the local darts in label order from `start` into `order` (boundary_labeling) in
+// the same traversal.
+void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out, std::vector<uint32_t>& order);
 // The local darts in label order from `start` (order[k] has label k+1).
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start);
 // The same into `order` (reused; no allocation once it is large enough).
@@ -44,6 +47,10 @@ struct StartSet {
   uint64_t invariant = 0;
 };
 StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags = true);
+
+// The first dart of start_darts(b, mode).darts (UINT32_MAX when the set is empty), without
+// building the set.
+uint32_t first_start_dart(const BoundaryGraph& b, Mode mode);
 
 struct CellSignature {
   Word word;                   // the minimal word (empty for an empty graph)

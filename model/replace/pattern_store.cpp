@@ -112,12 +112,12 @@ const std::vector<StoreEntry>* PatternStore::find(const Word& key) const {
 }
 
 StoreMatch PatternStore::match(const BoundaryGraph& cell, int cell_dim) const {
-  const StartSet starts = start_darts(cell, mode_);
-  if (starts.darts.empty()) return {};
+  const uint32_t start = first_start_dart(cell, mode_);
+  if (start == UINT32_MAX) return {};
   thread_local Word key;
   key.assign(1, static_cast<uint32_t>(cell_dim));
-  boundary_word(cell, starts.darts.front(), key);
-  return match_word(key, starts.darts.front());
+  boundary_word(cell, start, key);
+  return match_word(key, start);
 }
 
 StoreMatch PatternStore::match_word(const Word& key, uint32_t start) const {

@@ -64,22 +64,41 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   BoundaryGraph c;
   std::vector<uint32_t> order;
   Word key;
-  ScopedMarker seen(g);
+  // local[x]: x's index in its cell's boundary graph, UINT32_MAX for the darts of cells not met
+  // yet, kOtherHalf for the second half-face of a face of a 3-G-map (cell_boundary).
+  constexpr uint32_t kOtherHalf = UINT32_MAX - 1;
+  thread_local std::vector<uint32_t> local;
+  if (local.size() < g.capacity()) local.resize(g.capacity(), UINT32_MAX);  // all UINT32_MAX between calls
+  std::vector<Dart> met;  // the darts to reset when cells are listed (the sweep resets them all)
+  struct Reset {
+    std::vector<uint32_t>& local;
+    const std::vector<Dart>& met;
+    Dart capacity;
+    bool all;
+    ~Reset() {
+      if (all) std::fill(local.begin(), local.begin() + capacity, UINT32_MAX);
+      else
+        for (Dart x : met) local[x] = UINT32_MAX;
+    }
+  } reset{local, met, g.capacity(), !(only || progress)};
   auto examine = [&](Dart rep) {
     if (progress && r.cells % 4096 == 0) progress(r.cells, reps.size());
     ++r.cells;
-    cell_boundary(g, cell_dim, rep, target.flag, positive, c);
-    for (Dart x : c.dart) {
-      seen.mark(x);
-      if (n > cell_dim) seen.mark(g.alpha(cell_dim + 1, x));
-    }
+    cell_boundary(g, cell_dim, rep, target.flag, positive, local, c);
+    if (n > cell_dim)
+      for (Dart x : c.dart) {
+        const Dart y = g.alpha(cell_dim + 1, x);
+        if (local[y] == UINT32_MAX) local[y] = kOtherHalf;
+        if (!reset.all) met.push_back(y);
+      }
+    if (!reset.all) met.insert(met.end(), c.dart.begin(), c.dart.end());
     // The word from the cell's first start dart, looked up (pattern_store.hpp).
-    const StartSet starts = start_darts(c, store.mode());
+    const uint32_t start = first_start_dart(c, store.mode());
     StoreMatch match;
-    if (!starts.darts.empty()) {
+    if (start != UINT32_MAX) {
       key.assign(1, static_cast<uint32_t>(cell_dim));
-      boundary_word(c, starts.darts.front(), key);
-      match = store.match_word(key, starts.darts.front());
+      boundary_word(c, start, key, order);
+      match = store.match_word(key, start);
     }
     const std::vector<StoreEntry>* hits = match.hits;
     if (!hits) {
@@ -96,7 +115,6 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
                     "dart " + std::to_string(rep));
     }
     const uint32_t pattern = static_cast<uint32_t>((*hits)[choice].pattern);
-    boundary_labeling(c, match.start, order);
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
     matches.push_back({pattern, targets.size(), shared});
     for (uint32_t k : (*match.ranks)[choice]) targets.push_back(c.dart[order[k]]);
@@ -104,12 +122,12 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   };
   if (only || progress) {
     for (Dart rep : reps) {
-      if (seen.test(rep)) throw Error(ErrorCode::Usage, "a cell is listed twice", "dart " + std::to_string(rep));
+      if (local[rep] != UINT32_MAX) throw Error(ErrorCode::Usage, "a cell is listed twice", "dart " + std::to_string(rep));
       examine(rep);
     }
   } else {
     g.for_each_dart([&](Dart d) {
-      if (!seen.test(d)) examine(d);
+      if (local[d] == UINT32_MAX) examine(d);
     });
   }
   // 2. Room for every copy at once: the link, flag and position arrays grow once.

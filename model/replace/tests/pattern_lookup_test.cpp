@@ -111,8 +111,15 @@ TEST(PatternLookup, LookupByOneWordIsLookupBySignature) {
     for (size_t i = 0; i < set.configurations.size(); i += 3) {
       const BoundaryGraph b = boundary_of(set.configurations[i], mode);
       const StartSet starts = start_darts(b, mode);
-      for (uint32_t s : starts.darts)
+      ASSERT_EQ(first_start_dart(b, mode), starts.darts.front()) << i;
+      for (uint32_t s : starts.darts) {
         expect_lookup_by_one_word(store, b, 3, s, std::to_string(i) + " " + to_string(mode));
+        Word w;
+        std::vector<uint32_t> order;
+        boundary_word(b, s, w, order);  // the word and the labelling in one traversal
+        EXPECT_EQ(w, boundary_word(b, s)) << i;
+        EXPECT_EQ(order, boundary_labeling(b, s)) << i;
+      }
       const StoreMatch m = store.match(b, 3);
       ASSERT_EQ(m.hits, store.find(store_key(b, 3, mode))) << i;
       if (m.hits) {
