@@ -42,6 +42,27 @@ int stream_word(const BoundaryGraph& b, uint32_t start, bool with_flags, const W
 const std::vector<uint32_t>& face_sizes(const BoundaryGraph& b) {
   thread_local std::vector<uint32_t> size, stack;
   size.assign(b.size(), 0);
+  if (b.arity == 3) {
+    // A face is the orbit of two involutions (neighbours 0 and 1): a cycle, or a path between two
+    // fixed points (free darts), walked from k both ways.
+    for (uint32_t k = 0; k < b.size(); ++k) {
+      if (size[k]) continue;
+      stack.assign(1, k);
+      size[k] = 1;
+      for (int first = 0; first < 2; ++first) {
+        uint32_t x = k;
+        for (int j = first;; j ^= 1) {
+          const uint32_t y = b.neighbour(x, j);
+          if (y == x || size[y]) break;  // a path end, or the cycle closed
+          size[y] = 1;
+          stack.push_back(y);
+          x = y;
+        }
+      }
+      for (uint32_t y : stack) size[y] = static_cast<uint32_t>(stack.size());
+    }
+    return size;
+  }
   for (uint32_t k = 0; k < b.size(); ++k) {
     if (size[k]) continue;
     stack.assign(1, k);
@@ -289,18 +310,25 @@ CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& start_se
 }
 
 size_t WordHash::operator()(const Word& w) const noexcept {
-  // Two letters per round of a multiply-xorshift mix (the letters are 32-bit).
-  uint64_t h = 0x9e3779b97f4a7c15ull ^ w.size();
+  // Four independent lanes, two letters each per round (multiply-xorshift), so that the
+  // multiplications of a round overlap; the lanes and the tail are mixed at the end.
+  auto mix = [](uint64_t h, uint64_t v) {
+    h = (h ^ v) * 0xbf58476d1ce4e5b9ull;
+    return h ^ (h >> 31);
+  };
+  auto pair = [&](size_t i) { return uint64_t(w[i]) << 32 | w[i + 1]; };
+  uint64_t h0 = 0x9e3779b97f4a7c15ull ^ w.size(), h1 = 0x94d049bb133111ebull, h2 = 0x2545f4914f6cdd1dull,
+           h3 = 0xd6e8feb86659fd93ull;
   size_t i = 0;
-  for (; i + 1 < w.size(); i += 2) {
-    h ^= uint64_t(w[i]) << 32 | w[i + 1];
-    h *= 0xbf58476d1ce4e5b9ull;
-    h ^= h >> 31;
+  for (; i + 8 <= w.size(); i += 8) {
+    h0 = mix(h0, pair(i));
+    h1 = mix(h1, pair(i + 2));
+    h2 = mix(h2, pair(i + 4));
+    h3 = mix(h3, pair(i + 6));
   }
-  if (i < w.size()) {
-    h ^= w[i];
-    h *= 0x94d049bb133111ebull;
-  }
+  for (; i < w.size(); ++i) h0 = mix(h0, w[i]);
+  uint64_t h = mix(mix(mix(h0, h1), h2), h3);
+  h *= 0x94d049bb133111ebull;
   return static_cast<size_t>(h ^ (h >> 29));
 }
 

@@ -67,6 +67,9 @@ void BM_QueryByPatternStore(benchmark::State& state) {
     benchmark::DoNotOptimize(found);
   }
   state.counters["patterns"] = static_cast<double>(d.reps.size());
+  // The store's lookup words: one per start dart of each pattern (automorphic starts once).
+  state.counters["lookup_words"] = static_cast<double>(d.store.lookup_words());
+  state.counters["lookup_MB"] = static_cast<double>(d.store.lookup_letters()) * sizeof(uint32_t) / 1e6;
 }
 
 void BM_QueryBySignature(benchmark::State& state) {
@@ -130,8 +133,10 @@ const PatternStore& hex_patterns() {
 // Query-replace as an application runs the sequence: its final size reserved once from the
 // patterns (replacement_room), every edge split in 2 at once, f-pattern on the faces, v-pattern on
 // the volumes. `reserved` false: no reservation and one split_edge per edge (each step grows the
-// arrays, copying them).
-void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved) {
+// arrays, copying them). `precondition` AssumeValid: the steps skip the validity check of their
+// input (the caller built the block and knows it valid).
+void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
+                                      Precondition precondition = Precondition::CheckValidity) {
   const PatternStore& store = hex_patterns();
   const FlaggedMap& input = block(static_cast<int>(state.range(0)));
   size_t volumes = 0;
@@ -145,8 +150,8 @@ void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved) {
     } else {
       for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
     }
-    const QueryReplaceReport f = query_replace(m, store, 2);
-    const QueryReplaceReport v = query_replace(m, store, 3);
+    const QueryReplaceReport f = query_replace(m, store, 2, {}, {}, {}, nullptr, precondition);
+    const QueryReplaceReport v = query_replace(m, store, 3, {}, {}, {}, nullptr, precondition);
     if (!f.unmatched.empty() || !v.unmatched.empty()) state.SkipWithError("a cell was not matched");
     volumes = v.replaced() * 8;
   }
@@ -155,6 +160,9 @@ void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved) {
 
 void BM_HexSubdivisionQueryReplace(benchmark::State& state) { hex_subdivision_by_query_replace(state, true); }
 void BM_HexSubdivisionQueryReplaceUnreserved(benchmark::State& state) { hex_subdivision_by_query_replace(state, false); }
+void BM_HexSubdivisionQueryReplaceAssumeValid(benchmark::State& state) {
+  hex_subdivision_by_query_replace(state, true, Precondition::AssumeValid);
+}
 
 void BM_HexSubdivisionDirect(benchmark::State& state) {
   const FlaggedMap& input = block(static_cast<int>(state.range(0)));
@@ -170,15 +178,19 @@ BENCHMARK(BM_QueryByPatternStore)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_QueryBySignature)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_QueryByIsomorphismTests)->Unit(benchmark::kMillisecond);
 // Block sides 8, 12, 16 and 20 (512 to 8,000 hexahedra, subdivided into 4,096 to 64,000); the
-// two methods alternate per size.
+// methods alternate per size.
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(8);
+BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(8);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(8);
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(12);
+BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(12);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(12);
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(16);
+BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionQueryReplaceUnreserved)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(20);
+BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(20);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(20);
 
 }  // namespace
