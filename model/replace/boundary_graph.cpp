@@ -97,6 +97,9 @@ void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& fla
       if (l[y] == UINT32_MAX) {
         l[y] = static_cast<uint32_t>(b.dart.size());
         b.dart.push_back(y);
+        // y is read later in breadth-first order: its links and flag are fetched meanwhile.
+        for (int p = 0; p < i; ++p) __builtin_prefetch(link[p] + y);
+        if (y < flag.size()) __builtin_prefetch(flag.data() + y);
       }
       b.nbr.push_back(l[y]);
     }

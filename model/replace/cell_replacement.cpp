@@ -12,6 +12,9 @@ void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   thread_local std::vector<Vec3> at;
   at.resize(t.weights.size());
   std::vector<Vec3>& pos = target.position;
+  // The boundary positions are scattered in the target: all fetched before the sums read them.
+  for (const auto& ws : t.weights)
+    for (const auto& bw : ws) __builtin_prefetch(&pos[f[bw.first]]);
   for (size_t v = 0; v < t.weights.size(); ++v) {
     Vec3 x{0, 0, 0};
     for (const auto& [b, w] : t.weights[v])

@@ -56,8 +56,9 @@ size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k) {
     near[g.alpha(0, x)] = c + len - 1;
     pairs.push_back(x);
   }
-  // s-th dart of x's chain counted from x (the chain runs upwards from the x of its pair).
-  auto chain = [&](Dart x, Dart s) { return (near[x] - first) % len == 0 ? near[x] + s : near[x] - s; };
+  // The chain runs upwards from the x of its pair: the s-th dart counted from x is near[x] + s
+  // there, near[x] - s from the other end.
+  auto upwards = [&](Dart x) { return (near[x] - first) % len == 0; };
   for (Dart x : pairs) {
     const Dart y = g.alpha(0, x), c = near[x];
     g.link(0, x, c);
@@ -76,7 +77,9 @@ size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k) {
     for (int j = 2; j <= g.dimension(); ++j) {
       const Dart z = g.alpha(j, x);
       if (z == x) continue;
-      for (Dart s = 0; s < len; ++s) g.set_alpha(j, chain(x, s), chain(z, s));
+      const Dart cx = near[x], cz = near[z];
+      const bool ux = upwards(x), uz = upwards(z);
+      for (Dart s = 0; s < len; ++s) g.set_alpha(j, ux ? cx + s : cx - s, uz ? cz + s : cz - s);
     }
   for (Dart x : darts) near[x] = kNoDart;
   return darts.size() * (k - 1);
