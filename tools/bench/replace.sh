@@ -2,7 +2,8 @@
 # Hexahedral subdivision by query-replace against the direct subdivision (tools/bench/replace_bench.cpp,
 # Damiand & Nivoliers 2022 §7.1, Table 1): builds the benchmark (-DGMR_BENCH=ON, Release), runs the
 # HexSubdivision benchmarks under three allocator settings and prints, per block size, the CPU
-# medians and the overhead (qr - direct) / direct. Both methods write tens of megabytes of fresh
+# medians and the overhead (qr - direct) / direct, for query-replace with and without the
+# validity check of its input (AssumeValid). Both methods write tens of megabytes of fresh
 # arrays; where the first touch of a page is expensive (a virtual machine), the page faults are
 # most of both times, and how many there are depends on whether freed memory is reused:
 #   cold:    arrays above 128 KiB are mapped fresh and unmapped when freed (every run touches
@@ -40,7 +41,8 @@ done
 echo "load after:  $(cut -d' ' -f1-3 /proc/loadavg)"
 python3 - "$data" <<'PY'
 import json, sys, re
-print(f"{'memory':8} {'side':>4} {'volumes':>8} {'direct ms':>10} {'qr ms':>8} {'overhead':>9} {'qr unreserved ms':>17}")
+print(f"{'memory':8} {'side':>4} {'volumes':>8} {'direct ms':>10} {'qr ms':>8} {'overhead':>9} "
+      f"{'qr assume-valid ms':>19} {'overhead':>9} {'qr unreserved ms':>17}")
 for regime in ("cold", "warm", "default"):
     runs = json.load(open(f"{sys.argv[1]}/{regime}.json"))["benchmarks"]
     med = {}
@@ -53,6 +55,8 @@ for regime in ("cold", "warm", "default"):
         d, vol = med[("Direct", side)]
         q, _ = med[("QueryReplace", side)]
         u = med.get(("QueryReplaceUnreserved", side))
+        a = med.get(("QueryReplaceAssumeValid", side))
         print(f"{regime:8} {side:>4} {int(vol):>8} {d:>10.1f} {q:>8.1f} {100 * (q - d) / d:>8.0f}% "
+              f"{'' if a is None else f'{a[0]:.1f}':>19} {'' if a is None else f'{100 * (a[0] - d) / d:.0f}%':>9} "
               f"{'' if u is None else f'{u[0]:.1f}':>17}")
 PY
