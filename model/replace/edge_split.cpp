@@ -19,11 +19,16 @@ std::vector<Dart>& chain_heads(Dart capacity) {
 
 }  // namespace
 
+namespace {
+
+size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k);
+
+}  // namespace
+
 size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k) {
   if (k == 0) throw Error(ErrorCode::Usage, "an edge is split into at least 1 edge");
   if (k == 1) return 0;
   Map& g = m.map;
-  const Dart len = 2 * (k - 1);
   // 1. The darts of the edges, edge by edge.
   std::vector<Dart> darts;
   {
@@ -38,6 +43,23 @@ size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k) {
     for (Dart x : darts) seen.unmark(x);
     seen.set_clean();
   }
+  return split_pairs(m, darts, k);
+}
+
+size_t split_all_edges(FlaggedMap& m, unsigned k) {
+  if (k == 0) throw Error(ErrorCode::Usage, "an edge is split into at least 1 edge");
+  if (k == 1) return 0;
+  // Every dart pair (x, alpha_0 x) is split: the darts in index order, no edge traversal.
+  return split_pairs(m, m.map.darts(), k);
+}
+
+namespace {
+
+// 2.-3. Splits each pair (x, alpha_0 x) of `darts` (both darts of every pair listed, each pair
+// once), chains numbered in the order of the pairs' first darts.
+size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k) {
+  Map& g = m.map;
+  const Dart len = 2 * (k - 1);
   for (Dart x : darts)
     if (g.is_free(0, x)) throw Error(ErrorCode::InvalidMap, "a 0-free dart has no edge to split", "dart " + std::to_string(x));
   if (double(k - 1) * double(darts.size()) >= double(kNoDart - g.capacity()))
@@ -84,5 +106,7 @@ size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k) {
   for (Dart x : darts) near[x] = kNoDart;
   return darts.size() * (k - 1);
 }
+
+}  // namespace
 
 }  // namespace gmr::replace

@@ -20,5 +20,8 @@ size_t split_edge(FlaggedMap& m, Dart d, unsigned k);
 // other (the new darts are numbered in another order). Throws Error(Usage) when two darts name the
 // same edge. Returns the number of darts added.
 size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k);
+// Splits every edge of the map into k: split_edges on all edges, found without traversing them
+// (every dart pair (x, alpha_0 x) is split, in dart order). Returns the number of darts added.
+size_t split_all_edges(FlaggedMap& m, unsigned k);
 
 }  // namespace gmr::replace

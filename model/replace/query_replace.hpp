@@ -1,13 +1,13 @@
 // The query-replace driver (Damiand & Nivoliers 2022 §4, §6.3): every i-cell of the target
-// (faces for i = 2, volumes for i = 3) is signed in the store's mode and looked up; a cell whose
-// key is in the store has its interior replaced (cell_replacement.hpp) through the isomorphism f
-// read off the two minimal words (the k-th labelled darts correspond); other cells are left
-// untouched and reported. The cells are those of the input map (collected before any
-// replacement), so each is replaced at most once. A face of a 3-G-map is signed on the half-face
-// of its smallest dart.
-// Ties (several minimal start darts, i.e. boundary automorphisms) are broken by the first start in
-// the cell's traversal order; a key holding several patterns uses the first one, or the selector's
-// choice.
+// (faces for i = 2, volumes for i = 3) is looked up in the store by the word from its first start
+// dart (pattern_store.hpp); a cell whose word is stored has its interior replaced
+// (cell_replacement.hpp) through the isomorphism f read off the cell's word and the equal word of
+// the pattern (the k-th labelled darts correspond); other cells are left untouched and reported.
+// The cells are those of the input map (met before any replacement), so each is replaced at most
+// once. A face of a 3-G-map is looked up on the half-face of its smallest dart.
+// Boundary automorphisms: the cell's first start dart (in its traversal order) is sent to the
+// pattern's first start dart (in its local order) with the same word, so the result is
+// deterministic; a key holding several patterns uses the first one, or the selector's choice.
 #pragma once
 #include <functional>
 #include <string>

@@ -131,8 +131,8 @@ const PatternStore& hex_patterns() {
 }
 
 // Query-replace as an application runs the sequence: its final size reserved once from the
-// patterns (replacement_room), every edge split in 2 at once, f-pattern on the faces, v-pattern on
-// the volumes. `reserved` false: no reservation and one split_edge per edge (each step grows the
+// patterns (replacement_room), every edge split in 2 at once (split_all_edges), f-pattern on the
+// faces, v-pattern on the volumes. `reserved` false: no reservation and one split_edge per edge (each step grows the
 // arrays, copying them). `precondition` AssumeValid: the steps skip the validity check of their
 // input (the caller built the block and knows it valid).
 void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
@@ -146,7 +146,7 @@ void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
     state.ResumeTiming();
     if (reserved) {
       m.reserve(2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3));
-      split_edges(m, orbit_representatives(m.map, cell_type(m.map, 1)), 2);
+      split_all_edges(m, 2);
     } else {
       for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
     }

@@ -54,7 +54,7 @@ TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
   FlaggedMap qr = input;
-  testing::split_all_edges(qr, 2);
+  testing::split_each_edge(qr, 2);
   EXPECT_TRUE(query_replace(qr, store, 2).unmatched.empty());
   EXPECT_TRUE(query_replace(qr, store, 3).unmatched.empty());
 
@@ -63,7 +63,7 @@ TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
   // A second level of each stays the same.
   FlaggedMap direct2 = subdivide_hexahedra(direct);
   qr.flag.assign(qr.map.capacity(), 1);
-  testing::split_all_edges(qr, 2);
+  testing::split_each_edge(qr, 2);
   query_replace(qr, store, 2);
   query_replace(qr, store, 3);
   EXPECT_EQ(count_all_cells(direct2.map)[3], 64 * voxels.size());

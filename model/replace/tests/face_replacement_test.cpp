@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "model/core/error.hpp"
 #include "model/core/signature.hpp"
@@ -16,7 +18,7 @@ namespace {
 
 using testing::all_flagged;
 using testing::pattern_file;
-using testing::split_all_edges;
+using testing::split_each_edge;
 
 PatternStore store_of(Mode mode, std::vector<Pattern> ps) {
   PatternStore s(mode);
@@ -27,7 +29,7 @@ PatternStore store_of(Mode mode, std::vector<Pattern> ps) {
 // Subdivides every face of a flagged polyhedron: edges split in 2, faces by `pattern`, validity
 // checked after each replacement; returns the report.
 QueryReplaceReport subdivide(FlaggedMap& m, const Pattern& pattern, Mode mode = Mode::Unoriented) {
-  split_all_edges(m, 2);
+  split_each_edge(m, 2);
   EXPECT_TRUE(is_valid(m.map));
   const PatternStore store = store_of(mode, {pattern});
   return query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); });
@@ -49,6 +51,45 @@ TEST(EdgeSplit, SplitsEveryDartPairAndKeepsFlagsOnOldDarts) {
     EXPECT_EQ(m.map.size(), darts + orbit_size * (k - 1));
     EXPECT_EQ(m.flagged(), darts);  // new darts are unflagged
   }
+}
+
+// split_all_edges (every dart pair at once, no edge traversal) is split_edge on every edge in
+// turn, up to the numbering of the new darts: isomorphic, same flags and positions; on a map with
+// holes too.
+TEST(EdgeSplit, SplitAllEdgesEqualsSplittingEveryEdge) {
+  for (unsigned k : {2u, 3u}) {
+    FlaggedMap a = all_flagged(make_stacked_cubes());
+    a.position.resize(a.map.capacity());
+    for (Dart v : orbit_representatives(a.map, cell_type(a.map, 0)))
+      for (Dart x : orbit(a.map, cell_type(a.map, 0), v)) a.position[x] = {double(v % 7), double(v % 5), double(v % 3)};
+    FlaggedMap b = a;
+    const size_t before = a.map.size();
+    split_each_edge(a, k);
+    EXPECT_EQ(split_all_edges(b, k), a.map.size() - before);
+    EXPECT_TRUE(is_valid(b.map));
+    EXPECT_EQ(b.flagged(), a.flagged());
+    EXPECT_TRUE(is_isomorphic(a.map, b.map, &a.flag, &b.flag)) << k;
+    // The new vertices are interpolated from either end of their edge: equal up to rounding.
+    auto points = [](const FlaggedMap& m) {
+      std::vector<std::array<long long, 3>> p;
+      m.map.for_each_dart([&](Dart d) {
+        const Vec3& x = m.position[d];
+        p.push_back({std::llround(x[0] * 1e9), std::llround(x[1] * 1e9), std::llround(x[2] * 1e9)});
+      });
+      std::sort(p.begin(), p.end());
+      return p;
+    };
+    EXPECT_EQ(points(a), points(b));
+  }
+  FlaggedMap holes = all_flagged(make_stacked_cubes());
+  holes.map.remove_dart(holes.map.add_dart());  // a deleted dart in the index range
+  holes.resize_flags();
+  FlaggedMap each = holes;
+  split_each_edge(each, 2);
+  split_all_edges(holes, 2);
+  EXPECT_TRUE(is_isomorphic(each.map, holes.map, &each.flag, &holes.flag));
+  EXPECT_EQ(split_all_edges(holes, 1), 0u);
+  EXPECT_THROW(split_all_edges(holes, 0), Error);
 }
 
 // split_edges on a list of edges is split_edge on each in turn, up to the numbering of the new
@@ -175,7 +216,7 @@ TEST(FaceReplacement, FlagsOfCopiedDartsComeFromThePattern) {
   size_t inner_flagged = 0;
   p.map.map.for_each_dart([&](Dart d) { inner_flagged += !p.map.map.is_free(2, d) && p.map.flag[d]; });
   FlaggedMap m = all_flagged(make_cube(2));
-  split_all_edges(m, 2);
+  split_each_edge(m, 2);
   const size_t before = m.flagged();
   query_replace(m, store_of(Mode::Unoriented, {p}), 2);
   EXPECT_EQ(m.flagged(), before + 6 * inner_flagged);
@@ -226,7 +267,7 @@ TEST(FaceReplacement, ConformalSetOnEveryEdgeSubsetOfACube) {
 // An open surface (2-free darts on its border) and a map with deleted darts.
 TEST(FaceReplacement, OpenGridAndMapWithHoles) {
   FlaggedMap m = all_flagged(make_grid(2, 2));
-  split_all_edges(m, 2);
+  split_each_edge(m, 2);
   const PatternStore store = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
   EXPECT_EQ(query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }).replaced(), 4u);
   EXPECT_EQ(count_cells(m.map, 2), 16u);
@@ -240,7 +281,7 @@ TEST(FaceReplacement, OpenGridAndMapWithHoles) {
   });
   g.remove_dart(junk);
   FlaggedMap h = all_flagged(std::move(g));
-  split_all_edges(h, 2);
+  split_each_edge(h, 2);
   EXPECT_EQ(query_replace(h, store, 2, [&] { ASSERT_TRUE(is_valid(h.map)); }).replaced(), 1u);
   EXPECT_EQ(count_cells(h.map, 2), 4u);
 }
@@ -254,7 +295,7 @@ TEST(FaceReplacement, RefusesInvalidTargetsAndWrongDimensions) {
   EXPECT_THROW(query_replace(one, store, 2), Error);
   // A cell listed twice (two darts of one face, on its two half-faces) is refused, the map kept.
   FlaggedMap cubes = all_flagged(make_stacked_cubes());
-  split_all_edges(cubes, 2);
+  split_each_edge(cubes, 2);
   Dart shared = kNoDart;
   cubes.map.for_each_dart([&](Dart d) {
     if (shared == kNoDart && !cubes.map.is_free(3, d)) shared = d;
@@ -292,7 +333,7 @@ TEST(FaceReplacement, DuplicateSelectorChoosesAmongPatternsOfOneKey) {
   ASSERT_EQ(store.duplicates(), (std::vector<std::vector<size_t>>{{0, 1}}));
   auto run = [&](const DuplicateSelector& select) {
     FlaggedMap m = all_flagged(make_cube(2));
-    split_all_edges(m, 2);
+    split_each_edge(m, 2);
     const QueryReplaceReport r = query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }, {}, select);
     EXPECT_EQ(r.ambiguous_keys, 6u);
     return std::make_pair(r, count_cells(m.map, 2));

@@ -54,7 +54,7 @@ size_t grid_points(const FlaggedMap& m) {
 
 TEST(InteriorGeometry, FacePatternsReproduceAffineMaps) {
   FlaggedMap m = affine_cube(2);
-  testing::split_all_edges(m, 2);
+  testing::split_each_edge(m, 2);
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
   EXPECT_EQ(query_replace(m, store, 2).replaced(), 6u);
@@ -67,7 +67,7 @@ TEST(InteriorGeometry, FacePatternsReproduceAffineMaps) {
 
 TEST(InteriorGeometry, VolumePatternsReproduceAffineMaps) {
   FlaggedMap m = affine_cube(3);
-  testing::split_all_edges(m, 2);
+  testing::split_each_edge(m, 2);
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
   query_replace(m, store, 2);
@@ -86,7 +86,7 @@ TEST(InteriorGeometry, TetrahedronToHexahedraPlacesCentroids) {
   m.flag.assign(m.map.capacity(), 1);
   m.position.resize(m.map.capacity());
   m.map.for_each_dart([&](Dart d) { m.position[d] = corner[vertex[d]]; });
-  testing::split_all_edges(m, 2);
+  testing::split_each_edge(m, 2);
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("tet-to-hex"))) store.add(std::move(p));
   query_replace(m, store, 2);

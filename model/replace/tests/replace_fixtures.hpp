@@ -30,8 +30,8 @@ inline FlaggedMap all_flagged(Map g) {
   return m;
 }
 
-// Splits every edge of m in k.
-inline void split_all_edges(FlaggedMap& m, unsigned k) {
+// Splits every edge of m in k, one edge after the other (split_all_edges does it at once).
+inline void split_each_edge(FlaggedMap& m, unsigned k) {
   for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, k);
 }
 

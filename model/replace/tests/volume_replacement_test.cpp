@@ -11,7 +11,7 @@
 namespace gmr::replace {
 namespace {
 
-using testing::split_all_edges;
+using testing::split_each_edge;
 
 PatternStore folder_store(const std::string& set, Mode mode) {
   PatternStore s(mode);
@@ -24,7 +24,7 @@ void flag_all(FlaggedMap& m) { m.flag.assign(m.map.capacity(), 1); }
 
 // e-pattern (split in 2), then faces, then volumes; validity after every replacement.
 std::pair<QueryReplaceReport, QueryReplaceReport> refine(FlaggedMap& m, const PatternStore& store) {
-  split_all_edges(m, 2);
+  split_each_edge(m, 2);
   auto check = [&] { ASSERT_TRUE(is_valid(m.map)); };
   QueryReplaceReport f = query_replace(m, store, 2, check);
   QueryReplaceReport v = query_replace(m, store, 3, check);
@@ -100,7 +100,7 @@ TEST(VolumeReplacement, HexahedralSubdivisionOfAPolycubeOverTwoLevels) {
 TEST(VolumeReplacement, UnflaggedVolumesAreLeftUntouched) {
   FlaggedMap m{lift(make_cube(2), 3), {}, {}};
   flag_all(m);
-  split_all_edges(m, 2);
+  split_each_edge(m, 2);
   const PatternStore store = folder_store("hex-subdivision", Mode::Unoriented);
   query_replace(m, store, 2);
   m.flag.assign(m.map.capacity(), 0);
