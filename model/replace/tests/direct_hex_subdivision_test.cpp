@@ -73,33 +73,50 @@ TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
 
 // The sequence as the benchmark runs it: its final size reserved from replacement_room before
 // any step (no array grows: the link arrays stay in place), every edge split at once
-// (split_edges), then faces and volumes; the bound is exact for hexahedra, and the result is the
-// direct subdivision up to isomorphism, with the same positions, valid after every replacement.
+// (split_edges on the edges, or split_all_edges), then faces and volumes (validity checked by
+// query_replace, or assumed as the benchmark's AssumeValid variant does); the bound is exact for
+// hexahedra, and the result is the direct subdivision up to isomorphism, with the same positions,
+// valid after every replacement.
 TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
   const std::vector<Voxel> voxels{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
-  FlaggedMap qr = positioned_polycube(voxels);
-  FlaggedMap direct = positioned_polycube(voxels);
-  for (int level = 1; level <= 2; ++level) {
-    direct = subdivide_hexahedra(direct);
-    const size_t darts = qr.map.size();
-    const size_t faces = replacement_room(qr.map, store, 2), volumes = replacement_room(qr.map, store, 3);
-    qr.reserve(2 * darts + faces + volumes);
-    const Dart* links = qr.map.links(0).data();
-    EXPECT_EQ(split_edges(qr, orbit_representatives(qr.map, cell_type(qr.map, 1)), 2), darts);
-    auto valid = [&] { ASSERT_TRUE(is_valid(qr.map)); };
-    const QueryReplaceReport f = query_replace(qr, store, 2, valid);
-    const QueryReplaceReport v = query_replace(qr, store, 3, valid);
-    EXPECT_TRUE(f.unmatched.empty() && v.unmatched.empty());
-    EXPECT_EQ(f.darts_added, faces);
-    EXPECT_EQ(v.darts_added, volumes);
-    EXPECT_EQ(qr.map.links(0).data(), links) << "an array grew beyond the reserved size";
-    EXPECT_EQ(qr.map.size(), direct.map.size());
-    EXPECT_TRUE(is_isomorphic(direct.map, qr.map)) << level;
-    EXPECT_EQ(position_multiset(direct), position_multiset(qr)) << level;
-    qr.flag.assign(qr.map.capacity(), 1);
+  for (Precondition pre : {Precondition::CheckValidity, Precondition::AssumeValid}) {
+    FlaggedMap qr = positioned_polycube(voxels);
+    FlaggedMap direct = positioned_polycube(voxels);
+    for (int level = 1; level <= 2; ++level) {
+      direct = subdivide_hexahedra(direct);
+      const size_t darts = qr.map.size();
+      const size_t faces = replacement_room(qr.map, store, 2), volumes = replacement_room(qr.map, store, 3);
+      qr.reserve(2 * darts + faces + volumes);
+      const Dart* links = qr.map.links(0).data();
+      if (pre == Precondition::CheckValidity)
+        EXPECT_EQ(split_edges(qr, orbit_representatives(qr.map, cell_type(qr.map, 1)), 2), darts);
+      else
+        EXPECT_EQ(split_all_edges(qr, 2), darts);
+      auto valid = [&] { ASSERT_TRUE(is_valid(qr.map)); };
+      const QueryReplaceReport f = query_replace(qr, store, 2, valid, {}, {}, nullptr, pre);
+      const QueryReplaceReport v = query_replace(qr, store, 3, valid, {}, {}, nullptr, pre);
+      EXPECT_TRUE(f.unmatched.empty() && v.unmatched.empty());
+      EXPECT_EQ(f.darts_added, faces);
+      EXPECT_EQ(v.darts_added, volumes);
+      EXPECT_EQ(qr.map.links(0).data(), links) << "an array grew beyond the reserved size";
+      EXPECT_EQ(qr.map.size(), direct.map.size());
+      EXPECT_TRUE(is_isomorphic(direct.map, qr.map)) << level;
+      EXPECT_EQ(position_multiset(direct), position_multiset(qr)) << level;
+      qr.flag.assign(qr.map.capacity(), 1);
+    }
   }
+}
+
+// An invalid map is refused by the check and not when the caller assumes it valid.
+TEST(DirectHexSubdivision, ValidityIsCheckedUnlessAssumed) {
+  PatternStore store(Mode::Unoriented);
+  for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
+  FlaggedMap broken = positioned_polycube({{0, 0, 0}});
+  broken.map.set_alpha(3, 0, 1);  // one direction only: not an involution
+  EXPECT_THROW(query_replace(broken, store, 2), Error);
+  EXPECT_NO_THROW(query_replace(broken, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid));
 }
 
 TEST(DirectHexSubdivision, RejectsNonHexahedra) {
