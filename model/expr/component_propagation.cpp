@@ -53,6 +53,7 @@ void EmbeddingPropagation::derive_class_kinds() {
         if (decl >= 0 && k.declaration < 0 && cs_.right[static_cast<size_t>(decl)][v]) {
           k.declaration = decl;
           k.expression_node = v;
+          k.program = compile_program(*cs_.right[static_cast<size_t>(decl)][v]);
         }
       }
       for (size_t p = 0; p < t.size(); ++p)
@@ -96,6 +97,15 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   return classes;
 }
 
+// The classes of a kind are the orbits of the map before under k.dims (restricted to the
+// component): their labelling numbers those orbits, which the evaluator's memo mode would
+// otherwise number by a sweep of the map (Evaluator::share_orbit_numbers). The expressions read
+// darts of the component only (orbits of its darts).
+void EmbeddingPropagation::share_labels(const scheme::ComponentInstance& c, Evaluator& ev) {
+  for (auto& kinds : kinds_)
+    for (ClassKind& k : kinds) ev.share_orbit_numbers(k.dims, k.class_of->data(), c.darts.data(), c.size());
+}
+
 void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentInstance& c) {
   if (!kinds_derived_) derive_class_kinds();
   const scheme::RuleScheme& s = *cs_.scheme;
@@ -103,21 +113,29 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
   std::vector<const EmbeddingField*> fields;
   for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   Evaluator ev(g, cs_.embeddings, fields);
-  ev.memoise_collects(sz * 8 >= g.capacity());
+  const bool memo = sz * 8 >= g.capacity();
+  ev.memoise_collects(memo);
+  std::vector<uint32_t> classes;
+  for (auto& kinds : kinds_)
+    for (ClassKind& k : kinds) classes.push_back(label_classes(g, c, k));
+  if (memo) share_labels(c, ev);
+  size_t ki = 0;
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
-      const uint32_t classes = label_classes(g, c, k);
+      const uint32_t count = classes[ki++];
       k.values.clear();
       if (k.declaration < 0) continue;
       const auto e = static_cast<size_t>(k.declaration);
       const Expr& x = *cs_.right[e][k.expression_node];
       const std::string where = "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name +
                                 ", embedding " + cs_.embeddings[e].name;
-      k.values.reserve(classes);
+      k.values.reserve(count);
       for (uint32_t b = 0; b < sz; ++b) {
         if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
         const Dart node_dart = c.darts[b];               // the hook, L's only node
-        k.values.push_back(Evaluator::to_storage(ev.evaluate(x, &node_dart, cs_.embeddings[e].type, where)));
+        const ValueType t = cs_.embeddings[e].type;
+        k.values.push_back(Evaluator::to_storage(k.program ? ev.evaluate(*k.program, &node_dart, t, where)
+                                                           : ev.evaluate(x, &node_dart, t, where)));
         ++evaluations_;
       }
     }

@@ -11,9 +11,9 @@ namespace gmr::expr {
 
 namespace {
 
-Val add(const Val& a, const Val& b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
-Val sub(const Val& a, const Val& b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w}; }
-Val scale(const Val& a, double k) { return {a.x * k, a.y * k, a.z * k, a.w * k}; }
+using ops::add;
+using ops::scale;
+using ops::sub;
 using K = StaticType::Kind;
 
 // Whether two entries of v are equal: pairwise for the few pieces of a face or a vertex, sorted
@@ -46,9 +46,24 @@ void Evaluator::memoise_collects(bool on) {
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
 }
 
-const uint32_t* Evaluator::orbit_ids(DimMask mask) {
+void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const Dart* darts, size_t n) {
   for (auto& o : ids_)
-    if (o.mask == mask) return o.ids->data();
+    if (o.mask == mask) return;
+  ids_.push_back({mask, {}, numbers, darts, n});
+}
+
+const uint32_t* Evaluator::orbit_ids(DimMask mask) {
+  for (auto& o : ids_) {
+    if (o.mask != mask) continue;
+    if (o.numbers) {  // shared: scattered to the darts on first use
+      o.ids.reserve(g_.capacity());
+      o.ids->resize(g_.capacity());
+      uint32_t* v = o.ids->data();
+      for (size_t b = 0; b < o.n; ++b) v[o.darts[b]] = o.numbers[b];
+      o.numbers = nullptr;
+    }
+    return o.ids->data();
+  }
   ids_.push_back({mask, {}});
   ids_.back().ids.reserve(g_.capacity());
   std::vector<uint32_t>& v = *ids_.back().ids;
@@ -86,12 +101,27 @@ Val Evaluator::evaluate(const Expr& e, const Dart* node_darts, ValueType target,
   where_ = &where;
   vars_.clear();
   lets_.clear();
-  Val v = eval(e);
+  for (auto& b : bodies_) b = {};
+  return checked(eval(e), e, target);
+}
+
+Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where) {
+  nodes_ = node_darts;
+  where_ = &where;
+  vars_.clear();
+  lets_.clear();
+  if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
+  top_ = 0;
+  return checked(run(p.code.data(), p.code.data() + p.code.size()), *p.code.front().expr, target);
+}
+
+// The mass of a point (1) or a vector (0), checked within 1e-9 and made exact.
+Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
   if (target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9)
     fail(e, "the point's weights sum to " + std::to_string(v.w) + ", not 1 (an affine combination of points needs weights summing to 1)",
-         node_darts ? node_darts[0] : kNoDart);
+         nodes_ ? nodes_[0] : kNoDart);
   if (target == ValueType::Vector && std::fabs(v.w) > 1e-9)
-    fail(e, "the vector's weights sum to " + std::to_string(v.w) + ", not 0", node_darts ? node_darts[0] : kNoDart);
+    fail(e, "the vector's weights sum to " + std::to_string(v.w) + ", not 0", nodes_ ? nodes_[0] : kNoDart);
   if (target == ValueType::Point) v.w = 1.0;
   if (target == ValueType::Vector) v.w = 0.0;
   return v;
@@ -120,11 +150,11 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
     Dart x = d;
     double k = 0;
     do {
-      vars_.push_back(x);
       lets_.push_back({k, 0, 0, 0});
-      out.push_back(eval(*e.args[0]));
-      lets_.pop_back();
+      vars_.push_back(x);
+      out.push_back(body_value(e));
       vars_.pop_back();
+      lets_.pop_back();
       for (int dim : e.word) x = g_.alpha(dim, x);
       k += 1;
       if (k > static_cast<double>(g_.capacity())) fail(e, "the walk does not come back to its dart", d);
@@ -186,9 +216,17 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
 Val Evaluator::member_value(const Expr& e, Dart x) {
   if (e.op == Expr::Op::Collect) return field_value(e.embedding, x, e);
   vars_.push_back(x);
-  Val v = eval(*e.args[0]);
+  Val v = body_value(e);
   vars_.pop_back();
   return v;
+}
+
+// The body of a comprehension or a walk, its variable bound (the last of vars_): its compiled
+// program when the enumeration was started by one (bodies_ at the enclosing depth), else the tree.
+Val Evaluator::body_value(const Expr& e) {
+  const Body& b = bodies_[vars_.size() - 1];
+  if (b.begin) return run(b.begin, b.end);
+  return eval(*e.args[0]);
 }
 
 // Memo mode, the <o>-orbit in in_orbit: one member per <c>-orbit met, at its first dart, the
@@ -281,43 +319,12 @@ Val Evaluator::eval(const Expr& e) {
     case Function::Middle:
     case Function::Sum:
     case Function::Count: {
+      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) return aggregate(e, nullptr, nullptr);
       Val acc;
-      size_t n = 0;
-      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) {
-        const Expr& arg = *e.args[0];
-        // A memoised collect (memoise_collects): its value is the one of its <o>-orbit.
-        const bool memo = memo_on_ && arg.op == Expr::Op::Collect && arg.word.empty() &&
-                          (arg.orbit.mask() & ~sigs_[static_cast<size_t>(arg.embedding)].orbit.mask()) != 0;
-        CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
-        if (cm) {
-          const Dart d = dart_of(arg.ref, arg);
-          if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
-        }
-        // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
-        std::vector<Val>& m = vals_[vars_.size()];
-        m.clear();
-        members(arg, m);
-        for (const Val& v : m) acc = add(acc, v);
-        n = m.size();
-        if (cm) {
-          Val r = acc;
-          if (e.function == Function::Count) r = {static_cast<double>(n), 0, 0, 0};
-          else if (e.function == Function::Middle && n > 0) r = scale(acc, 1.0 / static_cast<double>(n));
-          if (e.function != Function::Middle || n > 0) {
-            // members() left the darts of the <o>-orbit in this depth's first scratch list.
-            const auto idx = static_cast<uint32_t>(cm->values->size());
-            cm->values->push_back(r);
-            for (Dart x : scratch_[3 * vars_.size()]) (*cm->at)[x] = idx;
-          }
-        }
-      } else {
-        for (const auto& a : e.args) acc = add(acc, eval(*a));
-        n = e.args.size();
-      }
-      if (e.function == Function::Count) return {static_cast<double>(n), 0, 0, 0};
-      if (e.function == Function::Sum) return acc;
-      if (n == 0) fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
-      return scale(acc, 1.0 / static_cast<double>(n));
+      for (const auto& a : e.args) acc = add(acc, eval(*a));
+      if (e.function == Function::Middle && e.args.empty())
+        fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+      return ops::finish_aggregate(e.function, acc, e.args.size());
     }
     case Function::Cos: return {std::cos(eval(*e.args[0]).x), 0, 0, 0};
     case Function::Sin: return {std::sin(eval(*e.args[0]).x), 0, 0, 0};
@@ -347,6 +354,101 @@ Val Evaluator::eval(const Expr& e) {
     case Function::None: break;
   }
   fail(e, "unknown function " + e.name);
+}
+
+// middle, sum or count of the multiset call.args[0], its members' values computed by the body's
+// program [body, body_end) when given, else by the tree.
+Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instruction* body_end) {
+  const Expr& arg = *e.args[0];
+  // A memoised collect (memoise_collects): its value is the one of its <o>-orbit.
+  const bool memo = memo_on_ && arg.op == Expr::Op::Collect && arg.word.empty() &&
+                    (arg.orbit.mask() & ~sigs_[static_cast<size_t>(arg.embedding)].orbit.mask()) != 0;
+  CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
+  if (cm) {
+    const Dart d = dart_of(arg.ref, arg);
+    if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
+  }
+  // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
+  const size_t depth = vars_.size();
+  std::vector<Val>& m = vals_[depth];
+  m.clear();
+  bodies_[depth] = {body, body_end};
+  members(arg, m);
+  Val acc;
+  for (const Val& v : m) acc = add(acc, v);
+  const size_t n = m.size();
+  if (e.function == Function::Middle && n == 0)
+    fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+  const Val r = ops::finish_aggregate(e.function, acc, n);
+  if (cm) {
+    // members() left the darts of the <o>-orbit in this depth's first scratch list.
+    const auto idx = static_cast<uint32_t>(cm->values->size());
+    cm->values->push_back(r);
+    for (Dart x : scratch_[3 * depth]) (*cm->at)[x] = idx;
+  }
+  return r;
+}
+
+// A compiled program (program.hpp) on the value stack from top_: the tree's evaluation order,
+// operations and errors, without the recursion over the tree.
+Val Evaluator::run(const Instruction* pc, const Instruction* end) {
+  using Op = Instruction::Op;
+  const size_t base = top_;
+  Val* sp = stack_.data() + base;
+  for (; pc != end; ++pc) {
+    const Expr& e = *pc->expr;
+    switch (pc->op) {
+      case Op::Constant: *sp++ = {pc->value[0], pc->value[1], pc->value[2], pc->value[3]}; break;
+      case Op::LetGet: *sp++ = lets_[pc->index]; break;
+      case Op::LetBind: lets_.push_back(*--sp); break;
+      case Op::LetDrop: lets_.pop_back(); break;
+      case Op::Value: *sp++ = field_value(e.embedding, dart_of(e.ref, e), e); break;
+      case Op::Neg: sp[-1] = ops::neg(sp[-1]); break;
+      case Op::Add: --sp; sp[-1] = add(sp[-1], sp[0]); break;
+      case Op::Sub: --sp; sp[-1] = sub(sp[-1], sp[0]); break;
+      case Op::ScaleLeft: --sp; sp[-1] = scale(sp[0], sp[-1].x); break;
+      case Op::ScaleRight: --sp; sp[-1] = scale(sp[-1], sp[0].x); break;
+      case Op::Div:
+        --sp;
+        if (sp[0].x == 0.0) fail(e, "division by zero", nodes_ ? nodes_[0] : kNoDart);
+        sp[-1] = ops::divide(sp[-1], sp[0].x);
+        break;
+      case Op::Make: sp -= 2; sp[-1] = ops::make(e.function, sp[-1], sp[0], sp[1]); break;
+      case Op::Cos: sp[-1] = ops::cos(sp[-1]); break;
+      case Op::Sin: sp[-1] = ops::sin(sp[-1]); break;
+      case Op::Abs: sp[-1] = ops::abs(sp[-1]); break;
+      case Op::Sqrt:
+        if (sp[-1].x < 0) fail(e, "square root of a negative number", nodes_ ? nodes_[0] : kNoDart);
+        sp[-1] = ops::sqrt(sp[-1]);
+        break;
+      case Op::Norm: sp[-1] = ops::norm(sp[-1]); break;
+      case Op::Clamp: sp[-1] = ops::clamp(sp[-1]); break;
+      case Op::Dot: --sp; sp[-1] = ops::dot(sp[-1], sp[0]); break;
+      case Op::Cross: --sp; sp[-1] = ops::cross(sp[-1], sp[0]); break;
+      case Op::AggregateArgs: {
+        const size_t n = pc->index;
+        Val acc;
+        const Val* args = sp - n;
+        for (size_t k = 0; k < n; ++k) acc = add(acc, args[k]);
+        if (e.function == Function::Middle && n == 0)
+          fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+        sp -= n;
+        *sp++ = ops::finish_aggregate(e.function, acc, n);
+        break;
+      }
+      case Op::AggregateSet: {
+        top_ = static_cast<size_t>(sp - stack_.data());  // a body runs above the current values
+        const Instruction* body = pc + 1;
+        const Val v = aggregate(e, body, body + pc->index);
+        top_ = base;
+        *sp++ = v;
+        pc += pc->index;
+        break;
+      }
+      case Op::Unknown: fail(e, "unknown function " + e.name);
+    }
+  }
+  return sp[-1];
 }
 
 }  // namespace gmr::expr

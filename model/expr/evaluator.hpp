@@ -20,13 +20,11 @@
 #include "model/core/map.hpp"
 #include "model/expr/ast.hpp"
 #include "model/expr/embedded_map.hpp"
+#include "model/expr/program.hpp"
 #include "model/expr/type_check.hpp"
+#include "model/expr/value_ops.hpp"
 
 namespace gmr::expr {
-
-struct Val {
-  double x = 0, y = 0, z = 0, w = 0;
-};
 
 class Evaluator {
  public:
@@ -37,6 +35,14 @@ class Evaluator {
   // The value of `e` (a checked expression) with node n at node_darts[n]; `target` is checked
   // (mass of points and vectors). `where` locates errors.
   Val evaluate(const Expr& e, const Dart* node_darts, ValueType target, const std::string& where);
+  // The same with e compiled (program.hpp): the same value, the same errors.
+  Val evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where);
+
+  // Memo mode: a numbering of the <mask>-orbits that the caller already has, used instead of a
+  // sweep of the map: the dart darts[b] is in the orbit numbered numbers[b], for b < n, and these
+  // darts hold every orbit the expressions reach (two darts have the same number iff they are in
+  // the same <mask>-orbit). Read on the first use of <mask>; the arrays must live until then.
+  void share_orbit_numbers(DimMask mask, const uint32_t* numbers, const Dart* darts, size_t n);
 
   // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
   // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
@@ -54,6 +60,10 @@ class Evaluator {
 
  private:
   Val eval(const Expr& e);
+  Val run(const Instruction* pc, const Instruction* end);
+  Val aggregate(const Expr& call, const Instruction* body, const Instruction* body_end);
+  Val checked(Val v, const Expr& e, ValueType target) const;
+  Val body_value(const Expr& e);
   void members(const Expr& e, std::vector<Val>& out);
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
@@ -83,6 +93,9 @@ class Evaluator {
   struct OrbitIds {
     DimMask mask;
     Pooled<uint32_t> ids;
+    const uint32_t* numbers = nullptr;  // share_orbit_numbers, until first use
+    const Dart* darts = nullptr;
+    size_t n = 0;
   };
   const uint32_t* orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;
@@ -97,6 +110,15 @@ class Evaluator {
   static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
   std::vector<CollectMemo> memos_;
+  // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
+  // each depth (nullptr: the tree), and the value stack of the programs.
+  struct Body {
+    const Instruction* begin = nullptr;
+    const Instruction* end = nullptr;
+  };
+  Body bodies_[kMaxNesting + 1];
+  std::vector<Val> stack_;
+  size_t top_ = 0;
 };
 
 }  // namespace gmr::expr

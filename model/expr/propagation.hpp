@@ -28,6 +28,7 @@
 // the result is one class); E-merge and E-no-value are reported as above. Tested equal to the
 // general path (values per dart, issues) in model/expr/tests/component_propagation_test.cpp.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,9 +87,11 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     uint32_t expression_node = 0;    // its R node
     Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
     std::vector<Vec3> values;        // per class: the value (computed classes)
+    std::optional<Program> program;  // the expression compiled (program.hpp), when it compiles
   };
   void derive_class_kinds();
   uint32_t label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k);
+  void share_labels(const scheme::ComponentInstance& c, Evaluator& ev);
   void inherit_values(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f, ClassKind& k);
   std::vector<std::vector<ClassKind>> kinds_;  // per field, in order of expression node
   bool kinds_derived_ = false;
