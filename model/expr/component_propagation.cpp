@@ -76,6 +76,36 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   const size_t arity = c.arity;
   (void)g;
   uint32_t classes = 0;
+  if (k.positions.size() <= 2) {
+    // Under one or two involutions an orbit is a pair, a path or an alternating cycle: walked
+    // without a stack, from b along p then q then p ..., and the other way when it ends.
+    const size_t p0 = k.positions.empty() ? 0 : k.positions[0];
+    const size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
+    for (uint32_t b = 0; b < sz; ++b) {
+      if (class_of[b] != kNone) continue;
+      const uint32_t id = classes++;
+      class_of[b] = id;
+      if (k.positions.empty()) continue;
+      for (int direction = 0; direction < 2; ++direction) {
+        uint32_t x = b;
+        size_t p = direction == 0 ? p0 : p1;
+        bool closed = false;
+        for (;;) {
+          const uint32_t y = nb[x * arity + p];
+          if (y == x) break;  // a free end: walk the other way
+          if (class_of[y] != kNone) {
+            closed = true;  // back at b (a cycle), or the pair's other dart
+            break;
+          }
+          class_of[y] = id;
+          x = y;
+          p = p == p0 ? p1 : p0;
+        }
+        if (closed || p0 == p1) break;
+      }
+    }
+    return classes;
+  }
   for (uint32_t b = 0; b < sz; ++b) {
     if (class_of[b] != kNone) continue;
     const uint32_t id = classes++;

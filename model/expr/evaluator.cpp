@@ -112,7 +112,7 @@ Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType targ
   lets_.clear();
   if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
   top_ = 0;
-  return checked(run(p.code.data(), p.code.data() + p.code.size()), *p.code.front().expr, target);
+  return checked(run(p.code.data(), p.code.data() + p.code.size()), *p.root, target);
 }
 
 // The mass of a point (1) or a vector (0), checked within 1e-9 and made exact.
@@ -295,8 +295,16 @@ Val Evaluator::eval(const Expr& e) {
     case Expr::Op::Collect:
     case Expr::Op::Comprehension: fail(e, "a multiset is not a value");
     case Expr::Op::Neg: return scale(eval(*e.args[0]), -1.0);
-    case Expr::Op::Add: return add(eval(*e.args[0]), eval(*e.args[1]));
-    case Expr::Op::Sub: return sub(eval(*e.args[0]), eval(*e.args[1]));
+    // Operands evaluated left to right (the order of the errors and of the memo tables' first
+    // fills; function arguments would leave it to the compiler).
+    case Expr::Op::Add: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return add(a, b);
+    }
+    case Expr::Op::Sub: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return sub(a, b);
+    }
     case Expr::Op::Mul: {
       const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
       if (e.args[0]->type.kind == K::Scalar) return scale(b, a.x);
@@ -402,7 +410,17 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
       case Op::LetGet: *sp++ = lets_[pc->index]; break;
       case Op::LetBind: lets_.push_back(*--sp); break;
       case Op::LetDrop: lets_.pop_back(); break;
-      case Op::Value: *sp++ = field_value(e.embedding, dart_of(e.ref, e), e); break;
+      case Op::Value: {
+        // field_value(dart_of(...)) inlined; their errors on a missing dart or value.
+        Dart d = e.ref.is_variable ? vars_[e.ref.index] : nodes_[e.ref.index];
+        if (d == kNoDart) d = dart_of(e.ref, e);
+        for (const int dim : e.ref.path) d = g_.alpha(dim, d);
+        const EmbeddingField* f = fields_[static_cast<size_t>(e.embedding)];
+        const uint32_t slot = f ? f->values.slot(d) : Embedding<Vec3>::kNoValue;
+        if (slot == Embedding<Vec3>::kNoValue) field_value(e.embedding, d, e);
+        *sp++ = from_storage(f->values.value(slot), sigs_[static_cast<size_t>(e.embedding)].type);
+        break;
+      }
       case Op::Neg: sp[-1] = ops::neg(sp[-1]); break;
       case Op::Add: --sp; sp[-1] = add(sp[-1], sp[0]); break;
       case Op::Sub: --sp; sp[-1] = sub(sp[-1], sp[0]); break;

@@ -187,6 +187,7 @@ class Compiler {
 
 std::optional<Program> compile_program(const Expr& e, size_t stack_limit) {
   Program p;
+  p.root = &e;
   Compiler(p).emit(e);
   if (p.max_stack > stack_limit) return std::nullopt;
   return p;

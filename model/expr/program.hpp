@@ -42,6 +42,7 @@ struct Instruction {
 };
 
 struct Program {
+  const Expr* root = nullptr;  // the expression compiled (must outlive the program)
   std::vector<Instruction> code;
   size_t max_stack = 0;  // values on the stack at most, nested bodies included
 };
