@@ -74,7 +74,7 @@ const uint32_t* Evaluator::orbit_ids(DimMask mask) {
 }
 
 Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collect) {
-  const DimMask mo = collect.orbit.mask();
+  const DimMask mo = collect.orbit_mask;
   for (auto& m : memos_)
     if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
   memos_.push_back({call.function, mo, collect.embedding, {}, {}});
@@ -83,6 +83,51 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
   m.at->assign(g_.capacity(), kNone);
   m.values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
+}
+
+// The memo of a collect filled by one sweep of the map, every <o>-orbit at once (the collect is
+// needed at most orbits when memo mode is on): each orbit's darts in the order of a walk from its
+// first dart (visit_all_orbits), one value per <c>-orbit met, told apart by the orbit numbers. An
+// orbit with a dart without value, or meeting more than kSmallOrbit <c>-orbits, is left to the
+// lazy path, which evaluates (or reports) it when it is asked for.
+void Evaluator::fill_memo(CollectMemo& m, const Expr& call, const Expr& collect) {
+  m.filled = true;
+  const EmbeddingField* f = fields_[static_cast<size_t>(collect.embedding)];
+  if (!f) return;
+  const ValueType type = sigs_[static_cast<size_t>(collect.embedding)].type;
+  const uint32_t* ids = orbit_ids(collect.class_mask);
+  std::vector<Dart>& darts = memo_darts_;
+  uint32_t met[kSmallOrbit];
+  size_t count = 0;
+  bool ok = false;
+  Val acc;
+  auto finish_orbit = [&] {
+    if (ok && !darts.empty()) {
+      const auto idx = static_cast<uint32_t>(m.values->size());
+      m.values->push_back(ops::finish_aggregate(call.function, acc, count));
+      for (Dart x : darts) (*m.at)[x] = idx;
+    }
+    darts.clear();
+    count = 0;
+    acc = {};
+    ok = true;
+  };
+  visit_all_orbits(
+      g_, collect.orbit_mask, [&](Dart) { finish_orbit(); },
+      [&](Dart x) {
+        darts.push_back(x);
+        if (!ok) return;
+        const uint32_t id = ids[x];
+        if (std::find(met, met + count, id) != met + count) return;
+        const uint32_t slot = f->values.slot(x);
+        if (slot == Embedding<Vec3>::kNoValue || count == kSmallOrbit) {
+          ok = false;
+          return;
+        }
+        met[count++] = id;
+        acc = add(acc, from_storage(f->values.value(slot), type));
+      });
+  finish_orbit();
 }
 
 Val Evaluator::from_storage(const Vec3& s, ValueType t) {
@@ -144,8 +189,8 @@ Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
 
 void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   const Dart d = dart_of(e.ref, e);
-  const DimMask mo = e.orbit.mask();
-  const DimMask mc = e.op == Expr::Op::Collect ? sigs_[static_cast<size_t>(e.embedding)].orbit.mask() : e.classes.mask();
+  const DimMask mo = e.orbit_mask;
+  const DimMask mc = e.class_mask;
   if (!e.word.empty()) {  // walk: d, d w, d w w, ... until d again
     Dart x = d;
     double k = 0;
@@ -254,7 +299,7 @@ bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& 
   std::vector<Dart>& stack = scratch_[3 * depth + 2];
   const EmbeddingField* f = fields_[static_cast<size_t>(e.embedding)];
   if (!f) return false;
-  const DimMask inter = e.orbit.mask() & mc;
+  const DimMask inter = e.orbit_mask & mc;
   pieces.clear();
   slots_.clear();
   size_t marked = 0;
@@ -370,10 +415,11 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
   const Expr& arg = *e.args[0];
   // A memoised collect (memoise_collects): its value is the one of its <o>-orbit.
   const bool memo = memo_on_ && arg.op == Expr::Op::Collect && arg.word.empty() &&
-                    (arg.orbit.mask() & ~sigs_[static_cast<size_t>(arg.embedding)].orbit.mask()) != 0;
+                    (arg.orbit_mask & ~arg.class_mask) != 0;
   CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
   if (cm) {
     const Dart d = dart_of(arg.ref, arg);
+    if (!cm->filled) fill_memo(*cm, e, arg);
     if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
   }
   // One buffer per nesting depth: members() of a deeper comprehension uses the next one.

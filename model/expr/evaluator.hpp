@@ -86,9 +86,12 @@ class Evaluator {
     int embedding;
     Pooled<uint32_t> at;  // per dart: index in values, or kNone
     Pooled<Val> values;
+    bool filled = false;  // fill_memo done
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);
+  void fill_memo(CollectMemo& m, const Expr& call, const Expr& collect);
+  std::vector<Dart> memo_darts_;
   // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
   struct OrbitIds {
     DimMask mask;
