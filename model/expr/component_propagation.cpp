@@ -127,15 +127,6 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   return classes;
 }
 
-// The classes of a kind are the orbits of the map before under k.dims (restricted to the
-// component): their labelling numbers those orbits, which the evaluator's memo mode would
-// otherwise number by a sweep of the map (Evaluator::share_orbit_numbers). The expressions read
-// darts of the component only (orbits of its darts).
-void EmbeddingPropagation::share_labels(const scheme::ComponentInstance& c, Evaluator& ev) {
-  for (auto& kinds : kinds_)
-    for (ClassKind& k : kinds) ev.share_orbit_numbers(k.dims, k.class_of->data(), c.darts.data(), c.size());
-}
-
 void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentInstance& c) {
   if (!kinds_derived_) derive_class_kinds();
   const scheme::RuleScheme& s = *cs_.scheme;
@@ -143,16 +134,10 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
   std::vector<const EmbeddingField*> fields;
   for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   Evaluator ev(g, cs_.embeddings, fields);
-  const bool memo = sz * 8 >= g.capacity();
-  ev.memoise_collects(memo);
-  std::vector<uint32_t> classes;
-  for (auto& kinds : kinds_)
-    for (ClassKind& k : kinds) classes.push_back(label_classes(g, c, k));
-  if (memo) share_labels(c, ev);
-  size_t ki = 0;
+  ev.memoise_collects(sz * 8 >= g.capacity());
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
-      const uint32_t count = classes[ki++];
+      const uint32_t count = label_classes(g, c, k);
       k.values.clear();
       if (k.declaration < 0) continue;
       const auto e = static_cast<size_t>(k.declaration);

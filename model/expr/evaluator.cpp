@@ -46,24 +46,9 @@ void Evaluator::memoise_collects(bool on) {
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
 }
 
-void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const Dart* darts, size_t n) {
-  for (auto& o : ids_)
-    if (o.mask == mask) return;
-  ids_.push_back({mask, {}, numbers, darts, n});
-}
-
 const uint32_t* Evaluator::orbit_ids(DimMask mask) {
-  for (auto& o : ids_) {
-    if (o.mask != mask) continue;
-    if (o.numbers) {  // shared: scattered to the darts on first use
-      o.ids.reserve(g_.capacity());
-      o.ids->resize(g_.capacity());
-      uint32_t* v = o.ids->data();
-      for (size_t b = 0; b < o.n; ++b) v[o.darts[b]] = o.numbers[b];
-      o.numbers = nullptr;
-    }
-    return o.ids->data();
-  }
+  for (auto& o : ids_)
+    if (o.mask == mask) return o.ids->data();
   ids_.push_back({mask, {}});
   ids_.back().ids.reserve(g_.capacity());
   std::vector<uint32_t>& v = *ids_.back().ids;
@@ -83,51 +68,6 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
   m.at->assign(g_.capacity(), kNone);
   m.values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
-}
-
-// The memo of a collect filled by one sweep of the map, every <o>-orbit at once (the collect is
-// needed at most orbits when memo mode is on): each orbit's darts in the order of a walk from its
-// first dart (visit_all_orbits), one value per <c>-orbit met, told apart by the orbit numbers. An
-// orbit with a dart without value, or meeting more than kSmallOrbit <c>-orbits, is left to the
-// lazy path, which evaluates (or reports) it when it is asked for.
-void Evaluator::fill_memo(CollectMemo& m, const Expr& call, const Expr& collect) {
-  m.filled = true;
-  const EmbeddingField* f = fields_[static_cast<size_t>(collect.embedding)];
-  if (!f) return;
-  const ValueType type = sigs_[static_cast<size_t>(collect.embedding)].type;
-  const uint32_t* ids = orbit_ids(collect.class_mask);
-  std::vector<Dart>& darts = memo_darts_;
-  uint32_t met[kSmallOrbit];
-  size_t count = 0;
-  bool ok = false;
-  Val acc;
-  auto finish_orbit = [&] {
-    if (ok && !darts.empty()) {
-      const auto idx = static_cast<uint32_t>(m.values->size());
-      m.values->push_back(ops::finish_aggregate(call.function, acc, count));
-      for (Dart x : darts) (*m.at)[x] = idx;
-    }
-    darts.clear();
-    count = 0;
-    acc = {};
-    ok = true;
-  };
-  visit_all_orbits(
-      g_, collect.orbit_mask, [&](Dart) { finish_orbit(); },
-      [&](Dart x) {
-        darts.push_back(x);
-        if (!ok) return;
-        const uint32_t id = ids[x];
-        if (std::find(met, met + count, id) != met + count) return;
-        const uint32_t slot = f->values.slot(x);
-        if (slot == Embedding<Vec3>::kNoValue || count == kSmallOrbit) {
-          ok = false;
-          return;
-        }
-        met[count++] = id;
-        acc = add(acc, from_storage(f->values.value(slot), type));
-      });
-  finish_orbit();
 }
 
 Val Evaluator::from_storage(const Vec3& s, ValueType t) {
@@ -419,7 +359,6 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
   CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
   if (cm) {
     const Dart d = dart_of(arg.ref, arg);
-    if (!cm->filled) fill_memo(*cm, e, arg);
     if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
   }
   // One buffer per nesting depth: members() of a deeper comprehension uses the next one.

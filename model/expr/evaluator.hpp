@@ -38,11 +38,6 @@ class Evaluator {
   // The same with e compiled (program.hpp): the same value, the same errors.
   Val evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where);
 
-  // Memo mode: a numbering of the <mask>-orbits that the caller already has, used instead of a
-  // sweep of the map: the dart darts[b] is in the orbit numbered numbers[b], for b < n, and these
-  // darts hold every orbit the expressions reach (two darts have the same number iff they are in
-  // the same <mask>-orbit). Read on the first use of <mask>; the arrays must live until then.
-  void share_orbit_numbers(DimMask mask, const uint32_t* numbers, const Dart* darts, size_t n);
 
   // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
   // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
@@ -86,19 +81,13 @@ class Evaluator {
     int embedding;
     Pooled<uint32_t> at;  // per dart: index in values, or kNone
     Pooled<Val> values;
-    bool filled = false;  // fill_memo done
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);
-  void fill_memo(CollectMemo& m, const Expr& call, const Expr& collect);
-  std::vector<Dart> memo_darts_;
   // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
   struct OrbitIds {
     DimMask mask;
     Pooled<uint32_t> ids;
-    const uint32_t* numbers = nullptr;  // share_orbit_numbers, until first use
-    const Dart* darts = nullptr;
-    size_t n = 0;
   };
   const uint32_t* orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;

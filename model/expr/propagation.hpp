@@ -91,7 +91,6 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   };
   void derive_class_kinds();
   uint32_t label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k);
-  void share_labels(const scheme::ComponentInstance& c, Evaluator& ev);
   void inherit_values(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f, ClassKind& k);
   std::vector<std::vector<ClassKind>> kinds_;  // per field, in order of expression node
   bool kinds_derived_ = false;
