@@ -134,10 +134,21 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
   std::vector<const EmbeddingField*> fields;
   for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   Evaluator ev(g, cs_.embeddings, fields);
-  ev.memoise_collects(sz * 8 >= g.capacity());
+  const bool memo = sz * 8 >= g.capacity();
+  ev.memoise_collects(memo);
+  std::vector<uint32_t> counts;
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
-      const uint32_t count = label_classes(g, c, k);
+      counts.push_back(label_classes(g, c, k));
+      // The classes of a kind are the orbits of the map before under k.dims, numbered: the
+      // evaluator's memo mode tells orbits apart by these numbers instead of numbering them by a
+      // sweep of the map (the expressions read darts of the component only).
+      if (memo && c.index) ev.share_orbit_numbers(k.dims, k.class_of->data(), c.index->data());
+    }
+  size_t ki = 0;
+  for (auto& kinds : kinds_)
+    for (ClassKind& k : kinds) {
+      const uint32_t count = counts[ki++];
       k.values.clear();
       if (k.declaration < 0) continue;
       const auto e = static_cast<size_t>(k.declaration);

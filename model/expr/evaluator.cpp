@@ -46,16 +46,22 @@ void Evaluator::memoise_collects(bool on) {
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
 }
 
-const uint32_t* Evaluator::orbit_ids(DimMask mask) {
+void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index) {
   for (auto& o : ids_)
-    if (o.mask == mask) return o.ids->data();
+    if (o.mask == mask) return;
+  ids_.push_back({mask, {}, numbers, index});
+}
+
+const Evaluator::OrbitIds& Evaluator::orbit_ids(DimMask mask) {
+  for (auto& o : ids_)
+    if (o.mask == mask) return o;
   ids_.push_back({mask, {}});
   ids_.back().ids.reserve(g_.capacity());
   std::vector<uint32_t>& v = *ids_.back().ids;
   v.assign(g_.capacity(), kNone);
   uint32_t count = 0;
   visit_all_orbits(g_, mask, [&](Dart) { ++count; }, [&](Dart x) { v[x] = count - 1; });
-  return v.data();
+  return ids_.back();
 }
 
 Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collect) {
@@ -217,11 +223,13 @@ Val Evaluator::body_value(const Expr& e) {
 // Memo mode, the <o>-orbit in in_orbit: one member per <c>-orbit met, at its first dart, the
 // <c>-orbits told apart by their numbers (orbit_ids) instead of marking each one met.
 void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
-  const uint32_t* ids = orbit_ids(mc);
+  const OrbitIds& o = orbit_ids(mc);  // copied out: member_value may add entries to ids_
+  const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
+  const uint32_t* const index = o.index;
   uint32_t met[kSmallOrbit];
   size_t count = 0;
   for (const Dart x : in_orbit) {
-    const uint32_t id = ids[x];
+    const uint32_t id = ids[index ? index[x] : x];
     if (std::find(met, met + count, id) != met + count) continue;
     met[count++] = id;
     out.push_back(member_value(e, x));

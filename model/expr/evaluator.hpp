@@ -39,6 +39,12 @@ class Evaluator {
   Val evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where);
 
 
+  // Memo mode: a numbering of the <mask>-orbits the caller already has, used instead of a sweep
+  // of the map: the dart x is in the orbit numbered numbers[index[x]] (index: the caller's own
+  // numbering of the darts, defined on every dart the expressions reach; two darts have the same
+  // number iff they are in the same <mask>-orbit). The arrays must outlive the memo mode.
+  void share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index);
+
   // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
   // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
   // the dart it is reached from (up to the order of the floating-point sum). Worth it when the
@@ -87,9 +93,11 @@ class Evaluator {
   // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
   struct OrbitIds {
     DimMask mask;
-    Pooled<uint32_t> ids;
+    Pooled<uint32_t> ids;  // the number of every dart's orbit, or:
+    const uint32_t* numbers = nullptr;  // share_orbit_numbers
+    const uint32_t* index = nullptr;
   };
-  const uint32_t* orbit_ids(DimMask mask);
+  const OrbitIds& orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
