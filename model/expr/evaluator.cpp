@@ -172,6 +172,15 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   }
   in_orbit.clear();
   last.valid = false;
+  if (memo_on_ && mo != 0 && (mo & (mo - 1)) == 0) {
+    // An <i>-orbit: d and alpha_i(d), the order of the walk below, without a marker.
+    const Dart y = g_.alpha(__builtin_ctz(mo), d);
+    in_orbit.push_back(d);
+    if (y != d && y < g_.capacity()) in_orbit.push_back(y);
+    last = {mo, d, true};
+    memo_members(e, mc, in_orbit, out);
+    return;
+  }
   ScopedMarker mo_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
