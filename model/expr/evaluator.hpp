@@ -12,6 +12,8 @@
 // builds (readers set one slot per orbit; propagation.hpp gives each orbit one slot); only when two
 // pieces share a slot are the pi-orbits marked whole. Run-time errors (a dart without value, an empty multiset's barycentre, a point
 // whose mass is not 1) are Error(Schema) located "<where>, column <c>, dart <d>".
+// An expression is evaluated either as a tree (eval, the general path) or as its compiled program
+// (program.hpp, run): the same operations in the same order, the same members, memos and errors.
 #pragma once
 #include <string>
 #include <vector>
