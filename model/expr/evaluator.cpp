@@ -229,20 +229,42 @@ Val Evaluator::body_value(const Expr& e) {
   return eval(*e.args[0]);
 }
 
-// Memo mode, the <o>-orbit in in_orbit: one member per <c>-orbit met, at its first dart, the
-// <c>-orbits told apart by their numbers (orbit_ids) instead of marking each one met.
+// Memo mode, the <o>-orbit in in_orbit (this depth's walk, last_walk_): one member per <c>-orbit
+// met, at its first dart, the <c>-orbits told apart by their numbers (orbit_ids) instead of
+// marking each one met. The first darts are kept with the walk: a second comprehension over the
+// same walk and <c> (Loop's count and middle around a vertex) reuses them. A constant body (count's
+// [0 | ...]) is not evaluated per member.
 void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
-  const OrbitIds& o = orbit_ids(mc);  // copied out: member_value may add entries to ids_
-  const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
-  const uint32_t* const index = o.index;
-  uint32_t met[kSmallOrbit];
-  size_t count = 0;
-  for (const Dart x : in_orbit) {
-    const uint32_t id = ids[index ? index[x] : x];
-    if (std::find(met, met + count, id) != met + count) continue;
-    met[count++] = id;
-    out.push_back(member_value(e, x));
+  const size_t depth = vars_.size();
+  LastWalk& last = last_walk_[depth];
+  std::vector<Dart>& firsts = member_darts_[depth];
+  if (last.members != mc) {
+    const OrbitIds& o = orbit_ids(mc);  // copied out: member_value may add entries to ids_
+    const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
+    const uint32_t* const index = o.index;
+    uint32_t met[kSmallOrbit];
+    size_t count = 0;
+    firsts.clear();
+    for (const Dart x : in_orbit) {
+      const uint32_t id = ids[index ? index[x] : x];
+      if (std::find(met, met + count, id) != met + count) continue;
+      met[count++] = id;
+      firsts.push_back(x);
+    }
+    last.members = mc;
   }
+  if (e.op == Expr::Op::Comprehension) {
+    const Body& b = bodies_[depth];
+    const bool constant = b.begin ? (b.end - b.begin == 1 && b.begin->op == Instruction::Op::Constant)
+                                  : e.args[0]->op == Expr::Op::Number;
+    if (constant) {
+      const Val v = b.begin ? Val{b.begin->value[0], b.begin->value[1], b.begin->value[2], b.begin->value[3]}
+                            : Val{e.args[0]->number, 0, 0, 0};
+      out.insert(out.end(), firsts.size(), v);
+      return;
+    }
+  }
+  for (const Dart x : firsts) out.push_back(member_value(e, x));
 }
 
 // The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one

@@ -107,7 +107,10 @@ class Evaluator {
     DimMask mask = 0;
     Dart dart = kNoDart;
     bool valid = false;
+    DimMask members = kNoMembers;  // the <c> whose first darts are in member_darts_ (memo_members)
   };
+  static constexpr DimMask kNoMembers = ~DimMask(0);
+  std::vector<Dart> member_darts_[kMaxNesting];
   LastWalk last_walk_[kMaxNesting];  // memo mode: the <o>-orbit left in each depth's scratch list
   static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
