@@ -52,6 +52,9 @@ struct Expr {
   int embedding = -1;  // Value/Collect: index of the embedding in the declarations
   int let_index = -1;  // Constant naming a let variable: its depth
   Function function = Function::None;  // Call
+  // Collect and Comprehension: the masks of <o> and of the classes told apart (<c>, or the
+  // collected embedding's orbit <o_pi> for a collect).
+  DimMask orbit_mask = 0, class_mask = 0;
 };
 
 // The expression text regenerated from the tree (normal spacing), for messages and round trips.

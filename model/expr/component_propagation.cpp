@@ -53,6 +53,7 @@ void EmbeddingPropagation::derive_class_kinds() {
         if (decl >= 0 && k.declaration < 0 && cs_.right[static_cast<size_t>(decl)][v]) {
           k.declaration = decl;
           k.expression_node = v;
+          k.program = compile_program(*cs_.right[static_cast<size_t>(decl)][v]);
         }
       }
       for (size_t p = 0; p < t.size(); ++p)
@@ -75,6 +76,36 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   const size_t arity = c.arity;
   (void)g;
   uint32_t classes = 0;
+  if (k.positions.size() <= 2) {
+    // Under one or two involutions an orbit is a pair, a path or an alternating cycle: walked
+    // without a stack, from b along p then q then p ..., and the other way when it ends.
+    const size_t p0 = k.positions.empty() ? 0 : k.positions[0];
+    const size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
+    for (uint32_t b = 0; b < sz; ++b) {
+      if (class_of[b] != kNone) continue;
+      const uint32_t id = classes++;
+      class_of[b] = id;
+      if (k.positions.empty()) continue;
+      for (int direction = 0; direction < 2; ++direction) {
+        uint32_t x = b;
+        size_t p = direction == 0 ? p0 : p1;
+        bool closed = false;
+        for (;;) {
+          const uint32_t y = nb[x * arity + p];
+          if (y == x) break;  // a free end: walk the other way
+          if (class_of[y] != kNone) {
+            closed = true;  // back at b (a cycle), or the pair's other dart
+            break;
+          }
+          class_of[y] = id;
+          x = y;
+          p = p == p0 ? p1 : p0;
+        }
+        if (closed || p0 == p1) break;
+      }
+    }
+    return classes;
+  }
   for (uint32_t b = 0; b < sz; ++b) {
     if (class_of[b] != kNone) continue;
     const uint32_t id = classes++;
@@ -103,21 +134,34 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
   std::vector<const EmbeddingField*> fields;
   for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   Evaluator ev(g, cs_.embeddings, fields);
-  ev.memoise_collects(sz * 8 >= g.capacity());
+  const bool memo = sz * 8 >= g.capacity();
+  ev.memoise_collects(memo);
+  std::vector<uint32_t> counts;
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
-      const uint32_t classes = label_classes(g, c, k);
+      counts.push_back(label_classes(g, c, k));
+      // The classes of a kind are the orbits of the map before under k.dims, numbered: the
+      // evaluator's memo mode tells orbits apart by these numbers instead of numbering them by a
+      // sweep of the map (the expressions read darts of the component only).
+      if (memo && c.index) ev.share_orbit_numbers(k.dims, k.class_of->data(), c.index->data());
+    }
+  size_t ki = 0;
+  for (auto& kinds : kinds_)
+    for (ClassKind& k : kinds) {
+      const uint32_t count = counts[ki++];
       k.values.clear();
       if (k.declaration < 0) continue;
       const auto e = static_cast<size_t>(k.declaration);
       const Expr& x = *cs_.right[e][k.expression_node];
       const std::string where = "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name +
                                 ", embedding " + cs_.embeddings[e].name;
-      k.values.reserve(classes);
+      k.values.reserve(count);
       for (uint32_t b = 0; b < sz; ++b) {
         if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
         const Dart node_dart = c.darts[b];               // the hook, L's only node
-        k.values.push_back(Evaluator::to_storage(ev.evaluate(x, &node_dart, cs_.embeddings[e].type, where)));
+        const ValueType t = cs_.embeddings[e].type;
+        k.values.push_back(Evaluator::to_storage(k.program ? ev.evaluate(*k.program, &node_dart, t, where)
+                                                           : ev.evaluate(x, &node_dart, t, where)));
         ++evaluations_;
       }
     }

@@ -11,9 +11,9 @@ namespace gmr::expr {
 
 namespace {
 
-Val add(const Val& a, const Val& b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
-Val sub(const Val& a, const Val& b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w}; }
-Val scale(const Val& a, double k) { return {a.x * k, a.y * k, a.z * k, a.w * k}; }
+using ops::add;
+using ops::scale;
+using ops::sub;
 using K = StaticType::Kind;
 
 // Whether two entries of v are equal: pairwise for the few pieces of a face or a vertex, sorted
@@ -46,20 +46,26 @@ void Evaluator::memoise_collects(bool on) {
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
 }
 
-const uint32_t* Evaluator::orbit_ids(DimMask mask) {
+void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index) {
   for (auto& o : ids_)
-    if (o.mask == mask) return o.ids->data();
+    if (o.mask == mask) return;
+  ids_.push_back({mask, {}, numbers, index});
+}
+
+const Evaluator::OrbitIds& Evaluator::orbit_ids(DimMask mask) {
+  for (auto& o : ids_)
+    if (o.mask == mask) return o;
   ids_.push_back({mask, {}});
   ids_.back().ids.reserve(g_.capacity());
   std::vector<uint32_t>& v = *ids_.back().ids;
   v.assign(g_.capacity(), kNone);
   uint32_t count = 0;
   visit_all_orbits(g_, mask, [&](Dart) { ++count; }, [&](Dart x) { v[x] = count - 1; });
-  return v.data();
+  return ids_.back();
 }
 
 Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collect) {
-  const DimMask mo = collect.orbit.mask();
+  const DimMask mo = collect.orbit_mask;
   for (auto& m : memos_)
     if (m.function == call.function && m.orbit == mo && m.embedding == collect.embedding) return &m;
   memos_.push_back({call.function, mo, collect.embedding, {}, {}});
@@ -86,12 +92,27 @@ Val Evaluator::evaluate(const Expr& e, const Dart* node_darts, ValueType target,
   where_ = &where;
   vars_.clear();
   lets_.clear();
-  Val v = eval(e);
+  for (auto& b : bodies_) b = {};
+  return checked(eval(e), e, target);
+}
+
+Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where) {
+  nodes_ = node_darts;
+  where_ = &where;
+  vars_.clear();
+  lets_.clear();
+  if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
+  top_ = 0;
+  return checked(run(p.code.data(), p.code.data() + p.code.size()), *p.root, target);
+}
+
+// The mass of a point (1) or a vector (0), checked within 1e-9 and made exact.
+Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
   if (target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9)
     fail(e, "the point's weights sum to " + std::to_string(v.w) + ", not 1 (an affine combination of points needs weights summing to 1)",
-         node_darts ? node_darts[0] : kNoDart);
+         nodes_ ? nodes_[0] : kNoDart);
   if (target == ValueType::Vector && std::fabs(v.w) > 1e-9)
-    fail(e, "the vector's weights sum to " + std::to_string(v.w) + ", not 0", node_darts ? node_darts[0] : kNoDart);
+    fail(e, "the vector's weights sum to " + std::to_string(v.w) + ", not 0", nodes_ ? nodes_[0] : kNoDart);
   if (target == ValueType::Point) v.w = 1.0;
   if (target == ValueType::Vector) v.w = 0.0;
   return v;
@@ -114,17 +135,17 @@ Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
 
 void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   const Dart d = dart_of(e.ref, e);
-  const DimMask mo = e.orbit.mask();
-  const DimMask mc = e.op == Expr::Op::Collect ? sigs_[static_cast<size_t>(e.embedding)].orbit.mask() : e.classes.mask();
+  const DimMask mo = e.orbit_mask;
+  const DimMask mc = e.class_mask;
   if (!e.word.empty()) {  // walk: d, d w, d w w, ... until d again
     Dart x = d;
     double k = 0;
     do {
-      vars_.push_back(x);
       lets_.push_back({k, 0, 0, 0});
-      out.push_back(eval(*e.args[0]));
-      lets_.pop_back();
+      vars_.push_back(x);
+      out.push_back(body_value(e));
       vars_.pop_back();
+      lets_.pop_back();
       for (int dim : e.word) x = g_.alpha(dim, x);
       k += 1;
       if (k > static_cast<double>(g_.capacity())) fail(e, "the walk does not come back to its dart", d);
@@ -151,6 +172,15 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   }
   in_orbit.clear();
   last.valid = false;
+  if (memo_on_ && mo != 0 && (mo & (mo - 1)) == 0) {
+    // An <i>-orbit: d and alpha_i(d), the order of the walk below, without a marker.
+    const Dart y = g_.alpha(__builtin_ctz(mo), d);
+    in_orbit.push_back(d);
+    if (y != d && y < g_.capacity()) in_orbit.push_back(y);
+    last = {mo, d, true};
+    memo_members(e, mc, in_orbit, out);
+    return;
+  }
   ScopedMarker mo_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
@@ -186,23 +216,55 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
 Val Evaluator::member_value(const Expr& e, Dart x) {
   if (e.op == Expr::Op::Collect) return field_value(e.embedding, x, e);
   vars_.push_back(x);
-  Val v = eval(*e.args[0]);
+  Val v = body_value(e);
   vars_.pop_back();
   return v;
 }
 
-// Memo mode, the <o>-orbit in in_orbit: one member per <c>-orbit met, at its first dart, the
-// <c>-orbits told apart by their numbers (orbit_ids) instead of marking each one met.
+// The body of a comprehension or a walk, its variable bound (the last of vars_): its compiled
+// program when the enumeration was started by one (bodies_ at the enclosing depth), else the tree.
+Val Evaluator::body_value(const Expr& e) {
+  const Body& b = bodies_[vars_.size() - 1];
+  if (b.begin) return run(b.begin, b.end);
+  return eval(*e.args[0]);
+}
+
+// Memo mode, the <o>-orbit in in_orbit (this depth's walk, last_walk_): one member per <c>-orbit
+// met, at its first dart, the <c>-orbits told apart by their numbers (orbit_ids) instead of
+// marking each one met. The first darts are kept with the walk: a second comprehension over the
+// same walk and <c> (Loop's count and middle around a vertex) reuses them. A constant body (count's
+// [0 | ...]) is not evaluated per member.
 void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
-  const uint32_t* ids = orbit_ids(mc);
-  uint32_t met[kSmallOrbit];
-  size_t count = 0;
-  for (const Dart x : in_orbit) {
-    const uint32_t id = ids[x];
-    if (std::find(met, met + count, id) != met + count) continue;
-    met[count++] = id;
-    out.push_back(member_value(e, x));
+  const size_t depth = vars_.size();
+  LastWalk& last = last_walk_[depth];
+  std::vector<Dart>& firsts = member_darts_[depth];
+  if (last.members != mc) {
+    const OrbitIds& o = orbit_ids(mc);  // copied out: member_value may add entries to ids_
+    const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
+    const uint32_t* const index = o.index;
+    uint32_t met[kSmallOrbit];
+    size_t count = 0;
+    firsts.clear();
+    for (const Dart x : in_orbit) {
+      const uint32_t id = ids[index ? index[x] : x];
+      if (std::find(met, met + count, id) != met + count) continue;
+      met[count++] = id;
+      firsts.push_back(x);
+    }
+    last.members = mc;
   }
+  if (e.op == Expr::Op::Comprehension) {
+    const Body& b = bodies_[depth];
+    const bool constant = b.begin ? (b.end - b.begin == 1 && b.begin->op == Instruction::Op::Constant)
+                                  : e.args[0]->op == Expr::Op::Number;
+    if (constant) {
+      const Val v = b.begin ? Val{b.begin->value[0], b.begin->value[1], b.begin->value[2], b.begin->value[3]}
+                            : Val{e.args[0]->number, 0, 0, 0};
+      out.insert(out.end(), firsts.size(), v);
+      return;
+    }
+  }
+  for (const Dart x : firsts) out.push_back(member_value(e, x));
 }
 
 // The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one
@@ -216,7 +278,7 @@ bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& 
   std::vector<Dart>& stack = scratch_[3 * depth + 2];
   const EmbeddingField* f = fields_[static_cast<size_t>(e.embedding)];
   if (!f) return false;
-  const DimMask inter = e.orbit.mask() & mc;
+  const DimMask inter = e.orbit_mask & mc;
   pieces.clear();
   slots_.clear();
   size_t marked = 0;
@@ -257,8 +319,16 @@ Val Evaluator::eval(const Expr& e) {
     case Expr::Op::Collect:
     case Expr::Op::Comprehension: fail(e, "a multiset is not a value");
     case Expr::Op::Neg: return scale(eval(*e.args[0]), -1.0);
-    case Expr::Op::Add: return add(eval(*e.args[0]), eval(*e.args[1]));
-    case Expr::Op::Sub: return sub(eval(*e.args[0]), eval(*e.args[1]));
+    // Operands evaluated left to right (the order of the errors and of the memo tables' first
+    // fills; function arguments would leave it to the compiler).
+    case Expr::Op::Add: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return add(a, b);
+    }
+    case Expr::Op::Sub: {
+      const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
+      return sub(a, b);
+    }
     case Expr::Op::Mul: {
       const Val a = eval(*e.args[0]), b = eval(*e.args[1]);
       if (e.args[0]->type.kind == K::Scalar) return scale(b, a.x);
@@ -281,43 +351,12 @@ Val Evaluator::eval(const Expr& e) {
     case Function::Middle:
     case Function::Sum:
     case Function::Count: {
+      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) return aggregate(e, nullptr, nullptr);
       Val acc;
-      size_t n = 0;
-      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) {
-        const Expr& arg = *e.args[0];
-        // A memoised collect (memoise_collects): its value is the one of its <o>-orbit.
-        const bool memo = memo_on_ && arg.op == Expr::Op::Collect && arg.word.empty() &&
-                          (arg.orbit.mask() & ~sigs_[static_cast<size_t>(arg.embedding)].orbit.mask()) != 0;
-        CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
-        if (cm) {
-          const Dart d = dart_of(arg.ref, arg);
-          if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
-        }
-        // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
-        std::vector<Val>& m = vals_[vars_.size()];
-        m.clear();
-        members(arg, m);
-        for (const Val& v : m) acc = add(acc, v);
-        n = m.size();
-        if (cm) {
-          Val r = acc;
-          if (e.function == Function::Count) r = {static_cast<double>(n), 0, 0, 0};
-          else if (e.function == Function::Middle && n > 0) r = scale(acc, 1.0 / static_cast<double>(n));
-          if (e.function != Function::Middle || n > 0) {
-            // members() left the darts of the <o>-orbit in this depth's first scratch list.
-            const auto idx = static_cast<uint32_t>(cm->values->size());
-            cm->values->push_back(r);
-            for (Dart x : scratch_[3 * vars_.size()]) (*cm->at)[x] = idx;
-          }
-        }
-      } else {
-        for (const auto& a : e.args) acc = add(acc, eval(*a));
-        n = e.args.size();
-      }
-      if (e.function == Function::Count) return {static_cast<double>(n), 0, 0, 0};
-      if (e.function == Function::Sum) return acc;
-      if (n == 0) fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
-      return scale(acc, 1.0 / static_cast<double>(n));
+      for (const auto& a : e.args) acc = add(acc, eval(*a));
+      if (e.function == Function::Middle && e.args.empty())
+        fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+      return ops::finish_aggregate(e.function, acc, e.args.size());
     }
     case Function::Cos: return {std::cos(eval(*e.args[0]).x), 0, 0, 0};
     case Function::Sin: return {std::sin(eval(*e.args[0]).x), 0, 0, 0};
@@ -347,6 +386,111 @@ Val Evaluator::eval(const Expr& e) {
     case Function::None: break;
   }
   fail(e, "unknown function " + e.name);
+}
+
+// middle, sum or count of the multiset call.args[0], its members' values computed by the body's
+// program [body, body_end) when given, else by the tree.
+Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instruction* body_end) {
+  const Expr& arg = *e.args[0];
+  // A memoised collect (memoise_collects): its value is the one of its <o>-orbit.
+  const bool memo = memo_on_ && arg.op == Expr::Op::Collect && arg.word.empty() &&
+                    (arg.orbit_mask & ~arg.class_mask) != 0;
+  CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
+  if (cm) {
+    const Dart d = dart_of(arg.ref, arg);
+    if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
+  }
+  // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
+  const size_t depth = vars_.size();
+  std::vector<Val>& m = vals_[depth];
+  m.clear();
+  bodies_[depth] = {body, body_end};
+  members(arg, m);
+  Val acc;
+  for (const Val& v : m) acc = add(acc, v);
+  const size_t n = m.size();
+  if (e.function == Function::Middle && n == 0)
+    fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+  const Val r = ops::finish_aggregate(e.function, acc, n);
+  if (cm) {
+    // members() left the darts of the <o>-orbit in this depth's first scratch list.
+    const auto idx = static_cast<uint32_t>(cm->values->size());
+    cm->values->push_back(r);
+    for (Dart x : scratch_[3 * depth]) (*cm->at)[x] = idx;
+  }
+  return r;
+}
+
+// A compiled program (program.hpp) on the value stack from top_: the tree's evaluation order,
+// operations and errors, without the recursion over the tree.
+Val Evaluator::run(const Instruction* pc, const Instruction* end) {
+  using Op = Instruction::Op;
+  const size_t base = top_;
+  Val* sp = stack_.data() + base;
+  for (; pc != end; ++pc) {
+    const Expr& e = *pc->expr;
+    switch (pc->op) {
+      case Op::Constant: *sp++ = {pc->value[0], pc->value[1], pc->value[2], pc->value[3]}; break;
+      case Op::LetGet: *sp++ = lets_[pc->index]; break;
+      case Op::LetBind: lets_.push_back(*--sp); break;
+      case Op::LetDrop: lets_.pop_back(); break;
+      case Op::Value: {
+        // field_value(dart_of(...)) inlined; their errors on a missing dart or value.
+        Dart d = e.ref.is_variable ? vars_[e.ref.index] : nodes_[e.ref.index];
+        if (d == kNoDart) d = dart_of(e.ref, e);
+        for (const int dim : e.ref.path) d = g_.alpha(dim, d);
+        const EmbeddingField* f = fields_[static_cast<size_t>(e.embedding)];
+        const uint32_t slot = f ? f->values.slot(d) : Embedding<Vec3>::kNoValue;
+        if (slot == Embedding<Vec3>::kNoValue) field_value(e.embedding, d, e);
+        *sp++ = from_storage(f->values.value(slot), sigs_[static_cast<size_t>(e.embedding)].type);
+        break;
+      }
+      case Op::Neg: sp[-1] = ops::neg(sp[-1]); break;
+      case Op::Add: --sp; sp[-1] = add(sp[-1], sp[0]); break;
+      case Op::Sub: --sp; sp[-1] = sub(sp[-1], sp[0]); break;
+      case Op::ScaleLeft: --sp; sp[-1] = scale(sp[0], sp[-1].x); break;
+      case Op::ScaleRight: --sp; sp[-1] = scale(sp[-1], sp[0].x); break;
+      case Op::Div:
+        --sp;
+        if (sp[0].x == 0.0) fail(e, "division by zero", nodes_ ? nodes_[0] : kNoDart);
+        sp[-1] = ops::divide(sp[-1], sp[0].x);
+        break;
+      case Op::Make: sp -= 2; sp[-1] = ops::make(e.function, sp[-1], sp[0], sp[1]); break;
+      case Op::Cos: sp[-1] = ops::cos(sp[-1]); break;
+      case Op::Sin: sp[-1] = ops::sin(sp[-1]); break;
+      case Op::Abs: sp[-1] = ops::abs(sp[-1]); break;
+      case Op::Sqrt:
+        if (sp[-1].x < 0) fail(e, "square root of a negative number", nodes_ ? nodes_[0] : kNoDart);
+        sp[-1] = ops::sqrt(sp[-1]);
+        break;
+      case Op::Norm: sp[-1] = ops::norm(sp[-1]); break;
+      case Op::Clamp: sp[-1] = ops::clamp(sp[-1]); break;
+      case Op::Dot: --sp; sp[-1] = ops::dot(sp[-1], sp[0]); break;
+      case Op::Cross: --sp; sp[-1] = ops::cross(sp[-1], sp[0]); break;
+      case Op::AggregateArgs: {
+        const size_t n = pc->index;
+        Val acc;
+        const Val* args = sp - n;
+        for (size_t k = 0; k < n; ++k) acc = add(acc, args[k]);
+        if (e.function == Function::Middle && n == 0)
+          fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
+        sp -= n;
+        *sp++ = ops::finish_aggregate(e.function, acc, n);
+        break;
+      }
+      case Op::AggregateSet: {
+        top_ = static_cast<size_t>(sp - stack_.data());  // a body runs above the current values
+        const Instruction* body = pc + 1;
+        const Val v = aggregate(e, body, body + pc->index);
+        top_ = base;
+        *sp++ = v;
+        pc += pc->index;
+        break;
+      }
+      case Op::Unknown: fail(e, "unknown function " + e.name);
+    }
+  }
+  return sp[-1];
 }
 
 }  // namespace gmr::expr

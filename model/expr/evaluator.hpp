@@ -12,6 +12,8 @@
 // builds (readers set one slot per orbit; propagation.hpp gives each orbit one slot); only when two
 // pieces share a slot are the pi-orbits marked whole. Run-time errors (a dart without value, an empty multiset's barycentre, a point
 // whose mass is not 1) are Error(Schema) located "<where>, column <c>, dart <d>".
+// An expression is evaluated either as a tree (eval, the general path) or as its compiled program
+// (program.hpp, run): the same operations in the same order, the same members, memos and errors.
 #pragma once
 #include <string>
 #include <vector>
@@ -20,13 +22,11 @@
 #include "model/core/map.hpp"
 #include "model/expr/ast.hpp"
 #include "model/expr/embedded_map.hpp"
+#include "model/expr/program.hpp"
 #include "model/expr/type_check.hpp"
+#include "model/expr/value_ops.hpp"
 
 namespace gmr::expr {
-
-struct Val {
-  double x = 0, y = 0, z = 0, w = 0;
-};
 
 class Evaluator {
  public:
@@ -37,6 +37,15 @@ class Evaluator {
   // The value of `e` (a checked expression) with node n at node_darts[n]; `target` is checked
   // (mass of points and vectors). `where` locates errors.
   Val evaluate(const Expr& e, const Dart* node_darts, ValueType target, const std::string& where);
+  // The same with e compiled (program.hpp): the same value, the same errors.
+  Val evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where);
+
+
+  // Memo mode: a numbering of the <mask>-orbits the caller already has, used instead of a sweep
+  // of the map: the dart x is in the orbit numbered numbers[index[x]] (index: the caller's own
+  // numbering of the darts, defined on every dart the expressions reach; two darts have the same
+  // number iff they are in the same <mask>-orbit). The arrays must outlive the memo mode.
+  void share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index);
 
   // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
   // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
@@ -54,6 +63,10 @@ class Evaluator {
 
  private:
   Val eval(const Expr& e);
+  Val run(const Instruction* pc, const Instruction* end);
+  Val aggregate(const Expr& call, const Instruction* body, const Instruction* body_end);
+  Val checked(Val v, const Expr& e, ValueType target) const;
+  Val body_value(const Expr& e);
   void members(const Expr& e, std::vector<Val>& out);
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
@@ -82,9 +95,11 @@ class Evaluator {
   // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
   struct OrbitIds {
     DimMask mask;
-    Pooled<uint32_t> ids;
+    Pooled<uint32_t> ids;  // the number of every dart's orbit, or:
+    const uint32_t* numbers = nullptr;  // share_orbit_numbers
+    const uint32_t* index = nullptr;
   };
-  const uint32_t* orbit_ids(DimMask mask);
+  const OrbitIds& orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
@@ -92,11 +107,23 @@ class Evaluator {
     DimMask mask = 0;
     Dart dart = kNoDart;
     bool valid = false;
+    DimMask members = kNoMembers;  // the <c> whose first darts are in member_darts_ (memo_members)
   };
+  static constexpr DimMask kNoMembers = ~DimMask(0);
+  std::vector<Dart> member_darts_[kMaxNesting];
   LastWalk last_walk_[kMaxNesting];  // memo mode: the <o>-orbit left in each depth's scratch list
   static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
   std::vector<CollectMemo> memos_;
+  // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
+  // each depth (nullptr: the tree), and the value stack of the programs.
+  struct Body {
+    const Instruction* begin = nullptr;
+    const Instruction* end = nullptr;
+  };
+  Body bodies_[kMaxNesting + 1];
+  std::vector<Val> stack_;
+  size_t top_ = 0;
 };
 
 }  // namespace gmr::expr

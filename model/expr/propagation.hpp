@@ -24,10 +24,13 @@
 // So the classes are derived once per scheme and embedding (V and those dimensions), each class's
 // expression is evaluated at its first node with an expression and its first orbit dart (the
 // order of step 1), its darts receive one slot in one sweep (step 2), and a class without
-// expression takes the slot of its preserved darts (step 3). No overlap can occur (each orbit of
+// expression takes the slot of its preserved darts (step 3). Each kind's expression is compiled
+// once into a flat program (program.hpp), and in memo mode the evaluator tells orbits apart by the
+// kinds' class labels. No overlap can occur (each orbit of
 // the result is one class); E-merge and E-no-value are reported as above. Tested equal to the
 // general path (values per dart, issues) in model/expr/tests/component_propagation_test.cpp.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,6 +89,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     uint32_t expression_node = 0;    // its R node
     Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
     std::vector<Vec3> values;        // per class: the value (computed classes)
+    std::optional<Program> program;  // the expression compiled (program.hpp), when it compiles
   };
   void derive_class_kinds();
   uint32_t label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k);

@@ -234,6 +234,8 @@ class Checker {
         check_orbit(e, e.orbit);
         resolve(e.ref);
         e.embedding = embedding(e);
+        e.orbit_mask = e.orbit.mask();
+        e.class_mask = c_.embeddings[static_cast<size_t>(e.embedding)].orbit.mask();
         return StaticType::multiset(StaticType::of(c_.embeddings[static_cast<size_t>(e.embedding)].type));
       }
       case Expr::Op::Comprehension: {
@@ -243,6 +245,8 @@ class Checker {
           if (d < 0 || d > c_.dimension)
             fail(e, "dimension " + std::to_string(d) + " outside 0.." + std::to_string(c_.dimension));
         resolve(e.ref);
+        e.orbit_mask = e.orbit.mask();
+        e.class_mask = e.classes.mask();
         vars_.push_back(e.name);
         if (!e.word.empty()) lets_.emplace_back(e.index, StaticType::scalar());
         const StaticType body = check(*e.args[0]);

@@ -1,0 +1,196 @@
+#include "model/expr/program.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/expr/value_ops.hpp"
+
+namespace gmr::expr {
+
+namespace {
+
+using Op = Instruction::Op;
+using K = StaticType::Kind;
+
+Instruction constant(const Expr& e, const Val& v) {
+  Instruction i;
+  i.op = Op::Constant;
+  i.expr = &e;
+  i.value[0] = v.x;
+  i.value[1] = v.y;
+  i.value[2] = v.z;
+  i.value[3] = v.w;
+  return i;
+}
+
+Val value_of(const Instruction& i) { return {i.value[0], i.value[1], i.value[2], i.value[3]}; }
+
+class Compiler {
+ public:
+  explicit Compiler(Program& p) : p_(p) {}
+
+  // Emits e's code; the stack grows by one value.
+  void emit(const Expr& e) {
+    const size_t start = p_.code.size();
+    switch (e.op) {
+      case Expr::Op::Number: push(constant(e, {e.number, 0, 0, 0})); return;
+      case Expr::Op::Constant:
+        if (e.let_index >= 0) {
+          push(simple(Op::LetGet, e, static_cast<uint32_t>(e.let_index)));
+        } else {
+          push(constant(e, {M_PI, 0, 0, 0}));
+        }
+        return;
+      case Expr::Op::Let:
+        emit(*e.args[0]);
+        pop_to(simple(Op::LetBind, e), 1);
+        emit(*e.args[1]);
+        p_.code.push_back(simple(Op::LetDrop, e));
+        return;
+      case Expr::Op::Value: push(simple(Op::Value, e)); return;
+      case Expr::Op::Collect:
+      case Expr::Op::Comprehension: break;  // only under an aggregate (type checker)
+      case Expr::Op::Neg: unary(e, Op::Neg, start); return;
+      case Expr::Op::Add: binary(e, Op::Add, start); return;
+      case Expr::Op::Sub: binary(e, Op::Sub, start); return;
+      case Expr::Op::Mul: binary(e, e.args[0]->type.kind == K::Scalar ? Op::ScaleLeft : Op::ScaleRight, start); return;
+      case Expr::Op::Div: binary(e, Op::Div, start); return;
+      case Expr::Op::Call: break;
+    }
+    switch (e.function) {
+      case Function::Point:
+      case Function::Vector:
+      case Function::Colour:
+        for (const auto& a : e.args) emit(*a);
+        finish(e, simple(Op::Make, e), 3, start);
+        return;
+      case Function::Middle:
+      case Function::Sum:
+      case Function::Count:
+        if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) {
+          aggregate_set(e);
+          return;
+        }
+        for (const auto& a : e.args) emit(*a);
+        finish(e, simple(Op::AggregateArgs, e, static_cast<uint32_t>(e.args.size())), e.args.size(), start);
+        return;
+      case Function::Cos: unary(e, Op::Cos, start); return;
+      case Function::Sin: unary(e, Op::Sin, start); return;
+      case Function::Abs: unary(e, Op::Abs, start); return;
+      case Function::Sqrt: unary(e, Op::Sqrt, start); return;
+      case Function::Norm: unary(e, Op::Norm, start); return;
+      case Function::Clamp: unary(e, Op::Clamp, start); return;
+      case Function::Dot: binary(e, Op::Dot, start); return;
+      case Function::Cross: binary(e, Op::Cross, start); return;
+      case Function::None: break;
+    }
+    push(simple(Op::Unknown, e));  // not for checked expressions; the run fails on it
+  }
+
+ private:
+  static Instruction simple(Op op, const Expr& e, uint32_t index = 0) {
+    Instruction i;
+    i.op = op;
+    i.expr = &e;
+    i.index = index;
+    return i;
+  }
+  void push(const Instruction& i) {
+    p_.code.push_back(i);
+    ++depth_;
+    p_.max_stack = std::max(p_.max_stack, depth_);
+  }
+  // An instruction that pops `n` values (LetBind: n = 1, pushes nothing).
+  void pop_to(const Instruction& i, size_t n) {
+    p_.code.push_back(i);
+    depth_ -= n;
+  }
+  // An instruction that pops `n` values and pushes one; folded when its operands are constants
+  // that the run would not reject (division by zero, square root of a negative number).
+  void finish(const Expr& e, const Instruction& i, size_t n, size_t start) {
+    if (p_.code.size() - start == n && std::all_of(p_.code.begin() + static_cast<long>(start), p_.code.end(),
+                                                   [](const Instruction& x) { return x.op == Op::Constant; })) {
+      Val v[3];
+      for (size_t k = 0; k < n; ++k) v[k] = value_of(p_.code[start + k]);
+      std::optional<Val> r = fold(e, i, v, n);
+      if (r) {
+        p_.code.resize(start);
+        depth_ -= n;
+        push(constant(e, *r));
+        return;
+      }
+    }
+    p_.code.push_back(i);
+    depth_ -= n;
+    ++depth_;
+  }
+  void unary(const Expr& e, Op op, size_t start) {
+    emit(*e.args[0]);
+    finish(e, simple(op, e), 1, start);
+  }
+  void binary(const Expr& e, Op op, size_t start) {
+    emit(*e.args[0]);
+    emit(*e.args[1]);
+    finish(e, simple(op, e), 2, start);
+  }
+  static std::optional<Val> fold(const Expr& e, const Instruction& i, const Val* v, size_t n) {
+    switch (i.op) {
+      case Op::Neg: return ops::neg(v[0]);
+      case Op::Add: return ops::add(v[0], v[1]);
+      case Op::Sub: return ops::sub(v[0], v[1]);
+      case Op::ScaleLeft: return ops::scale(v[1], v[0].x);
+      case Op::ScaleRight: return ops::scale(v[0], v[1].x);
+      case Op::Div:
+        if (v[1].x == 0.0) return std::nullopt;
+        return ops::divide(v[0], v[1].x);
+      case Op::Make: return ops::make(e.function, v[0], v[1], v[2]);
+      case Op::Cos: return ops::cos(v[0]);
+      case Op::Sin: return ops::sin(v[0]);
+      case Op::Abs: return ops::abs(v[0]);
+      case Op::Sqrt:
+        if (v[0].x < 0) return std::nullopt;
+        return ops::sqrt(v[0]);
+      case Op::Norm: return ops::norm(v[0]);
+      case Op::Clamp: return ops::clamp(v[0]);
+      case Op::Dot: return ops::dot(v[0], v[1]);
+      case Op::Cross: return ops::cross(v[0], v[1]);
+      case Op::AggregateArgs: {
+        if (n == 0 && e.function == Function::Middle) return std::nullopt;
+        Val acc;
+        for (size_t k = 0; k < n; ++k) acc = ops::add(acc, v[k]);
+        return ops::finish_aggregate(e.function, acc, n);
+      }
+      default: return std::nullopt;
+    }
+  }
+  // The multiset's members are enumerated by the evaluator; a comprehension's or a walk's body is
+  // compiled right after the instruction, on top of the current stack.
+  void aggregate_set(const Expr& e) {
+    const Expr& m = *e.args[0];
+    const size_t at = p_.code.size();
+    p_.code.push_back(simple(Op::AggregateSet, e));
+    if (m.op == Expr::Op::Comprehension) {
+      const size_t saved = depth_;
+      emit(*m.args[0]);
+      depth_ = saved;
+    }
+    p_.code[at].index = static_cast<uint32_t>(p_.code.size() - at - 1);
+    ++depth_;
+    p_.max_stack = std::max(p_.max_stack, depth_);
+  }
+
+  Program& p_;
+  size_t depth_ = 0;
+};
+
+}  // namespace
+
+std::optional<Program> compile_program(const Expr& e, size_t stack_limit) {
+  Program p;
+  p.root = &e;
+  Compiler(p).emit(e);
+  if (p.max_stack > stack_limit) return std::nullopt;
+  return p;
+}
+
+}  // namespace gmr::expr
