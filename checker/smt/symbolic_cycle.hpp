@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "checker/smt/cycle_table.hpp"
 #include "checker/smt/symbolic_rule.hpp"
 #include "model/rewrite/rule.hpp"
 
@@ -44,6 +45,16 @@ class SymbolicCycle {
   unsigned mask_of(const std::vector<std::string>& nodes) const;
   // "Every placement of the pattern that the slots of `mask` have in m has ok = verdict".
   z3::expr lemma(const z3::model& m, unsigned mask, bool verdict) const;
+  // The table's verdicts as lemmas, before any solving: for every pattern of k nodes and every
+  // set S of k slots, "the slots of S, in order, carry the pattern => ok(S) = its verdict" (the
+  // order-preserving placement keeps the family's status order; the table holds every labelling
+  // of the pattern's nodes, so every placement of a component is one of these).
+  z3::expr_vector table_lemmas(const CycleTable& table) const;
+  // The failing cubes as lemmas: for every cube of k nodes and every set S of k slots, "the slots
+  // of S, in order, lie in the cube => not ok(S)". Valid on the rules that satisfy Theorems 1-2
+  // (every component of such a rule is a pattern of the table, and the cube holds no holding
+  // one): the soundness query, which asserts them.
+  z3::expr_vector cube_lemmas(const CycleTable& table, const std::vector<PatternCube>& cubes) const;
 
  private:
   const SymbolicRule& rule_;
