@@ -419,7 +419,7 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   rep.cycle_cubes = cubes.size();
   decide_sound(rep, parts, extra, cs, table, cubes,
                [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
-  decide_complete(rep, parts, extra, cs, table, start);
+  if (!opt.sound_only) decide_complete(rep, parts, extra, cs, table, start);
   return rep;
 }
 
@@ -474,13 +474,17 @@ std::string to_text(const SymbolicReport& r) {
   }
   if (r.smallest_unsound) s << unsound_witness_text(*r.smallest_unsound);
   s << "\n  complete: ";
-  if (!r.complete_decided) {
+  if (o.sound_only) {
+    s << "not asked";
+  } else if (!r.complete_decided) {
     s << "undecided (time limit hit)";
   } else {
     s << (r.complete() ? "yes" : "NO");
   }
-  std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
-  s << buf;
+  if (!o.sound_only) {
+    std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
+    s << buf;
+  }
   if (!MapSpec{o.n, o.kind}.cycle_pairs().empty()) {
     std::snprintf(buf, sizeof buf,
                   "\n  cycle condition: %zu component patterns tabulated by the concrete checker "
