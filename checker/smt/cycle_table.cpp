@@ -152,7 +152,7 @@ PatternBits pattern_bits(const ComponentPattern& p, size_t labels) {
   return bits;
 }
 
-std::vector<PatternCube> failing_cubes(const CycleTable& table) {
+std::vector<PatternCube> verdict_cubes(const CycleTable& table, bool verdict) {
   const size_t nl = table.labels.size();
   auto inside = [](const PatternBits& p, const PatternBits& care, const PatternBits& value) {
     return (p[0] & care[0]) == value[0] && (p[1] & care[1]) == value[1];
@@ -160,16 +160,17 @@ std::vector<PatternCube> failing_cubes(const CycleTable& table) {
   std::vector<PatternCube> out;
   for (size_t k = 1; k <= static_cast<size_t>(table.max_nodes); ++k) {
     const size_t vars = pattern_variables(k, nl);
-    if (vars > 128) throw std::logic_error("failing_cubes: more than 128 pattern variables");
+    if (vars > 128) throw std::logic_error("verdict_cubes: more than 128 pattern variables");
+    // `failing` are the patterns to cover (verdict `verdict`), `holding` those to keep out.
     std::vector<PatternBits> holding, failing;
     for (const ComponentPattern& p : table.patterns)
-      if (p.nodes() == k) (p.holds ? holding : failing).push_back(pattern_bits(p, nl));
+      if (p.nodes() == k) (p.holds == verdict ? failing : holding).push_back(pattern_bits(p, nl));
     PatternBits all{};
     for (size_t v = 0; v < vars; ++v) all[v / 64] |= uint64_t{1} << (v % 64);
     std::vector<bool> covered(failing.size(), false);
     for (size_t f = 0; f < failing.size(); ++f) {
       if (covered[f]) continue;
-      PatternCube c{k, all, failing[f]};
+      PatternCube c{k, verdict, all, failing[f]};
       for (size_t v = vars; v-- > 0;) {
         PatternBits care = c.care;
         care[v / 64] &= ~(uint64_t{1} << (v % 64));

@@ -44,17 +44,20 @@ struct CycleTable {
 using PatternBits = std::array<uint64_t, 2>;
 struct PatternCube {
   size_t nodes = 0;
+  bool holds = false;  // the verdict of every pattern of the table in the cube
   PatternBits care{}, value{};
 };
 PatternBits pattern_bits(const ComponentPattern& p, size_t labels);
 // The number of variables of a k-node pattern (at most 128 for the cubes).
 size_t pattern_variables(size_t k, size_t labels);
 
-// Cubes that together contain every failing pattern of the table and no holding one: each a
-// failing pattern with as many variables dropped as keep every holding pattern of its size out
-// (greedy, in variable order from the last). A pattern of the family inside a cube is therefore
-// either failing or not a component satisfying Theorems 1-2 (then C_r does not read it).
-std::vector<PatternCube> failing_cubes(const CycleTable& table);
+// Cubes that together contain every pattern of the table with the verdict `verdict` and no
+// pattern with the other: each such pattern with as many variables dropped as keep every pattern
+// of the other verdict and of its size out (greedy, in variable order from the last). A pattern of
+// the family inside a cube therefore has that verdict, or is not a component satisfying Theorems
+// 1-2 (then C_r does not read it).
+std::vector<PatternCube> verdict_cubes(const CycleTable& table, bool verdict);
+inline std::vector<PatternCube> failing_cubes(const CycleTable& table) { return verdict_cubes(table, false); }
 
 // Every component pattern of 1..max_nodes nodes (max_nodes <= 4: 107,480 connected 4-node
 // patterns on the labels 0, 2 of 2-G-maps) with its verdict in `reading`. `rule_labels` are the

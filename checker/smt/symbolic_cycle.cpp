@@ -175,7 +175,8 @@ z3::expr_vector SymbolicCycle::table_lemmas(const CycleTable& table) const {
 }
 
 z3::expr_vector SymbolicCycle::cube_lemmas(const CycleTable& table,
-                                           const std::vector<PatternCube>& cubes) const {
+                                           const std::vector<PatternCube>& cubes,
+                                           const z3::expr& guard) const {
   z3::context& c = rule_.ctx();
   z3::expr_vector out(c);
   const int n = rule_.slots();
@@ -202,7 +203,8 @@ z3::expr_vector SymbolicCycle::cube_lemmas(const CycleTable& table,
         if (!((cube.care[v / 64] >> (v % 64)) & 1u)) continue;
         clause.push_back((cube.value[v / 64] >> (v % 64)) & 1u ? !var[v] : var[v]);
       }
-      clause.push_back(!ok_[s]);
+      clause.push_back(cube.holds ? ok_[s] : !ok_[s]);
+      if (!guard.is_true()) clause.push_back(!guard);
       out.push_back(z3::mk_or(clause));
     }
   }

@@ -50,11 +50,14 @@ class SymbolicCycle {
   // order-preserving placement keeps the family's status order; the table holds every labelling
   // of the pattern's nodes, so every placement of a component is one of these).
   z3::expr_vector table_lemmas(const CycleTable& table) const;
-  // The failing cubes as lemmas: for every cube of k nodes and every set S of k slots, "the slots
-  // of S, in order, lie in the cube => not ok(S)". Valid on the rules that satisfy Theorems 1-2
-  // (every component of such a rule is a pattern of the table, and the cube holds no holding
-  // one): the soundness query, which asserts them.
-  z3::expr_vector cube_lemmas(const CycleTable& table, const std::vector<PatternCube>& cubes) const;
+  // The cubes as lemmas: for every cube of k nodes and every set S of k slots, "guard and the
+  // slots of S, in order, lie in the cube => ok(S) = the cube's verdict". Valid when the guard
+  // implies Theorems 1-2 (every component of such a rule is a pattern of the table, and a cube
+  // holds no pattern of the other verdict): the soundness query asserts the failing cubes with
+  // the guard true (Theorems 1-2 are asserted there), the completeness query both kinds under a
+  // literal equal to Theorems 1-2.
+  z3::expr_vector cube_lemmas(const CycleTable& table, const std::vector<PatternCube>& cubes,
+                              const z3::expr& guard) const;
 
  private:
   const SymbolicRule& rule_;

@@ -197,7 +197,7 @@ void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCond
   q.out_of_time = out_of_time;
   // The tabulated failing components as cubes (cycle_table.hpp): valid here, where Theorems 1-2
   // hold; no oracle call for components of at most table.max_nodes nodes.
-  if (!q.cycle_label_set.empty()) q.solver.add(q.cycle.cube_lemmas(table, cubes));
+  if (!q.cycle_label_set.empty()) q.solver.add(q.cycle.cube_lemmas(table, cubes, q.ctx.bool_val(true)));
   q.solver.add(q.der.h_definitions());
   q.solver.add(q.whole());
   q.solver.add(q.der.breaks_consistency());
@@ -321,12 +321,20 @@ void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t, bool g
 // Complete: every rule failing the condition and matching some map has a breaking match.
 void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
                      const CondSpec& cs, const CycleTable& table,
+                     const std::vector<PatternCube>& cubes,
+                     const std::vector<PatternCube>& holding_cubes,
                      std::chrono::steady_clock::time_point start) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
   Query q(o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
-  // The tabulated verdicts (cycle_table.hpp), exact: here Theorems 1-2 may fail.
-  if (!q.cycle_label_set.empty()) q.solver.add(q.cycle.table_lemmas(table));
+  // The tabulated verdicts (cycle_table.hpp) as cubes of both verdicts, under a literal equal to
+  // Theorems 1-2 (which may fail here).
+  if (!q.cycle_label_set.empty()) {
+    const z3::expr t12 = q.ctx.bool_const("w_theorems12");
+    q.solver.add(t12 == q.theorems12);
+    q.solver.add(q.cycle.cube_lemmas(table, cubes, t12));
+    q.solver.add(q.cycle.cube_lemmas(table, holding_cubes, t12));
+  }
   q.out_of_time = [&] { return o.time_limit > 0 && since(start) > o.time_limit; };
   q.solver.add(!q.whole());
   // ... and it glues and preserves: a witness has only preserving matches, so this loses none,
@@ -408,18 +416,19 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   const CondSpec cs{symbolic_cycle_reading(condition), find_builtin_condition(condition)};
   const MapSpec spec{opt.n, opt.kind};
   CycleTable table;
-  std::vector<PatternCube> cubes;
+  std::vector<PatternCube> cubes, holding_cubes;
   if (!spec.cycle_pairs().empty() && opt.cycle_table_nodes > 0) {
     const auto t0 = std::chrono::steady_clock::now();
     table = cycle_table(spec, opt.labels, std::min(opt.max_nodes, opt.cycle_table_nodes), parts, cs.reading);
     cubes = failing_cubes(table);
+    if (!opt.sound_only) holding_cubes = verdict_cubes(table, true);
     rep.cycle_table_seconds = since(t0);
   }
   rep.cycle_patterns = table.patterns.size();
-  rep.cycle_cubes = cubes.size();
+  rep.cycle_cubes = cubes.size() + holding_cubes.size();
   decide_sound(rep, parts, extra, cs, table, cubes,
                [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
-  if (!opt.sound_only) decide_complete(rep, parts, extra, cs, table, start);
+  if (!opt.sound_only) decide_complete(rep, parts, extra, cs, table, cubes, holding_cubes, start);
   return rep;
 }
 
@@ -488,7 +497,7 @@ std::string to_text(const SymbolicReport& r) {
   if (!MapSpec{o.n, o.kind}.cycle_pairs().empty()) {
     std::snprintf(buf, sizeof buf,
                   "\n  cycle condition: %zu component patterns tabulated by the concrete checker "
-                  "(%zu failing cubes, %.3f s), %zu lemmas from it",
+                  "(%zu cubes, %.3f s), %zu lemmas from it",
                   r.cycle_patterns, r.cycle_cubes, r.cycle_table_seconds, r.cycle_lemmas);
   } else {
     buf[0] = 0;

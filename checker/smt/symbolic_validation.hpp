@@ -60,7 +60,7 @@ struct SymbolicReport {
   size_t refinements = 0;  // maps added to the completeness query
   size_t cycle_lemmas = 0; // verdicts of the concrete cycle checker added to the queries
   size_t cycle_patterns = 0;  // component patterns tabulated before solving (cycle_table.hpp)
-  size_t cycle_cubes = 0;     // cubes covering the failing patterns (the soundness query's)
+  size_t cycle_cubes = 0;     // cubes of the table: failing (both queries) and holding (completeness)
   double cycle_table_seconds = 0;
   double sound_seconds = 0, complete_seconds = 0;
   bool sound() const { return sound_decided && !smallest_unsound; }

@@ -132,7 +132,7 @@ TEST(CycleTable, LemmasFixOkOnEveryComponent) {
   s.add(sym.family());
   s.add(cyc.table_lemmas(table));
   cubed.add(sym.family());
-  cubed.add(cyc.cube_lemmas(table, failing_cubes(table)));
+  cubed.add(cyc.cube_lemmas(table, failing_cubes(table), ctx.bool_val(true)));
   std::vector<std::vector<const ComponentPattern*>> by_size(4);
   for (const auto& p : table.patterns) by_size[p.nodes()].push_back(&p);
   std::mt19937_64 rng(11);
