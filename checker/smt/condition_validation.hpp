@@ -45,9 +45,6 @@ struct ValidationOptions {
   // Symbolic engine: components of at most this many nodes have C_r tabulated before solving
   // (cycle_table.hpp); larger ones are learnt from the checker lazily (0: all lazily).
   int cycle_table_nodes = 4;
-  // Symbolic engine: decide soundness only (the sufficiency of the condition); completeness is
-  // left undecided.
-  bool sound_only = false;
 };
 
 struct ValidationWitness {

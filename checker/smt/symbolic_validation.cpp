@@ -421,14 +421,14 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
     const auto t0 = std::chrono::steady_clock::now();
     table = cycle_table(spec, opt.labels, std::min(opt.max_nodes, opt.cycle_table_nodes), parts, cs.reading);
     cubes = failing_cubes(table);
-    if (!opt.sound_only) holding_cubes = verdict_cubes(table, true);
+    holding_cubes = verdict_cubes(table, true);
     rep.cycle_table_seconds = since(t0);
   }
   rep.cycle_patterns = table.patterns.size();
   rep.cycle_cubes = cubes.size() + holding_cubes.size();
   decide_sound(rep, parts, extra, cs, table, cubes,
                [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
-  if (!opt.sound_only) decide_complete(rep, parts, extra, cs, table, cubes, holding_cubes, start);
+  decide_complete(rep, parts, extra, cs, table, cubes, holding_cubes, start);
   return rep;
 }
 
@@ -483,17 +483,13 @@ std::string to_text(const SymbolicReport& r) {
   }
   if (r.smallest_unsound) s << unsound_witness_text(*r.smallest_unsound);
   s << "\n  complete: ";
-  if (o.sound_only) {
-    s << "not asked";
-  } else if (!r.complete_decided) {
+  if (!r.complete_decided) {
     s << "undecided (time limit hit)";
   } else {
     s << (r.complete() ? "yes" : "NO");
   }
-  if (!o.sound_only) {
-    std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
-    s << buf;
-  }
+  std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
+  s << buf;
   if (!MapSpec{o.n, o.kind}.cycle_pairs().empty()) {
     std::snprintf(buf, sizeof buf,
                   "\n  cycle condition: %zu component patterns tabulated by the concrete checker "

@@ -99,8 +99,8 @@ TEST(CycleTable, EveryComponentIsTabulatedWithTheCheckersVerdict) {
     for (int s : p.status) EXPECT_NE(s, 2);
 }
 
-// The failing cubes of the 3-node table: every failing pattern lies in some cube, no holding one in
-// any; they are far fewer than the failing patterns.
+// The cubes of the 3-node table: every failing pattern lies in some failing cube, no holding one in
+// any (far fewer cubes than failing patterns), and the converse for the holding cubes.
 TEST(CycleTable, CubesHoldEveryFailingPatternAndNoHoldingOne) {
   const CycleTable table = cycle_table(kTableSpec, {0, 1, 2}, 3, ThesisParts{}, CycleReading::ModelCompletion);
   const std::vector<PatternCube> cubes = failing_cubes(table);
@@ -117,10 +117,22 @@ TEST(CycleTable, CubesHoldEveryFailingPatternAndNoHoldingOne) {
   EXPECT_EQ(table.patterns.size(), 2198u);  // 6 + 81 + 2111 connected patterns
   EXPECT_EQ(failing, 1166u);
   EXPECT_LT(cubes.size(), failing / 4);
+  // The holding cubes likewise: every holding pattern in one, no failing one in any.
+  const std::vector<PatternCube> holding = verdict_cubes(table, true);
+  for (const ComponentPattern& p : table.patterns) {
+    const PatternBits b = pattern_bits(p, table.labels.size());
+    size_t in = 0;
+    for (const PatternCube& c : holding)
+      in += c.nodes == p.nodes() && (b[0] & c.care[0]) == c.value[0] && (b[1] & c.care[1]) == c.value[1];
+    if (p.holds) EXPECT_GT(in, 0u);
+    else EXPECT_EQ(in, 0u);
+  }
+  EXPECT_LT(holding.size(), table.patterns.size() - failing);
 }
 
-// The table lemmas (exact) and the cube lemmas (failing, under Theorems 1-2) on 3 slots fix ok on
-// every component of a rule to the checker's verdict: rules built as disjoint unions of tabulated
+// The table lemmas (exact) and the cube lemmas (failing ones unguarded, as the soundness query has
+// them; both verdicts under a guard, as the completeness query) on 3 slots fix ok on every
+// component of a rule to the checker's verdict: rules built as disjoint unions of tabulated
 // patterns (one of 3 nodes, 2 + 1, 1 + 1 + 1 nodes), drawn at random, renamed into the family's
 // status order.
 TEST(CycleTable, LemmasFixOkOnEveryComponent) {
@@ -133,6 +145,12 @@ TEST(CycleTable, LemmasFixOkOnEveryComponent) {
   s.add(cyc.table_lemmas(table));
   cubed.add(sym.family());
   cubed.add(cyc.cube_lemmas(table, failing_cubes(table), ctx.bool_val(true)));
+  // Both verdicts' cubes under a guard literal (the completeness query's form).
+  z3::solver both(ctx);
+  const z3::expr guard = ctx.bool_const("guard");
+  both.add(sym.family());
+  both.add(cyc.cube_lemmas(table, verdict_cubes(table, false), guard));
+  both.add(cyc.cube_lemmas(table, verdict_cubes(table, true), guard));
   std::vector<std::vector<const ComponentPattern*>> by_size(4);
   for (const auto& p : table.patterns) by_size[p.nodes()].push_back(&p);
   std::mt19937_64 rng(11);
@@ -196,6 +214,14 @@ TEST(CycleTable, LemmasFixOkOnEveryComponent) {
         cubed.add(cyc.ok(cyc.mask_of(k)));
         EXPECT_EQ(cubed.check(), verdict ? z3::sat : z3::unsat) << rule_text(r);
         cubed.pop();
+        // Both kinds, guarded: ok fixed to the verdict under the guard, free without it.
+        both.push();
+        both.add(sym.describes(r));
+        both.add(cyc.ok(cyc.mask_of(k)) != ctx.bool_val(verdict));
+        EXPECT_EQ(both.check(), z3::sat) << rule_text(r);
+        both.add(guard);
+        EXPECT_EQ(both.check(), z3::unsat) << rule_text(r);
+        both.pop();
         ++checked;
       }
       // And the whole rule: C_r is the conjunction of its components' verdicts.
