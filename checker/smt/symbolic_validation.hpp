@@ -27,7 +27,9 @@
 // the whole family, since C_r reads nothing else (the completions and optimal paths of labels i, j
 // use the arcs of i and j only); every final model therefore carries the true C_r of its rule, and
 // UNSAT is a proof for the whole family. The number of lemmas is reported; each oracle verdict is
-// cross-checked with the built-in condition itself.
+// cross-checked with the built-in condition itself. Before solving, the checker's verdicts on every
+// component pattern of at most `cycle_table_nodes` nodes are tabulated and asserted as cubes
+// (cycle_table.hpp, symbolic_cycle.hpp): lemmas are then learnt for larger components only.
 #pragma once
 #include <functional>
 #include <nlohmann/json.hpp>
