@@ -134,6 +134,32 @@ CycleTable cycle_table(const MapSpec& spec, const std::vector<int>& rule_labels,
   return table;
 }
 
+ComponentPattern component_pattern(const Rule& r, std::vector<std::string> nodes, const std::vector<int>& labels) {
+  auto status = [&](const std::string& name) {
+    if (!r.left().find(name)) return 2;
+    return r.right().find(name) ? 0 : 1;
+  };
+  std::stable_sort(nodes.begin(), nodes.end(),
+                   [&](const std::string& x, const std::string& y) { return status(x) < status(y); });
+  const size_t k = nodes.size(), nl = labels.size();
+  ComponentPattern p;
+  for (const auto& name : nodes) p.status.push_back(status(name));
+  p.arcs.assign(2 * nl, 0);
+  for (bool right : {false, true}) {
+    const DGraph& g = right ? r.right() : r.left();
+    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a) {
+      if (!g.arc_alive(a)) continue;
+      const auto l = std::find(labels.begin(), labels.end(), g.arc(a).label);
+      const auto x = std::find(nodes.begin(), nodes.end(), g.name(g.arc(a).src));
+      const auto y = std::find(nodes.begin(), nodes.end(), g.name(g.arc(a).tgt));
+      if (l == labels.end() || x == nodes.end() || y == nodes.end()) continue;
+      p.arcs[(right ? nl : 0) + static_cast<size_t>(l - labels.begin())] |=
+          uint64_t{1} << (static_cast<size_t>(x - nodes.begin()) * k + static_cast<size_t>(y - nodes.begin()));
+    }
+  }
+  return p;
+}
+
 size_t pattern_variables(size_t k, size_t labels) { return 2 * k + 2 * labels * k * k; }
 
 PatternBits pattern_bits(const ComponentPattern& p, size_t labels) {

@@ -14,6 +14,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "checker/smt/condition_registry.hpp"
@@ -58,6 +59,11 @@ size_t pattern_variables(size_t k, size_t labels);
 // 1-2 (then C_r does not read it).
 std::vector<PatternCube> verdict_cubes(const CycleTable& table, bool verdict);
 inline std::vector<PatternCube> failing_cubes(const CycleTable& table) { return verdict_cubes(table, false); }
+
+// The pattern of a set of nodes of a rule (a component): the nodes in the family's status order
+// (stable on the given order), their statuses and their arcs on `labels` (holds left false).
+ComponentPattern component_pattern(const rewrite::Rule& r, std::vector<std::string> nodes,
+                                   const std::vector<int>& labels);
 
 // Every component pattern of 1..max_nodes nodes (max_nodes <= 4: 107,480 connected 4-node
 // patterns on the labels 0, 2 of 2-G-maps) with its verdict in `reading`. `rule_labels` are the

@@ -23,34 +23,10 @@ using rewrite::Rule;
 namespace {
 const MapSpec kTableSpec{2, MapKind::GMap};
 
-// The pattern of a component of r: its nodes in the family's status order (stable on names), the
-// statuses and the arcs on `labels` as the table stores them.
 std::pair<std::vector<int>, std::vector<uint64_t>> table_pattern_of(const Rule& r, std::vector<std::string> nodes,
-                                                               const std::vector<int>& labels) {
-  auto status = [&](const std::string& name) {
-    const auto v = r.left().find(name);
-    return !v ? 2 : r.right().find(name) ? 0 : 1;
-  };
-  std::stable_sort(nodes.begin(), nodes.end(),
-                   [&](const std::string& x, const std::string& y) { return status(x) < status(y); });
-  const size_t k = nodes.size(), nl = labels.size();
-  std::vector<int> st;
-  for (const auto& name : nodes) st.push_back(status(name));
-  std::vector<uint64_t> arcs(2 * nl, 0);
-  for (bool right : {false, true}) {
-    const graph::DGraph& g = right ? r.right() : r.left();
-    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a) {
-      if (!g.arc_alive(a)) continue;
-      const auto l = std::find(labels.begin(), labels.end(), g.arc(a).label);
-      if (l == labels.end()) continue;
-      const auto x = std::find(nodes.begin(), nodes.end(), g.name(g.arc(a).src));
-      const auto y = std::find(nodes.begin(), nodes.end(), g.name(g.arc(a).tgt));
-      if (x == nodes.end() || y == nodes.end()) continue;
-      arcs[(right ? nl : 0) + static_cast<size_t>(l - labels.begin())] |=
-          uint64_t{1} << (static_cast<size_t>(x - nodes.begin()) * k + static_cast<size_t>(y - nodes.begin()));
-    }
-  }
-  return {st, arcs};
+                                                                     const std::vector<int>& labels) {
+  const ComponentPattern p = component_pattern(r, std::move(nodes), labels);
+  return {p.status, p.arcs};
 }
 
 bool theorems12_on_labels(const Rule& r, const std::vector<int>& labels) {
