@@ -5,7 +5,9 @@
 //   (1) C_r of the rule = AND over its components of C_r of the component, and
 //   (2) C_r is the same on every renaming and reordering of the rule's nodes and arcs
 //       (the lemmas place a component's pattern on any slots), and with the labels 0 and 2
-//       swapped (the lemmas place the swapped pattern too).
+//       swapped (the lemmas place the swapped pattern too), and
+//   (3) every component is a pattern of the symbolic engine's table (cycle_table.hpp) with the
+//       checker's verdict on it (the table then decides C_r of every rule of the family).
 // Without w-I_r, (1) fails on some rule (looked for on one rule in 64 of those): the guard of the
 // decomposition is needed.
 #include <gtest/gtest.h>
