@@ -45,7 +45,8 @@ class SymbolicCycle {
   unsigned mask_of(const std::vector<std::string>& nodes) const;
   // "Every placement of the pattern that the slots of `mask` have in m has ok = verdict".
   z3::expr lemma(const z3::model& m, unsigned mask, bool verdict) const;
-  // The table's verdicts as lemmas, before any solving: for every pattern of k nodes and every
+  // The table's verdicts as lemmas, exactly (the engine asserts the smaller cube_lemmas; this form
+  // is the reference the tests compare them with): for every pattern of k nodes and every
   // set S of k slots, "the slots of S, in order, carry the pattern => ok(S) = its verdict" (the
   // order-preserving placement keeps the family's status order; the table holds every labelling
   // of the pattern's nodes, so every placement of a component is one of these).
