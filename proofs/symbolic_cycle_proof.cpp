@@ -11,5 +11,14 @@ using namespace gmr::proofs;
 // 2-G-maps, labels 0, 1, 2, 2 nodes (123967 rules), 8 darts.
 TEST(Proof, Thm1To3_Symbolic_2GMaps_Labels012_Nodes2_Darts8) {
   const smt::SymbolicReport r = prove_conditions_symbolic(2, MapKind::GMap, {0, 1, 2}, 2, 8);
-  EXPECT_GT(r.cycle_lemmas, 0u);  // the cycle condition was decided, not skipped
+  EXPECT_GT(r.cycle_patterns, 0u);  // the cycle condition was decided, not skipped
+  EXPECT_EQ(r.cycle_lemmas, 0u);    // every component is tabulated
+}
+
+// 2-G-maps, labels 0, 1, 2, 3 nodes (1,572,721,536 rules), 8 darts: every component pattern of at
+// most 3 nodes tabulated (2,198), no lazy lemma.
+TEST(Proof, Thm1To3_Symbolic_2GMaps_Labels012_Nodes3_Darts8) {
+  const smt::SymbolicReport r = prove_conditions_symbolic(2, MapKind::GMap, {0, 1, 2}, 3, 8);
+  EXPECT_EQ(r.cycle_patterns, 2198u);
+  EXPECT_EQ(r.cycle_lemmas, 0u);
 }

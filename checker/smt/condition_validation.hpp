@@ -42,6 +42,9 @@ struct ValidationOptions {
   uint64_t seed = 1;
   // Called now and then with (rules done, rules of the shard).
   std::function<void(size_t, size_t)> progress{};
+  // Symbolic engine: components of at most this many nodes have C_r tabulated before solving
+  // (cycle_table.hpp); larger ones are learnt from the checker lazily (0: all lazily).
+  int cycle_table_nodes = 4;
 };
 
 struct ValidationWitness {

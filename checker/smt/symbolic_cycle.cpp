@@ -145,4 +145,70 @@ z3::expr SymbolicCycle::lemma(const z3::model& m, unsigned mask, bool verdict) c
   return z3::mk_and(lemmas);
 }
 
+z3::expr_vector SymbolicCycle::table_lemmas(const CycleTable& table) const {
+  z3::context& c = rule_.ctx();
+  z3::expr_vector out(c);
+  const int n = rule_.slots();
+  const size_t nl = table.labels.size();
+  for (unsigned s = 1; s < ok_.size(); ++s) {
+    std::vector<int> slot;
+    for (int x = 0; x < n; ++x)
+      if (in(s, x)) slot.push_back(x);
+    const size_t k = slot.size();
+    for (const ComponentPattern& p : table.patterns) {
+      if (p.nodes() != k) continue;
+      z3::expr_vector same(c);
+      for (size_t x = 0; x < k; ++x) {
+        same.push_back(p.status[x] == 2 ? !rule_.in_left(slot[x]) : rule_.in_left(slot[x]));
+        same.push_back(p.status[x] == 1 ? !rule_.in_right(slot[x]) : rule_.in_right(slot[x]));
+        for (size_t y = 0; y < k; ++y)
+          for (bool right : {false, true})
+            for (size_t l = 0; l < nl; ++l) {
+              const z3::expr a = rule_.arc(right, table.labels[l], slot[x], slot[y]);
+              same.push_back(p.arc(right, l, nl, x, y) ? a : !a);
+            }
+      }
+      out.push_back(z3::implies(z3::mk_and(same), p.holds ? ok_[s] : !ok_[s]));
+    }
+  }
+  return out;
+}
+
+z3::expr_vector SymbolicCycle::cube_lemmas(const CycleTable& table,
+                                           const std::vector<PatternCube>& cubes,
+                                           const z3::expr& guard) const {
+  z3::context& c = rule_.ctx();
+  z3::expr_vector out(c);
+  const int n = rule_.slots();
+  const size_t nl = table.labels.size();
+  for (unsigned s = 1; s < ok_.size(); ++s) {
+    std::vector<int> slot;
+    for (int x = 0; x < n; ++x)
+      if (in(s, x)) slot.push_back(x);
+    const size_t k = slot.size();
+    // The pattern variables on the slots of S, in pattern_bits order.
+    std::vector<z3::expr> var;
+    for (size_t x = 0; x < k; ++x) {
+      var.push_back(rule_.in_left(slot[x]));
+      var.push_back(rule_.in_right(slot[x]));
+    }
+    for (bool right : {false, true})
+      for (size_t l = 0; l < nl; ++l)
+        for (size_t x = 0; x < k; ++x)
+          for (size_t y = 0; y < k; ++y) var.push_back(rule_.arc(right, table.labels[l], slot[x], slot[y]));
+    for (const PatternCube& cube : cubes) {
+      if (cube.nodes != k) continue;
+      z3::expr_vector clause(c);
+      for (size_t v = 0; v < var.size(); ++v) {
+        if (!((cube.care[v / 64] >> (v % 64)) & 1u)) continue;
+        clause.push_back((cube.value[v / 64] >> (v % 64)) & 1u ? !var[v] : var[v]);
+      }
+      clause.push_back(cube.holds ? ok_[s] : !ok_[s]);
+      if (!guard.is_true()) clause.push_back(!guard);
+      out.push_back(z3::mk_or(clause));
+    }
+  }
+  return out;
+}
+
 }  // namespace gmr::smt

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "checker/smt/cycle_table.hpp"
 #include "checker/smt/symbolic_rule.hpp"
 #include "model/rewrite/rule.hpp"
 
@@ -44,6 +45,20 @@ class SymbolicCycle {
   unsigned mask_of(const std::vector<std::string>& nodes) const;
   // "Every placement of the pattern that the slots of `mask` have in m has ok = verdict".
   z3::expr lemma(const z3::model& m, unsigned mask, bool verdict) const;
+  // The table's verdicts as lemmas, exactly (the engine asserts the smaller cube_lemmas; this form
+  // is the reference the tests compare them with): for every pattern of k nodes and every
+  // set S of k slots, "the slots of S, in order, carry the pattern => ok(S) = its verdict" (the
+  // order-preserving placement keeps the family's status order; the table holds every labelling
+  // of the pattern's nodes, so every placement of a component is one of these).
+  z3::expr_vector table_lemmas(const CycleTable& table) const;
+  // The cubes as lemmas: for every cube of k nodes and every set S of k slots, "guard and the
+  // slots of S, in order, lie in the cube => ok(S) = the cube's verdict". Valid when the guard
+  // implies Theorems 1-2 (every component of such a rule is a pattern of the table, and a cube
+  // holds no pattern of the other verdict): the soundness query asserts the failing cubes with
+  // the guard true (Theorems 1-2 are asserted there), the completeness query both kinds under a
+  // literal equal to Theorems 1-2.
+  z3::expr_vector cube_lemmas(const CycleTable& table, const std::vector<PatternCube>& cubes,
+                              const z3::expr& guard) const;
 
  private:
   const SymbolicRule& rule_;

@@ -11,6 +11,7 @@
 #include "checker/smt/counterexample.hpp"
 #include "checker/smt/cycle_components.hpp"
 #include "checker/smt/rule_space.hpp"
+#include "checker/smt/cycle_table.hpp"
 #include "checker/smt/symbolic_cycle.hpp"
 #include "checker/smt/symbolic_derivation.hpp"
 #include "model/core/error.hpp"
@@ -187,11 +188,16 @@ z3::expr assume(z3::solver& s, const z3::expr& e, const std::string& name) {
 
 // Sound: no rule satisfying the condition has a breaking match within the bounds.
 void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
-                  const CondSpec& cs, const std::function<bool()>& out_of_time) {
+                  const CondSpec& cs, const CycleTable& table,
+                  const std::vector<PatternCube>& cubes,
+                  const std::function<bool()>& out_of_time) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
   Query q(o, "", parts, extra, cs, &rep.cycle_lemmas);
   q.out_of_time = out_of_time;
+  // The tabulated failing components as cubes (cycle_table.hpp): valid here, where Theorems 1-2
+  // hold; no oracle call for components of at most table.max_nodes nodes.
+  if (!q.cycle_label_set.empty()) q.solver.add(q.cycle.cube_lemmas(table, cubes, q.ctx.bool_val(true)));
   q.solver.add(q.der.h_definitions());
   q.solver.add(q.whole());
   q.solver.add(q.der.breaks_consistency());
@@ -314,11 +320,21 @@ void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t, bool g
 
 // Complete: every rule failing the condition and matching some map has a breaking match.
 void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
-                     const CondSpec& cs,
+                     const CondSpec& cs, const CycleTable& table,
+                     const std::vector<PatternCube>& cubes,
+                     const std::vector<PatternCube>& holding_cubes,
                      std::chrono::steady_clock::time_point start) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
   Query q(o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
+  // The tabulated verdicts (cycle_table.hpp) as cubes of both verdicts, under a literal equal to
+  // Theorems 1-2 (which may fail here).
+  if (!q.cycle_label_set.empty()) {
+    const z3::expr t12 = q.ctx.bool_const("w_theorems12");
+    q.solver.add(t12 == q.theorems12);
+    q.solver.add(q.cycle.cube_lemmas(table, cubes, t12));
+    q.solver.add(q.cycle.cube_lemmas(table, holding_cubes, t12));
+  }
   q.out_of_time = [&] { return o.time_limit > 0 && since(start) > o.time_limit; };
   q.solver.add(!q.whole());
   // ... and it glues and preserves: a witness has only preserving matches, so this loses none,
@@ -398,9 +414,21 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   rep.options = opt;
   for (int m = 1; m <= opt.max_nodes; ++m) rep.rules += count_rules(m, opt.labels.size());
   const CondSpec cs{symbolic_cycle_reading(condition), find_builtin_condition(condition)};
-  decide_sound(rep, parts, extra, cs,
+  const MapSpec spec{opt.n, opt.kind};
+  CycleTable table;
+  std::vector<PatternCube> cubes, holding_cubes;
+  if (!spec.cycle_pairs().empty() && opt.cycle_table_nodes > 0) {
+    const auto t0 = std::chrono::steady_clock::now();
+    table = cycle_table(spec, opt.labels, std::min(opt.max_nodes, opt.cycle_table_nodes), parts, cs.reading);
+    cubes = failing_cubes(table);
+    holding_cubes = verdict_cubes(table, true);
+    rep.cycle_table_seconds = since(t0);
+  }
+  rep.cycle_patterns = table.patterns.size();
+  rep.cycle_cubes = cubes.size() + holding_cubes.size();
+  decide_sound(rep, parts, extra, cs, table, cubes,
                [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
-  decide_complete(rep, parts, extra, cs, start);
+  decide_complete(rep, parts, extra, cs, table, cubes, holding_cubes, start);
   return rep;
 }
 
@@ -426,9 +454,12 @@ nlohmann::ordered_json to_json(const SymbolicReport& r) {
     j["smallest_incomplete"] = {{"rule", io::rule_to_json(r.smallest_incomplete->rule)}};
   j["refinements"] = r.refinements;
   j["cycle_lemmas"] = r.cycle_lemmas;
+  j["cycle_patterns"] = r.cycle_patterns;
+  j["cycle_cubes"] = r.cycle_cubes;
+  j["cycle_table_seconds"] = r.cycle_table_seconds;
   j["sound_seconds"] = r.sound_seconds;
   j["complete_seconds"] = r.complete_seconds;
-  j["seconds"] = r.sound_seconds + r.complete_seconds;
+  j["seconds"] = r.cycle_table_seconds + r.sound_seconds + r.complete_seconds;
   return j;
 }
 
@@ -441,7 +472,7 @@ std::string to_text(const SymbolicReport& r) {
   for (int i : o.labels) s << " " << i;
   s << "), maps of at most " << o.bound
     << " darts, engine symbolic\n  every rule of the family at once (" << r.rules << " rules)\n";
-  char buf[96];
+  char buf[200];
   s << "  sound: ";
   if (!r.sound_decided) {
     s << "undecided (time limit hit)";
@@ -460,8 +491,10 @@ std::string to_text(const SymbolicReport& r) {
   std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
   s << buf;
   if (!MapSpec{o.n, o.kind}.cycle_pairs().empty()) {
-    std::snprintf(buf, sizeof buf, "\n  cycle condition: %zu lemmas from the concrete checker",
-                  r.cycle_lemmas);
+    std::snprintf(buf, sizeof buf,
+                  "\n  cycle condition: %zu component patterns tabulated by the concrete checker "
+                  "(%zu cubes, %.3f s), %zu lemmas from it",
+                  r.cycle_patterns, r.cycle_cubes, r.cycle_table_seconds, r.cycle_lemmas);
   } else {
     buf[0] = 0;
   }
@@ -470,7 +503,8 @@ std::string to_text(const SymbolicReport& r) {
     s << "\n    smallest: " << rule_text(r.smallest_incomplete->rule)
       << "\n    fails the condition, yet every match on every map of at most " << o.bound
       << " darts glues and preserves";
-  std::snprintf(buf, sizeof buf, "\n  time %.3f s\n", r.sound_seconds + r.complete_seconds);
+  std::snprintf(buf, sizeof buf, "\n  time %.3f s\n",
+                r.cycle_table_seconds + r.sound_seconds + r.complete_seconds);
   s << buf;
   return s.str();
 }

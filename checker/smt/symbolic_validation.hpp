@@ -27,7 +27,9 @@
 // the whole family, since C_r reads nothing else (the completions and optimal paths of labels i, j
 // use the arcs of i and j only); every final model therefore carries the true C_r of its rule, and
 // UNSAT is a proof for the whole family. The number of lemmas is reported; each oracle verdict is
-// cross-checked with the built-in condition itself.
+// cross-checked with the built-in condition itself. Before solving, the checker's verdicts on every
+// component pattern of at most `cycle_table_nodes` nodes are tabulated and asserted as cubes
+// (cycle_table.hpp, symbolic_cycle.hpp): lemmas are then learnt for larger components only.
 #pragma once
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -59,6 +61,9 @@ struct SymbolicReport {
   std::optional<ValidationWitness> smallest_unsound, smallest_incomplete;
   size_t refinements = 0;  // maps added to the completeness query
   size_t cycle_lemmas = 0; // verdicts of the concrete cycle checker added to the queries
+  size_t cycle_patterns = 0;  // component patterns tabulated before solving (cycle_table.hpp)
+  size_t cycle_cubes = 0;     // cubes of the table: failing (both queries) and holding (completeness)
+  double cycle_table_seconds = 0;
   double sound_seconds = 0, complete_seconds = 0;
   bool sound() const { return sound_decided && !smallest_unsound; }
   bool complete() const { return complete_decided && !smallest_incomplete; }

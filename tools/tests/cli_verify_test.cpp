@@ -116,14 +116,15 @@ TEST_F(CliVerify, ValidateConditionSymbolicEngine) {
   // Cycle pairs: C_r through the checker's lemmas; the variant without ij-completion is incomplete.
   const Result cyc = run("validate-condition --condition thesis --labels 0,1,2 --max-nodes 2 --bound 4 --engine symbolic");
   EXPECT_EQ(cyc.code, 0) << cyc.err;
-  EXPECT_NE(cyc.out.find("lemmas from the concrete checker"), std::string::npos) << cyc.out;
+  EXPECT_NE(cyc.out.find("component patterns tabulated by the concrete checker"), std::string::npos) << cyc.out;
   const Result wrong = run("validate-condition --condition wrong-cycle-without-completion --labels 0,1,2 --max-nodes 2 "
                            "--bound 4 --engine symbolic --json");
   EXPECT_EQ(wrong.code, 1) << wrong.err;
   const auto wdoc = nlohmann::json::parse(wrong.out);
   EXPECT_EQ(wdoc["complete"], false);
   EXPECT_TRUE(wdoc.contains("smallest_incomplete"));
-  EXPECT_GT(wdoc["cycle_lemmas"].get<int>(), 0);
+  EXPECT_GT(wdoc["cycle_patterns"].get<int>(), 0);
+  EXPECT_EQ(wdoc["cycle_lemmas"].get<int>(), 0);
   // Plug-ins and shards are refused.
   EXPECT_EQ(run("validate-condition --condition thesis --labels 0,1 --shard 0/2 --engine symbolic").code, 2);
   EXPECT_EQ(run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) + " --engine symbolic").code, 2);
