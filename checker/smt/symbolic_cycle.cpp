@@ -10,6 +10,13 @@ namespace gmr::smt {
 
 namespace {
 bool in(unsigned mask, int x) { return (mask >> x) & 1u; }
+// The slots of mask among the first n, increasing.
+std::vector<int> slots_of(unsigned mask, int n) {
+  std::vector<int> slot;
+  for (int x = 0; x < n; ++x)
+    if (in(mask, x)) slot.push_back(x);
+  return slot;
+}
 }  // namespace
 
 SymbolicCycle::SymbolicCycle(const SymbolicRule& rule, std::vector<int> cycle_labels)
@@ -151,9 +158,7 @@ z3::expr_vector SymbolicCycle::table_lemmas(const CycleTable& table) const {
   const int n = rule_.slots();
   const size_t nl = table.labels.size();
   for (unsigned s = 1; s < ok_.size(); ++s) {
-    std::vector<int> slot;
-    for (int x = 0; x < n; ++x)
-      if (in(s, x)) slot.push_back(x);
+    const std::vector<int> slot = slots_of(s, n);
     const size_t k = slot.size();
     for (const ComponentPattern& p : table.patterns) {
       if (p.nodes() != k) continue;
@@ -182,9 +187,7 @@ z3::expr_vector SymbolicCycle::cube_lemmas(const CycleTable& table,
   const int n = rule_.slots();
   const size_t nl = table.labels.size();
   for (unsigned s = 1; s < ok_.size(); ++s) {
-    std::vector<int> slot;
-    for (int x = 0; x < n; ++x)
-      if (in(s, x)) slot.push_back(x);
+    const std::vector<int> slot = slots_of(s, n);
     const size_t k = slot.size();
     // The pattern variables on the slots of S, in pattern_bits order.
     std::vector<z3::expr> var;
