@@ -153,30 +153,17 @@ z3::expr SymbolicCycle::lemma(const z3::model& m, unsigned mask, bool verdict) c
 }
 
 z3::expr_vector SymbolicCycle::table_lemmas(const CycleTable& table) const {
-  z3::context& c = rule_.ctx();
-  z3::expr_vector out(c);
-  const int n = rule_.slots();
+  // Each pattern is the cube that fixes every one of its variables.
   const size_t nl = table.labels.size();
-  for (unsigned s = 1; s < ok_.size(); ++s) {
-    const std::vector<int> slot = slots_of(s, n);
-    const size_t k = slot.size();
-    for (const ComponentPattern& p : table.patterns) {
-      if (p.nodes() != k) continue;
-      z3::expr_vector same(c);
-      for (size_t x = 0; x < k; ++x) {
-        same.push_back(p.status[x] == 2 ? !rule_.in_left(slot[x]) : rule_.in_left(slot[x]));
-        same.push_back(p.status[x] == 1 ? !rule_.in_right(slot[x]) : rule_.in_right(slot[x]));
-        for (size_t y = 0; y < k; ++y)
-          for (bool right : {false, true})
-            for (size_t l = 0; l < nl; ++l) {
-              const z3::expr a = rule_.arc(right, table.labels[l], slot[x], slot[y]);
-              same.push_back(p.arc(right, l, nl, x, y) ? a : !a);
-            }
-      }
-      out.push_back(z3::implies(z3::mk_and(same), p.holds ? ok_[s] : !ok_[s]));
-    }
+  std::vector<PatternCube> exact;
+  for (const ComponentPattern& p : table.patterns) {
+    const size_t vars = pattern_variables(p.nodes(), nl);
+    if (vars > 128) throw std::logic_error("table_lemmas: more than 128 pattern variables");
+    PatternCube cube{p.nodes(), p.holds, {}, pattern_bits(p, nl)};
+    for (size_t v = 0; v < vars; ++v) cube.care[v / 64] |= uint64_t{1} << (v % 64);
+    exact.push_back(cube);
   }
-  return out;
+  return cube_lemmas(table, exact, rule_.ctx().bool_val(true));
 }
 
 z3::expr_vector SymbolicCycle::cube_lemmas(const CycleTable& table,

@@ -49,7 +49,8 @@ class SymbolicCycle {
   // is the reference the tests compare them with): for every pattern of k nodes and every
   // set S of k slots, "the slots of S, in order, carry the pattern => ok(S) = its verdict" (the
   // order-preserving placement keeps the family's status order; the table holds every labelling
-  // of the pattern's nodes, so every placement of a component is one of these).
+  // of the pattern's nodes, so every placement of a component is one of these). Each pattern is
+  // the cube fixing all its variables, given to cube_lemmas with the guard true.
   z3::expr_vector table_lemmas(const CycleTable& table) const;
   // The cubes as lemmas: for every cube of k nodes and every set S of k slots, "guard and the
   // slots of S, in order, lie in the cube => ok(S) = the cube's verdict". Valid when the guard
