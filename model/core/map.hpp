@@ -106,6 +106,8 @@ class Map {
   void unlink(int i, Dart d);
   // Raw one-direction write (for parsers and deliberately broken graphs in tests).
   void set_alpha(int i, Dart d, Dart target) { link_[i][d] = target; }
+  // The i-link array itself, for rewrites that write whole blocks of links (no check, no growth).
+  Dart* link_data(int i) { return link_[i].data(); }
 
   // Number of i-links, a loop counting as one link (the papers' convention). For beta_1 of an
   // O-map: number of 1-arcs.

@@ -18,7 +18,8 @@ bool rewrites_whole_components(const SchemeEngine& engine, const Map& g) {
 namespace {
 
 // The flat tables of one call, reused by its components (their storage kept by the thread for its
-// next calls, buffer_pool.hpp).
+// next calls, buffer_pool.hpp). darts and nb are sized once per call for the live darts (no
+// component is larger); a component uses their first size() and size() * arity entries.
 struct Workspace {
   Pooled<uint32_t> index_pool;  // per dart of the map before the call: its b, or kNone (not yet met)
   Pooled<Dart> darts_pool;      // O.darts of the current component
@@ -28,54 +29,88 @@ struct Workspace {
   std::vector<uint32_t>& nb = *nb_pool;
 };
 
-// Phase 1: the component of `hook` in the BFS order of orbit_graph, with O's links.
-void component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w) {
+// Phase 1: the component of `hook` in the BFS order of orbit_graph, with O's links; returns its
+// size. The walk is bound by memory latency (a dart's links and index entries are far from the
+// previous dart's), so the links of the dart kAhead places further in the queue, and the index
+// entries of the darts they lead to kAhead / 2 places further, are prefetched: the order and the
+// result are the plain BFS's. Arity 0: the orbit type's size, read at run time.
+template <size_t Arity>
+size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w) {
   constexpr uint32_t kNone = ComponentInstance::kNone;
-  const size_t arity = t.size();
+  constexpr size_t kAhead = 32;
+  const size_t arity = Arity > 0 ? Arity : t.size();
   const Dart* link[kMaxDim];
   for (size_t p = 0; p < arity; ++p) link[p] = g.links(t[p]).data();
   uint32_t* index = w.index.data();
-  w.darts.clear();
-  w.nb.clear();
-  w.darts.push_back(hook);
+  Dart* darts = w.darts.data();
+  uint32_t* nb = w.nb.data();
+  size_t n = 1;
+  darts[0] = hook;
   index[hook] = 0;
-  for (size_t k = 0; k < w.darts.size(); ++k) {
-    const Dart x = w.darts[k];
+  for (size_t k = 0; k < n; ++k) {
+    if (k + kAhead < n)
+      for (size_t p = 0; p < arity; ++p) __builtin_prefetch(link[p] + darts[k + kAhead]);
+    if (k + kAhead / 2 < n)
+      for (size_t p = 0; p < arity; ++p) __builtin_prefetch(index + link[p][darts[k + kAhead / 2]], 1);
+    const Dart x = darts[k];
     for (size_t p = 0; p < arity; ++p) {
       const Dart y = link[p][x];
-      if (index[y] == kNone) {
-        index[y] = static_cast<uint32_t>(w.darts.size());
-        w.darts.push_back(y);
+      uint32_t b = index[y];
+      if (b == kNone) {
+        b = static_cast<uint32_t>(n);
+        index[y] = b;
+        darts[n++] = y;
       }
-      w.nb.push_back(index[y]);
+      nb[k * arity + p] = b;
     }
+  }
+  return n;
+}
+
+size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w) {
+  switch (t.size()) {  // the map's dimension + 1 (rewrites_whole_components): unrolled for surfaces
+    case 2: return component_orbit<2>(g, t, hook, w);
+    case 3: return component_orbit<3>(g, t, hook, w);
+    case 4: return component_orbit<4>(g, t, hook, w);
+    default: return component_orbit<0>(g, t, hook, w);
   }
 }
 
-// Phase 6: the links of R (each dart and dimension written once, by I_S).
-void write_links(Map& g, const SchemeEngine& e, const ComponentInstance& c) {
+// Phase 6: the links of R (each dart and dimension written once, by I_S). A preserved node's
+// implicit arc at position p of dimension t[p] (the relabeling keeps the dimension) is the link the
+// dart already has — T[v][b] -t[p]- T[v][nb(b, p)] with T[v][b] = O.darts[b] — and is not written.
+void write_links(Map& g, const SchemeEngine& e, const ComponentInstance& c, const OrbitType& t) {
   const RuleScheme& s = e.scheme();
   const size_t sz = c.size();
+  const size_t arity = c.arity;
+  const Dart* darts = c.darts.data();
+  const uint32_t* nb = c.nb.data();
   for (uint32_t v = 0; v < s.right.size(); ++v) {
     const OrbitType& label = s.right.nodes[v].label;
     const bool added = e.added_rank(v) != SchemeEngine::kAdded;
     const Dart first = added ? c.comatch(v, 0) : 0;
     for (size_t p = 0; p < label.size(); ++p) {
-      if (label[p] == OrbitType::kHole) continue;
       const int j = label[p];
+      if (j == OrbitType::kHole || (!added && j == t[p])) continue;
+      Dart* lj = g.link_data(j);
       if (added) {
-        for (uint32_t b = 0; b < sz; ++b) g.set_alpha(j, first + b, first + c.neighbor(b, p));
+        for (uint32_t b = 0; b < sz; ++b) lj[first + b] = first + nb[b * arity + p];
       } else {
-        for (uint32_t b = 0; b < sz; ++b) g.set_alpha(j, c.darts[b], c.darts[c.neighbor(b, p)]);
+        for (uint32_t b = 0; b < sz; ++b) lj[darts[b]] = darts[nb[b * arity + p]];
       }
     }
   }
-  for (const auto& a : s.right.arcs)
+  for (const auto& a : s.right.arcs) {
+    Dart* l = g.link_data(a.dim);
+    const bool a_added = e.added_rank(a.a) != SchemeEngine::kAdded;
+    const bool b_added = e.added_rank(a.b) != SchemeEngine::kAdded;
+    const Dart fa = a_added ? c.comatch(a.a, 0) : 0, fb = b_added ? c.comatch(a.b, 0) : 0;
     for (uint32_t b = 0; b < sz; ++b) {
-      const Dart x = c.comatch(a.a, b), y = c.comatch(a.b, b);
-      g.set_alpha(a.dim, x, y);
-      g.set_alpha(a.dim, y, x);
+      const Dart x = a_added ? fa + b : darts[b], y = b_added ? fb + b : darts[b];
+      l[x] = y;
+      l[y] = x;
     }
+  }
 }
 
 }  // namespace
@@ -93,19 +128,22 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   const Dart cap0 = g.capacity();
   w.index_pool.reserve(cap0);
   w.index.assign(cap0, ComponentInstance::kNone);
-  w.darts_pool.reserve(cap0);  // bounds; pages untouched beyond the largest component
-  w.nb_pool.reserve(cap0 * t.size());
+  const size_t live = g.size();  // no component is larger
+  w.darts_pool.reserve(live);
+  w.darts.resize(live);
+  w.nb_pool.reserve(live * t.size());
+  w.nb.resize(live * t.size());
   for (Dart d = 0; d < cap0; ++d) {
     if (!g.alive(d) || w.index[d] != ComponentInstance::kNone) continue;  // dead, or used
-    component_orbit(g, t, d, w);  // 1
-    ComponentInstance c{&engine, w.darts, w.nb, t.size(), &w.index, g.capacity()};
-    const size_t sz = c.size();
+    const size_t sz = component_orbit(g, t, d, w);  // 1
+    const std::span<const Dart> orbit(w.darts.data(), sz);
+    ComponentInstance c{&engine, orbit, std::span<const uint32_t>(w.nb.data(), sz * t.size()), t.size(), &w.index,
+                        g.capacity()};
     if (observer) observer->before_rewrite(g, c);
     if (engine.added_count() > 0) c.base = g.add_darts(engine.added_count() * sz);  // 5
-    write_links(g, engine, c);                                                        // 6
+    write_links(g, engine, c, t);                                                     // 6
     if (!engine.deleted_nodes().empty()) {  // 7: the hook, L's only node, is deleted: its darts are O's
-      for (uint32_t b = 0; b < sz; ++b) {
-        const Dart x = w.darts[b];
+      for (const Dart x : orbit) {
         for (int i = 0; i <= g.dimension(); ++i) g.set_alpha(i, x, x);
         g.remove_dart(x);
       }
@@ -116,8 +154,8 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
     app.darts_deleted = engine.deleted_nodes().size() * sz;
     if (observer) observer->after_rewrite(g, c);
     if (keep_tables) {
-      app.orbit = w.darts;
-      app.match = w.darts;
+      app.orbit.assign(orbit.begin(), orbit.end());
+      app.match = app.orbit;
       app.comatch.reserve(nr * sz);
       for (uint32_t v = 0; v < nr; ++v)
         for (uint32_t b = 0; b < sz; ++b) app.comatch.push_back(c.comatch(v, b));
