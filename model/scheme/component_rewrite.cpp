@@ -76,41 +76,102 @@ size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w
   }
 }
 
-// Phase 6: the links of R (each dart and dimension written once, by I_S). A preserved node's
-// implicit arc at position p of dimension t[p] (the relabeling keeps the dimension) is the link the
-// dart already has — T[v][b] -t[p]- T[v][nb(b, p)] with T[v][b] = O.darts[b] — and is not written.
-void write_links(Map& g, const SchemeEngine& e, const ComponentInstance& c, const OrbitType& t) {
+// Where the j-link of the darts of an added R node comes from (I_S: each dimension once per node).
+struct AddedLink {
+  enum Kind : uint8_t { Implicit, ToAdded, ToPreserved, Free } kind = Free;
+  uint32_t position = 0;  // Implicit: the label position p with label[p] = j
+  uint32_t rank = 0;      // ToAdded: the added rank of the arc's other node
+};
+
+// Per added rank r and dimension j (index r * (n + 1) + j), from R's labels and explicit arcs.
+std::vector<AddedLink> added_links(const SchemeEngine& e, int n) {
+  const RuleScheme& s = e.scheme();
+  const auto dims = static_cast<size_t>(n) + 1;
+  std::vector<AddedLink> out(e.added_count() * dims);
+  for (uint32_t v = 0; v < s.right.size(); ++v) {
+    const uint32_t r = e.added_rank(v);
+    if (r == SchemeEngine::kAdded) continue;
+    const OrbitType& label = s.right.nodes[v].label;
+    for (size_t p = 0; p < label.size(); ++p)
+      if (label[p] != OrbitType::kHole) out[r * dims + label[p]] = {AddedLink::Implicit, static_cast<uint32_t>(p), 0};
+  }
+  for (const auto& a : s.right.arcs)
+    for (const auto& [v, w] : {std::pair{a.a, a.b}, std::pair{a.b, a.a}}) {
+      const uint32_t r = e.added_rank(v), rw = e.added_rank(w);
+      if (r == SchemeEngine::kAdded) continue;
+      out[r * dims + a.dim] = rw == SchemeEngine::kAdded ? AddedLink{AddedLink::ToPreserved, 0, 0}
+                                                         : AddedLink{AddedLink::ToAdded, 0, rw};
+    }
+  return out;
+}
+
+// Phases 5 and 6 for the added nodes: their darts T[v][b] = base + rank(v) · s + b appended to the
+// map with their links (each written once, by I_S): implicit arcs follow O's links inside the
+// node's block, explicit arcs lead to the same b in the other node's block or to O.darts[b].
+Dart add_rewritten_darts(Map& g, const SchemeEngine& e, const ComponentInstance& c,
+                         const std::vector<AddedLink>& links) {
+  const size_t sz = c.size(), arity = c.arity;
+  const auto dims = static_cast<size_t>(g.dimension()) + 1;
+  const Dart* darts = c.darts.data();
+  const uint32_t* nb = c.nb.data();
+  return g.add_linked_darts(e.added_count() * sz, [&](int j, Dart base, LinkAppender& out) {
+    for (size_t r = 0; r < e.added_count(); ++r) {
+      const Dart first = base + static_cast<Dart>(r * sz);
+      const AddedLink& l = links[r * dims + static_cast<size_t>(j)];
+      switch (l.kind) {
+        case AddedLink::Implicit: {
+          const uint32_t* from = nb + l.position;
+          out.append(sz, [first, from, arity](size_t b) { return first + from[b * arity]; });
+          break;
+        }
+        case AddedLink::ToAdded: {
+          const Dart other = base + static_cast<Dart>(l.rank * sz);
+          out.append(sz, [other](size_t b) { return other + static_cast<Dart>(b); });
+          break;
+        }
+        case AddedLink::ToPreserved:
+          out.append(sz, [darts](size_t b) { return darts[b]; });
+          break;
+        case AddedLink::Free:
+          out.append(sz, [first](size_t b) { return first + static_cast<Dart>(b); });
+          break;
+      }
+    }
+  });
+}
+
+// Phase 6 for the preserved node (the hook's): its implicit arcs whose relabeling changes the
+// dimension, and its ends of explicit arcs. An implicit arc at position p of dimension t[p] is the
+// link the dart already has — T[v][b] -t[p]- T[v][nb(b, p)] with T[v][b] = O.darts[b] — and is not
+// written.
+void write_preserved_links(Map& g, const SchemeEngine& e, const ComponentInstance& c, const OrbitType& t) {
   const RuleScheme& s = e.scheme();
   const size_t sz = c.size();
   const size_t arity = c.arity;
   const Dart* darts = c.darts.data();
   const uint32_t* nb = c.nb.data();
   for (uint32_t v = 0; v < s.right.size(); ++v) {
+    if (e.added_rank(v) != SchemeEngine::kAdded) continue;
     const OrbitType& label = s.right.nodes[v].label;
-    const bool added = e.added_rank(v) != SchemeEngine::kAdded;
-    const Dart first = added ? c.comatch(v, 0) : 0;
     for (size_t p = 0; p < label.size(); ++p) {
       const int j = label[p];
-      if (j == OrbitType::kHole || (!added && j == t[p])) continue;
+      if (j == OrbitType::kHole || j == t[p]) continue;
       Dart* lj = g.link_data(j);
-      if (added) {
-        for (uint32_t b = 0; b < sz; ++b) lj[first + b] = first + nb[b * arity + p];
+      for (uint32_t b = 0; b < sz; ++b) lj[darts[b]] = darts[nb[b * arity + p]];
+    }
+  }
+  for (const auto& a : s.right.arcs)
+    for (const auto& [v, w] : {std::pair{a.a, a.b}, std::pair{a.b, a.a}}) {
+      if (e.added_rank(v) != SchemeEngine::kAdded) continue;
+      Dart* l = g.link_data(a.dim);
+      const uint32_t rw = e.added_rank(w);
+      if (rw == SchemeEngine::kAdded) {  // a loop on the preserved node
+        for (uint32_t b = 0; b < sz; ++b) l[darts[b]] = darts[b];
       } else {
-        for (uint32_t b = 0; b < sz; ++b) lj[darts[b]] = darts[nb[b * arity + p]];
+        const Dart other = c.comatch(w, 0);
+        for (uint32_t b = 0; b < sz; ++b) l[darts[b]] = other + b;
       }
     }
-  }
-  for (const auto& a : s.right.arcs) {
-    Dart* l = g.link_data(a.dim);
-    const bool a_added = e.added_rank(a.a) != SchemeEngine::kAdded;
-    const bool b_added = e.added_rank(a.b) != SchemeEngine::kAdded;
-    const Dart fa = a_added ? c.comatch(a.a, 0) : 0, fb = b_added ? c.comatch(a.b, 0) : 0;
-    for (uint32_t b = 0; b < sz; ++b) {
-      const Dart x = a_added ? fa + b : darts[b], y = b_added ? fb + b : darts[b];
-      l[x] = y;
-      l[y] = x;
-    }
-  }
 }
 
 }  // namespace
@@ -128,7 +189,9 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   const Dart cap0 = g.capacity();
   w.index_pool.reserve(cap0);
   w.index.assign(cap0, ComponentInstance::kNone);
-  const size_t live = g.size();  // no component is larger
+  const std::vector<AddedLink> links = added_links(engine, g.dimension());
+  const size_t live = g.size();  // no component is larger; every live dart is rewritten
+  g.reserve(g.capacity() + engine.added_count() * live);  // the links grow once
   w.darts_pool.reserve(live);
   w.darts.resize(live);
   w.nb_pool.reserve(live * t.size());
@@ -140,8 +203,8 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
     ComponentInstance c{&engine, orbit, std::span<const uint32_t>(w.nb.data(), sz * t.size()), t.size(), &w.index,
                         g.capacity()};
     if (observer) observer->before_rewrite(g, c);
-    if (engine.added_count() > 0) c.base = g.add_darts(engine.added_count() * sz);  // 5
-    write_links(g, engine, c, t);                                                     // 6
+    if (engine.added_count() > 0) c.base = add_rewritten_darts(g, engine, c, links);  // 5, 6
+    write_preserved_links(g, engine, c, t);                                             // 6
     if (!engine.deleted_nodes().empty()) {  // 7: the hook, L's only node, is deleted: its darts are O's
       for (const Dart x : orbit) {
         for (int i = 0; i <= g.dimension(); ++i) g.set_alpha(i, x, x);
