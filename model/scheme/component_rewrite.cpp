@@ -196,9 +196,11 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   w.darts.resize(live);
   w.nb_pool.reserve(live * t.size());
   w.nb.resize(live * t.size());
-  for (Dart d = 0; d < cap0; ++d) {
+  size_t rewritten = 0;  // live darts of the components met so far: all met, no more hooks
+  for (Dart d = 0; d < cap0 && rewritten < live; ++d) {
     if (!g.alive(d) || w.index[d] != ComponentInstance::kNone) continue;  // dead, or used
     const size_t sz = component_orbit(g, t, d, w);  // 1
+    rewritten += sz;
     const std::span<const Dart> orbit(w.darts.data(), sz);
     ComponentInstance c{&engine, orbit, std::span<const uint32_t>(w.nb.data(), sz * t.size()), t.size(), &w.index,
                         g.capacity()};
