@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <iterator>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "model/core/map_spec.hpp"
@@ -156,9 +157,9 @@ class Map {
   Dart grow_capacity(size_t k);
   // Room for n links in l, moved into a pooled or a fresh huge-page array (the old one pooled).
   static void grown_links(std::vector<Dart>& l, size_t n);
-  // Undoes grow_capacity(k) (new capacity first), then throws Error(Usage) naming dimension i.
+  // Back to capacity `first` (undoes grow_capacity), then throws Error(Usage) naming dimension i.
   [[noreturn]] void refuse_unfilled_links(Dart first, int i);
-  void shrink_capacity(Dart first);
+  void shrink_capacity(Dart first);  // back to capacity `first`, the links past it dropped
 
   int n_;
   MapKind kind_;
