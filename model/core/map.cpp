@@ -14,6 +14,7 @@ const char* to_string(MapKind kind) { return kind == MapKind::GMap ? "gmap" : "o
 
 void Bitset::resize(size_t n) {
   words_.resize((n + 63) / 64, 0);
+  if (n < size_ && n % 64 != 0) words_.back() &= (uint64_t(1) << (n % 64)) - 1;  // bits past n read 0 when regrown
   size_ = n;
 }
 
@@ -45,31 +46,54 @@ DimMask Map::dims_mask() const {
 }
 
 void Map::reserve(size_t k) {
-  for (int i = lowest_dim(); i <= n_; ++i) reserve_in_huge_pages(link_[i], k);
+  for (int i = lowest_dim(); i <= n_; ++i) grown_links(link_[i], k);
 }
 
-Dart Map::add_darts(size_t k) {
+void Map::grown_links(std::vector<Dart>& l, size_t n) {
+  if (l.capacity() >= n) return;
+  // Into a pooled or a fresh (huge-page) array, the old one pooled.
+  std::vector<Dart> grown = take_buffer<Dart>(n);
+  reserve_in_huge_pages(grown, n);
+  grown.assign(l.begin(), l.end());
+  give_buffer(std::move(l));
+  l = std::move(grown);
+}
+
+Dart Map::grow_capacity(size_t k) {
   if (capacity_ + k >= kNoDart)
     throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")");
   const Dart first = capacity();
   capacity_ += k;
-  // New darts are free (a loop at every dimension): written once, without a zero fill first.
-  const auto fresh = std::views::iota(first, static_cast<Dart>(capacity_));
   for (int i = lowest_dim(); i <= n_; ++i) {
     auto& l = link_[i];
-    if (l.capacity() < capacity_) {  // into a pooled or a fresh (huge-page) array, the old one pooled
-      const size_t want = std::max(capacity_, 2 * l.size());
-      std::vector<Dart> grown = take_buffer<Dart>(want);
-      reserve_in_huge_pages(grown, want);
-      grown.assign(l.begin(), l.end());
-      give_buffer(std::move(l));
-      l = std::move(grown);
-    }
-    l.insert(l.end(), fresh.begin(), fresh.end());
+    if (l.capacity() < capacity_) grown_links(l, std::max(capacity_, 2 * l.size()));
   }
   dead_.resize(capacity_);
   for (auto& m : marks_) m.resize(capacity_);
   return first;
+}
+
+void Map::shrink_capacity(Dart first) {
+  capacity_ = first;
+  for (int i = lowest_dim(); i <= n_; ++i)
+    if (link_[i].size() > capacity_) link_[i].resize(capacity_);
+  dead_.resize(capacity_);
+  for (auto& m : marks_) m.resize(capacity_);
+}
+
+void Map::refuse_unfilled_links(Dart first, int i) {
+  const size_t given = link_[i].size() - std::min<size_t>(link_[i].size(), first), wanted = capacity_ - first;
+  shrink_capacity(first);
+  throw Error(ErrorCode::Usage, "adding " + std::to_string(wanted) + " linked darts, " + std::to_string(given) + " " +
+                                    std::to_string(i) + "-links were given",
+              "dart " + std::to_string(first));
+}
+
+Dart Map::add_darts(size_t k) {
+  // New darts are free (a loop at every dimension): written once, without a zero fill first.
+  return add_linked_darts(k, [k](int, Dart first, LinkAppender& out) {
+    out.append(k, [first](size_t x) { return first + static_cast<Dart>(x); });
+  });
 }
 
 Dart Map::add_dart() {

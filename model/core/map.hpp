@@ -13,8 +13,11 @@
 // clear the marker), release it. They live in `mutable` storage so that const traversals can use
 // them; a Map is therefore not safe for concurrent traversals.
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "model/core/map_spec.hpp"
@@ -46,6 +49,20 @@ class Bitset {
   size_t size_ = 0;
 };
 
+// The links of darts being added by Map::add_linked_darts, appended to one link array block by
+// block, each written once.
+class LinkAppender {
+ public:
+  // Appends count links: gen(x) for x = 0, 1, ..., count - 1.
+  template <class Gen>
+  void append(size_t count, Gen&& gen);
+
+ private:
+  friend class Map;
+  explicit LinkAppender(std::vector<Dart>& links) : links_(links) {}
+  std::vector<Dart>& links_;
+};
+
 class Map {
  public:
   // An n-G-map (dimensions 0..n) or an n-O-map (dimensions 1..n). n in [0, kMaxDim-1]; for O-maps
@@ -73,6 +90,13 @@ class Map {
   Dart add_dart();
   // k new consecutive darts at the end of the index range (never reuses deleted ones).
   Dart add_darts(size_t k);
+  // k new consecutive darts at the end of the index range, linked as given instead of free: for
+  // each dimension i of the map, fill(i, first, out) appends the i-links of darts first..first+k-1
+  // in order through `out` (LinkAppender::append). Each link array is written once, with no free
+  // state in between; the caller makes the links valid. Throws Error(Usage) if a fill does not
+  // append exactly k links; the map is then as before the call (so too if a fill throws).
+  template <class Fill>
+  Dart add_linked_darts(size_t k, Fill&& fill);
   // Deletes a dart. Darts linked to it become free in that dimension (their link becomes a loop);
   // for beta_1 of an O-map the predecessor's link becomes a loop too.
   void remove_dart(Dart d);
@@ -81,6 +105,7 @@ class Map {
   // One past the largest dart index ever used.
   Dart capacity() const { return static_cast<Dart>(capacity_); }
   bool has_holes() const { return !free_list_.empty(); }
+  // Room for k darts in every link array (one move of the links when they grow).
   void reserve(size_t k);
 
   template <class F>
@@ -106,6 +131,8 @@ class Map {
   void unlink(int i, Dart d);
   // Raw one-direction write (for parsers and deliberately broken graphs in tests).
   void set_alpha(int i, Dart d, Dart target) { link_[i][d] = target; }
+  // The i-link array itself, for rewrites that write whole blocks of links (no check, no growth).
+  Dart* link_data(int i) { return link_[i].data(); }
 
   // Number of i-links, a loop counting as one link (the papers' convention). For beta_1 of an
   // O-map: number of 1-arcs.
@@ -125,6 +152,15 @@ class Map {
   size_t memory_bytes() const;
 
  private:
+  // Grows the capacity by k: the limit checked, room for capacity_ + k links (grown_links), the
+  // dead set and the markers resized. Returns the first new dart; the link arrays are not written.
+  Dart grow_capacity(size_t k);
+  // Room for n links in l, moved into a pooled or a fresh huge-page array (the old one pooled).
+  static void grown_links(std::vector<Dart>& l, size_t n);
+  // Back to capacity `first` (undoes grow_capacity), then throws Error(Usage) naming dimension i.
+  [[noreturn]] void refuse_unfilled_links(Dart first, int i);
+  void shrink_capacity(Dart first);  // back to capacity `first`, the links past it dropped
+
   int n_;
   MapKind kind_;
   size_t capacity_ = 0;
@@ -158,5 +194,58 @@ class ScopedMarker {
   int m_;
   bool clean_ = false;
 };
+
+namespace detail {
+// gen(x) for x = first, first + 1, ...: a forward iterator, so that vector::insert writes each
+// element once into its final place.
+template <class Gen>
+class GeneratedIterator {
+ public:
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = Dart;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const Dart*;
+  using reference = Dart;
+  GeneratedIterator() = default;
+  GeneratedIterator(const Gen* gen, size_t x) : gen_(gen), x_(x) {}
+  Dart operator*() const { return (*gen_)(x_); }
+  GeneratedIterator& operator++() {
+    ++x_;
+    return *this;
+  }
+  GeneratedIterator operator++(int) {
+    GeneratedIterator old = *this;
+    ++x_;
+    return old;
+  }
+  bool operator==(const GeneratedIterator& o) const { return x_ == o.x_; }
+
+ private:
+  const Gen* gen_ = nullptr;
+  size_t x_ = 0;
+};
+}  // namespace detail
+
+template <class Gen>
+void LinkAppender::append(size_t count, Gen&& gen) {
+  using It = detail::GeneratedIterator<std::remove_cvref_t<Gen>>;
+  links_.insert(links_.end(), It(&gen, 0), It(&gen, count));
+}
+
+template <class Fill>
+Dart Map::add_linked_darts(size_t k, Fill&& fill) {
+  const Dart first = grow_capacity(k);
+  for (int i = lowest_dim(); i <= n_; ++i) {
+    LinkAppender out(link_[static_cast<size_t>(i)]);
+    try {
+      fill(i, first, out);
+    } catch (...) {
+      shrink_capacity(first);
+      throw;
+    }
+    if (link_[static_cast<size_t>(i)].size() != capacity_) refuse_unfilled_links(first, i);
+  }
+  return first;
+}
 
 }  // namespace gmr

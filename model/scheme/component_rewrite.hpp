@@ -12,7 +12,12 @@
 //                   = base + rank(v) · s + b          (v added, rank among the added nodes),
 // implicit arcs follow O's links (T[v][b] –j– T[v][nb(b, p)]), explicit arcs stay at b, and the
 // deleted darts are freed. This path does it on flat arrays shared by the components of one call
-// (the dart index doubles as the "used" table, no hashing, no match table). The result is the map
+// (the dart index doubles as the "used" table, no hashing, no match table), in three passes per
+// component: the BFS (with prefetching), the added nodes' darts appended with their links — one
+// sequential write per dimension and node, each link written once (Map::add_linked_darts) — and
+// the preserved node's changed links (its implicit arcs whose relabeling keeps the dimension are
+// the links it already has, and are not rewritten). The link arrays grow once per call, to the
+// final size. The result is the map
 // SchemeEngine::apply gives, dart for dart (tested against it on random maps and schemes in
 // model/scheme/tests/component_rewrite_test.cpp).
 #pragma once

@@ -11,18 +11,24 @@
 // Counters: darts_per_second (darts of the result per second of subdivision: gmr's darts; for
 // CGAL the same number, the results being isomorphic — model/expr/tests/subdivision_slow_test.cpp)
 // and vertices_per_second (vertices of the result per second). `gmr_topology_only` runs the same
-// applications on the map without embeddings (the engine's share of gmr's time).
+// applications on the map without embeddings (the engine's share of gmr's time); `link_write_floor`
+// is the memory traffic any rewrite of these maps pays, as plain sequential loops: per iteration,
+// the links before copied into the result's arrays and every added dart's links written once from
+// them (3 arrays of the result's darts written, the arrays before read), in storage reused across
+// iterations as gmr's buffer pool reuses it.
 #include <benchmark/benchmark.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
@@ -106,6 +112,36 @@ void run_gmr_topology(benchmark::State& state, const char* rule) {
   }
 }
 
+void run_link_floor(benchmark::State& state, const char* rule) {
+  const Fixture& f = fixture();
+  const gmr::scheme::RuleScheme s = gmr::io::read_scheme_file(std::string(GMR_RULES_DIR) + "/" + rule);
+  const gmr::scheme::SchemeEngine engine(s);
+  std::vector<size_t> sizes{f.map.map.capacity()};  // darts before each iteration, and after the last
+  gmr::Map g = f.map.map;
+  for (int k = 0; k < kIterations; ++k) {
+    gmr::scheme::apply_everywhere(engine, g, /*keep_tables=*/false);
+    sizes.push_back(g.capacity());
+  }
+  const int dims = g.dimension() + 1;
+  std::vector<std::vector<gmr::Dart>> a(static_cast<size_t>(dims), std::vector<gmr::Dart>(sizes.back())),
+      b = a;  // touched before timing
+  for (int i = 0; i < dims; ++i) std::copy_n(f.map.map.links(i).begin(), sizes[0], a[static_cast<size_t>(i)].begin());
+  for (auto _ : state) {
+    for (int k = 0; k < kIterations; ++k) {
+      const size_t n = sizes[static_cast<size_t>(k)], blocks = sizes[static_cast<size_t>(k) + 1] / n;
+      for (size_t i = 0; i < a.size(); ++i) {
+        const gmr::Dart* from = a[i].data();
+        gmr::Dart* to = b[i].data();
+        for (size_t r = 0; r < blocks; ++r)
+          for (size_t x = 0; x < n; ++x) to[r * n + x] = from[x] + static_cast<gmr::Dart>(r * n);
+      }
+      std::swap(a, b);
+    }
+    benchmark::DoNotOptimize(a[0].data());
+    benchmark::ClobberMemory();
+  }
+}
+
 template <class Subdivide>
 void run_cgal(benchmark::State& state, Subdivide subdivide) {
   const Fixture& f = fixture();
@@ -134,6 +170,8 @@ void BM_catmull_clark_cgal(benchmark::State& state) {
 void BM_loop_gmr(benchmark::State& state) { run_gmr(state, "loop_subdivision.json"); }
 void BM_catmull_clark_topology(benchmark::State& state) { run_gmr_topology(state, "quad_subdivision.json"); }
 void BM_loop_topology(benchmark::State& state) { run_gmr_topology(state, "loop_subdivision.json"); }
+void BM_catmull_clark_floor(benchmark::State& state) { run_link_floor(state, "quad_subdivision.json"); }
+void BM_loop_floor(benchmark::State& state) { run_link_floor(state, "loop_subdivision.json"); }
 void BM_loop_cgal(benchmark::State& state) {
   run_cgal(state, [](Mesh& m) {
     CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
@@ -148,4 +186,6 @@ BENCHMARK(BM_loop_gmr)->Name("subdivision_loop/gmr")->Unit(benchmark::kMilliseco
 BENCHMARK(BM_loop_cgal)->Name("subdivision_loop/cgal")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_catmull_clark_topology)->Name("subdivision_catmull_clark/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_loop_topology)->Name("subdivision_loop/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_catmull_clark_floor)->Name("subdivision_catmull_clark/link_write_floor")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_loop_floor)->Name("subdivision_loop/link_write_floor")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_MAIN();

@@ -58,6 +58,64 @@ TEST(Map, MarkersAreReusable) {
   EXPECT_FALSE(again.test(7));  // cleared on release
 }
 
+TEST(Map, LinkedDartsAreAddedWithTheirLinks) {
+  // A square (8 darts) glued to a second square built by add_linked_darts: the new darts' 0- and
+  // 1-links copy the first square's shifted by 8, their 2-links lead back to it (and are written
+  // there by hand, as a rewrite writes the preserved side).
+  Map g = make_polygon(4);
+  const Dart first = g.add_linked_darts(8, [&](int i, Dart base, LinkAppender& out) {
+    if (i == 2) {
+      out.append(8, [](size_t x) { return static_cast<Dart>(x); });
+      return;
+    }
+    out.append(3, [&g, i, base](size_t x) { return base + g.alpha(i, static_cast<Dart>(x)); });  // blocks
+    out.append(5, [&g, i, base](size_t x) { return base + g.alpha(i, static_cast<Dart>(x + 3)); });
+  });
+  EXPECT_EQ(first, 8u);
+  EXPECT_EQ(g.capacity(), 16u);
+  for (Dart d = 0; d < 8; ++d) g.set_alpha(2, d, d + 8);
+  for (Dart d = 0; d < 8; ++d)
+    for (int i = 0; i < 2; ++i) EXPECT_EQ(g.alpha(i, d + 8), g.alpha(i, d) + 8) << d;
+  EXPECT_TRUE(is_valid(g));
+  EXPECT_EQ(count_cells(g, 2), 2u);
+}
+
+TEST(Map, LinkedDartsWithMissingLinksLeaveTheMapUnchanged) {
+  Map g = make_polygon(3);
+  const int m = g.reserve_marker();
+  const Map before = g;
+  try {
+    g.add_linked_darts(4, [](int i, Dart base, LinkAppender& out) {
+      out.append(i == 1 ? 3 : 4, [base](size_t x) { return base + static_cast<Dart>(x); });
+    });
+    ADD_FAILURE() << "a fill of 3 links for 4 darts was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Usage);
+    EXPECT_NE(std::string(e.what()).find("1-links"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(g.add_linked_darts(2, [](int, Dart, LinkAppender&) { throw Error(ErrorCode::Range, "fill"); }), Error);
+  EXPECT_EQ(g.capacity(), before.capacity());
+  for (int i = 0; i <= 2; ++i) EXPECT_EQ(g.links(i), before.links(i)) << i;
+  EXPECT_EQ(g.add_darts(70), 6u);  // the markers and the dead set regrow clean
+  for (Dart d = 6; d < 76; ++d) {
+    EXPECT_TRUE(g.alive(d)) << d;
+    EXPECT_FALSE(g.is_marked(d, m)) << d;
+  }
+  g.release_marker(m);
+}
+
+TEST(Map, BitsetShrunkThenRegrownReadsZeroPastTheCut) {
+  Bitset b;
+  b.resize(100);
+  b.set(64);
+  b.set(70);
+  b.resize(65);
+  b.resize(100);
+  EXPECT_TRUE(b.test(64));
+  EXPECT_FALSE(b.test(70));
+  EXPECT_EQ(b.count(), 1u);
+}
+
 TEST(Map, MemoryPerDart) {
   for (int n : {2, 3}) {
     Map g = n == 2 ? make_torus(100, 100, 2) : make_polycube(menger_voxels(2));
