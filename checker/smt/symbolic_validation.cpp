@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "checker/rule_check.hpp"
 #include "checker/smt/counterexample.hpp"
@@ -72,12 +73,10 @@ struct CondSpec {
   const BuiltinCondition* builtin;
 };
 
-// The common part of both queries: the symbolic rule, a symbolic map and its derivation, in the
-// validation's one context. Each query has its own solver, Z3's SMT core alone
-// (z3::solver::simple()): the default solver also sets up a tactic solver for a first check
-// without assumptions, which was most of the time of a small family (docs/verify.md). The
-// condition is the formula of Theorems 1-2 (`theorems12`) and, with cycle pairs,
-// the Boolean `cycle_holds` standing for C_r, which solve() ties to the concrete checker lazily.
+// The common part of both queries: the symbolic rule, a symbolic map and its derivation, with the
+// query's own solver (query_solver); the condition is the formula of Theorems 1-2 (`theorems12`)
+// and, with cycle pairs, the Boolean `cycle_holds` standing for C_r, which solve() ties to the
+// concrete checker lazily.
 struct Query {
   z3::context& ctx;
   SymbolicRule rule;
@@ -91,7 +90,7 @@ struct Query {
   const BuiltinCondition* builtin;  // the whole condition, to cross-check (nullptr: extra given)
   size_t* lemmas;
   std::function<bool()> out_of_time;  // checked between lemmas
-  Query(z3::context& c, const ValidationOptions& o, const std::string& prefix,
+  Query(z3::context& c, z3::solver s, const ValidationOptions& o, const std::string& prefix,
         const ThesisParts& parts, const ExtraCondition& extra, const CondSpec& cs,
         size_t* lemma_count)
       : ctx(c),
@@ -99,7 +98,7 @@ struct Query {
         map(ctx, MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes),
             DartSort::BitVec, prefix),
         der(map, rule, prefix),
-        solver(ctx, z3::solver::simple()),
+        solver(std::move(s)),
         theorems12(condition(rule, parts, extra)),
         cycle_holds(MapSpec{o.n, o.kind}.cycle_pairs().empty() ? ctx.bool_val(true)
                                                                : ctx.bool_const("cycle_holds")),
@@ -192,6 +191,16 @@ z3::expr assume(z3::solver& s, const z3::expr& e, const std::string& name) {
   return p;
 }
 
+// A family of at most 2 nodes: there, set-up is most of a validation's time, so both queries share
+// one Z3 context and use Z3's SMT core alone (z3::solver::simple()), 2-4x faster than a context per
+// query with Z3's default solver (which sets up a tactic solver beside its SMT core). On larger
+// families the default solver and a context per query are faster: the tactic's preprocessing
+// pays there (docs/verify.md, "Solvers of the symbolic queries").
+bool small_family(const ValidationOptions& o) { return o.max_nodes <= 2; }
+z3::solver query_solver(z3::context& ctx, const ValidationOptions& o) {
+  return small_family(o) ? z3::solver(ctx, z3::solver::simple()) : z3::solver(ctx);
+}
+
 // Sound: no rule satisfying the condition has a breaking match within the bounds.
 void decide_sound(z3::context& ctx, SymbolicReport& rep, const ThesisParts& parts,
                   const ExtraCondition& extra, const CondSpec& cs, const CycleTable& table,
@@ -199,7 +208,7 @@ void decide_sound(z3::context& ctx, SymbolicReport& rep, const ThesisParts& part
                   const std::function<bool()>& out_of_time) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
-  Query q(ctx, o, "", parts, extra, cs, &rep.cycle_lemmas);
+  Query q(ctx, query_solver(ctx, o), o, "", parts, extra, cs, &rep.cycle_lemmas);
   q.out_of_time = out_of_time;
   // The tabulated failing components as cubes (cycle_table.hpp): valid here, where Theorems 1-2
   // hold; no oracle call for components of at most table.max_nodes nodes.
@@ -332,7 +341,8 @@ void decide_complete(z3::context& ctx, SymbolicReport& rep, const ThesisParts& p
                      std::chrono::steady_clock::time_point start) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
-  Query q(ctx, o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
+  // The witness map "w_": a match exists.
+  Query q(ctx, query_solver(ctx, o), o, "w_", parts, extra, cs, &rep.cycle_lemmas);
   // The tabulated verdicts (cycle_table.hpp) as cubes of both verdicts, under a literal equal to
   // Theorems 1-2 (which may fail here).
   if (!q.cycle_label_set.empty()) {
@@ -434,10 +444,14 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   }
   rep.cycle_patterns = table.patterns.size();
   rep.cycle_cubes = cubes.size() + holding_cubes.size();
-  z3::context ctx;  // one context for both directions: its set-up is most of a small bound's time
-  decide_sound(ctx, rep, parts, extra, cs, table, cubes,
+  std::optional<z3::context> ctx(std::in_place);
+  decide_sound(*ctx, rep, parts, extra, cs, table, cubes,
                [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
-  decide_complete(ctx, rep, parts, extra, cs, table, cubes, holding_cubes, start);
+  if (!small_family(opt)) {  // a context per query (small_family)
+    ctx.reset();
+    ctx.emplace();
+  }
+  decide_complete(*ctx, rep, parts, extra, cs, table, cubes, holding_cubes, start);
   return rep;
 }
 
