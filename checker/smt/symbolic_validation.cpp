@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "checker/rule_check.hpp"
 #include "checker/smt/counterexample.hpp"
@@ -71,11 +73,12 @@ struct CondSpec {
   const BuiltinCondition* builtin;
 };
 
-// The common part of both queries: one context, the symbolic rule, a symbolic map and its
-// derivation; the condition is the formula of Theorems 1-2 (`theorems12`) and, with cycle pairs,
-// the Boolean `cycle_holds` standing for C_r, which solve() ties to the concrete checker lazily.
+// The common part of both queries: the symbolic rule, a symbolic map and its derivation, with the
+// query's own solver (query_solver); the condition is the formula of Theorems 1-2 (`theorems12`)
+// and, with cycle pairs, the Boolean `cycle_holds` standing for C_r, which solve() ties to the
+// concrete checker lazily.
 struct Query {
-  z3::context ctx;
+  z3::context& ctx;
   SymbolicRule rule;
   MapEncoding map;
   SymbolicDerivation der;
@@ -87,13 +90,15 @@ struct Query {
   const BuiltinCondition* builtin;  // the whole condition, to cross-check (nullptr: extra given)
   size_t* lemmas;
   std::function<bool()> out_of_time;  // checked between lemmas
-  Query(const ValidationOptions& o, const std::string& prefix, const ThesisParts& parts,
-        const ExtraCondition& extra, const CondSpec& cs, size_t* lemma_count)
-      : rule(ctx, MapSpec{o.n, o.kind}, o.max_nodes, o.labels),
+  Query(z3::context& c, z3::solver s, const ValidationOptions& o, const std::string& prefix,
+        const ThesisParts& parts, const ExtraCondition& extra, const CondSpec& cs,
+        size_t* lemma_count)
+      : ctx(c),
+        rule(ctx, MapSpec{o.n, o.kind}, o.max_nodes, o.labels),
         map(ctx, MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes),
             DartSort::BitVec, prefix),
         der(map, rule, prefix),
-        solver(ctx),
+        solver(std::move(s)),
         theorems12(condition(rule, parts, extra)),
         cycle_holds(MapSpec{o.n, o.kind}.cycle_pairs().empty() ? ctx.bool_val(true)
                                                                : ctx.bool_const("cycle_holds")),
@@ -186,14 +191,24 @@ z3::expr assume(z3::solver& s, const z3::expr& e, const std::string& name) {
   return p;
 }
 
+// A family of at most 2 nodes: there, set-up is most of a validation's time, so both queries share
+// one Z3 context and use Z3's SMT core alone (z3::solver::simple()), 2-4x faster than a context per
+// query with Z3's default solver (which sets up a tactic solver beside its SMT core). On larger
+// families the default solver and a context per query are faster: the tactic's preprocessing
+// pays there (docs/verify.md, "Solvers of the symbolic queries").
+bool small_family(const ValidationOptions& o) { return o.max_nodes <= 2; }
+z3::solver query_solver(z3::context& ctx, const ValidationOptions& o) {
+  return small_family(o) ? z3::solver(ctx, z3::solver::simple()) : z3::solver(ctx);
+}
+
 // Sound: no rule satisfying the condition has a breaking match within the bounds.
-void decide_sound(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
-                  const CondSpec& cs, const CycleTable& table,
+void decide_sound(z3::context& ctx, SymbolicReport& rep, const ThesisParts& parts,
+                  const ExtraCondition& extra, const CondSpec& cs, const CycleTable& table,
                   const std::vector<PatternCube>& cubes,
                   const std::function<bool()>& out_of_time) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
-  Query q(o, "", parts, extra, cs, &rep.cycle_lemmas);
+  Query q(ctx, query_solver(ctx, o), o, "", parts, extra, cs, &rep.cycle_lemmas);
   q.out_of_time = out_of_time;
   // The tabulated failing components as cubes (cycle_table.hpp): valid here, where Theorems 1-2
   // hold; no oracle call for components of at most table.max_nodes nodes.
@@ -319,14 +334,15 @@ void refine(Query& q, const ValidationOptions& o, const Map& G, size_t t, bool g
 }
 
 // Complete: every rule failing the condition and matching some map has a breaking match.
-void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraCondition& extra,
-                     const CondSpec& cs, const CycleTable& table,
+void decide_complete(z3::context& ctx, SymbolicReport& rep, const ThesisParts& parts,
+                     const ExtraCondition& extra, const CondSpec& cs, const CycleTable& table,
                      const std::vector<PatternCube>& cubes,
                      const std::vector<PatternCube>& holding_cubes,
                      std::chrono::steady_clock::time_point start) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
-  Query q(o, "w_", parts, extra, cs, &rep.cycle_lemmas);  // the witness map: a match exists
+  // The witness map "w_": a match exists.
+  Query q(ctx, query_solver(ctx, o), o, "w_", parts, extra, cs, &rep.cycle_lemmas);
   // The tabulated verdicts (cycle_table.hpp) as cubes of both verdicts, under a literal equal to
   // Theorems 1-2 (which may fail here).
   if (!q.cycle_label_set.empty()) {
@@ -344,7 +360,7 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
   q.solver.add(!q.der.breaks_consistency());
   EncodingOptions eo;
   eo.semantics = Semantics::Consistency;
-  SmtSession session(MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes), eo);
+  std::optional<SmtSession> session;  // made at the first candidate: most validations have none
   std::vector<std::unique_ptr<MapEncoding>> maps;
   std::vector<std::unique_ptr<SymbolicDerivation>> ders;
   for (int m = 1; m <= o.max_nodes; ++m) {
@@ -363,7 +379,9 @@ void decide_complete(SymbolicReport& rep, const ThesisParts& parts, const ExtraC
       if (res == z3::unsat) break;
       const z3::model model = q.solver.get_model();
       const Rule r = q.rule.extract(model, "candidate");
-      const VerifyResult v = session.verify(r);
+      if (!session)
+        session.emplace(MapSpec{o.n, o.kind}, o.bound, static_cast<unsigned>(o.max_nodes), eo);
+      const VerifyResult v = session->verify(r);
       if (v.preserves) {
         if (!v.applicable)
           throw std::logic_error("symbolic candidate matches no map (encoding error): " +
@@ -426,9 +444,14 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   }
   rep.cycle_patterns = table.patterns.size();
   rep.cycle_cubes = cubes.size() + holding_cubes.size();
-  decide_sound(rep, parts, extra, cs, table, cubes,
+  std::optional<z3::context> ctx(std::in_place);
+  decide_sound(*ctx, rep, parts, extra, cs, table, cubes,
                [&] { return opt.time_limit > 0 && since(start) > opt.time_limit; });
-  decide_complete(rep, parts, extra, cs, table, cubes, holding_cubes, start);
+  if (!small_family(opt)) {  // a context per query (small_family)
+    ctx.reset();
+    ctx.emplace();
+  }
+  decide_complete(*ctx, rep, parts, extra, cs, table, cubes, holding_cubes, start);
   return rep;
 }
 
