@@ -31,11 +31,11 @@ struct QueryReplaceReport {
 
 // Throws Error(InvalidMap) when the target is not a valid G-map of dimension cell_dim or
 // cell_dim + 1 (or, in oriented mode, not orientable).
-// Every cell is looked up first, then the copies of all matches are added at once, then the
-// replacements run in the order of the cells (the same result, dart for dart, as replacing each
-// cell when met: a replacement touches no other cell's boundary; docs/query-replace.md).
-// after_each (optional) runs after every replacement (tests assert validity there; the darts of
-// the replacements still to come are then isolated free darts); progress
+// The cells are met by one sweep (cell_sweep.hpp) and each is replaced when it is looked up (a
+// replacement touches no other cell's boundary; docs/query-replace.md). With a list of cells or a
+// selector, every cell is looked up first and the matches are then replaced in the order of the
+// cells (the same result, dart for dart), so that an error leaves the map unchanged.
+// after_each (optional) runs after every replacement (tests assert validity there); progress
 // (optional) receives (cells done, cells) every 4096 cells and at the end.
 // select (optional) chooses among the patterns of a key holding several (§6.4: deliberate
 // duplicates need outside information, e.g. geometry or vertex values): it receives the candidates
@@ -48,6 +48,10 @@ struct QueryReplaceReport {
 // gives undefined results).
 enum class Precondition { CheckValidity, AssumeValid };
 using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
+// The checks of the target shared by query_replace and replace_only (replace_only.hpp): a G-map
+// of dimension cell_dim or cell_dim + 1, cell_dim 2 or 3 (Error(Usage) otherwise), valid unless
+// AssumeValid (Error(InvalidMap)).
+void check_replacement_target(const Map& g, int cell_dim, Precondition precondition);
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each = {},
                                  const std::function<void(size_t, size_t)>& progress = {},

@@ -14,6 +14,7 @@
 // allocator returning memory to the kernel (cold) and keeping it (warm).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <unordered_map>
@@ -158,6 +159,30 @@ void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
   state.counters["volumes"] = static_cast<double>(volumes);
 }
 
+// One step of the reserved sequence timed alone (range(1): 0 the reservation, 1 the edge split, 2
+// the faces, 3 the volumes; AssumeValid): the map before the step is made once, and each
+// iteration copies it and reserves the final size untimed.
+void BM_HexSubdivisionStep(benchmark::State& state) {
+  const PatternStore& store = hex_patterns();
+  const int side = static_cast<int>(state.range(0)), step = static_cast<int>(state.range(1));
+  FlaggedMap before = block(side);
+  const size_t final_size = 2 * before.map.size() + replacement_room(before.map, store, 2) + replacement_room(before.map, store, 3);
+  auto run = [&](FlaggedMap& m, int s) {
+    if (s == 0) m.reserve(2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3));
+    if (s == 1) split_all_edges(m, 2);
+    if (s == 2) query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid);
+    if (s == 3) query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid);
+  };
+  for (int s = 0; s < step; ++s) run(before, s);
+  for (auto _ : state) {
+    state.PauseTiming();
+    FlaggedMap m = before;
+    if (step > 0) m.reserve(final_size);
+    state.ResumeTiming();
+    run(m, step);
+  }
+}
+
 void BM_HexSubdivisionQueryReplace(benchmark::State& state) { hex_subdivision_by_query_replace(state, true); }
 void BM_HexSubdivisionQueryReplaceUnreserved(benchmark::State& state) { hex_subdivision_by_query_replace(state, false); }
 void BM_HexSubdivisionQueryReplaceAssumeValid(benchmark::State& state) {
@@ -190,6 +215,10 @@ BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecon
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionQueryReplaceUnreserved)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(20);
+BENCHMARK(BM_HexSubdivisionStep)
+    ->Unit(benchmark::kMillisecond)
+    ->ArgsProduct({{16}, {0, 1, 2, 3}})
+    ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
 BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(20);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(20);
 
