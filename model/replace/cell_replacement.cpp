@@ -23,10 +23,16 @@ void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   if (mirror) std::copy(pos + first, pos + first + t.interior, pos + first + mirror);
 }
 
+// The i-link array of the map being written, for loops that write many links at once (set_alpha's
+// raw writes with the indirection hoisted; g is not const, so its storage may be written).
+Dart* link_array(Map& g, int i) { return const_cast<Dart*>(g.links(i).data()); }
+
 // One link array of the copies: interior dart j's neighbour y becomes first + y.
 void copy_links(Map& g, int d, const std::vector<uint32_t>& link, Dart first) {
+  Dart* __restrict out = link_array(g, d) + first;
+  const uint32_t* __restrict in = link.data();
   const uint32_t k = static_cast<uint32_t>(link.size());
-  for (uint32_t j = 0; j < k; ++j) g.set_alpha(d, first + j, first + link[j]);
+  for (uint32_t j = 0; j < k; ++j) out[j] = first + in[j];
 }
 
 }  // namespace
@@ -41,11 +47,13 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
     copy_links(g, d, t.link[d], first);
     if (shared) copy_links(g, d, t.link[d], first + k);
   }
-  if (shared)
+  if (shared) {
+    Dart* __restrict out = link_array(g, i + 1) + first;
     for (uint32_t j = 0; j < k; ++j) {
-      g.set_alpha(i + 1, first + j, first + k + j);
-      g.set_alpha(i + 1, first + k + j, first + j);
+      out[j] = first + k + j;
+      out[k + j] = first + j;
     }
+  }
   // 2. The relinks of alpha_{i-1}: the only links between the copies and the cell's boundary.
   for (const auto& [j, b] : t.relinks) {
     const Dart x = first + j, y = f[b];
