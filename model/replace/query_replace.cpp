@@ -85,7 +85,9 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     StoreMatch match;
     if (start != UINT32_MAX) {
       key.assign(1, static_cast<uint32_t>(cell_dim));
-      boundary_word(c, start, key, order);
+      // The traversal numbered the cell breadth-first from rep: from rep, its labels are there.
+      if (start == 0) numbered_boundary_word(c, key);
+      else boundary_word(c, start, key, order);
       match = store.match_word(key, start);
     }
     const std::vector<StoreEntry>* hits = match.hits;
@@ -108,7 +110,10 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     std::vector<Dart>& image = deferred ? targets : f;
     if (deferred) matches.push_back({pattern, targets.size(), shared});
     else f.clear();
-    for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[order[k]]);
+    if (start == 0)
+      for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[k]);
+    else
+      for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[order[k]]);
     // 3. The replacement (cell_replacement.hpp).
     if (!deferred) replace(pattern, f.data(), shared);
   });
