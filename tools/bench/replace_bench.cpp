@@ -108,9 +108,11 @@ void BM_QueryByIsomorphismTests(benchmark::State& state) {
   state.counters["patterns"] = static_cast<double>(d.reps.size());
 }
 
-// A block of side^3 unit hexahedra, every dart flagged, with positions (one per side, kept).
+// A block of side^3 unit hexahedra, every dart flagged, with positions (one per side, kept until
+// the process ends and never destroyed: a Map's destructor gives its arrays to the thread's buffer
+// pool, buffer_pool.hpp, which no longer exists when static objects are destroyed).
 const FlaggedMap& block(int side) {
-  static std::map<int, FlaggedMap> blocks;
+  static std::map<int, FlaggedMap>& blocks = *new std::map<int, FlaggedMap>;
   auto it = blocks.find(side);
   if (it != blocks.end()) return it->second;
   std::vector<Voxel> voxels;
