@@ -3,8 +3,8 @@
 // dart (pattern_store.hpp); a cell whose word is stored has its interior replaced
 // (cell_replacement.hpp) through the isomorphism f read off the cell's word and the equal word of
 // the pattern (the k-th labelled darts correspond); other cells are left untouched and reported.
-// The cells are those of the input map (met before any replacement), so each is replaced at most
-// once. A face of a 3-G-map is looked up on the half-face of its smallest dart.
+// The cells are those of the input map (the darts a replacement adds are not swept), so each is
+// replaced at most once. A face of a 3-G-map is looked up on the half-face of its smallest dart.
 // Boundary automorphisms: the cell's first start dart (in its traversal order) is sent to the
 // pattern's first start dart (in its local order) with the same word, so the result is
 // deterministic; a key holding several patterns uses the first one, or the selector's choice.
