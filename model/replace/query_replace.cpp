@@ -117,7 +117,18 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     // 3. The replacement (cell_replacement.hpp).
     if (!deferred) replace(pattern, f.data(), shared);
   });
-  for (const Match& m : matches) replace(m.pattern, &targets[m.targets], m.shared);
+  // The deferred matches: their copies added at once (the arrays grow once), then written.
+  size_t added = 0;
+  for (const Match& m : matches) added += size_t(store.replacement(m.pattern).interior) * (m.shared ? 2 : 1);
+  Dart next = added ? g.add_darts(added) : g.capacity();
+  if (added) target.resize_flags();
+  for (const Match& m : matches) {
+    const size_t written = replace_cell(target, store.replacement(m.pattern), &targets[m.targets], next, m.shared);
+    next += static_cast<Dart>(written);
+    r.darts_added += written;
+    if (after_each) after_each();
+    ++r.matched[m.pattern];
+  }
   if (progress) progress(r.cells, cells);
   return r;
 }

@@ -35,7 +35,9 @@ struct QueryReplaceReport {
 // replacement touches no other cell's boundary; docs/query-replace.md). With a list of cells or a
 // selector, every cell is looked up first and the matches are then replaced in the order of the
 // cells (the same result, dart for dart), so that an error leaves the map unchanged.
-// after_each (optional) runs after every replacement (tests assert validity there); progress
+// after_each (optional) runs after every replacement (tests assert validity there; with a list or
+// a selector, the copies of all matches are added before the first replacement, so the darts of
+// the replacements still to come are then isolated free darts); progress
 // (optional) receives (cells done, cells) every 4096 cells and at the end.
 // select (optional) chooses among the patterns of a key holding several (§6.4: deliberate
 // duplicates need outside information, e.g. geometry or vertex values): it receives the candidates
