@@ -1,5 +1,7 @@
 #include "model/replace/boundary_graph.hpp"
 
+#include <algorithm>
+
 
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
@@ -76,35 +78,55 @@ void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& fla
 void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
                    const std::vector<uint8_t>& positive, std::vector<uint32_t>& local, BoundaryGraph& b) {
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
-  // One breadth-first traversal of the <0..i-1>-orbit (neighbours by increasing dimension, the
-  // order of orbit()) numbers the darts and records their neighbours, flags and classes.
-  b.arity = i;
-  b.dart.clear();
-  b.nbr.clear();
-  b.flag.clear();
-  b.positive.clear();
   if (g.is_omap() || i < 1 || i > g.dimension() + 1)
     throw Error(ErrorCode::Usage, "the <0..i-1>-orbit of a G-map, 1 <= i <= n + 1", "i = " + std::to_string(i));
+  // One breadth-first traversal of the <0..i-1>-orbit (neighbours by increasing dimension, the
+  // order of orbit()) numbers the darts and records their neighbours; then their flags and
+  // classes. The arrays are written in place (grown when a cell outgrows them).
+  b.arity = i;
   const Dart* link[kMaxDim];
   for (int j = 0; j < i; ++j) link[j] = g.links(j).data();
   uint32_t* l = local.data();
-  b.dart.push_back(d);
+  size_t room = std::max<size_t>(b.dart.capacity(), 64);
+  b.dart.resize(room);
+  b.nbr.resize(room * i);
+  Dart* dart = b.dart.data();
+  uint32_t* nbr = b.nbr.data();
+  uint32_t count = 1;
+  dart[0] = d;
   l[d] = 0;
-  for (uint32_t k = 0; k < b.dart.size(); ++k) {
-    const Dart x = b.dart[k];
+  for (uint32_t k = 0; k < count; ++k) {
+    const Dart x = dart[k];
     for (int j = 0; j < i; ++j) {
       const Dart y = link[j][x];
-      if (l[y] == UINT32_MAX) {
-        l[y] = static_cast<uint32_t>(b.dart.size());
-        b.dart.push_back(y);
+      uint32_t ly = l[y];
+      if (ly == UINT32_MAX) {
+        if (count == room) {
+          room *= 2;
+          b.dart.resize(room);
+          b.nbr.resize(room * i);
+          dart = b.dart.data();
+          nbr = b.nbr.data();
+        }
+        ly = count++;
+        l[y] = ly;
+        dart[ly] = y;
         // y is read later in breadth-first order: its links and flag are fetched meanwhile.
         for (int p = 0; p < i; ++p) __builtin_prefetch(link[p] + y);
         if (y < flag.size()) __builtin_prefetch(flag.data() + y);
       }
-      b.nbr.push_back(l[y]);
+      nbr[size_t(k) * i + j] = ly;
     }
-    b.flag.push_back(x < flag.size() ? flag[x] : 0);
-    b.positive.push_back(positive.empty() ? 1 : positive[x]);
+  }
+  b.dart.resize(count);
+  b.nbr.resize(size_t(count) * i);
+  b.flag.resize(count);
+  for (uint32_t k = 0; k < count; ++k) b.flag[k] = dart[k] < flag.size() ? flag[dart[k]] : 0;
+  if (positive.empty()) {
+    b.positive.assign(count, 1);
+  } else {
+    b.positive.resize(count);
+    for (uint32_t k = 0; k < count; ++k) b.positive[k] = positive[dart[k]];
   }
 }
 

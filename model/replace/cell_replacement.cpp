@@ -11,22 +11,28 @@ namespace {
 void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first, Dart mirror) {
   thread_local std::vector<Vec3> at;
   at.resize(t.weights.size());
-  std::vector<Vec3>& pos = target.position;
-  // The boundary positions are scattered in the target: all fetched before the sums read them.
-  for (const auto& ws : t.weights)
-    for (const auto& bw : ws) __builtin_prefetch(&pos[f[bw.first]]);
+  Vec3* pos = target.position.data();
   for (size_t v = 0; v < t.weights.size(); ++v) {
     Vec3 x{0, 0, 0};
     for (const auto& [b, w] : t.weights[v])
       for (int c = 0; c < 3; ++c) x[c] += w * pos[f[b]][c];
     at[v] = x;
   }
-  for (uint32_t j = 0; j < t.interior; ++j) {
-    const uint32_t v = t.vertex[j];
-    const Vec3 y = v & ReplacementTemplate::kOnBoundary ? pos[f[v & ~ReplacementTemplate::kOnBoundary]] : at[v];
-    pos[first + j] = y;
-    if (mirror) pos[first + j + mirror] = y;
-  }
+  for (const auto& [j, b] : t.at_boundary_vertex) pos[first + j] = pos[f[b]];
+  for (const auto& [j, v] : t.at_interior_vertex) pos[first + j] = at[v];
+  if (mirror) std::copy(pos + first, pos + first + t.interior, pos + first + mirror);
+}
+
+// The i-link array of the map being written, for loops that write many links at once (set_alpha's
+// raw writes with the indirection hoisted; g is not const, so its storage may be written).
+Dart* link_array(Map& g, int i) { return const_cast<Dart*>(g.links(i).data()); }
+
+// One link array of the copies: interior dart j's neighbour y becomes first + y.
+void copy_links(Map& g, int d, const std::vector<uint32_t>& link, Dart first) {
+  Dart* __restrict out = link_array(g, d) + first;
+  const uint32_t* __restrict in = link.data();
+  const uint32_t k = static_cast<uint32_t>(link.size());
+  for (uint32_t j = 0; j < k; ++j) out[j] = first + in[j];
 }
 
 }  // namespace
@@ -36,35 +42,39 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   const int i = t.cell_dim;
   const uint32_t k = t.interior;
   // The copy of interior dart j is first + j, its mirror copy (the other half-face) first + j + k.
-  const Dart mirror = shared ? k : 0;
-  const uint32_t* link = t.link.data();
-  for (uint32_t j = 0; j < k; ++j) {
-    const Dart x = first + j;
-    for (int d = 0; d <= i; ++d) {
-      const uint32_t y = *link++;
-      if (y < k) {  // both copies are written from both sides: one direction each
-        g.set_alpha(d, x, first + y);
-        if (shared) g.set_alpha(d, x + mirror, first + y + mirror);
-      } else {  // d == i - 1 and y on the boundary: the only relinked dimension
-        const Dart b = f[y - k];
-        g.set_alpha(d, x, b);
-        g.set_alpha(d, b, x);
-        if (shared) {
-          const Dart b3 = g.alpha(i + 1, b);
-          g.set_alpha(d, x + mirror, b3);
-          g.set_alpha(d, b3, x + mirror);
-        }
-      }
-    }
-    target.flag[x] = t.flag[j];
-    if (shared) {
-      g.set_alpha(i + 1, x, x + mirror);
-      g.set_alpha(i + 1, x + mirror, x);
-      target.flag[x + mirror] = t.flag[j];
+  // 1. Each link array written once, in dart order, as the pattern links its interior.
+  for (int d = 0; d <= i; ++d) {
+    copy_links(g, d, t.link[d], first);
+    if (shared) copy_links(g, d, t.link[d], first + k);
+  }
+  if (shared) {
+    Dart* __restrict out = link_array(g, i + 1) + first;
+    for (uint32_t j = 0; j < k; ++j) {
+      out[j] = first + k + j;
+      out[k + j] = first + j;
     }
   }
-  if (target.positioned()) place_interior(target, t, f, first, mirror);
+  // 2. The relinks of alpha_{i-1}: the only links between the copies and the cell's boundary.
+  for (const auto& [j, b] : t.relinks) {
+    const Dart x = first + j, y = f[b];
+    g.set_alpha(i - 1, x, y);
+    g.set_alpha(i - 1, y, x);
+    if (shared) {
+      const Dart y3 = g.alpha(i + 1, y);
+      g.set_alpha(i - 1, x + k, y3);
+      g.set_alpha(i - 1, y3, x + k);
+    }
+  }
+  std::copy(t.flag.begin(), t.flag.end(), target.flag.begin() + first);
+  if (shared) std::copy(t.flag.begin(), t.flag.end(), target.flag.begin() + first + k);
+  if (target.positioned()) place_interior(target, t, f, first, shared ? k : 0);
   return size_t(k) * (shared ? 2 : 1);
+}
+
+size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, bool shared) {
+  const Dart first = target.map.add_darts(size_t(t.interior) * (shared ? 2 : 1));
+  target.resize_flags();
+  return replace_cell(target, t, f, first, shared);
 }
 
 }  // namespace gmr::replace

@@ -26,5 +26,7 @@ namespace gmr::replace {
 // first + k .. first + 2k - 1 (k = t.interior); flags and positions must be sized to the map. The
 // target's dimension must be i or i + 1 (query_replace checks it). Returns the darts written.
 size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first, bool shared);
+// The same into new darts added at the end of the map (flags and positions grown with it).
+size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, bool shared);
 
 }  // namespace gmr::replace

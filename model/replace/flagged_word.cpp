@@ -158,6 +158,19 @@ void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out, std::vecto
   order.resize(length);
 }
 
+void numbered_boundary_word(const BoundaryGraph& b, Word& out) {
+  const uint32_t n = b.size();
+  const int m = b.arity;
+  const size_t base = out.size();
+  out.resize(base + size_t(n) * (m + 1));
+  uint32_t* w = out.data() + base;
+  const uint32_t* nbr = b.nbr.data();
+  for (uint32_t k = 0; k < n; ++k) {
+    *w++ = b.flag[k];
+    for (int j = 0; j < m; ++j) *w++ = *nbr++ + 1;
+  }
+}
+
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start) {
   std::vector<uint32_t> label(b.size(), 0), order;
   stream_word(b, start, false, nullptr, label, order, nullptr);

@@ -31,6 +31,10 @@ void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out);
 // The same, and the local darts in label order from `start` into `order` (boundary_labeling) in
 // the same traversal.
 void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out, std::vector<uint32_t>& order);
+// W(B, 0) appended to `out` for a graph numbered breadth-first from its local dart 0, neighbours
+// in order (cell_boundary): local index k is label k + 1, so the letters are the flags and the
+// neighbours + 1, read off in local order (no traversal; boundary_word(b, 0, out) otherwise).
+void numbered_boundary_word(const BoundaryGraph& b, Word& out);
 // The local darts in label order from `start` (order[k] has label k+1).
 std::vector<uint32_t> boundary_labeling(const BoundaryGraph& b, uint32_t start);
 // The same into `order` (reused; no allocation once it is large enough).

@@ -77,7 +77,7 @@ void PatternStore::add(Pattern p) {
   index_start_words(p, list, ref);
   key_of_.push_back(std::move(key));
   entries_.push_back(e);
-  templates_.push_back(compile_replacement(p, ref));
+  templates_.push_back(compile_replacement(p, e.start));
   patterns_.push_back(std::move(p));
 }
 

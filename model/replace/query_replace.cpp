@@ -6,6 +6,7 @@
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
 #include "model/replace/cell_replacement.hpp"
+#include "model/replace/cell_sweep.hpp"
 #include "model/replace/orientation.hpp"
 
 namespace gmr::replace {
@@ -16,12 +17,7 @@ size_t QueryReplaceReport::replaced() const {
   return n;
 }
 
-QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
-                                 const std::function<void()>& after_each,
-                                 const std::function<void(size_t, size_t)>& progress,
-                                 const DuplicateSelector& select, const std::vector<Dart>* only,
-                                 Precondition precondition) {
-  Map& g = target.map;
+void check_replacement_target(const Map& g, int cell_dim, Precondition precondition) {
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
   if (cell_dim != 2 && cell_dim != 3) throw Error(ErrorCode::Usage, "cells are faces (2) or volumes (3)", "--cells");
@@ -33,6 +29,16 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     const ValidityReport v = check_validity(g, 1);
     if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + v.violations.front().describe());
   }
+}
+
+QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
+                                 const std::function<void()>& after_each,
+                                 const std::function<void(size_t, size_t)>& progress,
+                                 const DuplicateSelector& select, const std::vector<Dart>* only,
+                                 Precondition precondition) {
+  Map& g = target.map;
+  check_replacement_target(g, cell_dim, precondition);
+  const int n = g.dimension();
   target.resize_flags();
   QueryReplaceReport r;
   r.mode = store.mode();
@@ -40,64 +46,48 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   r.matched.assign(store.patterns().size(), 0);
   std::vector<uint8_t> positive;
   if (store.mode() == Mode::Oriented) positive = orientation_classes(g);
-  // A face of a 3-G-map is a <0,1,3>-orbit; a volume a <0,1,2>-orbit; faces of 2-G-maps <0,1>.
-  // The cells are met by one sweep over the darts (each cell at its smallest dart, in increasing
-  // order, as orbit_representatives lists them), their darts marked when examined; a list of cells
-  // (`only`), or a progress report that needs the number of cells, are listed first.
+  const bool deferred = only || select;  // see below
+  // A progress report needs the number of cells: they are listed first.
   std::vector<Dart> reps;
-  if (only) reps = *only;
-  else if (progress) reps = orbit_representatives(g, cell_type(g, cell_dim));
-  for (Dart d : reps)
-    if (!g.alive(d)) throw Error(ErrorCode::Usage, "no such dart", "dart " + std::to_string(d));
-  // 1. Query every cell (§6.3). A replacement relinks only its own cell's darts (and adds new
-  // ones), so the other cells' boundaries are the same before and after it: every cell is looked
-  // up in the input map, and a match is kept as its pattern and its boundary darts in the order of
-  // the pattern's template (the isomorphism f, replacement_template.hpp).
+  if (!only && progress) {
+    reps = orbit_representatives(g, cell_type(g, cell_dim));
+    only = &reps;
+  }
+  const size_t cells = only ? only->size() : 0;
+  CellSweep sweep(g, cell_dim, only);
+  // A replacement relinks only its own cell's darts (and adds new ones), so the other cells'
+  // boundaries are the same before and after it (cell_sweep.hpp): each cell is replaced when it
+  // is looked up, its boundary still in the cache. With a list or a selector, every cell is looked
+  // up first (a cell listed twice, or a selector's error, then leaves the map unchanged), the
+  // matches kept as their pattern and their boundary darts in the order of the pattern's
+  // template, and replaced in the order of the cells: the same result, dart for dart.
   struct Match {
     uint32_t pattern;
     size_t targets;  // offset of the cell's boundary darts in `targets`
     bool shared;     // a face of a 3-G-map with two half-faces
   };
   std::vector<Match> matches;
-  std::vector<Dart> targets;
-  size_t added = 0;
+  std::vector<Dart> targets, f;
   BoundaryGraph c;
   std::vector<uint32_t> order;
   Word key;
-  // local[x]: x's index in its cell's boundary graph, UINT32_MAX for the darts of cells not met
-  // yet, kOtherHalf for the second half-face of a face of a 3-G-map (cell_boundary).
-  constexpr uint32_t kOtherHalf = UINT32_MAX - 1;
-  thread_local std::vector<uint32_t> local;
-  if (local.size() < g.capacity()) local.resize(g.capacity(), UINT32_MAX);  // all UINT32_MAX between calls
-  std::vector<Dart> met;  // the darts to reset when cells are listed (the sweep resets them all)
-  struct Reset {
-    std::vector<uint32_t>& local;
-    const std::vector<Dart>& met;
-    Dart capacity;
-    bool all;
-    ~Reset() {
-      if (all) std::fill(local.begin(), local.begin() + capacity, UINT32_MAX);
-      else
-        for (Dart x : met) local[x] = UINT32_MAX;
-    }
-  } reset{local, met, g.capacity(), !(only || progress)};
-  auto examine = [&](Dart rep) {
-    if (progress && r.cells % 4096 == 0) progress(r.cells, reps.size());
+  auto replace = [&](uint32_t pattern, const Dart* image, bool shared) {
+    r.darts_added += replace_cell(target, store.replacement(pattern), image, shared);
+    if (after_each) after_each();
+    ++r.matched[pattern];
+  };
+  sweep.for_each_cell([&](Dart rep) {
+    if (progress && r.cells % 4096 == 0) progress(r.cells, cells);
     ++r.cells;
-    cell_boundary(g, cell_dim, rep, target.flag, positive, local, c);
-    if (n > cell_dim)
-      for (Dart x : c.dart) {
-        const Dart y = g.alpha(cell_dim + 1, x);
-        if (local[y] == UINT32_MAX) local[y] = kOtherHalf;
-        if (!reset.all) met.push_back(y);
-      }
-    if (!reset.all) met.insert(met.end(), c.dart.begin(), c.dart.end());
-    // The word from the cell's first start dart, looked up (pattern_store.hpp).
+    sweep.traverse(rep, target.flag, positive, c);
+    // 1. The word from the cell's first start dart, looked up (§6.3, pattern_store.hpp).
     const uint32_t start = first_start_dart(c, store.mode());
     StoreMatch match;
     if (start != UINT32_MAX) {
       key.assign(1, static_cast<uint32_t>(cell_dim));
-      boundary_word(c, start, key, order);
+      // The traversal numbered the cell breadth-first from rep: from rep, its labels are there.
+      if (start == 0) numbered_boundary_word(c, key);
+      else boundary_word(c, start, key, order);
       match = store.match_word(key, start);
     }
     const std::vector<StoreEntry>* hits = match.hits;
@@ -114,33 +104,32 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
                                           std::to_string(hits->size()),
                     "dart " + std::to_string(rep));
     }
+    // 2. The isomorphism f: the cell's darts in the label order of the pattern's template.
     const uint32_t pattern = static_cast<uint32_t>((*hits)[choice].pattern);
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
-    matches.push_back({pattern, targets.size(), shared});
-    for (uint32_t k : (*match.ranks)[choice]) targets.push_back(c.dart[order[k]]);
-    added += size_t(store.replacement(pattern).interior) * (shared ? 2 : 1);
-  };
-  if (only || progress) {
-    for (Dart rep : reps) {
-      if (local[rep] != UINT32_MAX) throw Error(ErrorCode::Usage, "a cell is listed twice", "dart " + std::to_string(rep));
-      examine(rep);
-    }
-  } else {
-    g.for_each_dart([&](Dart d) {
-      if (local[d] == UINT32_MAX) examine(d);
-    });
-  }
-  // 2. Room for every copy at once: the link, flag and position arrays grow once.
-  Dart next = g.add_darts(added);
-  target.resize_flags();
-  // 3. The replacements, in the order of the cells.
+    std::vector<Dart>& image = deferred ? targets : f;
+    if (deferred) matches.push_back({pattern, targets.size(), shared});
+    else f.clear();
+    if (start == 0)
+      for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[k]);
+    else
+      for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[order[k]]);
+    // 3. The replacement (cell_replacement.hpp).
+    if (!deferred) replace(pattern, f.data(), shared);
+  });
+  // The deferred matches: their copies added at once (the arrays grow once), then written.
+  size_t added = 0;
+  for (const Match& m : matches) added += size_t(store.replacement(m.pattern).interior) * (m.shared ? 2 : 1);
+  Dart next = added ? g.add_darts(added) : g.capacity();
+  if (added) target.resize_flags();
   for (const Match& m : matches) {
-    next += static_cast<Dart>(replace_cell(target, store.replacement(m.pattern), &targets[m.targets], next, m.shared));
+    const size_t written = replace_cell(target, store.replacement(m.pattern), &targets[m.targets], next, m.shared);
+    next += static_cast<Dart>(written);
+    r.darts_added += written;
     if (after_each) after_each();
     ++r.matched[m.pattern];
   }
-  r.darts_added = added;
-  if (progress) progress(r.cells, reps.size());
+  if (progress) progress(r.cells, cells);
   return r;
 }
 

@@ -3,8 +3,8 @@
 // dart (pattern_store.hpp); a cell whose word is stored has its interior replaced
 // (cell_replacement.hpp) through the isomorphism f read off the cell's word and the equal word of
 // the pattern (the k-th labelled darts correspond); other cells are left untouched and reported.
-// The cells are those of the input map (met before any replacement), so each is replaced at most
-// once. A face of a 3-G-map is looked up on the half-face of its smallest dart.
+// The cells are those of the input map (the darts a replacement adds are not swept), so each is
+// replaced at most once. A face of a 3-G-map is looked up on the half-face of its smallest dart.
 // Boundary automorphisms: the cell's first start dart (in its traversal order) is sent to the
 // pattern's first start dart (in its local order) with the same word, so the result is
 // deterministic; a key holding several patterns uses the first one, or the selector's choice.
@@ -31,10 +31,12 @@ struct QueryReplaceReport {
 
 // Throws Error(InvalidMap) when the target is not a valid G-map of dimension cell_dim or
 // cell_dim + 1 (or, in oriented mode, not orientable).
-// Every cell is looked up first, then the copies of all matches are added at once, then the
-// replacements run in the order of the cells (the same result, dart for dart, as replacing each
-// cell when met: a replacement touches no other cell's boundary; docs/query-replace.md).
-// after_each (optional) runs after every replacement (tests assert validity there; the darts of
+// The cells are met by one sweep (cell_sweep.hpp) and each is replaced when it is looked up (a
+// replacement touches no other cell's boundary; docs/query-replace.md). With a list of cells or a
+// selector, every cell is looked up first and the matches are then replaced in the order of the
+// cells (the same result, dart for dart), so that an error leaves the map unchanged.
+// after_each (optional) runs after every replacement (tests assert validity there; with a list or
+// a selector, the copies of all matches are added before the first replacement, so the darts of
 // the replacements still to come are then isolated free darts); progress
 // (optional) receives (cells done, cells) every 4096 cells and at the end.
 // select (optional) chooses among the patterns of a key holding several (§6.4: deliberate
@@ -48,6 +50,10 @@ struct QueryReplaceReport {
 // gives undefined results).
 enum class Precondition { CheckValidity, AssumeValid };
 using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
+// The checks of the target shared by query_replace and replace_only (replace_only.hpp): a G-map
+// of dimension cell_dim or cell_dim + 1, cell_dim 2 or 3 (Error(Usage) otherwise), valid unless
+// AssumeValid (Error(InvalidMap)).
+void check_replacement_target(const Map& g, int cell_dim, Precondition precondition);
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each = {},
                                  const std::function<void(size_t, size_t)>& progress = {},

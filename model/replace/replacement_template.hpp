@@ -1,20 +1,26 @@
 // A pattern's interior compiled for repeated replacements (Damiand & Nivoliers 2022 §5.1–5.2, the
 // G-map reading of cell_replacement.hpp). The isomorphism f of a match maps the k-th labelled dart
-// of the pattern's minimal word to the k-th labelled dart of the cell's (docs/query-replace.md,
-// Replacement), so a matched cell is given by its boundary darts in label order, and everything
-// the replacement writes is known from the pattern alone:
+// of the pattern's boundary, from its start dart, to the k-th labelled dart of the cell's
+// (docs/query-replace.md, Replacement), so a matched cell is given by its boundary darts in label
+// order, and everything the replacement writes is known from the pattern alone:
 //  * the interior darts are numbered 0..k-1 (their copies are k consecutive new darts);
-//  * per interior dart and dimension 0..i, its alpha-neighbour: another interior dart, or (only
-//    for alpha_{i-1}) the b-th boundary dart in label order, whose copy is f of it;
+//  * per dimension 0..i and interior dart, its alpha-neighbour as an interior dart, except for the
+//    boundary neighbours of alpha_{i-1}, listed apart as the relinks (interior dart, b-th boundary
+//    dart in label order, whose copy is f of it): a replacement writes each link array once, in
+//    dart order, and then the relinks;
 //  * per interior dart, its flag and its vertex: the vertex of the b-th boundary dart (it keeps the
 //    target's position) or an interior vertex placed by mean value coordinates (§5.2), given as
-//    weights on boundary darts in label order.
-// A replacement is then one pass of array writes (query_replace.cpp), with no per-cell tables.
+//    weights on boundary darts in label order;
+//  * the boundary's word from the start dart (flagged_word.hpp), with which a cell traversed from
+//    the dart matched to the start is checked when no lookup was made (replace_only.hpp).
+// A replacement is then one pass of array writes (cell_replacement.hpp), with no per-cell tables.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
+#include "model/replace/flagged_word.hpp"
 #include "model/replace/pattern.hpp"
 
 namespace gmr::replace {
@@ -23,20 +29,23 @@ struct ReplacementTemplate {
   int cell_dim = 2;
   uint32_t interior = 0;  // k: darts copied per half-cell
   uint32_t boundary = 0;  // |B|: boundary darts of a matched cell, in label order
-  // link[j * (cell_dim + 1) + t]: the alpha_t-neighbour of interior dart j, as an interior index
-  // (< interior) or interior + b for the b-th boundary dart in label order.
-  std::vector<uint32_t> link;
-  std::vector<uint32_t> flag;  // per interior dart
-  // Per interior dart: an interior vertex index (< weights.size()) or kOnBoundary | b.
-  std::vector<uint32_t> vertex;
-  static constexpr uint32_t kOnBoundary = uint32_t(1) << 31;
+  // link[t][j]: the alpha_t-neighbour of interior dart j (< interior), t = 0..cell_dim; for a
+  // boundary neighbour (t = cell_dim - 1 only), j itself, overwritten by the relink.
+  std::array<std::vector<uint32_t>, 4> link;
+  std::vector<std::pair<uint32_t, uint32_t>> relinks;  // (interior dart j, boundary rank b) of alpha_{i-1}
+  std::vector<uint32_t> flag;                          // per interior dart
+  // The interior darts at a boundary vertex (j, boundary rank b) and at an interior vertex (j, v).
+  std::vector<std::pair<uint32_t, uint32_t>> at_boundary_vertex, at_interior_vertex;
   // Per interior vertex: its weights on boundary darts in label order (empty: the origin, for a
   // pattern without geometry).
   std::vector<std::vector<std::pair<uint32_t, double>>> weights;
+  // W(B, start) with flags: per boundary dart in label order, its flag and the labels (1-based) of
+  // its cell_dim neighbours.
+  Word word;
 };
 
-// order: the local indices of p.boundary in label order from the start dart chosen for p (its
+// start: the local index of the pattern's boundary dart whose label order the template uses (its
 // minimal word's start, pattern_store.hpp).
-ReplacementTemplate compile_replacement(const Pattern& p, const std::vector<uint32_t>& order);
+ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start);
 
 }  // namespace gmr::replace

@@ -14,8 +14,11 @@
 // allocator returning memory to the kernel (cold) and keeping it (warm).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 
 #include "model/core/builders.hpp"
@@ -26,6 +29,7 @@
 #include "model/replace/edge_split.hpp"
 #include "model/replace/pattern_folder.hpp"
 #include "model/replace/query_replace.hpp"
+#include "model/replace/replace_only.hpp"
 #include "model/replace/unit_hex_positions.hpp"
 #include "model/replace/pattern_store.hpp"
 
@@ -104,9 +108,11 @@ void BM_QueryByIsomorphismTests(benchmark::State& state) {
   state.counters["patterns"] = static_cast<double>(d.reps.size());
 }
 
-// A block of side^3 unit hexahedra, every dart flagged, with positions (one per side, kept).
+// A block of side^3 unit hexahedra, every dart flagged, with positions (one per side, kept until
+// the process ends and never destroyed: a Map's destructor gives its arrays to the thread's buffer
+// pool, buffer_pool.hpp, which no longer exists when static objects are destroyed).
 const FlaggedMap& block(int side) {
-  static std::map<int, FlaggedMap> blocks;
+  static std::map<int, FlaggedMap>& blocks = *new std::map<int, FlaggedMap>;
   auto it = blocks.find(side);
   if (it != blocks.end()) return it->second;
   std::vector<Voxel> voxels;
@@ -130,13 +136,25 @@ const PatternStore& hex_patterns() {
   return s;
 }
 
+size_t pattern_named(const std::string& name) {
+  const PatternStore& store = hex_patterns();
+  for (size_t i = 0; i < store.patterns().size(); ++i)
+    if (store.patterns()[i].name == name) return i;
+  throw std::runtime_error("no pattern " + name);
+}
+size_t split4() { return pattern_named("split4"); }
+size_t hex8() { return pattern_named("hex8"); }
+
 // Query-replace as an application runs the sequence: its final size reserved once from the
 // patterns (replacement_room), every edge split in 2 at once (split_all_edges), f-pattern on the
 // faces, v-pattern on the volumes. `reserved` false: no reservation and one split_edge per edge (each step grows the
 // arrays, copying them). `precondition` AssumeValid: the steps skip the validity check of their
 // input (the caller built the block and knows it valid).
+// `lookup` false: replace only (the paper's Table 1, "only the replace part"): split4 on every face
+// and hex8 on every volume without a query, each cell traversed from its smallest dart, a
+// flagged corner matched with the pattern's start (replace_only.hpp).
 void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
-                                      Precondition precondition = Precondition::CheckValidity) {
+                                      Precondition precondition = Precondition::CheckValidity, bool lookup = true) {
   const PatternStore& store = hex_patterns();
   const FlaggedMap& input = block(static_cast<int>(state.range(0)));
   size_t volumes = 0;
@@ -150,18 +168,51 @@ void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
     } else {
       for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
     }
-    const QueryReplaceReport f = query_replace(m, store, 2, {}, {}, {}, nullptr, precondition);
-    const QueryReplaceReport v = query_replace(m, store, 3, {}, {}, {}, nullptr, precondition);
+    const QueryReplaceReport f = lookup ? query_replace(m, store, 2, {}, {}, {}, nullptr, precondition)
+                                        : replace_only(m, store, split4(), nullptr, precondition);
+    const QueryReplaceReport v = lookup ? query_replace(m, store, 3, {}, {}, {}, nullptr, precondition)
+                                        : replace_only(m, store, hex8(), nullptr, precondition);
     if (!f.unmatched.empty() || !v.unmatched.empty()) state.SkipWithError("a cell was not matched");
     volumes = v.replaced() * 8;
   }
   state.counters["volumes"] = static_cast<double>(volumes);
 }
 
+// One step of the reserved sequence timed alone (range(1): 0 the reservation, 1 the edge split, 2
+// the faces, 3 the volumes; range(2): 0 query-replace, 1 replace only; AssumeValid): the map before the step is made once, and each
+// iteration copies it and reserves the final size untimed.
+void BM_HexStep(benchmark::State& state) {
+  const PatternStore& store = hex_patterns();
+  const int side = static_cast<int>(state.range(0)), step = static_cast<int>(state.range(1));
+  const bool lookup = state.range(2) == 0;
+  FlaggedMap before = block(side);
+  const size_t final_size = 2 * before.map.size() + replacement_room(before.map, store, 2) + replacement_room(before.map, store, 3);
+  auto run = [&](FlaggedMap& m, int s) {
+    if (s == 0) m.reserve(2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3));
+    if (s == 1) split_all_edges(m, 2);
+    if (s == 2 && lookup) query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid);
+    if (s == 3 && lookup) query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid);
+    if (s == 2 && !lookup) replace_only(m, store, split4(), nullptr, Precondition::AssumeValid);
+    if (s == 3 && !lookup) replace_only(m, store, hex8(), nullptr, Precondition::AssumeValid);
+  };
+  for (int s = 0; s < step; ++s) run(before, s);
+  for (auto _ : state) {
+    state.PauseTiming();
+    FlaggedMap m = before;
+    if (step > 0) m.reserve(final_size);
+    state.ResumeTiming();
+    run(m, step);
+  }
+}
+
 void BM_HexSubdivisionQueryReplace(benchmark::State& state) { hex_subdivision_by_query_replace(state, true); }
 void BM_HexSubdivisionQueryReplaceUnreserved(benchmark::State& state) { hex_subdivision_by_query_replace(state, false); }
 void BM_HexSubdivisionQueryReplaceAssumeValid(benchmark::State& state) {
   hex_subdivision_by_query_replace(state, true, Precondition::AssumeValid);
+}
+
+void BM_HexSubdivisionReplaceOnly(benchmark::State& state) {
+  hex_subdivision_by_query_replace(state, true, Precondition::AssumeValid, false);
 }
 
 void BM_HexSubdivisionDirect(benchmark::State& state) {
@@ -181,16 +232,24 @@ BENCHMARK(BM_QueryByIsomorphismTests)->Unit(benchmark::kMillisecond);
 // methods alternate per size.
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(8);
 BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(8);
+BENCHMARK(BM_HexSubdivisionReplaceOnly)->Unit(benchmark::kMillisecond)->Arg(8);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(8);
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(12);
 BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(12);
+BENCHMARK(BM_HexSubdivisionReplaceOnly)->Unit(benchmark::kMillisecond)->Arg(12);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(12);
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(16);
+BENCHMARK(BM_HexSubdivisionReplaceOnly)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionQueryReplaceUnreserved)->Unit(benchmark::kMillisecond)->Arg(16);
 BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(20);
+BENCHMARK(BM_HexStep)
+    ->Unit(benchmark::kMillisecond)
+    ->ArgsProduct({{16}, {0, 1, 2, 3}, {0, 1}})
+    ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
 BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(20);
+BENCHMARK(BM_HexSubdivisionReplaceOnly)->Unit(benchmark::kMillisecond)->Arg(20);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(20);
 
 }  // namespace

@@ -36,6 +36,35 @@ TEST(FlaggedWord, AgreesWithCoreWordOnAClosedSurface) {
   for (uint32_t k = 0; k < b.size(); k += 7) EXPECT_EQ(boundary_word(b, k, false), bfs_word(cube, b.dart[k])) << k;
 }
 
+// A cell boundary is numbered breadth-first from its first dart: its word from local dart 0 reads
+// off its arrays. Every dart of a split cube's volume and of a flagged square as first dart, with
+// flags that differ from dart to dart.
+TEST(FlaggedWord, NumberedBoundaryWordIsTheWordFromTheFirstDart) {
+  const Map cube = make_cube(3);
+  std::vector<uint32_t> flags(cube.capacity());
+  for (Dart d = 0; d < cube.capacity(); ++d) flags[d] = d % 3;
+  for (Dart d = 0; d < cube.capacity(); d += 5) {
+    const BoundaryGraph v = cell_boundary(cube, 3, d, flags, {}), f = cell_boundary(cube, 2, d, flags, {});
+    for (const BoundaryGraph* b : {&v, &f}) {
+      Word read{7}, walked{7};
+      numbered_boundary_word(*b, read);
+      boundary_word(*b, 0, walked);
+      EXPECT_EQ(read, walked) << d;
+    }
+  }
+  // Not so for a pattern boundary (numbered in dart order): the word reads another numbering.
+  const Map square = make_polygon(4);
+  BoundaryGraph shuffled = cell_boundary(square, 2, 0, {}, {});
+  std::swap(shuffled.dart[1], shuffled.dart[2]);
+  for (uint32_t& y : shuffled.nbr) y = y == 1 ? 2 : y == 2 ? 1 : y;
+  std::swap(shuffled.nbr[2], shuffled.nbr[4]);
+  std::swap(shuffled.nbr[3], shuffled.nbr[5]);
+  Word read, walked;
+  numbered_boundary_word(shuffled, read);
+  boundary_word(shuffled, 0, walked);
+  EXPECT_NE(read, walked);
+}
+
 TEST(FlaggedWord, CubeAutomorphismsAndFlaggedWordPrefix) {
   const Map cube = make_cube(2);
   const std::vector<uint32_t> flags(cube.capacity(), 1);
