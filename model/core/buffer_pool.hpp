@@ -23,16 +23,33 @@
 namespace gmr {
 
 namespace detail {
+// Set when the thread's pool is destroyed (a trivially destructible thread_local, readable until
+// the thread ends): a map destroyed later (a static one, or a thread_local made before the pool)
+// then frees its arrays instead of giving them to a pool that no longer exists.
 template <class T>
-std::vector<std::vector<T>>& buffer_pool() {
-  thread_local std::vector<std::vector<T>> p;
-  return p;
+bool& buffer_pool_gone() {
+  thread_local bool gone = false;
+  return gone;
+}
+template <class T>
+struct BufferPool {
+  std::vector<std::vector<T>> buffers;
+  ~BufferPool() { buffer_pool_gone<T>() = true; }
+};
+// The thread's pool, or nullptr once it is destroyed.
+template <class T>
+std::vector<std::vector<T>>* buffer_pool() {
+  if (buffer_pool_gone<T>()) return nullptr;
+  thread_local BufferPool<T> p;
+  return &p.buffers;
 }
 }  // namespace detail
 
 template <class T>
 std::vector<T> take_buffer(size_t min_capacity = 0) {
-  auto& p = detail::buffer_pool<T>();
+  auto* pool = detail::buffer_pool<T>();
+  if (!pool) return {};
+  auto& p = *pool;
   size_t best = p.size();
   for (size_t k = 0; k < p.size(); ++k)
     if (p[k].capacity() >= min_capacity && (best == p.size() || p[k].capacity() < p[best].capacity())) best = k;
@@ -48,7 +65,9 @@ void give_buffer(std::vector<T>&& v) {
   constexpr size_t kMinBytes = size_t(1) << 20;
   constexpr size_t kMaxBuffers = 16;
   if (v.capacity() * sizeof(T) < kMinBytes) return;
-  auto& p = detail::buffer_pool<T>();
+  auto* pool = detail::buffer_pool<T>();
+  if (!pool) return;  // v frees its storage
+  auto& p = *pool;
   p.push_back(std::move(v));
   if (p.size() > kMaxBuffers) {
     auto smallest = std::min_element(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.capacity() < b.capacity(); });

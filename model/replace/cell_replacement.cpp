@@ -23,13 +23,9 @@ void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   if (mirror) std::copy(pos + first, pos + first + t.interior, pos + first + mirror);
 }
 
-// The i-link array of the map being written, for loops that write many links at once (set_alpha's
-// raw writes with the indirection hoisted; g is not const, so its storage may be written).
-Dart* link_array(Map& g, int i) { return const_cast<Dart*>(g.links(i).data()); }
-
 // One link array of the copies: interior dart j's neighbour y becomes first + y.
 void copy_links(Map& g, int d, const std::vector<uint32_t>& link, Dart first) {
-  Dart* __restrict out = link_array(g, d) + first;
+  Dart* __restrict out = g.link_data(d) + first;
   const uint32_t* __restrict in = link.data();
   const uint32_t k = static_cast<uint32_t>(link.size());
   for (uint32_t j = 0; j < k; ++j) out[j] = first + in[j];
@@ -48,7 +44,7 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
     if (shared) copy_links(g, d, t.link[d], first + k);
   }
   if (shared) {
-    Dart* __restrict out = link_array(g, i + 1) + first;
+    Dart* __restrict out = g.link_data(i + 1) + first;
     for (uint32_t j = 0; j < k; ++j) {
       out[j] = first + k + j;
       out[k + j] = first + j;
