@@ -34,6 +34,7 @@ bool has_duplicate(const std::vector<uint32_t>& v, std::vector<uint32_t>& buffer
 
 Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
     : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
+  for (const EmbeddingSignature& s : sigs_) types_.push_back(s.type);
   scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
   vals_.resize(kMaxNesting + 1);
 }
@@ -103,6 +104,7 @@ Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType targ
   lets_.clear();
   if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
   top_ = 0;
+  loads_ = p.loads.data();
   return checked(run(p.code.data(), p.code.data() + p.code.size()), *p.root, target);
 }
 
@@ -123,6 +125,18 @@ Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
   if (d == kNoDart) fail(e, "node " + r.base + " has no dart");
   for (int dim : r.path) d = g_.alpha(dim, d);
   return d;
+}
+
+// A node value resolved at compile time (program.hpp): field_value(dart_of(...)) without reading
+// the tree; their errors on a missing dart or value.
+inline Val Evaluator::load(const LoadRef& r) {
+  Dart d = r.variable ? vars_[r.index] : nodes_[r.index];
+  if (d == kNoDart) dart_of(r.expr->ref, *r.expr);
+  for (uint8_t k = 0; k < r.length; ++k) d = g_.alpha(r.path[k], d);
+  const EmbeddingField* f = fields_[r.embedding];
+  const uint32_t slot = f ? f->values.slot(d) : Embedding<Vec3>::kNoValue;
+  if (slot == Embedding<Vec3>::kNoValue) field_value(r.embedding, d, *r.expr);
+  return from_storage(f->values.value(slot), types_[r.embedding]);
 }
 
 Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
@@ -213,7 +227,7 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
 
 // The value one member contributes: the embedding's value at x for a collect, the body evaluated
 // with x bound for a comprehension.
-Val Evaluator::member_value(const Expr& e, Dart x) {
+__attribute__((always_inline)) inline Val Evaluator::member_value(const Expr& e, Dart x) {
   if (e.op == Expr::Op::Collect) return field_value(e.embedding, x, e);
   vars_.push_back(x);
   Val v = body_value(e);
@@ -264,7 +278,50 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
       return;
     }
   }
+  if (e.op == Expr::Op::Comprehension && bodies_[depth].begin && bodies_[depth].end - bodies_[depth].begin == 1 &&
+      body_of_one_instruction(e, *bodies_[depth].begin, firsts, out))
+    return;
   for (const Dart x : firsts) out.push_back(member_value(e, x));
+}
+
+// Memo mode, a comprehension whose compiled body is one instruction that needs no program run per
+// member: a node value (Loop's [e@0.position | e in ...]), or the memoised barycentre of a collect
+// from the member (Catmull-Clark's [middle(<0,1>_position(f)) | f in ...]) read from its memo table,
+// the member's value computed (and the table filled) the usual way when it is not there yet. The
+// values are member_value's. Returns false for any other body.
+bool Evaluator::body_of_one_instruction(const Expr& e, const Instruction& body, const std::vector<Dart>& firsts,
+                                        std::vector<Val>& out) {
+  const size_t depth = vars_.size();
+  if (body.op == Instruction::Op::Load) {
+    const LoadRef& l = loads_[body.index];
+    vars_.push_back(kNoDart);
+    for (const Dart x : firsts) {
+      vars_.back() = x;
+      out.push_back(load(l));
+    }
+    vars_.pop_back();
+    return true;
+  }
+  if (body.op != Instruction::Op::AggregateSet || body.index != 0) return false;
+  const Expr& call = *body.expr;
+  const Expr& arg = *call.args[0];
+  // The memo condition of aggregate(), on a collect from this comprehension's variable.
+  if (arg.op != Expr::Op::Collect || !arg.word.empty() || (arg.orbit_mask & ~arg.class_mask) == 0 ||
+      !arg.ref.is_variable || arg.ref.index != depth)
+    return false;
+  const CollectMemo* cm = memo_for(call, arg);
+  for (const Dart x : firsts) {
+    Dart d = x;
+    for (const int dim : arg.ref.path) d = g_.alpha(dim, d);
+    const uint32_t at = (*cm->at)[d];
+    if (at != kNone) {
+      out.push_back((*cm->values)[at]);
+    } else {
+      out.push_back(member_value(e, x));
+      cm = memo_for(call, arg);  // member_value may have added memos
+    }
+  }
+  return true;
 }
 
 // The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one
@@ -445,6 +502,17 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
         *sp++ = from_storage(f->values.value(slot), sigs_[static_cast<size_t>(e.embedding)].type);
         break;
       }
+      case Op::Load: *sp++ = load(loads_[pc->index]); break;
+      case Op::Combine:
+      case Op::CombineLoads: {
+        Val acc = pc->op == Op::Combine ? Val{pc->value[0], pc->value[1], pc->value[2], pc->value[3]} : sp[-1];
+        const LoadRef* l = loads_ + pc->index;
+        for (uint32_t k = 0; k < pc->count; ++k) acc = add(acc, scale(load(l[k]), l[k].weight));
+        if (pc->op == Op::Combine) ++sp;
+        sp[-1] = acc;
+        break;
+      }
+      case Op::Accumulate: --sp; sp[-1] = add(sp[-1], scale(sp[0], pc->value[0])); break;
       case Op::Neg: sp[-1] = ops::neg(sp[-1]); break;
       case Op::Add: --sp; sp[-1] = add(sp[-1], sp[0]); break;
       case Op::Sub: --sp; sp[-1] = sub(sp[-1], sp[0]); break;

@@ -70,12 +70,15 @@ class Evaluator {
   void members(const Expr& e, std::vector<Val>& out);
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
+  Val load(const LoadRef& r);
   Val field_value(int embedding, Dart d, const Expr& e);
   [[noreturn]] void fail(const Expr& e, const std::string& msg, Dart d = kNoDart) const;
 
   const Map& g_;
   std::vector<EmbeddingSignature> sigs_;
   std::vector<const EmbeddingField*> fields_;
+  std::vector<ValueType> types_;       // sigs_[k].type
+  const LoadRef* loads_ = nullptr;     // the loads of the program run (evaluate)
   const Dart* nodes_ = nullptr;
   std::vector<Dart> vars_;
   std::vector<Val> lets_;
@@ -103,6 +106,8 @@ class Evaluator {
   std::vector<OrbitIds> ids_;
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
+  bool body_of_one_instruction(const Expr& e, const Instruction& body, const std::vector<Dart>& firsts,
+                               std::vector<Val>& out);
   struct LastWalk {
     DimMask mask = 0;
     Dart dart = kNoDart;
