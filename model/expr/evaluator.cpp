@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "model/core/error.hpp"
 #include "model/core/huge_pages.hpp"
@@ -105,6 +106,8 @@ Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType targ
   if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
   top_ = 0;
   loads_ = p.loads.data();
+  program_ = p.id;
+  code_ = p.code.data();
   return checked(run(p.code.data(), p.code.data() + p.code.size()), *p.root, target);
 }
 
@@ -478,6 +481,13 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
   return r;
 }
 
+Evaluator::Kept* Evaluator::kept_for(const Instruction* at) {
+  const auto offset = static_cast<size_t>(at - code_);
+  for (Kept& k : kept_)
+    if (k.at == offset && k.program == program_) return &k;
+  return nullptr;
+}
+
 // A compiled program (program.hpp) on the value stack from top_: the tree's evaluation order,
 // operations and errors, without the recursion over the tree.
 Val Evaluator::run(const Instruction* pc, const Instruction* end) {
@@ -553,6 +563,31 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
         top_ = base;
         *sp++ = v;
         pc += pc->index;
+        break;
+      }
+      case Op::Pure: {
+        const size_t n = lets_.size();
+        const Kept* k = kept_for(pc);
+        if (k && k->lets == n && std::memcmp(k->key, lets_.data(), n * sizeof(Val)) == 0) {
+          *sp++ = k->value;
+          pc += pc->index + 1;  // past the code and its PureEnd
+        }
+        break;
+      }
+      case Op::PureEnd: {
+        const size_t n = lets_.size();
+        if (n > kKeptLets) break;
+        const Instruction* at = pc - pc->index - 1;
+        Kept* k = kept_for(at);
+        if (!k) {
+          kept_.push_back({});
+          k = &kept_.back();
+          k->program = program_;
+          k->at = static_cast<size_t>(at - code_);
+        }
+        k->lets = n;
+        std::copy(lets_.begin(), lets_.end(), k->key);
+        k->value = sp[-1];
         break;
       }
       case Op::Unknown: fail(e, "unknown function " + e.name);

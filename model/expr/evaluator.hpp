@@ -129,6 +129,20 @@ class Evaluator {
   Body bodies_[kMaxNesting + 1];
   std::vector<Val> stack_;
   size_t top_ = 0;
+  // The last result of each dart-free sub-expression run (program.hpp, Pure), with the let values
+  // it was computed from.
+  struct Kept {
+    uint64_t program = 0;  // Program::id
+    size_t at = 0;         // the Pure instruction's offset in its code
+    size_t lets = 0;
+    Val key[4];
+    Val value;
+  };
+  static constexpr size_t kKeptLets = 4;  // more let values in scope: not kept
+  std::vector<Kept> kept_;
+  Kept* kept_for(const Instruction* at);
+  uint64_t program_ = 0;                // the program run (evaluate): its id and code
+  const Instruction* code_ = nullptr;
 };
 
 }  // namespace gmr::expr

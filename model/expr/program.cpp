@@ -1,6 +1,7 @@
 #include "model/expr/program.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "model/expr/value_ops.hpp"
@@ -32,6 +33,15 @@ class Compiler {
 
   // Emits e's code; the stack grows by one value.
   void emit(const Expr& e) {
+    if (fuse_ && !in_pure_ && worth_keeping(e)) {
+      pure(e);
+      return;
+    }
+    emit_plain(e);
+  }
+
+ private:
+  void emit_plain(const Expr& e) {
     const size_t start = p_.code.size();
     switch (e.op) {
       case Expr::Op::Number: push(constant(e, {e.number, 0, 0, 0})); return;
@@ -100,8 +110,6 @@ class Compiler {
     }
     push(simple(Op::Unknown, e));  // not for checked expressions; the run fails on it
   }
-
- private:
   static Instruction simple(Op op, const Expr& e, uint32_t index = 0) {
     Instruction i;
     i.op = op;
@@ -298,16 +306,56 @@ class Compiler {
     return true;
   }
 
+  // Whether e reads no dart: numbers, pi, let variables and functions of them.
+  static bool dart_free(const Expr& e) {
+    switch (e.op) {
+      case Expr::Op::Value:
+      case Expr::Op::Collect:
+      case Expr::Op::Comprehension: return false;
+      case Expr::Op::Call:
+        if (e.function == Function::None) return false;
+        break;
+      default: break;
+    }
+    return std::all_of(e.args.begin(), e.args.end(), [](const auto& a) { return dart_free(*a); });
+  }
+  static bool reads_let(const Expr& e) {
+    if (e.op == Expr::Op::Constant && e.let_index >= 0) return true;
+    return std::any_of(e.args.begin(), e.args.end(), [](const auto& a) { return reads_let(*a); });
+  }
+  // A dart-free sub-expression of a let variable, long enough for its kept result to pay (the
+  // look-up costs about two instructions).
+  static constexpr size_t kPureLength = 6;
+  static bool worth_keeping(const Expr& e) {
+    if (e.type.kind == K::Multiset || !reads_let(e) || !dart_free(e)) return false;
+    Program q;
+    Compiler(q, false).emit(e);
+    return q.code.size() >= kPureLength;
+  }
+  void pure(const Expr& e) {
+    const size_t at = p_.code.size();
+    p_.code.push_back(simple(Op::Pure, e));
+    in_pure_ = true;
+    emit_plain(e);
+    in_pure_ = false;
+    const auto length = static_cast<uint32_t>(p_.code.size() - at - 1);
+    p_.code[at].index = length;
+    p_.code.push_back(simple(Op::PureEnd, e, length));
+  }
+
   Program& p_;
   bool fuse_;
+  bool in_pure_ = false;
   size_t depth_ = 0;
 };
 
 }  // namespace
 
 std::optional<Program> compile_program(const Expr& e, size_t stack_limit) {
+  static std::atomic<uint64_t> next_id{1};
   Program p;
   p.root = &e;
+  p.id = next_id++;
   Compiler(p).emit(e);
   if (p.max_stack > stack_limit) return std::nullopt;
   return p;

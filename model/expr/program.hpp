@@ -13,6 +13,12 @@
 // in one instruction; another operand (a barycentre, a product by a let variable) runs its own
 // program and is accumulated with its weight.
 //
+// A dart-free sub-expression (it reads let variables and constants only: Loop's vertex weight
+// c = 5/8 - (3 + 2 cos(2 pi / k))^2 / 64 of the valence k) is a pure function of the let values in
+// scope; its code is enclosed in Pure ... PureEnd, and the evaluator keeps its last result with the
+// let values it was computed from (Evaluator::run): equal let values (bit for bit) give that
+// result again without running the code. A run that fails keeps nothing.
+//
 // Semantics: those of the tree interpreter (Evaluator::evaluate on the Expr), which stays the
 // general path and the oracle; folding uses the same operations as the evaluation, so the values
 // are the same, and run-time errors name the same expression (column) and dart. A fused
@@ -60,6 +66,8 @@ struct Instruction {
     Cos, Sin, Abs, Sqrt, Dot, Cross, Norm, Clamp,
     AggregateArgs,  // middle/sum/count of the `index` values on top of the stack
     AggregateSet,   // middle/sum/count of the multiset expr->args[0]; body: the next `index` instructions
+    Pure,           // a dart-free sub-expression of `index` instructions follows (see below)
+    PureEnd,        // its end; `index`: its length
     Unknown,        // an unknown function (fails)
   };
   Op op = Op::Constant;
@@ -74,6 +82,7 @@ struct Program {
   std::vector<Instruction> code;
   std::vector<LoadRef> loads;  // Load, Combine, CombineLoads
   bool fused = false;          // has a fused combination (values equal the tree's up to rounding)
+  uint64_t id = 0;             // unique per compile_program call (the evaluator's kept results)
   size_t max_stack = 0;  // values on the stack at most, nested bodies included
 };
 

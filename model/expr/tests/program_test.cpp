@@ -360,4 +360,50 @@ TEST(ExpressionProgram, AffineCombinationsOfNodeValuesAreFused) {
   }
 }
 
+// A dart-free sub-expression of let variables is enclosed in Pure ... PureEnd; the evaluator gives
+// its last result again for equal let values, bit for bit the tree's, and keeps nothing from a run
+// that fails.
+TEST(ExpressionProgram, DartFreeSubExpressionsKeepTheirLastResult) {
+  const CheckContext ctx = context();
+  using Op = Instruction::Op;
+  auto pures = [](const Program& p) {
+    return std::count_if(p.code.begin(), p.code.end(), [](const Instruction& i) { return i.op == Op::Pure; });
+  };
+  {
+    // Loop's vertex point: the weight c of the valence k is one kept sub-expression; (1 - c) is too
+    // short to pay.
+    const scheme::RuleScheme s = io::read_scheme_file(rules_dir() + "loop_subdivision.json");
+    const CompiledScheme cs = compile_scheme(s);
+    const std::optional<Program> p = compile_program(*cs.right[0][0]);
+    ASSERT_TRUE(p.has_value());
+    EXPECT_EQ(pures(*p), 1);
+    const auto at = std::find_if(p->code.begin(), p->code.end(), [](const Instruction& i) { return i.op == Op::Pure; });
+    EXPECT_GE(at->index, 15u);
+    EXPECT_EQ((at + at->index + 1)->op, Op::PureEnd);
+  }
+  // 1 / (k - 4) fails on quads, at every dart of one (nothing kept), and not elsewhere.
+  const std::string code = "let k = count(<0,1>_position(n0)) in 1 / (k - 4) + cos(2 * pi / k)";
+  auto e = parse_expression(code);
+  check_expression(*e, ctx, ValueType::Scalar);
+  const std::optional<Program> p = compile_program(*e);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(pures(*p), 1);
+  EXPECT_GT(compare_everywhere(*e, ValueType::Scalar, code), 1000u);
+  size_t errors = 0, values = 0;
+  for (uint64_t seed = 1; seed < 8; seed += 2) {
+    const Surface s = random_surface(seed);
+    Evaluator tree(s.g, kSigs, {&s.pos, &s.weight});
+    Evaluator flat(s.g, kSigs, {&s.pos, &s.weight});
+    for (Dart d : s.g.darts())
+      for (int twice = 0; twice < 2; ++twice) {
+        const Outcome a = outcome(tree, *e, d, ValueType::Scalar), b = outcome(flat, *p, d, ValueType::Scalar);
+        EXPECT_EQ(a.error, b.error) << d;
+        EXPECT_TRUE(bitwise(a.v.x, b.v.x)) << d;
+        ++(a.error.empty() ? values : errors);
+      }
+  }
+  EXPECT_GT(errors, 0u);
+  EXPECT_GT(values, 0u);
+}
+
 }  // namespace program_test
