@@ -198,6 +198,12 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
     memo_members(e, mc, in_orbit, out);
     return;
   }
+  if (memo_on_ && g_.kind() == MapKind::GMap && __builtin_popcount(mo) == 2 && list_two_dims(mo, d, in_orbit)) {
+    last = {mo, d, true};
+    memo_members(e, mc, in_orbit, out);
+    return;
+  }
+  in_orbit.clear();
   ScopedMarker mo_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
@@ -226,6 +232,42 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   for (Dart x : in_classes) mc_mark.unmark(x);
   mo_mark.set_clean();
   mc_mark.set_clean();
+}
+
+// Memo mode: the <a,b>-orbit of d (a < b) of a G-map, listed without a marker in the order of
+// visit_orbit_marked. Under two involutions the orbit is a cycle or a path, and that depth-first
+// walk goes from d along b, a, b, ... until it closes (alpha_a(d) comes last) or ends at a free
+// dart, then from alpha_a(d) along b, a, ... to the other end. Returns false (in_orbit unspecified)
+// on anything else — a dangling or non-involutive link, more than kSmallOrbit darts — and the
+// caller walks with a marker.
+bool Evaluator::list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit) {
+  const int a = __builtin_ctz(mo);
+  const Dart* const la = g_.links(a).data();
+  const Dart* const lb = g_.links(__builtin_ctz(mo & (mo - 1))).data();
+  const Dart cap = g_.capacity();
+  in_orbit.clear();
+  in_orbit.push_back(d);
+  // One side: from `from` (d, or alpha_a(d) already listed) along `l` then the other link.
+  auto side = [&](Dart from, const Dart* l, const Dart* other) -> int {  // 1 closed, 0 free end, -1 irregular
+    for (Dart x = from;;) {
+      const Dart y = l[x];
+      if (y >= cap || l[y] != x) return -1;
+      if (y == x) return 0;
+      if (y == d) return 1;
+      if (in_orbit.size() == kSmallOrbit) return -1;
+      in_orbit.push_back(y);
+      x = y;
+      std::swap(l, other);
+    }
+  };
+  const int first = side(d, lb, la);
+  if (first != 0) return first == 1;
+  const Dart y = la[d];
+  if (y >= cap || la[y] != d) return false;
+  if (y == d) return true;
+  if (in_orbit.size() == kSmallOrbit) return false;
+  in_orbit.push_back(y);
+  return side(y, lb, la) == 0;  // a path cannot come back to d
 }
 
 // The value one member contributes: the embedding's value at x for a collect, the body evaluated

@@ -106,6 +106,7 @@ class Evaluator {
   std::vector<OrbitIds> ids_;
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
+  bool list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit);
   bool body_of_one_instruction(const Expr& e, const Instruction& body, const std::vector<Dart>& firsts,
                                std::vector<Val>& out);
   struct LastWalk {
