@@ -112,15 +112,19 @@ Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType targ
 }
 
 // The mass of a point (1) or a vector (0), checked within 1e-9 and made exact.
-Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
-  if (target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9)
-    fail(e, "the point's weights sum to " + std::to_string(v.w) + ", not 1 (an affine combination of points needs weights summing to 1)",
-         nodes_ ? nodes_[0] : kNoDart);
-  if (target == ValueType::Vector && std::fabs(v.w) > 1e-9)
-    fail(e, "the vector's weights sum to " + std::to_string(v.w) + ", not 0", nodes_ ? nodes_[0] : kNoDart);
+inline Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
+  if ((target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(v.w) > 1e-9))
+    fail_mass(e, v.w, target);
   if (target == ValueType::Point) v.w = 1.0;
   if (target == ValueType::Vector) v.w = 0.0;
   return v;
+}
+
+void Evaluator::fail_mass(const Expr& e, double mass, ValueType target) const {
+  if (target == ValueType::Point)
+    fail(e, "the point's weights sum to " + std::to_string(mass) + ", not 1 (an affine combination of points needs weights summing to 1)",
+         nodes_ ? nodes_[0] : kNoDart);
+  fail(e, "the vector's weights sum to " + std::to_string(mass) + ", not 0", nodes_ ? nodes_[0] : kNoDart);
 }
 
 Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
@@ -136,10 +140,15 @@ inline Val Evaluator::load(const LoadRef& r) {
   Dart d = r.variable ? vars_[r.index] : nodes_[r.index];
   if (d == kNoDart) dart_of(r.expr->ref, *r.expr);
   for (uint8_t k = 0; k < r.length; ++k) d = g_.alpha(r.path[k], d);
-  const EmbeddingField* f = fields_[r.embedding];
+  return value_at(r.embedding, d, *r.expr);
+}
+
+// field_value's fast path (inlined): its error when d has no value.
+inline Val Evaluator::value_at(int embedding, Dart d, const Expr& e) {
+  const EmbeddingField* f = fields_[static_cast<size_t>(embedding)];
   const uint32_t slot = f ? f->values.slot(d) : Embedding<Vec3>::kNoValue;
-  if (slot == Embedding<Vec3>::kNoValue) field_value(r.embedding, d, *r.expr);
-  return from_storage(f->values.value(slot), types_[r.embedding]);
+  if (slot == Embedding<Vec3>::kNoValue) field_value(embedding, d, e);
+  return from_storage(f->values.value(slot), types_[static_cast<size_t>(embedding)]);
 }
 
 Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
@@ -273,7 +282,7 @@ bool Evaluator::list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit) {
 // The value one member contributes: the embedding's value at x for a collect, the body evaluated
 // with x bound for a comprehension.
 __attribute__((always_inline)) inline Val Evaluator::member_value(const Expr& e, Dart x) {
-  if (e.op == Expr::Op::Collect) return field_value(e.embedding, x, e);
+  if (e.op == Expr::Op::Collect) return value_at(e.embedding, x, e);
   vars_.push_back(x);
   Val v = body_value(e);
   vars_.pop_back();
@@ -296,8 +305,10 @@ Val Evaluator::body_value(const Expr& e) {
 void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
   const size_t depth = vars_.size();
   LastWalk& last = last_walk_[depth];
-  std::vector<Dart>& firsts = member_darts_[depth];
-  if (last.members != mc) {
+  const int kept = last.members[0] == mc ? 0 : last.members[1] == mc ? 1 : -1;
+  const int slot = kept >= 0 ? kept : last.replace;
+  std::vector<Dart>& firsts = member_darts_[depth][slot];
+  if (kept < 0) {
     const OrbitIds& o = orbit_ids(mc);  // copied out: member_value may add entries to ids_
     const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
     const uint32_t* const index = o.index;
@@ -310,7 +321,8 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
       met[count++] = id;
       firsts.push_back(x);
     }
-    last.members = mc;
+    last.members[slot] = mc;
+    last.replace = 1 - slot;
   }
   if (e.op == Expr::Op::Comprehension) {
     const Body& b = bodies_[depth];

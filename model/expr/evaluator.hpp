@@ -66,12 +66,14 @@ class Evaluator {
   Val run(const Instruction* pc, const Instruction* end);
   Val aggregate(const Expr& call, const Instruction* body, const Instruction* body_end);
   Val checked(Val v, const Expr& e, ValueType target) const;
+  [[noreturn]] __attribute__((noinline, cold)) void fail_mass(const Expr& e, double mass, ValueType target) const;
   Val body_value(const Expr& e);
   void members(const Expr& e, std::vector<Val>& out);
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
   Val load(const LoadRef& r);
   Val field_value(int embedding, Dart d, const Expr& e);
+  Val value_at(int embedding, Dart d, const Expr& e);
   [[noreturn]] void fail(const Expr& e, const std::string& msg, Dart d = kNoDart) const;
 
   const Map& g_;
@@ -113,10 +115,13 @@ class Evaluator {
     DimMask mask = 0;
     Dart dart = kNoDart;
     bool valid = false;
-    DimMask members = kNoMembers;  // the <c> whose first darts are in member_darts_ (memo_members)
+    // The two last <c> whose first darts are in member_darts_ (memo_members; Catmull-Clark's vertex
+    // point alternates <0,2> and <0,1> over one walk), and the one to replace next.
+    DimMask members[2] = {kNoMembers, kNoMembers};
+    int replace = 0;
   };
   static constexpr DimMask kNoMembers = ~DimMask(0);
-  std::vector<Dart> member_darts_[kMaxNesting];
+  std::vector<Dart> member_darts_[kMaxNesting][2];
   LastWalk last_walk_[kMaxNesting];  // memo mode: the <o>-orbit left in each depth's scratch list
   static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
