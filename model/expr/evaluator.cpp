@@ -45,7 +45,19 @@ void Evaluator::memoise_collects(bool on) {
   memos_.clear();
   ids_.clear();
   for (auto& w : last_walk_) w.valid = false;
+  held_fields_.clear();
+  if (on) hold_tables();
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
+}
+
+void Evaluator::hold_tables() {
+  for (int i = 0; i <= g_.dimension() && i < kMaxDim; ++i) held_links_[i] = g_.links(i).data();
+  held_fields_.resize(fields_.size());
+  for (size_t k = 0; k < fields_.size(); ++k) {
+    if (!fields_[k]) continue;
+    const Embedding<Vec3>& v = fields_[k]->values;
+    held_fields_[k] = {v.slots().data(), v.slots().size(), v.values().data(), types_[k]};
+  }
 }
 
 void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index) {
@@ -139,6 +151,24 @@ Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
 inline Val Evaluator::load(const LoadRef& r) {
   Dart d = r.variable ? vars_[r.index] : nodes_[r.index];
   if (d == kNoDart) dart_of(r.expr->ref, *r.expr);
+  if (memo_on_) {  // the tables held (hold_tables); the same reads without the map's and fields' indirections
+    for (uint8_t k = 0; k < r.length; ++k) d = held_links_[r.path[k]][d];
+    const HeldField& f = held_fields_[r.embedding];
+    if (d < f.size) {
+      const uint32_t slot = f.slots[d];
+      if (slot != Embedding<Vec3>::kNoValue) {
+        const Vec3& v = f.values[slot];
+        return {v[0], f.type == ValueType::Scalar ? 0.0 : v[1], f.type == ValueType::Scalar ? 0.0 : v[2],
+                f.type == ValueType::Point ? 1.0 : 0.0};
+      }
+    }
+    return field_value(r.embedding, d, *r.expr);  // its error
+  }
+  return load_from_map(r, d);
+}
+
+// load outside memo mode: the path and the value read through the map and the field.
+Val Evaluator::load_from_map(const LoadRef& r, Dart d) {
   for (uint8_t k = 0; k < r.length; ++k) d = g_.alpha(r.path[k], d);
   return value_at(r.embedding, d, *r.expr);
 }

@@ -55,6 +55,8 @@ class Evaluator {
   // 2k + 1 places). Comprehensions and collects then tell the <c>-orbits met apart by a numbering
   // of all the <c>-orbits of the map (one sweep per <c>) instead of marking each. The map must not
   // change while it is on.
+  // While it is on, neither the map nor the values change: the loads read the link arrays and the
+  // value tables through pointers taken here (Evaluator::load).
   void memoise_collects(bool on);
 
   // Storage conversion of a value of type t, and back.
@@ -72,6 +74,7 @@ class Evaluator {
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
   Val load(const LoadRef& r);
+  __attribute__((noinline)) Val load_from_map(const LoadRef& r, Dart d);
   Val field_value(int embedding, Dart d, const Expr& e);
   Val value_at(int embedding, Dart d, const Expr& e);
   [[noreturn]] void fail(const Expr& e, const std::string& msg, Dart d = kNoDart) const;
@@ -125,6 +128,16 @@ class Evaluator {
   LastWalk last_walk_[kMaxNesting];  // memo mode: the <o>-orbit left in each depth's scratch list
   static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
+  // Memo mode: the map's link arrays and each field's slot and value tables, held for the loads.
+  struct HeldField {
+    const uint32_t* slots = nullptr;
+    size_t size = 0;  // darts with a slot entry (0: no field)
+    const Vec3* values = nullptr;
+    ValueType type = ValueType::Scalar;
+  };
+  const Dart* held_links_[kMaxDim] = {};
+  std::vector<HeldField> held_fields_;
+  void hold_tables();
   std::vector<CollectMemo> memos_;
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.
