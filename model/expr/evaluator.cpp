@@ -146,6 +146,14 @@ Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
   return d;
 }
 
+// dart_of in memo mode: the path followed on the held link arrays (hold_tables), inlined.
+inline Dart Evaluator::held_dart_of(const NodeRef& r, const Expr& e) {
+  Dart d = r.is_variable ? vars_[r.index] : nodes_[r.index];
+  if (d == kNoDart) return dart_of(r, e);  // its error
+  for (const int dim : r.path) d = held_links_[dim][d];
+  return d;
+}
+
 // A node value resolved at compile time (program.hpp): field_value(dart_of(...)) without reading
 // the tree; their errors on a missing dart or value.
 inline Val Evaluator::load(const LoadRef& r) {
@@ -190,7 +198,7 @@ Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
 }
 
 void Evaluator::members(const Expr& e, std::vector<Val>& out) {
-  const Dart d = dart_of(e.ref, e);
+  const Dart d = memo_on_ ? held_dart_of(e.ref, e) : dart_of(e.ref, e);
   const DimMask mo = e.orbit_mask;
   const DimMask mc = e.class_mask;
   if (!e.word.empty()) {  // walk: d, d w, d w w, ... until d again
@@ -541,7 +549,7 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
                     (arg.orbit_mask & ~arg.class_mask) != 0;
   CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
   if (cm) {
-    const Dart d = dart_of(arg.ref, arg);
+    const Dart d = held_dart_of(arg.ref, arg);  // cm: memo mode
     if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
   }
   // One buffer per nesting depth: members() of a deeper comprehension uses the next one.

@@ -73,6 +73,7 @@ class Evaluator {
   void members(const Expr& e, std::vector<Val>& out);
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
+  Dart held_dart_of(const NodeRef& r, const Expr& e);
   Val load(const LoadRef& r);
   __attribute__((noinline)) Val load_from_map(const LoadRef& r, Dart d);
   Val field_value(int embedding, Dart d, const Expr& e);
