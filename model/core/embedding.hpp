@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,10 @@ class Embedding {
     if (values_.capacity() < n) regrow(values_, std::max(n, 2 * values_.capacity()));
   }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
+  // The slot table (slot(d) for d below its size) and the values, for readers that hold them
+  // while neither changes.
+  std::span<const uint32_t> slots() const { return slot_; }
+  std::span<const T> values() const { return values_; }
   void set_slot(const Map& g, Dart d, uint32_t s) {
     grow(g);
     slot_[d] = s;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "model/core/error.hpp"
 #include "model/core/huge_pages.hpp"
@@ -34,6 +35,7 @@ bool has_duplicate(const std::vector<uint32_t>& v, std::vector<uint32_t>& buffer
 
 Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
     : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
+  for (const EmbeddingSignature& s : sigs_) types_.push_back(s.type);
   scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
   vals_.resize(kMaxNesting + 1);
 }
@@ -43,7 +45,19 @@ void Evaluator::memoise_collects(bool on) {
   memos_.clear();
   ids_.clear();
   for (auto& w : last_walk_) w.valid = false;
+  held_fields_.clear();
+  if (on) hold_tables();
   memos_.reserve(16);  // memo_for's pointers stay valid for a few kinds of collects
+}
+
+void Evaluator::hold_tables() {
+  for (int i = 0; i <= g_.dimension() && i < kMaxDim; ++i) held_links_[i] = g_.links(i).data();
+  held_fields_.resize(fields_.size());
+  for (size_t k = 0; k < fields_.size(); ++k) {
+    if (!fields_[k]) continue;
+    const Embedding<Vec3>& v = fields_[k]->values;
+    held_fields_[k] = {v.slots().data(), v.slots().size(), v.values().data(), types_[k]};
+  }
 }
 
 void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index) {
@@ -103,19 +117,26 @@ Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType targ
   lets_.clear();
   if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
   top_ = 0;
+  loads_ = p.loads.data();
+  program_ = p.id;
+  code_ = p.code.data();
   return checked(run(p.code.data(), p.code.data() + p.code.size()), *p.root, target);
 }
 
 // The mass of a point (1) or a vector (0), checked within 1e-9 and made exact.
-Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
-  if (target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9)
-    fail(e, "the point's weights sum to " + std::to_string(v.w) + ", not 1 (an affine combination of points needs weights summing to 1)",
-         nodes_ ? nodes_[0] : kNoDart);
-  if (target == ValueType::Vector && std::fabs(v.w) > 1e-9)
-    fail(e, "the vector's weights sum to " + std::to_string(v.w) + ", not 0", nodes_ ? nodes_[0] : kNoDart);
+inline Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
+  if ((target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(v.w) > 1e-9))
+    fail_mass(e, v.w, target);
   if (target == ValueType::Point) v.w = 1.0;
   if (target == ValueType::Vector) v.w = 0.0;
   return v;
+}
+
+void Evaluator::fail_mass(const Expr& e, double mass, ValueType target) const {
+  if (target == ValueType::Point)
+    fail(e, "the point's weights sum to " + std::to_string(mass) + ", not 1 (an affine combination of points needs weights summing to 1)",
+         nodes_ ? nodes_[0] : kNoDart);
+  fail(e, "the vector's weights sum to " + std::to_string(mass) + ", not 0", nodes_ ? nodes_[0] : kNoDart);
 }
 
 Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
@@ -123,6 +144,49 @@ Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
   if (d == kNoDart) fail(e, "node " + r.base + " has no dart");
   for (int dim : r.path) d = g_.alpha(dim, d);
   return d;
+}
+
+// dart_of in memo mode: the path followed on the held link arrays (hold_tables), inlined.
+inline Dart Evaluator::held_dart_of(const NodeRef& r, const Expr& e) {
+  Dart d = r.is_variable ? vars_[r.index] : nodes_[r.index];
+  if (d == kNoDart) return dart_of(r, e);  // its error
+  for (const int dim : r.path) d = held_links_[dim][d];
+  return d;
+}
+
+// A node value resolved at compile time (program.hpp): field_value(dart_of(...)) without reading
+// the tree; their errors on a missing dart or value.
+inline Val Evaluator::load(const LoadRef& r) {
+  Dart d = r.variable ? vars_[r.index] : nodes_[r.index];
+  if (d == kNoDart) dart_of(r.expr->ref, *r.expr);
+  if (memo_on_) {  // the tables held (hold_tables); the same reads without the map's and fields' indirections
+    for (uint8_t k = 0; k < r.length; ++k) d = held_links_[r.path[k]][d];
+    const HeldField& f = held_fields_[r.embedding];
+    if (d < f.size) {
+      const uint32_t slot = f.slots[d];
+      if (slot != Embedding<Vec3>::kNoValue) {
+        const Vec3& v = f.values[slot];
+        return {v[0], f.type == ValueType::Scalar ? 0.0 : v[1], f.type == ValueType::Scalar ? 0.0 : v[2],
+                f.type == ValueType::Point ? 1.0 : 0.0};
+      }
+    }
+    return field_value(r.embedding, d, *r.expr);  // its error
+  }
+  return load_from_map(r, d);
+}
+
+// load outside memo mode: the path and the value read through the map and the field.
+Val Evaluator::load_from_map(const LoadRef& r, Dart d) {
+  for (uint8_t k = 0; k < r.length; ++k) d = g_.alpha(r.path[k], d);
+  return value_at(r.embedding, d, *r.expr);
+}
+
+// field_value's fast path (inlined): its error when d has no value.
+inline Val Evaluator::value_at(int embedding, Dart d, const Expr& e) {
+  const EmbeddingField* f = fields_[static_cast<size_t>(embedding)];
+  const uint32_t slot = f ? f->values.slot(d) : Embedding<Vec3>::kNoValue;
+  if (slot == Embedding<Vec3>::kNoValue) field_value(embedding, d, e);
+  return from_storage(f->values.value(slot), types_[static_cast<size_t>(embedding)]);
 }
 
 Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
@@ -134,7 +198,7 @@ Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
 }
 
 void Evaluator::members(const Expr& e, std::vector<Val>& out) {
-  const Dart d = dart_of(e.ref, e);
+  const Dart d = memo_on_ ? held_dart_of(e.ref, e) : dart_of(e.ref, e);
   const DimMask mo = e.orbit_mask;
   const DimMask mc = e.class_mask;
   if (!e.word.empty()) {  // walk: d, d w, d w w, ... until d again
@@ -181,6 +245,12 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
     memo_members(e, mc, in_orbit, out);
     return;
   }
+  if (memo_on_ && g_.kind() == MapKind::GMap && __builtin_popcount(mo) == 2 && list_two_dims(mo, d, in_orbit)) {
+    last = {mo, d, true};
+    memo_members(e, mc, in_orbit, out);
+    return;
+  }
+  in_orbit.clear();
   ScopedMarker mo_mark(g_);
   visit_orbit_marked(g_, mo, d, mo_mark.id(), stack, [&](Dart x) { in_orbit.push_back(x); });
   const size_t n = in_orbit.size();
@@ -211,10 +281,46 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
   mc_mark.set_clean();
 }
 
+// Memo mode: the <a,b>-orbit of d (a < b) of a G-map, listed without a marker in the order of
+// visit_orbit_marked. Under two involutions the orbit is a cycle or a path, and that depth-first
+// walk goes from d along b, a, b, ... until it closes (alpha_a(d) comes last) or ends at a free
+// dart, then from alpha_a(d) along b, a, ... to the other end. Returns false (in_orbit unspecified)
+// on anything else — a dangling or non-involutive link, more than kSmallOrbit darts — and the
+// caller walks with a marker.
+bool Evaluator::list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit) {
+  const int a = __builtin_ctz(mo);
+  const Dart* const la = g_.links(a).data();
+  const Dart* const lb = g_.links(__builtin_ctz(mo & (mo - 1))).data();
+  const Dart cap = g_.capacity();
+  in_orbit.clear();
+  in_orbit.push_back(d);
+  // One side: from `from` (d, or alpha_a(d) already listed) along `l` then the other link.
+  auto side = [&](Dart from, const Dart* l, const Dart* other) -> int {  // 1 closed, 0 free end, -1 irregular
+    for (Dart x = from;;) {
+      const Dart y = l[x];
+      if (y >= cap || l[y] != x) return -1;
+      if (y == x) return 0;
+      if (y == d) return 1;
+      if (in_orbit.size() == kSmallOrbit) return -1;
+      in_orbit.push_back(y);
+      x = y;
+      std::swap(l, other);
+    }
+  };
+  const int first = side(d, lb, la);
+  if (first != 0) return first == 1;
+  const Dart y = la[d];
+  if (y >= cap || la[y] != d) return false;
+  if (y == d) return true;
+  if (in_orbit.size() == kSmallOrbit) return false;
+  in_orbit.push_back(y);
+  return side(y, lb, la) == 0;  // a path cannot come back to d
+}
+
 // The value one member contributes: the embedding's value at x for a collect, the body evaluated
 // with x bound for a comprehension.
-Val Evaluator::member_value(const Expr& e, Dart x) {
-  if (e.op == Expr::Op::Collect) return field_value(e.embedding, x, e);
+__attribute__((always_inline)) inline Val Evaluator::member_value(const Expr& e, Dart x) {
+  if (e.op == Expr::Op::Collect) return value_at(e.embedding, x, e);
   vars_.push_back(x);
   Val v = body_value(e);
   vars_.pop_back();
@@ -237,8 +343,10 @@ Val Evaluator::body_value(const Expr& e) {
 void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
   const size_t depth = vars_.size();
   LastWalk& last = last_walk_[depth];
-  std::vector<Dart>& firsts = member_darts_[depth];
-  if (last.members != mc) {
+  const int kept = last.members[0] == mc ? 0 : last.members[1] == mc ? 1 : -1;
+  const int slot = kept >= 0 ? kept : last.replace;
+  std::vector<Dart>& firsts = member_darts_[depth][slot];
+  if (kept < 0) {
     const OrbitIds& o = orbit_ids(mc);  // copied out: member_value may add entries to ids_
     const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
     const uint32_t* const index = o.index;
@@ -251,7 +359,8 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
       met[count++] = id;
       firsts.push_back(x);
     }
-    last.members = mc;
+    last.members[slot] = mc;
+    last.replace = 1 - slot;
   }
   if (e.op == Expr::Op::Comprehension) {
     const Body& b = bodies_[depth];
@@ -264,7 +373,50 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
       return;
     }
   }
+  if (e.op == Expr::Op::Comprehension && bodies_[depth].begin && bodies_[depth].end - bodies_[depth].begin == 1 &&
+      body_of_one_instruction(e, *bodies_[depth].begin, firsts, out))
+    return;
   for (const Dart x : firsts) out.push_back(member_value(e, x));
+}
+
+// Memo mode, a comprehension whose compiled body is one instruction that needs no program run per
+// member: a node value (Loop's [e@0.position | e in ...]), or the memoised barycentre of a collect
+// from the member (Catmull-Clark's [middle(<0,1>_position(f)) | f in ...]) read from its memo table,
+// the member's value computed (and the table filled) the usual way when it is not there yet. The
+// values are member_value's. Returns false for any other body.
+bool Evaluator::body_of_one_instruction(const Expr& e, const Instruction& body, const std::vector<Dart>& firsts,
+                                        std::vector<Val>& out) {
+  const size_t depth = vars_.size();
+  if (body.op == Instruction::Op::Load) {
+    const LoadRef& l = loads_[body.index];
+    vars_.push_back(kNoDart);
+    for (const Dart x : firsts) {
+      vars_.back() = x;
+      out.push_back(load(l));
+    }
+    vars_.pop_back();
+    return true;
+  }
+  if (body.op != Instruction::Op::AggregateSet || body.index != 0) return false;
+  const Expr& call = *body.expr;
+  const Expr& arg = *call.args[0];
+  // The memo condition of aggregate(), on a collect from this comprehension's variable.
+  if (arg.op != Expr::Op::Collect || !arg.word.empty() || (arg.orbit_mask & ~arg.class_mask) == 0 ||
+      !arg.ref.is_variable || arg.ref.index != depth)
+    return false;
+  const CollectMemo* cm = memo_for(call, arg);
+  for (const Dart x : firsts) {
+    Dart d = x;
+    for (const int dim : arg.ref.path) d = g_.alpha(dim, d);
+    const uint32_t at = (*cm->at)[d];
+    if (at != kNone) {
+      out.push_back((*cm->values)[at]);
+    } else {
+      out.push_back(member_value(e, x));
+      cm = memo_for(call, arg);  // member_value may have added memos
+    }
+  }
+  return true;
 }
 
 // The <o ∩ o_pi>-pieces of the orbit in in_orbit (scratch depth vars_.size()) each lie in one
@@ -397,7 +549,7 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
                     (arg.orbit_mask & ~arg.class_mask) != 0;
   CollectMemo* cm = memo ? memo_for(e, arg) : nullptr;
   if (cm) {
-    const Dart d = dart_of(arg.ref, arg);
+    const Dart d = held_dart_of(arg.ref, arg);  // cm: memo mode
     if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
   }
   // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
@@ -419,6 +571,13 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
     for (Dart x : scratch_[3 * depth]) (*cm->at)[x] = idx;
   }
   return r;
+}
+
+Evaluator::Kept* Evaluator::kept_for(const Instruction* at) {
+  const auto offset = static_cast<size_t>(at - code_);
+  for (Kept& k : kept_)
+    if (k.at == offset && k.program == program_) return &k;
+  return nullptr;
 }
 
 // A compiled program (program.hpp) on the value stack from top_: the tree's evaluation order,
@@ -445,6 +604,17 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
         *sp++ = from_storage(f->values.value(slot), sigs_[static_cast<size_t>(e.embedding)].type);
         break;
       }
+      case Op::Load: *sp++ = load(loads_[pc->index]); break;
+      case Op::Combine:
+      case Op::CombineLoads: {
+        Val acc = pc->op == Op::Combine ? Val{pc->value[0], pc->value[1], pc->value[2], pc->value[3]} : sp[-1];
+        const LoadRef* l = loads_ + pc->index;
+        for (uint32_t k = 0; k < pc->count; ++k) acc = add(acc, scale(load(l[k]), l[k].weight));
+        if (pc->op == Op::Combine) ++sp;
+        sp[-1] = acc;
+        break;
+      }
+      case Op::Accumulate: --sp; sp[-1] = add(sp[-1], scale(sp[0], pc->value[0])); break;
       case Op::Neg: sp[-1] = ops::neg(sp[-1]); break;
       case Op::Add: --sp; sp[-1] = add(sp[-1], sp[0]); break;
       case Op::Sub: --sp; sp[-1] = sub(sp[-1], sp[0]); break;
@@ -485,6 +655,31 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
         top_ = base;
         *sp++ = v;
         pc += pc->index;
+        break;
+      }
+      case Op::Pure: {
+        const size_t n = lets_.size();
+        const Kept* k = kept_for(pc);
+        if (k && k->lets == n && std::memcmp(k->key, lets_.data(), n * sizeof(Val)) == 0) {
+          *sp++ = k->value;
+          pc += pc->index + 1;  // past the code and its PureEnd
+        }
+        break;
+      }
+      case Op::PureEnd: {
+        const size_t n = lets_.size();
+        if (n > kKeptLets) break;
+        const Instruction* at = pc - pc->index - 1;
+        Kept* k = kept_for(at);
+        if (!k) {
+          kept_.push_back({});
+          k = &kept_.back();
+          k->program = program_;
+          k->at = static_cast<size_t>(at - code_);
+        }
+        k->lets = n;
+        std::copy(lets_.begin(), lets_.end(), k->key);
+        k->value = sp[-1];
         break;
       }
       case Op::Unknown: fail(e, "unknown function " + e.name);

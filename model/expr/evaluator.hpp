@@ -55,6 +55,8 @@ class Evaluator {
   // 2k + 1 places). Comprehensions and collects then tell the <c>-orbits met apart by a numbering
   // of all the <c>-orbits of the map (one sweep per <c>) instead of marking each. The map must not
   // change while it is on.
+  // While it is on, neither the map nor the values change: the loads read the link arrays and the
+  // value tables through pointers taken here (Evaluator::load).
   void memoise_collects(bool on);
 
   // Storage conversion of a value of type t, and back.
@@ -66,16 +68,23 @@ class Evaluator {
   Val run(const Instruction* pc, const Instruction* end);
   Val aggregate(const Expr& call, const Instruction* body, const Instruction* body_end);
   Val checked(Val v, const Expr& e, ValueType target) const;
+  [[noreturn]] __attribute__((noinline, cold)) void fail_mass(const Expr& e, double mass, ValueType target) const;
   Val body_value(const Expr& e);
   void members(const Expr& e, std::vector<Val>& out);
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
+  Dart held_dart_of(const NodeRef& r, const Expr& e);
+  Val load(const LoadRef& r);
+  __attribute__((noinline)) Val load_from_map(const LoadRef& r, Dart d);
   Val field_value(int embedding, Dart d, const Expr& e);
+  Val value_at(int embedding, Dart d, const Expr& e);
   [[noreturn]] void fail(const Expr& e, const std::string& msg, Dart d = kNoDart) const;
 
   const Map& g_;
   std::vector<EmbeddingSignature> sigs_;
   std::vector<const EmbeddingField*> fields_;
+  std::vector<ValueType> types_;       // sigs_[k].type
+  const LoadRef* loads_ = nullptr;     // the loads of the program run (evaluate)
   const Dart* nodes_ = nullptr;
   std::vector<Dart> vars_;
   std::vector<Val> lets_;
@@ -103,17 +112,33 @@ class Evaluator {
   std::vector<OrbitIds> ids_;
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
+  bool list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit);
+  bool body_of_one_instruction(const Expr& e, const Instruction& body, const std::vector<Dart>& firsts,
+                               std::vector<Val>& out);
   struct LastWalk {
     DimMask mask = 0;
     Dart dart = kNoDart;
     bool valid = false;
-    DimMask members = kNoMembers;  // the <c> whose first darts are in member_darts_ (memo_members)
+    // The two last <c> whose first darts are in member_darts_ (memo_members; Catmull-Clark's vertex
+    // point alternates <0,2> and <0,1> over one walk), and the one to replace next.
+    DimMask members[2] = {kNoMembers, kNoMembers};
+    int replace = 0;
   };
   static constexpr DimMask kNoMembers = ~DimMask(0);
-  std::vector<Dart> member_darts_[kMaxNesting];
+  std::vector<Dart> member_darts_[kMaxNesting][2];
   LastWalk last_walk_[kMaxNesting];  // memo mode: the <o>-orbit left in each depth's scratch list
   static constexpr size_t kSmallOrbit = 64;  // beyond, met orbits are marked (no quadratic search)
   bool memo_on_ = false;
+  // Memo mode: the map's link arrays and each field's slot and value tables, held for the loads.
+  struct HeldField {
+    const uint32_t* slots = nullptr;
+    size_t size = 0;  // darts with a slot entry (0: no field)
+    const Vec3* values = nullptr;
+    ValueType type = ValueType::Scalar;
+  };
+  const Dart* held_links_[kMaxDim] = {};
+  std::vector<HeldField> held_fields_;
+  void hold_tables();
   std::vector<CollectMemo> memos_;
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.
@@ -124,6 +149,20 @@ class Evaluator {
   Body bodies_[kMaxNesting + 1];
   std::vector<Val> stack_;
   size_t top_ = 0;
+  // The last result of each dart-free sub-expression run (program.hpp, Pure), with the let values
+  // it was computed from.
+  struct Kept {
+    uint64_t program = 0;  // Program::id
+    size_t at = 0;         // the Pure instruction's offset in its code
+    size_t lets = 0;
+    Val key[4];
+    Val value;
+  };
+  static constexpr size_t kKeptLets = 4;  // more let values in scope: not kept
+  std::vector<Kept> kept_;
+  Kept* kept_for(const Instruction* at);
+  uint64_t program_ = 0;                // the program run (evaluate): its id and code
+  const Instruction* code_ = nullptr;
 };
 
 }  // namespace gmr::expr

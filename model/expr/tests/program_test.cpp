@@ -1,7 +1,8 @@
-// Compiled programs (program.hpp) against the tree interpreter, their oracle: the same value, bit
-// for bit, and the same error message at every dart of random surfaces, plain and in memo mode,
-// for the expressions of the four library subdivision schemes and for random expressions;
-// constant folding.
+// Compiled programs (program.hpp) against the tree interpreter, their oracle: the same value (bit
+// for bit; within 1e-12 relative when an affine combination is fused, its weights distributed) and
+// the same error message at every dart of random surfaces, plain and in memo mode, for the
+// expressions of the four library subdivision schemes and for random expressions; constant
+// folding; fused combinations.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,6 +82,8 @@ Outcome outcome(Evaluator& ev, const E& e, Dart d, ValueType t) {
 }
 
 bool bitwise(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+// A fused combination's value: the tree's up to rounding.
+bool close(double a, double b) { return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)}); }
 
 // Compares the program of `e` with the tree at every dart of 20 random surfaces, in both modes;
 // returns the number of values compared (errors included).
@@ -108,7 +111,7 @@ size_t compare_everywhere(const Expr& e, ValueType t, const std::string& what) {
         }
         const double xa[4] = {a.v.x, a.v.y, a.v.z, a.v.w}, xb[4] = {b.v.x, b.v.y, b.v.z, b.v.w};
         for (int k = 0; k < 4; ++k)
-          EXPECT_TRUE(bitwise(xa[k], xb[k])) << where << ": " << xa[k] << " vs " << xb[k];
+          EXPECT_TRUE(p->fused ? close(xa[k], xb[k]) : bitwise(xa[k], xb[k])) << where << ": " << xa[k] << " vs " << xb[k];
         ++compared;
         if (::testing::Test::HasFailure()) return compared;
       }
@@ -141,7 +144,7 @@ class RandomExpression {
  public:
   explicit RandomExpression(gt::Rng& rng) : rng_(rng) {}
   std::string point(int depth) {
-    const unsigned k = static_cast<unsigned>(gt::uniform(rng_, 0, depth <= 0 ? 1 : 7));
+    const unsigned k = static_cast<unsigned>(gt::uniform(rng_, 0, depth <= 0 ? 1 : 8));
     switch (k) {
       case 0: return ref() + ".position";
       case 1: return "middle(" + orbit() + "_position(" + ref() + "))";
@@ -162,11 +165,14 @@ class RandomExpression {
         scope_.pop_back();
         return "middle([" + body + " | " + x + ", " + i + " in (@0@1)*(" + ref() + ")])";
       }
+      case 7:  // an affine combination of node values with constant weights (fused)
+        return "(3 * " + ref() + ".position + " + point(depth - 1) + " - (" + ref() + ".position - " + ref() +
+               ".position)) / 4";
       default: return "middle(" + point(depth - 1) + ", " + point(depth - 1) + ", " + point(depth - 1) + ")";
     }
   }
   std::string scalar(int depth) {
-    const unsigned k = static_cast<unsigned>(gt::uniform(rng_, 0, depth <= 0 ? 2 : 11));
+    const unsigned k = static_cast<unsigned>(gt::uniform(rng_, 0, depth <= 0 ? 2 : 12));
     switch (k) {
       case 0: return std::to_string(gt::uniform(rng_, 0, 9));
       case 1: return ref() + ".weight";
@@ -186,6 +192,8 @@ class RandomExpression {
         lets_.pop_back();
         return "(let " + x + " = " + value + " in " + body + " * " + x + ")";
       }
+      case 11:  // fused, node weights possibly missing (the error of the first met)
+        return "(" + ref() + ".weight - 2 * " + ref() + ".weight + " + scalar(depth - 1) + " / 3 + 1)";
       default: return "sqrt(" + scalar(depth - 1) + " - 2)";
     }
   }
@@ -211,7 +219,7 @@ class RandomExpression {
 
 TEST(ExpressionProgram, RandomExpressionsGiveTheTreesValuesAndErrors) {
   const CheckContext ctx = context();
-  size_t expressions = 0, compared = 0;
+  size_t expressions = 0, compared = 0, fused = 0;
   for (uint64_t seed = 0; seed < 60; ++seed) {
     gt::Rng rng(42000 + seed);
     RandomExpression gen(rng);
@@ -225,10 +233,12 @@ TEST(ExpressionProgram, RandomExpressionsGiveTheTreesValuesAndErrors) {
       continue;  // e.g. a mass known only at run time is fine; an ill-typed draw is skipped
     }
     ++expressions;
+    if (const std::optional<Program> p = compile_program(*e); p && p->fused) ++fused;
     compared += compare_everywhere(*e, t, code);
     if (HasFailure()) return;
   }
   EXPECT_GE(expressions, 40u);
+  EXPECT_GE(fused, 10u);  // fused combinations (within 1e-12) are among them
   EXPECT_GT(compared, 50000u);
 }
 
@@ -249,13 +259,6 @@ TEST(ExpressionProgram, ConstantsAreFoldedExceptWhatTheRunRejects) {
     EXPECT_DOUBLE_EQ(p.code[0].value[0], c);
     EXPECT_NEAR(p.code[0].value[0], 3.0 / 8, 1e-15);  // Loop's weight at valence 6
   }
-  {
-    // Only the constant part of the edge mask folds: 3 (the weight) and 8; the values stay.
-    const auto [e, p] = compile("(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8",
-                                ValueType::Point);
-    EXPECT_EQ(std::count_if(p.code.begin(), p.code.end(), [](const Instruction& i) { return i.op == Instruction::Op::Value; }), 4);
-    EXPECT_EQ(p.code.size(), 11u);
-  }
   const Surface s = random_surface(1);
   Evaluator ev(s.g, kSigs, {&s.pos, &s.weight});
   const Dart d = 0;
@@ -266,6 +269,141 @@ TEST(ExpressionProgram, ConstantsAreFoldedExceptWhatTheRunRejects) {
     EXPECT_FALSE(a.error.empty()) << code;
     EXPECT_EQ(a.error, b.error) << code;
   }
+}
+
+// Affine combinations with constant weights are one fused instruction per run of node values; the
+// other operands keep their programs and are accumulated with their weights, in the tree's order.
+TEST(ExpressionProgram, AffineCombinationsOfNodeValuesAreFused) {
+  const CheckContext ctx = context();
+  auto compile = [&](const std::string& code, ValueType t) {
+    auto e = parse_expression(code);
+    check_expression(*e, ctx, t);
+    std::optional<Program> p = compile_program(*e);
+    EXPECT_TRUE(p.has_value()) << code;
+    return std::make_pair(std::shared_ptr<Expr>(std::move(e)), *p);
+  };
+  using Op = Instruction::Op;
+  {
+    // Loop's edge mask: one instruction, weights 3/8, 3/8, 1/8, 1/8 on the four node values.
+    const auto [e, p] = compile("(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8",
+                                ValueType::Point);
+    ASSERT_EQ(p.code.size(), 1u);
+    EXPECT_EQ(p.code[0].op, Op::Combine);
+    EXPECT_TRUE(p.fused);
+    ASSERT_EQ(p.code[0].count, 4u);
+    ASSERT_EQ(p.loads.size(), 4u);
+    const double w[4] = {3.0 / 8, 3.0 / 8, 1.0 / 8, 1.0 / 8};
+    const std::vector<std::vector<uint8_t>> paths{{}, {0}, {1, 0}, {2, 1, 0}};
+    for (size_t k = 0; k < 4; ++k) {
+      EXPECT_EQ(p.loads[k].weight, w[k]) << k;
+      EXPECT_EQ(std::vector<uint8_t>(p.loads[k].path, p.loads[k].path + p.loads[k].length), paths[k]) << k;
+    }
+    for (int x = 0; x < 4; ++x) EXPECT_EQ(p.code[0].value[x], 0.0);  // no constant term
+  }
+  {
+    // Catmull-Clark's edge point: the two node values fused, each barycentre accumulated with 1/4.
+    const auto [e, p] = compile(
+        "(n0.position + n0@0.position + middle(<0,1>_position(n0)) + middle(<0,1>_position(n0@2))) / 4",
+        ValueType::Point);
+    std::vector<Op> ops;
+    for (const Instruction& i : p.code) ops.push_back(i.op);
+    EXPECT_EQ(ops, (std::vector<Op>{Op::Combine, Op::AggregateSet, Op::Accumulate, Op::AggregateSet, Op::Accumulate}));
+    EXPECT_EQ(p.code[2].value[0], 0.25);
+    EXPECT_EQ(p.code[0].count, 2u);
+  }
+  {
+    // Constants become the offset; subtraction and negation negate weights; a second run of node
+    // values after another operand is added to the accumulator.
+    const auto [e, p] = compile("n0.weight - 2 * n0@1.weight + count(<0>_position(n0)) - (-n0@0.weight) + 3",
+                                ValueType::Scalar);
+    std::vector<Op> ops;
+    for (const Instruction& i : p.code) ops.push_back(i.op);
+    EXPECT_EQ(ops, (std::vector<Op>{Op::Combine, Op::AggregateSet, Op::Accumulate, Op::CombineLoads}));
+    EXPECT_EQ(p.code[0].value[0], 3.0);
+    ASSERT_EQ(p.loads.size(), 3u);
+    EXPECT_EQ(p.loads[0].weight, 1.0);
+    EXPECT_EQ(p.loads[1].weight, -2.0);
+    EXPECT_EQ(p.loads[2].weight, 1.0);
+    const Surface s = random_surface(3);
+    Evaluator ev(s.g, kSigs, {&s.pos, &s.weight});
+    size_t values = 0;
+    for (Dart d : s.g.darts()) {
+      const Outcome a = outcome(ev, *e, d, ValueType::Scalar), b = outcome(ev, p, d, ValueType::Scalar);
+      EXPECT_EQ(a.error, b.error) << d;
+      if (a.error.empty()) {
+        EXPECT_TRUE(close(a.v.x, b.v.x)) << d << ": " << a.v.x << " vs " << b.v.x;
+        ++values;
+      }
+    }
+    EXPECT_GT(values, 0u);
+  }
+  {
+    // One node value per combination: nothing to fuse. A division by a run-time scalar: only its
+    // dividend is fused.
+    const std::pair<const char*, long> cases[] = {
+        {"(1 - n0.weight) * n0.position + n0.weight * middle(<0>_position(n0))", 0},
+        {"(n0.position + n0@0.position) / n0.weight", 1}};
+    for (const auto& [code, combines] : cases) {
+      const auto [e, p] = compile(code, ValueType::Point);
+      (void)e;
+      EXPECT_EQ(std::count_if(p.code.begin(), p.code.end(), [](const Instruction& i) { return i.op == Op::Combine; }),
+                combines)
+          << code;
+      EXPECT_EQ(p.code.back().op, combines ? Op::Div : Op::Add) << code;
+    }
+  }
+  {
+    // A path longer than a load holds stays a generic value.
+    const auto [e, p] = compile("n0@0@1@0@1@0@1@0.position", ValueType::Point);
+    ASSERT_EQ(p.code.size(), 1u);
+    EXPECT_EQ(p.code[0].op, Op::Value);
+  }
+}
+
+// A dart-free sub-expression of let variables is enclosed in Pure ... PureEnd; the evaluator gives
+// its last result again for equal let values, bit for bit the tree's, and keeps nothing from a run
+// that fails.
+TEST(ExpressionProgram, DartFreeSubExpressionsKeepTheirLastResult) {
+  const CheckContext ctx = context();
+  using Op = Instruction::Op;
+  auto pures = [](const Program& p) {
+    return std::count_if(p.code.begin(), p.code.end(), [](const Instruction& i) { return i.op == Op::Pure; });
+  };
+  {
+    // Loop's vertex point: the weight c of the valence k is one kept sub-expression; (1 - c) is too
+    // short to pay.
+    const scheme::RuleScheme s = io::read_scheme_file(rules_dir() + "loop_subdivision.json");
+    const CompiledScheme cs = compile_scheme(s);
+    const std::optional<Program> p = compile_program(*cs.right[0][0]);
+    ASSERT_TRUE(p.has_value());
+    EXPECT_EQ(pures(*p), 1);
+    const auto at = std::find_if(p->code.begin(), p->code.end(), [](const Instruction& i) { return i.op == Op::Pure; });
+    EXPECT_GE(at->index, 15u);
+    EXPECT_EQ((at + at->index + 1)->op, Op::PureEnd);
+  }
+  // 1 / (k - 4) fails on quads, at every dart of one (nothing kept), and not elsewhere.
+  const std::string code = "let k = count(<0,1>_position(n0)) in 1 / (k - 4) + cos(2 * pi / k)";
+  auto e = parse_expression(code);
+  check_expression(*e, ctx, ValueType::Scalar);
+  const std::optional<Program> p = compile_program(*e);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_EQ(pures(*p), 1);
+  EXPECT_GT(compare_everywhere(*e, ValueType::Scalar, code), 1000u);
+  size_t errors = 0, values = 0;
+  for (uint64_t seed = 1; seed < 8; seed += 2) {
+    const Surface s = random_surface(seed);
+    Evaluator tree(s.g, kSigs, {&s.pos, &s.weight});
+    Evaluator flat(s.g, kSigs, {&s.pos, &s.weight});
+    for (Dart d : s.g.darts())
+      for (int twice = 0; twice < 2; ++twice) {
+        const Outcome a = outcome(tree, *e, d, ValueType::Scalar), b = outcome(flat, *p, d, ValueType::Scalar);
+        EXPECT_EQ(a.error, b.error) << d;
+        EXPECT_TRUE(bitwise(a.v.x, b.v.x)) << d;
+        ++(a.error.empty() ? values : errors);
+      }
+  }
+  EXPECT_GT(errors, 0u);
+  EXPECT_GT(values, 0u);
 }
 
 }  // namespace program_test
