@@ -17,7 +17,9 @@ size_t QueryReplaceReport::replaced() const {
   return n;
 }
 
-void check_replacement_target(const Map& g, int cell_dim, Precondition precondition) {
+QueryReplaceReport begin_replacement(FlaggedMap& target, const PatternStore& store, int cell_dim,
+                                     Precondition precondition) {
+  const Map& g = target.map;
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
   if (cell_dim != 2 && cell_dim != 3) throw Error(ErrorCode::Usage, "cells are faces (2) or volumes (3)", "--cells");
@@ -29,6 +31,12 @@ void check_replacement_target(const Map& g, int cell_dim, Precondition precondit
     const ValidityReport v = check_validity(g, 1);
     if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + v.violations.front().describe());
   }
+  target.resize_flags();
+  QueryReplaceReport r;
+  r.mode = store.mode();
+  r.cell_dim = cell_dim;
+  r.matched.assign(store.patterns().size(), 0);
+  return r;
 }
 
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
@@ -36,14 +44,9 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
                                  const std::function<void(size_t, size_t)>& progress,
                                  const DuplicateSelector& select, const std::vector<Dart>* only,
                                  Precondition precondition) {
+  QueryReplaceReport r = begin_replacement(target, store, cell_dim, precondition);
   Map& g = target.map;
-  check_replacement_target(g, cell_dim, precondition);
   const int n = g.dimension();
-  target.resize_flags();
-  QueryReplaceReport r;
-  r.mode = store.mode();
-  r.cell_dim = cell_dim;
-  r.matched.assign(store.patterns().size(), 0);
   std::vector<uint8_t> positive;
   if (store.mode() == Mode::Oriented) positive = orientation_classes(g);
   const bool deferred = only || select;  // see below

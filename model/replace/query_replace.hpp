@@ -50,10 +50,11 @@ struct QueryReplaceReport {
 // gives undefined results).
 enum class Precondition { CheckValidity, AssumeValid };
 using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
-// The checks of the target shared by query_replace and replace_only (replace_only.hpp): a G-map
-// of dimension cell_dim or cell_dim + 1, cell_dim 2 or 3 (Error(Usage) otherwise), valid unless
-// AssumeValid (Error(InvalidMap)).
-void check_replacement_target(const Map& g, int cell_dim, Precondition precondition);
+// The start shared by query_replace and replace_only (replace_only.hpp): checks the target (a
+// G-map of dimension cell_dim or cell_dim + 1, cell_dim 2 or 3: Error(Usage) otherwise; valid
+// unless AssumeValid: Error(InvalidMap)), sizes its flags and returns an empty report.
+QueryReplaceReport begin_replacement(FlaggedMap& target, const PatternStore& store, int cell_dim,
+                                     Precondition precondition);
 QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, int cell_dim,
                                  const std::function<void()>& after_each = {},
                                  const std::function<void(size_t, size_t)>& progress = {},

@@ -35,14 +35,9 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
                                       std::to_string(store.patterns().size()));
   const ReplacementTemplate& t = store.replacement(pattern);
   const int cell_dim = t.cell_dim;
+  QueryReplaceReport r = begin_replacement(target, store, cell_dim, precondition);
   Map& g = target.map;
-  check_replacement_target(g, cell_dim, precondition);
   const int n = g.dimension();
-  target.resize_flags();
-  QueryReplaceReport r;
-  r.mode = store.mode();
-  r.cell_dim = cell_dim;
-  r.matched.assign(store.patterns().size(), 0);
   CellSweep sweep(g, cell_dim, starts);
   // Each cell replaced when met (its boundary in the cache); with a list, every cell is checked
   // first, so that a cell listed twice leaves the map unchanged (query_replace.hpp).

@@ -42,6 +42,16 @@ const MemoCase kMemoExpressions[] = {
 
 bool memo_close(double a, double b) { return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)}); }
 
+// A random surface of the seed's kind: 1-gons and 2-gons on even seeds (faces through one vertex
+// twice), disconnected on every third seed.
+Map varied_surface(uint64_t seed, gt::Rng& rng) {
+  gt::GluedPolygonsOptions opt;
+  opt.min_sides = seed % 2 == 0 ? 1 : 3;
+  opt.max_extra_sews = 16;
+  opt.connected = seed % 3 != 0;
+  return gt::random_glued_polygons(rng, opt);
+}
+
 TEST(EvaluatorMemo, MemoModeGivesThePlainValuesEverywhere) {
   const std::vector<EmbeddingSignature> sigs{{"position", OrbitType{1, 2}, ValueType::Point}};
   CheckContext ctx;
@@ -50,11 +60,7 @@ TEST(EvaluatorMemo, MemoModeGivesThePlainValuesEverywhere) {
   size_t compared = 0;
   for (uint64_t seed = 0; seed < 30; ++seed) {
     gt::Rng rng(300 + seed);
-    gt::GluedPolygonsOptions opt;
-    opt.min_sides = seed % 2 == 0 ? 1 : 3;  // 1-gons and 2-gons: faces through one vertex twice
-    opt.max_extra_sews = 16;
-    opt.connected = seed % 3 != 0;
-    const Map g = gt::random_glued_polygons(rng, opt);
+    const Map g = varied_surface(seed, rng);
     EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
       pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)), static_cast<double>(gt::uniform(rng, 0, 1000)),
@@ -104,11 +110,7 @@ TEST(EvaluatorMemo, TwoDimensionOrbitsAreListedInTheMarkedWalksOrder) {
   size_t compared = 0, paths = 0;
   for (uint64_t seed = 0; seed < 30; ++seed) {
     gt::Rng rng(700 + seed);
-    gt::GluedPolygonsOptions opt;
-    opt.min_sides = seed % 2 == 0 ? 1 : 3;
-    opt.max_extra_sews = 16;
-    opt.connected = seed % 3 != 0;
-    const Map g = gt::random_glued_polygons(rng, opt);
+    const Map g = varied_surface(seed, rng);
     for (Dart d : g.darts()) paths += g.is_free(2, d) ? 1 : 0;
     EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
@@ -150,11 +152,7 @@ TEST(EvaluatorMemo, LoadsThroughHeldTablesGiveTheTreesValuesAndErrors) {
   size_t compared = 0, errors = 0;
   for (uint64_t seed = 0; seed < 30; ++seed) {
     gt::Rng rng(1100 + seed);
-    gt::GluedPolygonsOptions opt;
-    opt.min_sides = seed % 2 == 0 ? 1 : 3;
-    opt.max_extra_sews = 16;
-    opt.connected = seed % 3 != 0;
-    const Map g = gt::random_glued_polygons(rng, opt);
+    const Map g = varied_surface(seed, rng);
     EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
       if (seed % 4 != 3 || gt::uniform(rng, 0, 9) != 0)  // every fourth surface: a few vertices without position

@@ -41,6 +41,15 @@ CheckContext context() {
   return ctx;
 }
 
+// An expression of type t parsed, checked and compiled (the program must exist).
+std::pair<std::shared_ptr<Expr>, Program> compile(const std::string& code, ValueType t) {
+  auto e = parse_expression(code);
+  check_expression(*e, context(), t);
+  std::optional<Program> p = compile_program(*e);
+  EXPECT_TRUE(p.has_value()) << code;
+  return std::make_pair(std::shared_ptr<Expr>(std::move(e)), *p);
+}
+
 struct Surface {
   Map g{2};
   EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
@@ -243,14 +252,6 @@ TEST(ExpressionProgram, RandomExpressionsGiveTheTreesValuesAndErrors) {
 }
 
 TEST(ExpressionProgram, ConstantsAreFoldedExceptWhatTheRunRejects) {
-  const CheckContext ctx = context();
-  auto compile = [&](const std::string& code, ValueType t) {
-    auto e = parse_expression(code);
-    check_expression(*e, ctx, t);
-    std::optional<Program> p = compile_program(*e);
-    EXPECT_TRUE(p.has_value()) << code;
-    return std::make_pair(std::shared_ptr<Expr>(std::move(e)), *p);
-  };
   {
     const auto [e, p] = compile("5/8 - (3 + 2 * cos(2 * pi / 6)) * (3 + 2 * cos(2 * pi / 6)) / 64", ValueType::Scalar);
     ASSERT_EQ(p.code.size(), 1u);
@@ -274,14 +275,6 @@ TEST(ExpressionProgram, ConstantsAreFoldedExceptWhatTheRunRejects) {
 // Affine combinations with constant weights are one fused instruction per run of node values; the
 // other operands keep their programs and are accumulated with their weights, in the tree's order.
 TEST(ExpressionProgram, AffineCombinationsOfNodeValuesAreFused) {
-  const CheckContext ctx = context();
-  auto compile = [&](const std::string& code, ValueType t) {
-    auto e = parse_expression(code);
-    check_expression(*e, ctx, t);
-    std::optional<Program> p = compile_program(*e);
-    EXPECT_TRUE(p.has_value()) << code;
-    return std::make_pair(std::shared_ptr<Expr>(std::move(e)), *p);
-  };
   using Op = Instruction::Op;
   {
     // Loop's edge mask: one instruction, weights 3/8, 3/8, 1/8, 1/8 on the four node values.
