@@ -557,7 +557,7 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
 
 // aggregate's value computed from the members; kept in the memo table cm when given (the
 // collect's <o>-orbit has no value there yet).
-Val Evaluator::aggregate_into(const Expr& e, CollectMemo* cm, const Instruction* body, const Instruction* body_end) {
+__attribute__((always_inline)) inline Val Evaluator::aggregate_into(const Expr& e, CollectMemo* cm, const Instruction* body, const Instruction* body_end) {
   const Expr& arg = *e.args[0];
   // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
   const size_t depth = vars_.size();
