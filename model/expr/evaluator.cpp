@@ -374,7 +374,7 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
     }
   }
   if (e.op == Expr::Op::Comprehension && bodies_[depth].begin && bodies_[depth].end - bodies_[depth].begin == 1 &&
-      body_of_one_instruction(e, *bodies_[depth].begin, firsts, out))
+      body_of_one_instruction(*bodies_[depth].begin, firsts, out))
     return;
   for (const Dart x : firsts) out.push_back(member_value(e, x));
 }
@@ -384,7 +384,7 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
 // from the member (Catmull-Clark's [middle(<0,1>_position(f)) | f in ...]) read from its memo table,
 // the member's value computed (and the table filled) the usual way when it is not there yet. The
 // values are member_value's. Returns false for any other body.
-bool Evaluator::body_of_one_instruction(const Expr& e, const Instruction& body, const std::vector<Dart>& firsts,
+bool Evaluator::body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
                                         std::vector<Val>& out) {
   const size_t depth = vars_.size();
   if (body.op == Instruction::Op::Load) {
@@ -404,18 +404,18 @@ bool Evaluator::body_of_one_instruction(const Expr& e, const Instruction& body, 
   if (arg.op != Expr::Op::Collect || !arg.word.empty() || (arg.orbit_mask & ~arg.class_mask) == 0 ||
       !arg.ref.is_variable || arg.ref.index != depth)
     return false;
-  const CollectMemo* cm = memo_for(call, arg);
+  // The table is found once for the comprehension: a missing value is computed by aggregate_into
+  // on this table (a collect's members run no program, so no memo is added meanwhile).
+  CollectMemo* const cm = memo_for(call, arg);
+  const uint32_t* const at = cm->at->data();
+  vars_.push_back(kNoDart);
   for (const Dart x : firsts) {
     Dart d = x;
     for (const int dim : arg.ref.path) d = g_.alpha(dim, d);
-    const uint32_t at = (*cm->at)[d];
-    if (at != kNone) {
-      out.push_back((*cm->values)[at]);
-    } else {
-      out.push_back(member_value(e, x));
-      cm = memo_for(call, arg);  // member_value may have added memos
-    }
+    vars_.back() = x;
+    out.push_back(at[d] != kNone ? (*cm->values)[at[d]] : aggregate_into(call, cm, nullptr, nullptr));
   }
+  vars_.pop_back();
   return true;
 }
 
@@ -552,6 +552,13 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
     const Dart d = held_dart_of(arg.ref, arg);  // cm: memo mode
     if ((*cm->at)[d] != kNone) return (*cm->values)[(*cm->at)[d]];
   }
+  return aggregate_into(e, cm, body, body_end);
+}
+
+// aggregate's value computed from the members; kept in the memo table cm when given (the
+// collect's <o>-orbit has no value there yet).
+__attribute__((always_inline)) inline Val Evaluator::aggregate_into(const Expr& e, CollectMemo* cm, const Instruction* body, const Instruction* body_end) {
+  const Expr& arg = *e.args[0];
   // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
   const size_t depth = vars_.size();
   std::vector<Val>& m = vals_[depth];

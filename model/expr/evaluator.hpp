@@ -101,6 +101,7 @@ class Evaluator {
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);
+  Val aggregate_into(const Expr& call, CollectMemo* cm, const Instruction* body, const Instruction* body_end);
   // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
   struct OrbitIds {
     DimMask mask;
@@ -113,7 +114,7 @@ class Evaluator {
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
   bool list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit);
-  bool body_of_one_instruction(const Expr& e, const Instruction& body, const std::vector<Dart>& firsts,
+  bool body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
                                std::vector<Val>& out);
   struct LastWalk {
     DimMask mask = 0;
