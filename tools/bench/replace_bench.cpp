@@ -108,11 +108,9 @@ void BM_QueryByIsomorphismTests(benchmark::State& state) {
   state.counters["patterns"] = static_cast<double>(d.reps.size());
 }
 
-// A block of side^3 unit hexahedra, every dart flagged, with positions (one per side, kept until
-// the process ends and never destroyed: a Map's destructor gives its arrays to the thread's buffer
-// pool, buffer_pool.hpp, which no longer exists when static objects are destroyed).
+// A block of side^3 unit hexahedra, every dart flagged, with positions (one per side, kept).
 const FlaggedMap& block(int side) {
-  static std::map<int, FlaggedMap>& blocks = *new std::map<int, FlaggedMap>;
+  static std::map<int, FlaggedMap> blocks;
   auto it = blocks.find(side);
   if (it != blocks.end()) return it->second;
   std::vector<Voxel> voxels;
@@ -134,6 +132,12 @@ const PatternStore& hex_patterns() {
     return store;
   }();
   return s;
+}
+
+// The darts of the hexahedral subdivision of m: every edge split in 2, then the faces' and the
+// volumes' replacement rooms (the sequence's reservation).
+size_t subdivision_size(const FlaggedMap& m, const PatternStore& store) {
+  return 2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3);
 }
 
 size_t pattern_named(const std::string& name) {
@@ -163,7 +167,7 @@ void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
     FlaggedMap m = input;
     state.ResumeTiming();
     if (reserved) {
-      m.reserve(2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3));
+      m.reserve(subdivision_size(m, store));
       split_all_edges(m, 2);
     } else {
       for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
@@ -186,9 +190,9 @@ void BM_HexStep(benchmark::State& state) {
   const int side = static_cast<int>(state.range(0)), step = static_cast<int>(state.range(1));
   const bool lookup = state.range(2) == 0;
   FlaggedMap before = block(side);
-  const size_t final_size = 2 * before.map.size() + replacement_room(before.map, store, 2) + replacement_room(before.map, store, 3);
+  const size_t final_size = subdivision_size(before, store);  // before any step runs
   auto run = [&](FlaggedMap& m, int s) {
-    if (s == 0) m.reserve(2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3));
+    if (s == 0) m.reserve(final_size);
     if (s == 1) split_all_edges(m, 2);
     if (s == 2 && lookup) query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid);
     if (s == 3 && lookup) query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid);
