@@ -6,6 +6,7 @@
 
 #include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
+#include "model/expr/component_view.hpp"
 #include "model/expr/propagation.hpp"
 
 namespace gmr::expr {
@@ -133,17 +134,24 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
   const size_t sz = c.size();
   std::vector<const EmbeddingField*> fields;
   for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
-  Evaluator ev(g, cs_.embeddings, fields);
-  const bool memo = sz * 8 >= g.capacity();
-  ev.memoise_collects(memo);
+  // A component that is most of the map is evaluated on its view (component_view.hpp), in memo
+  // mode; a small one on the map, without memo tables sized to the whole map.
+  const bool on_view = sz * 8 >= g.capacity();
+  std::vector<const EmbeddingField*> read = fields;
+  if (on_view) {
+    view_component(g, c, s.left.nodes[s.hook_nodes()[0]].label, fields, view_);
+    for (size_t k = 0; k < read.size(); ++k) read[k] = fields[k] ? &*view_.fields[k] : nullptr;
+  }
+  Evaluator ev(on_view ? view_.map : g, cs_.embeddings, read);
+  ev.memoise_collects(on_view);
   std::vector<uint32_t> counts;
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
       counts.push_back(label_classes(g, c, k));
       // The classes of a kind are the orbits of the map before under k.dims, numbered: the
-      // evaluator's memo mode tells orbits apart by these numbers instead of numbering them by a
-      // sweep of the map (the expressions read darts of the component only).
-      if (memo && c.index) ev.share_orbit_numbers(k.dims, k.class_of->data(), c.index->data());
+      // evaluator's memo mode tells orbits apart by these numbers (the view's dart b is orbit dart
+      // b) instead of numbering them by a sweep.
+      if (on_view) ev.share_orbit_numbers(k.dims, k.class_of->data(), nullptr);
     }
   size_t ki = 0;
   for (auto& kinds : kinds_)
@@ -155,13 +163,24 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
       const Expr& x = *cs_.right[e][k.expression_node];
       const std::string where = "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name +
                                 ", embedding " + cs_.embeddings[e].name;
+      const ValueType t = cs_.embeddings[e].type;
+      auto evaluate = [&](Evaluator& on, const Dart* node_dart) {
+        return k.program ? on.evaluate(*k.program, node_dart, t, where) : on.evaluate(x, node_dart, t, where);
+      };
       k.values.reserve(count);
       for (uint32_t b = 0; b < sz; ++b) {
         if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
-        const Dart node_dart = c.darts[b];               // the hook, L's only node
-        const ValueType t = cs_.embeddings[e].type;
-        k.values.push_back(Evaluator::to_storage(k.program ? ev.evaluate(*k.program, &node_dart, t, where)
-                                                           : ev.evaluate(x, &node_dart, t, where)));
+        const Dart node_dart = on_view ? b : c.darts[b];     // the hook, L's only node
+        try {
+          k.values.push_back(Evaluator::to_storage(evaluate(ev, &node_dart)));
+        } catch (const Error&) {
+          if (!on_view) throw;
+          // The same error located on the map (its darts' numbers): the class evaluated there.
+          Evaluator on_map(g, cs_.embeddings, fields);
+          on_map.memoise_collects(true);
+          evaluate(on_map, &c.darts[b]);
+          throw;
+        }
         ++evaluations_;
       }
     }

@@ -36,6 +36,7 @@
 
 #include "model/core/buffer_pool.hpp"
 #include "model/expr/compiled_scheme.hpp"
+#include "model/expr/component_view.hpp"
 #include "model/expr/embedded_map.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/scheme/apply_everywhere.hpp"
@@ -105,6 +106,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   size_t issue_count_ = 0, evaluations_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<Dart> stack_, touched_, orbit_darts_;
+  ComponentView view_;  // the component evaluated (whole components, component_view.hpp)
   bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };
 
