@@ -168,6 +168,18 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
         return k.program ? on.evaluate(*k.program, node_dart, t, where) : on.evaluate(x, node_dart, t, where);
       };
       k.values.reserve(count);
+      if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
+        // One affine combination of node values (Loop's edge mask): every class in one loop; the
+        // view's node dart at a class's first orbit dart b is b.
+        first_b_.clear();
+        for (uint32_t b = 0; b < sz; ++b)
+          if ((*k.class_of)[b] == first_b_.size()) first_b_.push_back(b);
+        k.values.resize(count);
+        const size_t done = ev.combine_classes(*k.program, first_b_.data(), count, t, k.values.data());
+        evaluations_ += done;
+        if (done == count) continue;
+        k.values.resize(done);  // the class that fails is evaluated below, for its error
+      }
       for (uint32_t b = 0; b < sz; ++b) {
         if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
         const Dart node_dart = on_view ? b : c.darts[b];     // the hook, L's only node

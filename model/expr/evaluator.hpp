@@ -59,6 +59,14 @@ class Evaluator {
   // value tables through pointers taken here (Evaluator::load).
   void memoise_collects(bool on);
 
+  // Memo mode: the values of p at the classes whose left node 0 is at nodes[0..n), into out, when
+  // p is one affine combination of node values (combines_node_values; evaluator_batch.cpp): run's
+  // values bit for bit, without a run per class. Returns the number of classes done: n, or the
+  // first class that fails (no dart, no value, wrong mass), which evaluate() then reports; 0 when
+  // p is not of that form or memo mode is off.
+  static bool combines_node_values(const Program& p);
+  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
+
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
   static Val from_storage(const Vec3& s, ValueType t);

@@ -106,6 +106,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   size_t issue_count_ = 0, evaluations_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<Dart> stack_, touched_, orbit_darts_;
+  std::vector<uint32_t> first_b_;  // the first orbit dart of each class of a kind
   ComponentView view_;  // the component evaluated (whole components, component_view.hpp)
   bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };
