@@ -369,7 +369,9 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
     if (constant) {
       const Val v = b.begin ? Val{b.begin->value[0], b.begin->value[1], b.begin->value[2], b.begin->value[3]}
                             : Val{e.args[0]->number, 0, 0, 0};
-      out.insert(out.end(), firsts.size(), v);
+      // Written member by member: GCC's code for insert(end, n, v) stalls on every copy (a byte
+      // of v stored, then v reloaded whole from the stack).
+      for (size_t k = 0; k < firsts.size(); ++k) out.push_back(v);
       return;
     }
   }
