@@ -66,12 +66,13 @@ void EmbeddingPropagation::derive_class_kinds() {
 }
 
 // class_of[b] for every orbit dart: the orbits of the map before under k.dims, numbered in order
-// of their first orbit dart. Returns their number.
+// of their first orbit dart, listed in first_b. Returns their number.
 uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
   const size_t sz = c.size();
   k.class_of.reserve(sz);
   std::vector<uint32_t>& class_of = *k.class_of;
   class_of.assign(sz, kNone);
+  k.first_b.clear();
   // O's links at the kind's positions (the orbit's own table: no dart index lookup).
   const uint32_t* nb = c.nb.data();
   const size_t arity = c.arity;
@@ -86,6 +87,7 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
       if (class_of[b] != kNone) continue;
       const uint32_t id = classes++;
       class_of[b] = id;
+      k.first_b.push_back(b);
       if (k.positions.empty()) continue;
       for (int direction = 0; direction < 2; ++direction) {
         uint32_t x = b;
@@ -111,6 +113,7 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
     if (class_of[b] != kNone) continue;
     const uint32_t id = classes++;
     class_of[b] = id;
+    k.first_b.push_back(b);
     stack_.clear();
     stack_.push_back(b);
     while (!stack_.empty()) {
@@ -171,17 +174,14 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
       if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
         // One affine combination of node values (Loop's edge mask): every class in one loop; the
         // view's node dart at a class's first orbit dart b is b.
-        first_b_.clear();
-        for (uint32_t b = 0; b < sz; ++b)
-          if ((*k.class_of)[b] == first_b_.size()) first_b_.push_back(b);
         k.values.resize(count);
-        const size_t done = ev.combine_classes(*k.program, first_b_.data(), count, t, k.values.data());
+        const size_t done = ev.combine_classes(*k.program, k.first_b.data(), count, t, k.values.data());
         evaluations_ += done;
         if (done == count) continue;
         k.values.resize(done);  // the class that fails is evaluated below, for its error
       }
-      for (uint32_t b = 0; b < sz; ++b) {
-        if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
+      for (size_t id = k.values.size(); id < count; ++id) {
+        const uint32_t b = k.first_b[id];
         const Dart node_dart = on_view ? b : c.darts[b];     // the hook, L's only node
         try {
           k.values.push_back(Evaluator::to_storage(evaluate(ev, &node_dart)));
@@ -207,9 +207,7 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
   constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
   Embedding<Vec3>& E = f.values;
   const size_t sz = c.size();
-  std::vector<uint32_t> first_b;  // per class, in class order
-  for (uint32_t b = 0; b < sz; ++b)
-    if ((*k.class_of)[b] == first_b.size()) first_b.push_back(b);
+  const std::vector<uint32_t>& first_b = k.first_b;
   const size_t classes = first_b.size();
   std::vector<uint32_t> chosen(classes, kNoValue);
   std::vector<bool> mixed(classes, false), reported(classes, false);

@@ -89,6 +89,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
     uint32_t expression_node = 0;    // its R node
     Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
+    std::vector<uint32_t> first_b;   // per class: its first orbit dart
     std::vector<Vec3> values;        // per class: the value (computed classes)
     std::optional<Program> program;  // the expression compiled (program.hpp), when it compiles
   };
@@ -106,7 +107,6 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   size_t issue_count_ = 0, evaluations_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<Dart> stack_, touched_, orbit_darts_;
-  std::vector<uint32_t> first_b_;  // the first orbit dart of each class of a kind
   ComponentView view_;  // the component evaluated (whole components, component_view.hpp)
   bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };
