@@ -80,15 +80,32 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   uint32_t classes = 0;
   if (k.positions.size() <= 2) {
     // Under one or two involutions an orbit is a pair, a path or an alternating cycle: walked
-    // without a stack, from b along p then q then p ..., and the other way when it ends.
-    const size_t p0 = k.positions.empty() ? 0 : k.positions[0];
-    const size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
+    // without a stack, from b along p then q then p ..., and the other way when it ends. Two
+    // positions: p is the one of the higher dimension, the order of Evaluator::list_two_dims, and
+    // the orbit dart lists of the classes are kept in that order (orbit_list, orbit_start).
+    size_t p0 = k.positions.empty() ? 0 : k.positions[0];
+    size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
+    const OrbitType& t = cs_.scheme->left.nodes[cs_.scheme->hook_nodes()[0]].label;
+    if (t[p1] > t[p0]) std::swap(p0, p1);
+    const bool lists = p0 != p1;
+    uint32_t* list = nullptr;
+    size_t listed = 0;
+    k.orbit_start.clear();
+    if (lists) {
+      k.orbit_list.reserve(sz);
+      k.orbit_list->resize(sz);
+      list = k.orbit_list->data();
+    }
     for (uint32_t b = 0; b < sz; ++b) {
       if (class_of[b] != kNone) continue;
       const uint32_t id = classes++;
       class_of[b] = id;
       k.first_b.push_back(b);
       if (k.positions.empty()) continue;
+      if (lists) {
+        k.orbit_start.push_back(static_cast<uint32_t>(listed));
+        list[listed++] = b;
+      }
       for (int direction = 0; direction < 2; ++direction) {
         uint32_t x = b;
         size_t p = direction == 0 ? p0 : p1;
@@ -101,12 +118,14 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
             break;
           }
           class_of[y] = id;
+          if (lists) list[listed++] = y;
           x = y;
           p = p == p0 ? p1 : p0;
         }
         if (closed || p0 == p1) break;
       }
     }
+    if (lists) k.orbit_start.push_back(static_cast<uint32_t>(listed));
     return classes;
   }
   for (uint32_t b = 0; b < sz; ++b) {
@@ -155,6 +174,8 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
       // evaluator's memo mode tells orbits apart by these numbers (the view's dart b is orbit dart
       // b) instead of numbering them by a sweep.
       if (on_view) ev.share_orbit_numbers(k.dims, k.class_of->data(), nullptr);
+      if (on_view && !k.orbit_start.empty())
+        ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start.data(), k.class_of->data());
     }
   size_t ki = 0;
   for (auto& kinds : kinds_)

@@ -46,6 +46,11 @@ class Evaluator {
   // numbering of the darts, defined on every dart the expressions reach; two darts have the same
   // number iff they are in the same <mask>-orbit). The arrays must outlive the memo mode.
   void share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index);
+  // Memo mode, G-maps, two-dimension <mask>-orbits: the darts of the orbit numbered id, in the
+  // order of list_two_dims from list[start[id]], are list[start[id] .. start[id + 1]) (numbers:
+  // each dart's orbit id). A walk of such an orbit from that first dart reads them there instead
+  // of following the links. The arrays must outlive the memo mode.
+  void share_orbit_lists(DimMask mask, const uint32_t* list, const uint32_t* start, const uint32_t* numbers);
 
   // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
   // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
@@ -122,6 +127,14 @@ class Evaluator {
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
   bool list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit);
+  bool listed_orbit(DimMask mo, Dart d, std::vector<Dart>& in_orbit) const;
+  struct OrbitLists {
+    DimMask mask;
+    const uint32_t* list;
+    const uint32_t* start;
+    const uint32_t* numbers;
+  };
+  std::vector<OrbitLists> lists_;
   bool body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
                                std::vector<Val>& out);
   struct LastWalk {
