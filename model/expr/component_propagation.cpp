@@ -72,7 +72,8 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   k.class_of.reserve(sz);
   std::vector<uint32_t>& class_of = *k.class_of;
   class_of.assign(sz, kNone);
-  k.first_b.clear();
+  k.first_b.reserve(sz);  // pooled (the tables of one application reuse the previous one's)
+  k.first_b->clear();
   // O's links at the kind's positions (the orbit's own table: no dart index lookup).
   const uint32_t* nb = c.nb.data();
   const size_t arity = c.arity;
@@ -90,7 +91,8 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
     const bool lists = p0 != p1;
     uint32_t* list = nullptr;
     size_t listed = 0;
-    k.orbit_start.clear();
+    k.orbit_start.reserve(sz + 1);
+    k.orbit_start->clear();
     if (lists) {
       k.orbit_list.reserve(sz);
       k.orbit_list->resize(sz);
@@ -100,10 +102,10 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
       if (class_of[b] != kNone) continue;
       const uint32_t id = classes++;
       class_of[b] = id;
-      k.first_b.push_back(b);
+      k.first_b->push_back(b);
       if (k.positions.empty()) continue;
       if (lists) {
-        k.orbit_start.push_back(static_cast<uint32_t>(listed));
+        k.orbit_start->push_back(static_cast<uint32_t>(listed));
         list[listed++] = b;
       }
       for (int direction = 0; direction < 2; ++direction) {
@@ -125,14 +127,14 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
         if (closed || p0 == p1) break;
       }
     }
-    if (lists) k.orbit_start.push_back(static_cast<uint32_t>(listed));
+    if (lists) k.orbit_start->push_back(static_cast<uint32_t>(listed));
     return classes;
   }
   for (uint32_t b = 0; b < sz; ++b) {
     if (class_of[b] != kNone) continue;
     const uint32_t id = classes++;
     class_of[b] = id;
-    k.first_b.push_back(b);
+    k.first_b->push_back(b);
     stack_.clear();
     stack_.push_back(b);
     while (!stack_.empty()) {
@@ -174,14 +176,14 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
       // evaluator's memo mode tells orbits apart by these numbers (the view's dart b is orbit dart
       // b) instead of numbering them by a sweep.
       if (on_view) ev.share_orbit_numbers(k.dims, k.class_of->data(), nullptr);
-      if (on_view && !k.orbit_start.empty())
-        ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start.data(), k.class_of->data());
+      if (on_view && !k.orbit_start->empty())
+        ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start->data(), k.class_of->data());
     }
   size_t ki = 0;
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
       const uint32_t count = counts[ki++];
-      k.values.clear();
+      k.values->clear();
       if (k.declaration < 0) continue;
       const auto e = static_cast<size_t>(k.declaration);
       const Expr& x = *cs_.right[e][k.expression_node];
@@ -192,20 +194,21 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
         return k.program ? on.evaluate(*k.program, node_dart, t, where) : on.evaluate(x, node_dart, t, where);
       };
       k.values.reserve(count);
+      k.values->clear();
       if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
         // One affine combination of node values (Loop's edge mask): every class in one loop; the
         // view's node dart at a class's first orbit dart b is b.
-        k.values.resize(count);
-        const size_t done = ev.combine_classes(*k.program, k.first_b.data(), count, t, k.values.data());
+        k.values->resize(count);
+        const size_t done = ev.combine_classes(*k.program, k.first_b->data(), count, t, k.values->data());
         evaluations_ += done;
         if (done == count) continue;
-        k.values.resize(done);  // the class that fails is evaluated below, for its error
+        k.values->resize(done);  // the class that fails is evaluated below, for its error
       }
-      for (size_t id = k.values.size(); id < count; ++id) {
-        const uint32_t b = k.first_b[id];
+      for (size_t id = k.values->size(); id < count; ++id) {
+        const uint32_t b = (*k.first_b)[id];
         const Dart node_dart = on_view ? b : c.darts[b];     // the hook, L's only node
         try {
-          k.values.push_back(Evaluator::to_storage(evaluate(ev, &node_dart)));
+          k.values->push_back(Evaluator::to_storage(evaluate(ev, &node_dart)));
         } catch (const Error&) {
           if (!on_view) throw;
           // The same error located on the map (its darts' numbers): the class evaluated there.
@@ -228,7 +231,7 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
   constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
   Embedding<Vec3>& E = f.values;
   const size_t sz = c.size();
-  const std::vector<uint32_t>& first_b = k.first_b;
+  const std::vector<uint32_t>& first_b = *k.first_b;
   const size_t classes = first_b.size();
   std::vector<uint32_t> chosen(classes, kNoValue);
   std::vector<bool> mixed(classes, false), reported(classes, false);
@@ -289,8 +292,8 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     for (ClassKind& k : kinds_[fi]) {
       if (k.declaration < 0) continue;
       const auto base = static_cast<uint32_t>(E.num_values());
-      E.reserve_values(E.num_values() + k.values.size());
-      for (const Vec3& x : k.values) E.add_value(x);
+      E.reserve_values(E.num_values() + k.values->size());
+      for (const Vec3& x : *k.values) E.add_value(x);
       for (uint32_t v : k.nodes) {
         if (c.engine->added_rank(v) == scheme::SchemeEngine::kAdded) {
           for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.darts[b], base + (*k.class_of)[b]);

@@ -89,12 +89,12 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
     uint32_t expression_node = 0;    // its R node
     Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
-    std::vector<uint32_t> first_b;   // per class: its first orbit dart
+    Pooled<uint32_t> first_b;        // per class: its first orbit dart
     // Kinds of two positions: the orbit darts of each class in the order of Evaluator::list_two_dims
     // from its first one, class by class (class id from orbit_start[id] to orbit_start[id + 1]).
     Pooled<uint32_t> orbit_list;
-    std::vector<uint32_t> orbit_start;
-    std::vector<Vec3> values;        // per class: the value (computed classes)
+    Pooled<uint32_t> orbit_start;
+    Pooled<Vec3> values;             // per class: the value (computed classes)
     std::optional<Program> program;  // the expression compiled (program.hpp), when it compiles
   };
   void derive_class_kinds();
