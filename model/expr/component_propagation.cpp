@@ -108,6 +108,9 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
         k.orbit_start->push_back(static_cast<uint32_t>(listed));
         list[listed++] = b;
       }
+      // The links are involutions: the walk closes exactly when it is back at b (no read of
+      // class_of to find out); the step bound only keeps links that are not from ending it.
+      size_t steps = 0;
       for (int direction = 0; direction < 2; ++direction) {
         uint32_t x = b;
         size_t p = direction == 0 ? p0 : p1;
@@ -115,8 +118,8 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
         for (;;) {
           const uint32_t y = nb[x * arity + p];
           if (y == x) break;  // a free end: walk the other way
-          if (class_of[y] != kNone) {
-            closed = true;  // back at b (a cycle), or the pair's other dart
+          if (y == b || ++steps >= sz) {
+            closed = true;  // back at b: a cycle (or a pair under one position)
             break;
           }
           class_of[y] = id;
