@@ -378,7 +378,10 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
     firsts.clear();
     for (const Dart x : in_orbit) {
       const uint32_t id = ids[index ? index[x] : x];
-      if (std::find(met, met + count, id) != met + count) continue;
+      // Searched from the last met: a walk meets a member's darts one after the other.
+      size_t k = count;
+      while (k > 0 && met[k - 1] != id) --k;
+      if (k > 0) continue;
       met[count++] = id;
       firsts.push_back(x);
     }

@@ -161,6 +161,7 @@ class Evaluator {
   const Dart* held_links_[kMaxDim] = {};
   std::vector<HeldField> held_fields_;
   void hold_tables();
+  size_t combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
   std::vector<CollectMemo> memos_;
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.

@@ -20,8 +20,63 @@ bool Evaluator::combines_node_values(const Program& p) {
   return true;
 }
 
+namespace {
+
+// A load of the combination with what it reads taken once: the link array of each step of its
+// path, the field's slot and value tables, its weight.
+struct Term {
+  const Dart* step[LoadRef::kMaxPath];
+  uint8_t length = 0;
+  const uint32_t* slots = nullptr;
+  size_t size = 0;
+  const Vec3* values = nullptr;
+  double weight = 1;
+};
+
+}  // namespace
+
 size_t Evaluator::combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const {
   if (!memo_on_ || !combines_node_values(p)) return 0;
+  const Instruction& ins = p.code[0];
+  const LoadRef* const loads = p.loads.data() + ins.index;
+  const Dart cap = g_.capacity();
+  // Points and vectors (not scalars): every term's fourth lane is its mass, 1 or 0, so the
+  // combination's mass is the same sum for every class, computed once as run computes it.
+  std::vector<Term> terms(ins.count);
+  double mass = ins.value[3];
+  bool affine = true;
+  for (uint32_t k = 0; k < ins.count; ++k) {
+    const LoadRef& r = loads[k];
+    const HeldField& f = held_fields_[r.embedding];
+    Term& term = terms[k];
+    term = {.step = {}, .length = r.length, .slots = f.slots, .size = f.size, .values = f.values, .weight = r.weight};
+    for (uint8_t s = 0; s < r.length; ++s) term.step[s] = held_links_[r.path[s]];
+    affine = affine && f.type != ValueType::Scalar;
+    mass = mass + (f.type == ValueType::Point ? 1.0 : 0.0) * r.weight;
+  }
+  if (!affine) return combine_classes_in_lanes(p, nodes, n, target, out);
+  if ((target == ValueType::Point && std::fabs(mass - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(mass) > 1e-9))
+    return 0;
+  for (size_t j = 0; j < n; ++j) {
+    double x = ins.value[0], y = ins.value[1], z = ins.value[2];
+    if (nodes[j] >= cap) return j;
+    for (const Term& term : terms) {
+      Dart d = nodes[j];
+      for (uint8_t s = 0; s < term.length; ++s) d = term.step[s][d];
+      if (d >= term.size || term.slots[d] == Embedding<Vec3>::kNoValue) return j;
+      const Vec3& v = term.values[term.slots[d]];
+      x = x + v[0] * term.weight;
+      y = y + v[1] * term.weight;
+      z = z + v[2] * term.weight;
+    }
+    out[j] = {x, y, z};
+  }
+  return n;
+}
+
+// combine_classes with the four lanes of run (scalar fields among the terms).
+size_t Evaluator::combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target,
+                                           Vec3* out) const {
   const Instruction& ins = p.code[0];
   const LoadRef* const loads = p.loads.data() + ins.index;
   const Dart cap = g_.capacity();
