@@ -109,7 +109,7 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
         list[listed++] = b;
       }
       // The links are involutions: the walk closes exactly when it is back at b (no read of
-      // class_of to find out); the step bound only keeps links that are not from ending it.
+      // class_of to find out); the step bound only guards against links that are not involutions.
       size_t steps = 0;
       for (int direction = 0; direction < 2; ++direction) {
         uint32_t x = b;
