@@ -6,7 +6,7 @@
 // of a subdivision's time: docs/embeddings.md "Measured"). Applying a scheme again and again would
 // pay it at every call. So:
 //  * take_buffer / give_buffer: a per-thread pool of large vectors (at least 1 MiB of storage; at
-//    most 16 per element type, the smallest dropped first); take_buffer(n) returns the smallest
+//    most 32 per element type, the smallest dropped first); take_buffer(n) returns the smallest
 //    pooled vector holding n elements, emptied, or an empty vector when none does;
 //  * Pooled<T>: a scratch vector taken from the pool (reserve(n) takes one with room for n) and
 //    given back when destroyed.
@@ -63,7 +63,7 @@ std::vector<T> take_buffer(size_t min_capacity = 0) {
 template <class T>
 void give_buffer(std::vector<T>&& v) {
   constexpr size_t kMinBytes = size_t(1) << 20;
-  constexpr size_t kMaxBuffers = 16;
+  constexpr size_t kMaxBuffers = 32;
   if (v.capacity() * sizeof(T) < kMinBytes) return;
   auto* pool = detail::buffer_pool<T>();
   if (!pool) return;  // v frees its storage

@@ -6,6 +6,7 @@
 
 #include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
+#include "model/expr/component_view.hpp"
 #include "model/expr/propagation.hpp"
 
 namespace gmr::expr {
@@ -65,12 +66,14 @@ void EmbeddingPropagation::derive_class_kinds() {
 }
 
 // class_of[b] for every orbit dart: the orbits of the map before under k.dims, numbered in order
-// of their first orbit dart. Returns their number.
+// of their first orbit dart, listed in first_b. Returns their number.
 uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
   const size_t sz = c.size();
   k.class_of.reserve(sz);
   std::vector<uint32_t>& class_of = *k.class_of;
   class_of.assign(sz, kNone);
+  k.first_b.reserve(sz);  // pooled (the tables of one application reuse the previous one's)
+  k.first_b->clear();
   // O's links at the kind's positions (the orbit's own table: no dart index lookup).
   const uint32_t* nb = c.nb.data();
   const size_t arity = c.arity;
@@ -78,14 +81,36 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   uint32_t classes = 0;
   if (k.positions.size() <= 2) {
     // Under one or two involutions an orbit is a pair, a path or an alternating cycle: walked
-    // without a stack, from b along p then q then p ..., and the other way when it ends.
-    const size_t p0 = k.positions.empty() ? 0 : k.positions[0];
-    const size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
+    // without a stack, from b along p then q then p ..., and the other way when it ends. Two
+    // positions: p is the one of the higher dimension, the order of Evaluator::list_two_dims, and
+    // the orbit dart lists of the classes are kept in that order (orbit_list, orbit_start).
+    size_t p0 = k.positions.empty() ? 0 : k.positions[0];
+    size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
+    const OrbitType& t = cs_.scheme->left.nodes[cs_.scheme->hook_nodes()[0]].label;
+    if (t[p1] > t[p0]) std::swap(p0, p1);
+    const bool lists = p0 != p1;
+    uint32_t* list = nullptr;
+    size_t listed = 0;
+    k.orbit_start.reserve(sz + 1);
+    k.orbit_start->clear();
+    if (lists) {
+      k.orbit_list.reserve(sz);
+      k.orbit_list->resize(sz);
+      list = k.orbit_list->data();
+    }
     for (uint32_t b = 0; b < sz; ++b) {
       if (class_of[b] != kNone) continue;
       const uint32_t id = classes++;
       class_of[b] = id;
+      k.first_b->push_back(b);
       if (k.positions.empty()) continue;
+      if (lists) {
+        k.orbit_start->push_back(static_cast<uint32_t>(listed));
+        list[listed++] = b;
+      }
+      // The links are involutions: the walk closes exactly when it is back at b (no read of
+      // class_of to find out); the step bound only guards against links that are not involutions.
+      size_t steps = 0;
       for (int direction = 0; direction < 2; ++direction) {
         uint32_t x = b;
         size_t p = direction == 0 ? p0 : p1;
@@ -93,23 +118,26 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
         for (;;) {
           const uint32_t y = nb[x * arity + p];
           if (y == x) break;  // a free end: walk the other way
-          if (class_of[y] != kNone) {
-            closed = true;  // back at b (a cycle), or the pair's other dart
+          if (y == b || ++steps >= sz) {
+            closed = true;  // back at b: a cycle (or a pair under one position)
             break;
           }
           class_of[y] = id;
+          if (lists) list[listed++] = y;
           x = y;
           p = p == p0 ? p1 : p0;
         }
         if (closed || p0 == p1) break;
       }
     }
+    if (lists) k.orbit_start->push_back(static_cast<uint32_t>(listed));
     return classes;
   }
   for (uint32_t b = 0; b < sz; ++b) {
     if (class_of[b] != kNone) continue;
     const uint32_t id = classes++;
     class_of[b] = id;
+    k.first_b->push_back(b);
     stack_.clear();
     stack_.push_back(b);
     while (!stack_.empty()) {
@@ -133,35 +161,65 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
   const size_t sz = c.size();
   std::vector<const EmbeddingField*> fields;
   for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
-  Evaluator ev(g, cs_.embeddings, fields);
-  const bool memo = sz * 8 >= g.capacity();
-  ev.memoise_collects(memo);
+  // A component that is most of the map is evaluated on its view (component_view.hpp), in memo
+  // mode; a small one on the map, without memo tables sized to the whole map.
+  const bool on_view = sz * 8 >= g.capacity();
+  std::vector<const EmbeddingField*> read = fields;
+  if (on_view) {
+    view_component(g, c, s.left.nodes[s.hook_nodes()[0]].label, fields, view_);
+    for (size_t k = 0; k < read.size(); ++k) read[k] = fields[k] ? &*view_.fields[k] : nullptr;
+  }
+  Evaluator ev(on_view ? view_.map : g, cs_.embeddings, read);
+  ev.memoise_collects(on_view);
   std::vector<uint32_t> counts;
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
       counts.push_back(label_classes(g, c, k));
       // The classes of a kind are the orbits of the map before under k.dims, numbered: the
-      // evaluator's memo mode tells orbits apart by these numbers instead of numbering them by a
-      // sweep of the map (the expressions read darts of the component only).
-      if (memo && c.index) ev.share_orbit_numbers(k.dims, k.class_of->data(), c.index->data());
+      // evaluator's memo mode tells orbits apart by these numbers (the view's dart b is orbit dart
+      // b) instead of numbering them by a sweep.
+      if (on_view) ev.share_orbit_numbers(k.dims, k.class_of->data(), nullptr);
+      if (on_view && !k.orbit_start->empty())
+        ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start->data(), k.class_of->data());
     }
   size_t ki = 0;
   for (auto& kinds : kinds_)
     for (ClassKind& k : kinds) {
       const uint32_t count = counts[ki++];
-      k.values.clear();
+      k.values->clear();
       if (k.declaration < 0) continue;
       const auto e = static_cast<size_t>(k.declaration);
       const Expr& x = *cs_.right[e][k.expression_node];
       const std::string where = "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name +
                                 ", embedding " + cs_.embeddings[e].name;
+      const ValueType t = cs_.embeddings[e].type;
+      auto evaluate = [&](Evaluator& on, const Dart* node_dart) {
+        return k.program ? on.evaluate(*k.program, node_dart, t, where) : on.evaluate(x, node_dart, t, where);
+      };
       k.values.reserve(count);
-      for (uint32_t b = 0; b < sz; ++b) {
-        if ((*k.class_of)[b] != k.values.size()) continue;  // not the first orbit dart of its class
-        const Dart node_dart = c.darts[b];               // the hook, L's only node
-        const ValueType t = cs_.embeddings[e].type;
-        k.values.push_back(Evaluator::to_storage(k.program ? ev.evaluate(*k.program, &node_dart, t, where)
-                                                           : ev.evaluate(x, &node_dart, t, where)));
+      k.values->clear();
+      if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
+        // One affine combination of node values (Loop's edge mask): every class in one loop; the
+        // view's node dart at a class's first orbit dart b is b.
+        k.values->resize(count);
+        const size_t done = ev.combine_classes(*k.program, k.first_b->data(), count, t, k.values->data());
+        evaluations_ += done;
+        if (done == count) continue;
+        k.values->resize(done);  // the class that fails is evaluated below, for its error
+      }
+      for (size_t id = k.values->size(); id < count; ++id) {
+        const uint32_t b = (*k.first_b)[id];
+        const Dart node_dart = on_view ? b : c.darts[b];     // the hook, L's only node
+        try {
+          k.values->push_back(Evaluator::to_storage(evaluate(ev, &node_dart)));
+        } catch (const Error&) {
+          if (!on_view) throw;
+          // The same error located on the map (its darts' numbers): the class evaluated there.
+          Evaluator on_map(g, cs_.embeddings, fields);
+          on_map.memoise_collects(true);
+          evaluate(on_map, &c.darts[b]);
+          throw;
+        }
         ++evaluations_;
       }
     }
@@ -176,9 +234,7 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
   constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
   Embedding<Vec3>& E = f.values;
   const size_t sz = c.size();
-  std::vector<uint32_t> first_b;  // per class, in class order
-  for (uint32_t b = 0; b < sz; ++b)
-    if ((*k.class_of)[b] == first_b.size()) first_b.push_back(b);
+  const std::vector<uint32_t>& first_b = *k.first_b;
   const size_t classes = first_b.size();
   std::vector<uint32_t> chosen(classes, kNoValue);
   std::vector<bool> mixed(classes, false), reported(classes, false);
@@ -239,8 +295,8 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     for (ClassKind& k : kinds_[fi]) {
       if (k.declaration < 0) continue;
       const auto base = static_cast<uint32_t>(E.num_values());
-      E.reserve_values(E.num_values() + k.values.size());
-      for (const Vec3& x : k.values) E.add_value(x);
+      E.reserve_values(E.num_values() + k.values->size());
+      for (const Vec3& x : *k.values) E.add_value(x);
       for (uint32_t v : k.nodes) {
         if (c.engine->added_rank(v) == scheme::SchemeEngine::kAdded) {
           for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.darts[b], base + (*k.class_of)[b]);

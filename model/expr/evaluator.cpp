@@ -44,6 +44,7 @@ void Evaluator::memoise_collects(bool on) {
   memo_on_ = on;
   memos_.clear();
   ids_.clear();
+  lists_.clear();
   for (auto& w : last_walk_) w.valid = false;
   held_fields_.clear();
   if (on) hold_tables();
@@ -64,6 +65,27 @@ void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const
   for (auto& o : ids_)
     if (o.mask == mask) return;
   ids_.push_back({mask, {}, numbers, index});
+}
+
+void Evaluator::share_orbit_lists(DimMask mask, const uint32_t* list, const uint32_t* start, const uint32_t* numbers) {
+  for (auto& o : lists_)
+    if (o.mask == mask) return;
+  lists_.push_back({mask, list, start, numbers});
+}
+
+// The <mo>-orbit of d from a shared list (share_orbit_lists) when d is the first dart of its
+// listed orbit and the orbit is small: list_two_dims' result without the walk.
+bool Evaluator::listed_orbit(DimMask mo, Dart d, std::vector<Dart>& in_orbit) const {
+  for (const OrbitLists& o : lists_) {
+    if (o.mask != mo) continue;
+    const uint32_t id = o.numbers[d];
+    const uint32_t* const first = o.list + o.start[id];
+    const size_t n = o.start[id + 1] - o.start[id];
+    if (first[0] != d || n > kSmallOrbit) return false;
+    in_orbit.assign(first, first + n);
+    return true;
+  }
+  return false;
 }
 
 const Evaluator::OrbitIds& Evaluator::orbit_ids(DimMask mask) {
@@ -245,7 +267,8 @@ void Evaluator::members(const Expr& e, std::vector<Val>& out) {
     memo_members(e, mc, in_orbit, out);
     return;
   }
-  if (memo_on_ && g_.kind() == MapKind::GMap && __builtin_popcount(mo) == 2 && list_two_dims(mo, d, in_orbit)) {
+  if (memo_on_ && g_.kind() == MapKind::GMap && __builtin_popcount(mo) == 2 &&
+      (listed_orbit(mo, d, in_orbit) || list_two_dims(mo, d, in_orbit))) {
     last = {mo, d, true};
     memo_members(e, mc, in_orbit, out);
     return;
@@ -355,7 +378,10 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
     firsts.clear();
     for (const Dart x : in_orbit) {
       const uint32_t id = ids[index ? index[x] : x];
-      if (std::find(met, met + count, id) != met + count) continue;
+      // Searched from the last met: a walk meets a member's darts one after the other.
+      size_t k = count;
+      while (k > 0 && met[k - 1] != id) --k;
+      if (k > 0) continue;
       met[count++] = id;
       firsts.push_back(x);
     }
@@ -369,7 +395,9 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
     if (constant) {
       const Val v = b.begin ? Val{b.begin->value[0], b.begin->value[1], b.begin->value[2], b.begin->value[3]}
                             : Val{e.args[0]->number, 0, 0, 0};
-      out.insert(out.end(), firsts.size(), v);
+      // Written member by member: GCC's code for insert(end, n, v) stalls on every copy (a byte
+      // of v stored, then v reloaded whole from the stack).
+      for (size_t k = 0; k < firsts.size(); ++k) out.push_back(v);
       return;
     }
   }

@@ -46,6 +46,11 @@ class Evaluator {
   // numbering of the darts, defined on every dart the expressions reach; two darts have the same
   // number iff they are in the same <mask>-orbit). The arrays must outlive the memo mode.
   void share_orbit_numbers(DimMask mask, const uint32_t* numbers, const uint32_t* index);
+  // Memo mode, G-maps, two-dimension <mask>-orbits: the darts of the orbit numbered id, in the
+  // order of list_two_dims from list[start[id]], are list[start[id] .. start[id + 1]) (numbers:
+  // each dart's orbit id). A walk of such an orbit from that first dart reads them there instead
+  // of following the links. The arrays must outlive the memo mode.
+  void share_orbit_lists(DimMask mask, const uint32_t* list, const uint32_t* start, const uint32_t* numbers);
 
   // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
   // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
@@ -58,6 +63,14 @@ class Evaluator {
   // While it is on, neither the map nor the values change: the loads read the link arrays and the
   // value tables through pointers taken here (Evaluator::load).
   void memoise_collects(bool on);
+
+  // Memo mode: the values of p at the classes whose left node 0 is at nodes[0..n), into out, when
+  // p is one affine combination of node values (combines_node_values; evaluator_batch.cpp): run's
+  // values bit for bit, without a run per class. Returns the number of classes done: n, or the
+  // first class that fails (no dart, no value, wrong mass), which evaluate() then reports; 0 when
+  // p is not of that form or memo mode is off.
+  static bool combines_node_values(const Program& p);
+  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
 
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
@@ -114,6 +127,14 @@ class Evaluator {
   void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
   Val member_value(const Expr& e, Dart x);
   bool list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit);
+  bool listed_orbit(DimMask mo, Dart d, std::vector<Dart>& in_orbit) const;
+  struct OrbitLists {
+    DimMask mask;
+    const uint32_t* list;
+    const uint32_t* start;
+    const uint32_t* numbers;
+  };
+  std::vector<OrbitLists> lists_;
   bool body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
                                std::vector<Val>& out);
   struct LastWalk {
@@ -140,6 +161,7 @@ class Evaluator {
   const Dart* held_links_[kMaxDim] = {};
   std::vector<HeldField> held_fields_;
   void hold_tables();
+  size_t combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
   std::vector<CollectMemo> memos_;
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.

@@ -36,6 +36,7 @@
 
 #include "model/core/buffer_pool.hpp"
 #include "model/expr/compiled_scheme.hpp"
+#include "model/expr/component_view.hpp"
 #include "model/expr/embedded_map.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/scheme/apply_everywhere.hpp"
@@ -88,7 +89,12 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
     uint32_t expression_node = 0;    // its R node
     Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
-    std::vector<Vec3> values;        // per class: the value (computed classes)
+    Pooled<uint32_t> first_b;        // per class: its first orbit dart
+    // Kinds of two positions: the orbit darts of each class in the order of Evaluator::list_two_dims
+    // from its first one, class by class (class id from orbit_start[id] to orbit_start[id + 1]).
+    Pooled<uint32_t> orbit_list;
+    Pooled<uint32_t> orbit_start;
+    Pooled<Vec3> values;             // per class: the value (computed classes)
     std::optional<Program> program;  // the expression compiled (program.hpp), when it compiles
   };
   void derive_class_kinds();
@@ -105,6 +111,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   size_t issue_count_ = 0, evaluations_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<Dart> stack_, touched_, orbit_darts_;
+  ComponentView view_;  // the component evaluated (whole components, component_view.hpp)
   bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };
 

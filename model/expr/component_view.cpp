@@ -1,0 +1,35 @@
+// ComponentView (component_view.hpp): O's links de-interleaved into the view's link arrays, the
+// slots gathered by orbit dart.
+#include "model/expr/component_view.hpp"
+
+namespace gmr::expr {
+
+void view_component(const Map& g, const scheme::ComponentInstance& c, const OrbitType& t,
+                    const std::vector<const EmbeddingField*>& source, ComponentView& view) {
+  const size_t sz = c.size(), arity = c.arity;
+  view.map = Map(g.dimension(), g.kind());
+  const uint32_t* const nb = c.nb.data();
+  view.map.add_linked_darts(sz, [&](int i, Dart, LinkAppender& out) {
+    size_t p = 0;
+    while (p < t.size() && t[p] != i) ++p;
+    out.append(sz, [&](size_t b) { return nb[b * arity + p]; });
+  });
+  view.fields.resize(source.size());
+  for (size_t k = 0; k < source.size(); ++k) {
+    if (!source[k]) {
+      view.fields[k].reset();
+      continue;
+    }
+    const Embedding<Vec3>& from = source[k]->values;
+    if (!view.fields[k]) view.fields[k].emplace(EmbeddingField{source[k]->arity, Embedding<Vec3>(from.name(), from.orbit_type())});
+    EmbeddingField& v = *view.fields[k];
+    v.arity = source[k]->arity;
+    v.values = Embedding<Vec3>(from.name(), from.orbit_type());
+    v.values.fit(view.map);
+    for (uint32_t b = 0; b < sz; ++b) v.values.set_slot_unchecked(b, from.slot(c.darts[b]));
+    v.values.reserve_values(from.num_values());
+    for (const Vec3& x : from.values()) v.values.add_value(x);
+  }
+}
+
+}  // namespace gmr::expr
