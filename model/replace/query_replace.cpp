@@ -74,6 +74,11 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   BoundaryGraph c;
   std::vector<uint32_t> order;
   Word key;
+  // The word the last cell was looked up by (a stored word: W(B, q) of a start dart q of its
+  // patterns' boundary) and its match; `followed`: a cell's darts numbered along it.
+  Word last_key;
+  StoreMatch last;
+  std::vector<Dart> followed;
   auto replace = [&](uint32_t pattern, const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, store.replacement(pattern), image, shared);
     if (after_each) after_each();
@@ -82,16 +87,36 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   sweep.for_each_cell([&](Dart rep) {
     if (progress && r.cells % 4096 == 0) progress(r.cells, cells);
     ++r.cells;
-    sweep.traverse(rep, target.flag, positive, c);
-    // 1. The word from the cell's first start dart, looked up (§6.3, pattern_store.hpp).
-    const uint32_t start = first_start_dart(c, store.mode());
+    // 1. The cell's word from its first start dart, looked up (§6.3, pattern_store.hpp). First
+    // against the word the previous cell matched, from rep, along which the cell is numbered
+    // and checked in one pass (word_traversal.hpp): if it agrees, W(cell, rep) is that stored
+    // word, so rep is a start dart (isomorphisms map start sets onto start sets; in oriented mode
+    // rep must be in D+), the first in the cell's traversal order, and the lookup of its word
+    // would give that match. Otherwise the cell is traversed breadth-first, its first start dart
+    // found and its word looked up.
     StoreMatch match;
-    if (start != UINT32_MAX) {
-      key.assign(1, static_cast<uint32_t>(cell_dim));
-      // The traversal numbered the cell breadth-first from rep: from rep, its labels are there.
-      if (start == 0) numbered_boundary_word(c, key);
-      else boundary_word(c, start, key, order);
-      match = store.match_word(key, start);
+    uint32_t start = 0;
+    const bool by_last = last.hits && (store.mode() == Mode::Unoriented || positive[rep]) &&
+                         sweep.follow(rep, last_key.data() + 1, static_cast<uint32_t>(followed.size()), target.flag,
+                                      followed.data());
+    if (by_last) {
+      match = last;
+      match.start = 0;
+    } else {
+      sweep.traverse(rep, target.flag, positive, c);
+      start = first_start_dart(c, store.mode());
+      if (start != UINT32_MAX) {
+        key.assign(1, static_cast<uint32_t>(cell_dim));
+        // The traversal numbered the cell breadth-first from rep: from rep, its labels are there.
+        if (start == 0) numbered_boundary_word(c, key);
+        else boundary_word(c, start, key, order);
+        match = store.match_word(key, start);
+        if (match.hits) {
+          last_key = key;
+          last = match;
+          followed.resize(c.size());
+        }
+      }
     }
     const std::vector<StoreEntry>* hits = match.hits;
     if (!hits) {
@@ -113,7 +138,9 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     std::vector<Dart>& image = deferred ? targets : f;
     if (deferred) matches.push_back({pattern, targets.size(), shared});
     else f.clear();
-    if (start == 0)
+    if (by_last)
+      for (uint32_t k : (*match.ranks)[choice]) image.push_back(followed[k]);
+    else if (start == 0)
       for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[k]);
     else
       for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[order[k]]);

@@ -69,12 +69,14 @@ ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start) {
                                            "-linked outside the interior and boundary", p.name);
       t.link[d].push_back(y < k ? y : j);
       if (y >= k) t.relinks.emplace_back(j, y - k);
+      if (d == i - 1) t.relink_rank.push_back(y < k ? ReplacementTemplate::kInterior : y - k);
     }
     t.flag.push_back(x < p.map.flag.size() ? p.map.flag[x] : 0);
     const uint32_t v = p.vertex_of[x];
     const Dart anchor = p.vertex_anchor[v];
     if (anchor != kNoDart) {
       t.at_boundary_vertex.emplace_back(j, vertex_rank[index[anchor] - k]);
+      t.vertex_source.push_back(vertex_rank[index[anchor] - k]);
       continue;
     }
     if (interior_vertex[v] == UINT32_MAX) {
@@ -92,6 +94,7 @@ ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start) {
         }
     }
     t.at_interior_vertex.emplace_back(j, interior_vertex[v]);
+    t.vertex_source.push_back(t.boundary + interior_vertex[v]);
   }
   return t;
 }
