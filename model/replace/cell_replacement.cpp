@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "model/replace/generated_append.hpp"
+
 namespace gmr::replace {
 
 namespace {
@@ -26,22 +28,29 @@ void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart
 }
 
 // place_interior for new darts appended at the end (the positions written once, in dart order).
+// The boundary positions read were prefetched (prefetch_boundary_positions).
 void append_interior_positions(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, bool shared) {
   thread_local std::vector<Vec3> at;
-  at.resize(t.weights.size());
   std::vector<Vec3>& pos = target.position;
-  const size_t k = t.interior, base = pos.size(), added = k * (shared ? 2 : 1);
-  if (pos.capacity() < base + added) pos.reserve(std::max(base + added, 2 * pos.capacity()));
+  const uint32_t boundary = t.boundary;
+  // The interior vertices, then every copy's position: boundary ones read where they are.
+  at.resize(t.weights.size());
   for (size_t v = 0; v < t.weights.size(); ++v) {
     Vec3 x{0, 0, 0};
     for (const auto& [b, w] : t.weights[v])
       for (int c = 0; c < 3; ++c) x[c] += w * pos[f[b]][c];
     at[v] = x;
   }
-  const uint32_t boundary = t.boundary;
-  for (uint32_t src : t.vertex_source) pos.push_back(src < boundary ? pos[f[src]] : at[src - boundary]);
-  if (shared)
-    for (size_t j = 0; j < k; ++j) pos.push_back(pos[base + j]);  // room reserved: no reallocation
+  const Vec3* p = pos.data();
+  const Vec3* inner = at.data();
+  const uint32_t* src = t.vertex_source.data();
+  auto position = [&](size_t j) { return src[j] < boundary ? p[f[src[j]]] : inner[src[j] - boundary]; };
+  if (pos.capacity() < pos.size() + t.interior * (shared ? 2 : 1))  // p stays valid below
+    pos.reserve(std::max(pos.size() + t.interior * (shared ? 2 : 1), 2 * pos.capacity()));
+  p = pos.data();
+  const size_t base = pos.size();
+  append_generated(pos, t.interior, position);
+  if (shared) append_generated(pos, t.interior, [&](size_t j) { return p[base + j]; });
 }
 
 // One link array of the copies: interior dart j's neighbour y becomes first + y.
@@ -96,6 +105,10 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
     target.resize_flags();
   const int i = t.cell_dim;
   const uint32_t k = t.interior;
+  // The boundary positions read below are scattered (four generations of darts): fetched while
+  // the links are written.
+  if (target.positioned())
+    for (uint32_t b : t.vertex_reads) __builtin_prefetch(target.position.data() + f[b]);
   const Dart* across = shared ? g.links(i + 1).data() : nullptr;
   // 1. The links: the copy of interior dart j is first + j, its mirror copy first + k + j; the
   // alpha_{i-1} of a dart at the boundary is f of the boundary dart (and its alpha_{i+1} for the

@@ -1,5 +1,7 @@
 #include "model/replace/replacement_template.hpp"
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
 
 namespace gmr::replace {
@@ -96,6 +98,11 @@ ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start) {
     t.at_interior_vertex.emplace_back(j, interior_vertex[v]);
     t.vertex_source.push_back(t.boundary + interior_vertex[v]);
   }
+  for (const auto& [j, b] : t.at_boundary_vertex) t.vertex_reads.push_back(b);
+  for (const auto& w : t.weights)
+    for (const auto& [b, x] : w) t.vertex_reads.push_back(b);
+  std::sort(t.vertex_reads.begin(), t.vertex_reads.end());
+  t.vertex_reads.erase(std::unique(t.vertex_reads.begin(), t.vertex_reads.end()), t.vertex_reads.end());
   return t;
 }
 

@@ -42,6 +42,8 @@ struct ReplacementTemplate {
   // The same per interior dart: b (< boundary) at a boundary vertex, boundary + v at interior
   // vertex v.
   std::vector<uint32_t> vertex_source;
+  // The boundary ranks whose positions a replacement reads (each boundary vertex's first dart).
+  std::vector<uint32_t> vertex_reads;
   // Per interior vertex: its weights on boundary darts in label order (empty: the origin, for a
   // pattern without geometry).
   std::vector<std::vector<std::pair<uint32_t, double>>> weights;
