@@ -7,6 +7,7 @@
 #include "model/core/validity.hpp"
 #include "model/replace/cell_replacement.hpp"
 #include "model/replace/cell_sweep.hpp"
+#include "model/replace/half_cells.hpp"
 #include "model/replace/orientation.hpp"
 
 namespace gmr::replace {
@@ -169,6 +170,9 @@ size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
     if (p.cell_dim == cell_dim) most = std::max(most, p.interior_darts.size());
   if (most == 0) return 0;
   const int n = g.dimension();
+  if (!g.is_omap() && (cell_dim == 2 || cell_dim == 3) && (n == cell_dim || n == cell_dim + 1))
+    return count_half_cells(g, cell_dim) * most;
+  // Maps query_replace refuses: per cell, two half-cells when it has two.
   size_t halves = 0;
   visit_all_orbits(
       g, cell_type(g, cell_dim).mask(), [&](Dart d) { halves += n > cell_dim && !g.is_free(cell_dim + 1, d) ? 2 : 1; },

@@ -192,7 +192,7 @@ void BM_HexStep(benchmark::State& state) {
   FlaggedMap before = block(side);
   const size_t final_size = subdivision_size(before, store);  // before any step runs
   auto run = [&](FlaggedMap& m, int s) {
-    if (s == 0) m.reserve(final_size);
+    if (s == 0) m.reserve(subdivision_size(m, store));  // as the sequence does
     if (s == 1) split_all_edges(m, 2);
     if (s == 2 && lookup) query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid);
     if (s == 3 && lookup) query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid);
