@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "model/core/gmap_file.hpp"
-#include "model/core/huge_pages.hpp"
 #include "model/core/vec3.hpp"
 
 namespace gmr::replace {
@@ -28,11 +27,10 @@ struct FlaggedMap {
   size_t flagged() const;
   // Room for `darts` darts in the links, flags and positions (a sequence of replacements whose
   // growth is bounded beforehand then grows no array, query_replace.hpp).
-  // Large arrays in huge pages (huge_pages.hpp), as the map's links.
   void reserve(size_t darts) {
     map.reserve(darts);
-    reserve_in_huge_pages(flag, darts);
-    if (positioned()) reserve_in_huge_pages(position, darts);
+    flag.reserve(darts);
+    if (positioned()) position.reserve(darts);
   }
 };
 
