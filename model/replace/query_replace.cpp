@@ -80,6 +80,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   Word last_key;
   StoreMatch last;
   std::vector<Dart> followed;
+  std::vector<uint8_t> last_in_order;  // per hit of `last`: its ranks are the identity
   auto replace = [&](uint32_t pattern, const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, store.replacement(pattern), image, shared);
     if (after_each) after_each();
@@ -116,6 +117,12 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
           last_key = key;
           last = match;
           followed.resize(c.size());
+          last_in_order.clear();
+          for (const std::vector<uint32_t>& ranks : *match.ranks) {
+            bool identity = true;
+            for (uint32_t k = 0; k < ranks.size(); ++k) identity &= ranks[k] == k;
+            last_in_order.push_back(identity);
+          }
         }
       }
     }
@@ -136,6 +143,8 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     // 2. The isomorphism f: the cell's darts in the label order of the pattern's template.
     const uint32_t pattern = static_cast<uint32_t>((*hits)[choice].pattern);
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
+    // Numbered along the pattern's own template order (ranks the identity): the numbering is f.
+    if (by_last && !deferred && last_in_order[choice]) return replace(pattern, followed.data(), shared);
     std::vector<Dart>& image = deferred ? targets : f;
     if (deferred) matches.push_back({pattern, targets.size(), shared});
     else f.clear();
