@@ -109,7 +109,6 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   // the links are written.
   if (target.positioned())
     for (uint32_t b : t.vertex_reads) __builtin_prefetch(target.position.data() + f[b]);
-  const Dart* across = shared ? g.links(i + 1).data() : nullptr;
   // 1. The links: the copy of interior dart j is first + j, its mirror copy first + k + j; the
   // alpha_{i-1} of a dart at the boundary is f of the boundary dart (and its alpha_{i+1} for the
   // mirror copy).
@@ -130,6 +129,9 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
       return;
     }
     const uint32_t* rank = t.relink_rank.data();
+    // alpha_{i+1} read where it is now (the arrays may have moved as they grew; it is appended
+    // after this dimension).
+    const Dart* across = shared ? g.links(i + 1).data() : nullptr;
     out.append(k, [&](size_t j) {
       const uint32_t b = rank[j];
       return b == ReplacementTemplate::kInterior ? from + link[j] : f[b];

@@ -129,7 +129,9 @@ size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k) {
   const size_t added = size_t(len) * (darts.size() / 2), total = size_t(first) + added;
   // Room for the new darts before they are written (the old links, flags and positions are read
   // while the new ones are appended); grown geometrically, as the arrays grow.
-  if (g.links(0).capacity() < total) g.reserve(std::max(total, 2 * size_t(first)));
+  bool room = true;
+  for (int d = 0; d <= g.dimension(); ++d) room &= g.links(d).capacity() >= total;
+  if (!room) g.reserve(std::max(total, 2 * size_t(first)));
   if (m.flag.capacity() < total) m.flag.reserve(std::max(total, 2 * m.flag.size()));
   if (m.positioned() && m.position.capacity() < total) m.position.reserve(std::max(total, 2 * m.position.size()));
   std::vector<Dart>& near = chain_heads(first);
