@@ -39,8 +39,6 @@ void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& fla
                    const std::vector<uint8_t>& positive, BoundaryGraph& out);
 // The same, numbering the orbit's darts in `local` (indexed by dart, UINT32_MAX for every dart of
 // the orbit on entry): local[x] is the local index of x on return, left for the caller to reset.
-// Cells partition the darts, so a sweep over all cells keeps one array, which also tells the
-// darts of the cells already met.
 void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
                    const std::vector<uint8_t>& positive, std::vector<uint32_t>& local, BoundaryGraph& out);
 // The n-free darts of an n-G-map pattern (its boundary), neighbours alpha_0..alpha_{n-2} and the

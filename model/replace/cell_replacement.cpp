@@ -1,5 +1,9 @@
 #include "model/replace/cell_replacement.hpp"
 
+#include <algorithm>
+
+#include "model/replace/generated_append.hpp"
+
 namespace gmr::replace {
 
 namespace {
@@ -21,6 +25,32 @@ void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   for (const auto& [j, b] : t.at_boundary_vertex) pos[first + j] = pos[f[b]];
   for (const auto& [j, v] : t.at_interior_vertex) pos[first + j] = at[v];
   if (mirror) std::copy(pos + first, pos + first + t.interior, pos + first + mirror);
+}
+
+// place_interior for new darts appended at the end (the positions written once, in dart order).
+// The boundary positions read were prefetched (prefetch_boundary_positions).
+void append_interior_positions(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, bool shared) {
+  thread_local std::vector<Vec3> at;
+  std::vector<Vec3>& pos = target.position;
+  const uint32_t boundary = t.boundary;
+  // The interior vertices, then every copy's position: boundary ones read where they are.
+  at.resize(t.weights.size());
+  for (size_t v = 0; v < t.weights.size(); ++v) {
+    Vec3 x{0, 0, 0};
+    for (const auto& [b, w] : t.weights[v])
+      for (int c = 0; c < 3; ++c) x[c] += w * pos[f[b]][c];
+    at[v] = x;
+  }
+  const Vec3* p = pos.data();
+  const Vec3* inner = at.data();
+  const uint32_t* src = t.vertex_source.data();
+  auto position = [&](size_t j) { return src[j] < boundary ? p[f[src[j]]] : inner[src[j] - boundary]; };
+  if (pos.capacity() < pos.size() + t.interior * (shared ? 2 : 1))  // p stays valid below
+    pos.reserve(std::max(pos.size() + t.interior * (shared ? 2 : 1), 2 * pos.capacity()));
+  p = pos.data();
+  const size_t base = pos.size();
+  append_generated(pos, t.interior, position);
+  if (shared) append_generated(pos, t.interior, [&](size_t j) { return p[base + j]; });
 }
 
 // One link array of the copies: interior dart j's neighbour y becomes first + y.
@@ -68,9 +98,60 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
 }
 
 size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, bool shared) {
-  const Dart first = target.map.add_darts(size_t(t.interior) * (shared ? 2 : 1));
-  target.resize_flags();
-  return replace_cell(target, t, f, first, shared);
+  // The same writes, appended: each link array, the flags and the positions of the new darts are
+  // written once, in dart order, with no free (or zero) state first (Map::add_linked_darts).
+  Map& g = target.map;
+  if (target.flag.size() != g.capacity() || (target.positioned() && target.position.size() != g.capacity()))
+    target.resize_flags();
+  const int i = t.cell_dim;
+  const uint32_t k = t.interior;
+  // The boundary positions read below are scattered (four generations of darts): fetched while
+  // the links are written.
+  if (target.positioned())
+    for (uint32_t b : t.vertex_reads) __builtin_prefetch(target.position.data() + f[b]);
+  // 1. The links: the copy of interior dart j is first + j, its mirror copy first + k + j; the
+  // alpha_{i-1} of a dart at the boundary is f of the boundary dart (and its alpha_{i+1} for the
+  // mirror copy).
+  const Dart first = g.add_linked_darts(size_t(k) * (shared ? 2 : 1), [&](int d, Dart from, LinkAppender& out) {
+    if (d > i) {  // alpha_{i+1} (d = i + 1): the two half-cells sewn copy by copy, or free
+      if (shared) {
+        out.append(k, [&](size_t j) { return from + k + static_cast<Dart>(j); });
+        out.append(k, [&](size_t j) { return from + static_cast<Dart>(j); });
+      } else {
+        out.append(k, [&](size_t j) { return from + static_cast<Dart>(j); });
+      }
+      return;
+    }
+    const uint32_t* link = t.link[d].data();
+    if (d != i - 1) {
+      for (Dart base = from, h = 0; h < (shared ? 2u : 1u); ++h, base += k)
+        out.append(k, [&](size_t j) { return base + link[j]; });
+      return;
+    }
+    const uint32_t* rank = t.relink_rank.data();
+    // alpha_{i+1} read where it is now (the arrays may have moved as they grew; it is appended
+    // after this dimension).
+    const Dart* across = shared ? g.links(i + 1).data() : nullptr;
+    out.append(k, [&](size_t j) {
+      const uint32_t b = rank[j];
+      return b == ReplacementTemplate::kInterior ? from + link[j] : f[b];
+    });
+    if (shared)
+      out.append(k, [&](size_t j) {
+        const uint32_t b = rank[j];
+        return b == ReplacementTemplate::kInterior ? from + k + link[j] : across[f[b]];
+      });
+  });
+  // 2. The boundary's side of the relinks.
+  for (const auto& [j, b] : t.relinks) {
+    const Dart y = f[b];
+    if (shared) g.set_alpha(i - 1, g.alpha(i + 1, y), first + k + j);
+    g.set_alpha(i - 1, y, first + j);
+  }
+  // 3. Flags and positions, appended.
+  for (int h = 0; h < (shared ? 2 : 1); ++h) target.flag.insert(target.flag.end(), t.flag.begin(), t.flag.end());
+  if (target.positioned()) append_interior_positions(target, t, f, shared);
+  return size_t(k) * (shared ? 2 : 1);
 }
 
 }  // namespace gmr::replace

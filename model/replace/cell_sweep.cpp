@@ -8,47 +8,56 @@ namespace gmr::replace {
 
 namespace {
 
-// local[x]: x's index in its cell's boundary graph, UINT32_MAX for the darts of cells not met yet,
-// kOtherHalf for the second half-face of a face of a 3-G-map. UINT32_MAX everywhere between
-// sweeps.
-constexpr uint32_t kOtherHalf = UINT32_MAX - 1;
-
-std::vector<uint32_t>& local_index() {
-  thread_local std::vector<uint32_t> local;
-  return local;
+// The met bits of this thread: all clear between sweeps.
+std::vector<uint64_t>& met_words(Dart capacity) {
+  thread_local std::vector<uint64_t> words;
+  const size_t n = (size_t(capacity) + 63) / 64;
+  if (words.size() < n) words.resize(n, 0);
+  return words;
 }
 
 }  // namespace
 
 CellSweep::CellSweep(const Map& g, int cell_dim, const std::vector<Dart>* only)
-    : g_(g), cell_dim_(cell_dim), only_(only), capacity_(g.capacity()), local_(local_index()) {
+    : g_(g), cell_dim_(cell_dim), only_(only), capacity_(g.capacity()), met_{met_words(g.capacity()).data(), g.capacity()} {
   if (only)
     for (Dart d : *only)
       if (!g.alive(d)) throw Error(ErrorCode::Usage, "no such dart", "dart " + std::to_string(d));
-  if (local_.size() < capacity_) local_.resize(capacity_, UINT32_MAX);
 }
 
 CellSweep::~CellSweep() {
   if (only_)
-    for (Dart x : met_) local_[x] = UINT32_MAX;
+    for (Dart x : listed_) met_.reset(x);
   else
-    std::fill(local_.begin(), local_.begin() + capacity_, UINT32_MAX);
+    std::fill(met_.bits, met_.bits + (size_t(capacity_) + 63) / 64, 0);
 }
 
 void CellSweep::throw_listed_twice(Dart d) {
   throw Error(ErrorCode::Usage, "a cell is listed twice", "dart " + std::to_string(d));
 }
 
+void CellSweep::meet(const Dart* darts, size_t count) {
+  if (only_) listed_.insert(listed_.end(), darts, darts + count);
+  if (g_.dimension() <= cell_dim_) return;
+  const Dart* across = g_.links(cell_dim_ + 1).data();
+  for (size_t k = 0; k < count; ++k) {
+    const Dart y = across[darts[k]];
+    met_.set(y);
+    if (only_) listed_.push_back(y);
+  }
+}
+
 void CellSweep::traverse(Dart d, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive,
                          BoundaryGraph& c) {
-  cell_boundary(g_, cell_dim_, d, flag, positive, local_, c);
-  if (g_.dimension() > cell_dim_)
-    for (Dart x : c.dart) {
-      const Dart y = g_.alpha(cell_dim_ + 1, x);
-      if (local_[y] == UINT32_MAX) local_[y] = kOtherHalf;
-      if (only_) met_.push_back(y);
-    }
-  if (only_) met_.insert(met_.end(), c.dart.begin(), c.dart.end());
+  cell_boundary(g_, cell_dim_, d, flag, positive, c);
+  for (Dart x : c.dart) met_.set(x);
+  meet(c.dart.data(), c.dart.size());
+}
+
+bool CellSweep::follow(Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag, Dart* out) {
+  if (!follow_word(g_, cell_dim_, d, word, size, flag, met_, out)) return false;
+  meet(out, size);
+  return true;
 }
 
 }  // namespace gmr::replace

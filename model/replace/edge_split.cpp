@@ -2,6 +2,9 @@
 
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
+#include "model/replace/generated_append.hpp"
+
+#include <algorithm>
 
 namespace gmr::replace {
 
@@ -55,6 +58,61 @@ size_t split_all_edges(FlaggedMap& m, unsigned k) {
 
 namespace {
 
+// The chains' links, flags and positions, appended (each array written once, in dart order). Chain
+// p runs from pairs[p] = x to y = alpha_0 x: its s-th dart (counted from x) is first + p len + s,
+// alpha_0 and alpha_1 alternate along it, and for j >= 2 alpha_j sends it to the s-th dart counted
+// from z = alpha_j x on z's chain (near[z] + s or near[z] - s as that chain runs from z or to z),
+// to itself when x is j-free. L: len when known at compile time (2: a split in 2), else 0.
+template <Dart L>
+void append_chains(FlaggedMap& m, const std::vector<Dart>& pairs, const Dart* near, Dart len_, unsigned k) {
+  Map& g = m.map;
+  const Dart len = L ? L : len_;
+  const Dart added = static_cast<Dart>(pairs.size()) * len;
+  const Dart first = g.capacity();
+  auto upwards = [&](Dart z) { return (near[z] - first) % len == 0; };
+  g.add_linked_darts(added, [&](int d, Dart, LinkAppender& out) {
+    const Dart* link = g.links(d).data();  // room reserved: the old links stay in place
+    const Dart* link0 = g.links(0).data();
+    if (d == 0)
+      return out.append(added, [&](size_t c) {
+        const Dart p = static_cast<Dart>(c / len), s = static_cast<Dart>(c % len), self = first + static_cast<Dart>(c);
+        if (s == 0) return pairs[p];
+        if (s % 2 == 0) return self - 1;
+        return s == len - 1 ? link0[pairs[p]] : self + 1;
+      });
+    if (d == 1)
+      return out.append(added, [&](size_t c) {
+        const Dart self = first + static_cast<Dart>(c);
+        return (c % len) % 2 == 0 ? self + 1 : self - 1;
+      });
+    out.append(added, [&](size_t c) {
+      const Dart p = static_cast<Dart>(c / len), s = static_cast<Dart>(c % len);
+      const Dart x = pairs[p], z = link[x];
+      if (z == x) return first + static_cast<Dart>(c);
+      return upwards(z) ? near[z] + s : near[z] - s;
+    });
+  });
+  append_generated(m.flag, added, [](size_t) { return uint32_t(0); });
+  if (m.positioned()) {
+    const Vec3* pos = m.position.data();  // room reserved: the old positions stay in place
+    const Dart* link0 = g.links(0).data();
+    append_generated(m.position, added, [&](size_t c) {
+      // the vertex t (1..k-1) at t/k from x's vertex
+      const Dart p = static_cast<Dart>(c / len), s = static_cast<Dart>(c % len);
+      const Vec3 a = pos[pairs[p]], b = pos[link0[pairs[p]]];
+      const double t = double(s / 2 + 1) / k;
+      return Vec3{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+    });
+  }
+  // The old darts' alpha_0: the end of their chain.
+  Dart* link0 = g.link_data(0);
+  for (Dart x : pairs) {
+    const Dart y = link0[x];
+    link0[x] = near[x];
+    link0[y] = near[y];
+  }
+}
+
 // 2.-3. Splits each pair (x, alpha_0 x) of `darts` (both darts of every pair listed, each pair
 // once), chains numbered in the order of the pairs' first darts.
 size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k) {
@@ -64,10 +122,18 @@ size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k) {
     if (g.is_free(0, x)) throw Error(ErrorCode::InvalidMap, "a 0-free dart has no edge to split", "dart " + std::to_string(x));
   if (double(k - 1) * double(darts.size()) >= double(kNoDart - g.capacity()))
     throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")", "split in " + std::to_string(k));
-  // 2. One chain of len new darts per pair (x, alpha_0 x), all added at once: near[x] is its end
-  // next to x, near[alpha_0 x] the other end.
-  const Dart first = g.add_darts(size_t(len) * (darts.size() / 2));
   m.resize_flags();
+  // 2. One chain of len new darts per pair (x, alpha_0 x), numbered from the end of the map: near[x]
+  // is its end next to x, near[alpha_0 x] the other end.
+  const Dart first = g.capacity();
+  const size_t added = size_t(len) * (darts.size() / 2), total = size_t(first) + added;
+  // Room for the new darts before they are written (the old links, flags and positions are read
+  // while the new ones are appended); grown geometrically, as the arrays grow.
+  bool room = true;
+  for (int d = 0; d <= g.dimension(); ++d) room &= g.links(d).capacity() >= total;
+  if (!room) g.reserve(std::max(total, 2 * size_t(first)));
+  if (m.flag.capacity() < total) m.flag.reserve(std::max(total, 2 * m.flag.size()));
+  if (m.positioned() && m.position.capacity() < total) m.position.reserve(std::max(total, 2 * m.position.size()));
   std::vector<Dart>& near = chain_heads(first);
   std::vector<Dart> pairs;  // the x of each pair, in chain order
   pairs.reserve(darts.size() / 2);
@@ -78,31 +144,9 @@ size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k) {
     near[g.alpha(0, x)] = c + len - 1;
     pairs.push_back(x);
   }
-  // The chain runs upwards from the x of its pair: the s-th dart counted from x is near[x] + s
-  // there, near[x] - s from the other end.
-  auto upwards = [&](Dart x) { return (near[x] - first) % len == 0; };
-  for (Dart x : pairs) {
-    const Dart y = g.alpha(0, x), c = near[x];
-    g.link(0, x, c);
-    for (Dart s = 0; s + 1 < len; ++s) g.link(s % 2 == 0 ? 1 : 0, c + s, c + s + 1);
-    g.link(0, c + len - 1, y);
-    if (m.positioned()) {  // vertex t (1..k-1) at t/k from x's vertex
-      const Vec3 a = m.position[x], b = m.position[y];
-      for (Dart s = 0; s < len; ++s) {
-        const double t = double(s / 2 + 1) / k;
-        m.position[c + s] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
-      }
-    }
-  }
-  // 3. alpha_j (j >= 2) links the chains as it links their ends (each side writes its direction).
-  for (Dart x : darts)
-    for (int j = 2; j <= g.dimension(); ++j) {
-      const Dart z = g.alpha(j, x);
-      if (z == x) continue;
-      const Dart cx = near[x], cz = near[z];
-      const bool ux = upwards(x), uz = upwards(z);
-      for (Dart s = 0; s < len; ++s) g.set_alpha(j, ux ? cx + s : cx - s, uz ? cz + s : cz - s);
-    }
+  // 3. The chains appended, linked by alpha_j (j >= 2) as their ends are.
+  if (len == 2) append_chains<2>(m, pairs, near.data(), len, k);
+  else append_chains<0>(m, pairs, near.data(), len, k);
   for (Dart x : darts) near[x] = kNoDart;
   return darts.size() * (k - 1);
 }

@@ -7,6 +7,7 @@
 #include "model/core/validity.hpp"
 #include "model/replace/cell_replacement.hpp"
 #include "model/replace/cell_sweep.hpp"
+#include "model/replace/half_cells.hpp"
 #include "model/replace/orientation.hpp"
 
 namespace gmr::replace {
@@ -74,6 +75,12 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   BoundaryGraph c;
   std::vector<uint32_t> order;
   Word key;
+  // The word the last cell was looked up by (a stored word: W(B, q) of a start dart q of its
+  // patterns' boundary) and its match; `followed`: a cell's darts numbered along it.
+  Word last_key;
+  StoreMatch last;
+  std::vector<Dart> followed;
+  std::vector<uint8_t> last_in_order;  // per hit of `last`: its ranks are the identity
   auto replace = [&](uint32_t pattern, const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, store.replacement(pattern), image, shared);
     if (after_each) after_each();
@@ -82,16 +89,42 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   sweep.for_each_cell([&](Dart rep) {
     if (progress && r.cells % 4096 == 0) progress(r.cells, cells);
     ++r.cells;
-    sweep.traverse(rep, target.flag, positive, c);
-    // 1. The word from the cell's first start dart, looked up (§6.3, pattern_store.hpp).
-    const uint32_t start = first_start_dart(c, store.mode());
+    // 1. The cell's word from its first start dart, looked up (§6.3, pattern_store.hpp). First
+    // against the word the previous cell matched, from rep, along which the cell is numbered
+    // and checked in one pass (word_traversal.hpp): if it agrees, W(cell, rep) is that stored
+    // word, so rep is a start dart (isomorphisms map start sets onto start sets; in oriented mode
+    // rep must be in D+), the first in the cell's traversal order, and the lookup of its word
+    // would give that match. Otherwise the cell is traversed breadth-first, its first start dart
+    // found and its word looked up.
     StoreMatch match;
-    if (start != UINT32_MAX) {
-      key.assign(1, static_cast<uint32_t>(cell_dim));
-      // The traversal numbered the cell breadth-first from rep: from rep, its labels are there.
-      if (start == 0) numbered_boundary_word(c, key);
-      else boundary_word(c, start, key, order);
-      match = store.match_word(key, start);
+    uint32_t start = 0;
+    const bool by_last = last.hits && (store.mode() == Mode::Unoriented || positive[rep]) &&
+                         sweep.follow(rep, last_key.data() + 1, static_cast<uint32_t>(followed.size()), target.flag,
+                                      followed.data());
+    if (by_last) {
+      match = last;
+      match.start = 0;
+    } else {
+      sweep.traverse(rep, target.flag, positive, c);
+      start = first_start_dart(c, store.mode());
+      if (start != UINT32_MAX) {
+        key.assign(1, static_cast<uint32_t>(cell_dim));
+        // The traversal numbered the cell breadth-first from rep: from rep, its labels are there.
+        if (start == 0) numbered_boundary_word(c, key);
+        else boundary_word(c, start, key, order);
+        match = store.match_word(key, start);
+        if (match.hits) {
+          last_key = key;
+          last = match;
+          followed.resize(c.size());
+          last_in_order.clear();
+          for (const std::vector<uint32_t>& ranks : *match.ranks) {
+            bool identity = true;
+            for (uint32_t k = 0; k < ranks.size(); ++k) identity &= ranks[k] == k;
+            last_in_order.push_back(identity);
+          }
+        }
+      }
     }
     const std::vector<StoreEntry>* hits = match.hits;
     if (!hits) {
@@ -110,10 +143,14 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     // 2. The isomorphism f: the cell's darts in the label order of the pattern's template.
     const uint32_t pattern = static_cast<uint32_t>((*hits)[choice].pattern);
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
+    // Numbered along the pattern's own template order (ranks the identity): the numbering is f.
+    if (by_last && !deferred && last_in_order[choice]) return replace(pattern, followed.data(), shared);
     std::vector<Dart>& image = deferred ? targets : f;
     if (deferred) matches.push_back({pattern, targets.size(), shared});
     else f.clear();
-    if (start == 0)
+    if (by_last)
+      for (uint32_t k : (*match.ranks)[choice]) image.push_back(followed[k]);
+    else if (start == 0)
       for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[k]);
     else
       for (uint32_t k : (*match.ranks)[choice]) image.push_back(c.dart[order[k]]);
@@ -142,6 +179,9 @@ size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
     if (p.cell_dim == cell_dim) most = std::max(most, p.interior_darts.size());
   if (most == 0) return 0;
   const int n = g.dimension();
+  if (!g.is_omap() && (cell_dim == 2 || cell_dim == 3) && (n == cell_dim || n == cell_dim + 1))
+    return count_half_cells(g, cell_dim) * most;
+  // Maps query_replace refuses: per cell, two half-cells when it has two.
   size_t halves = 0;
   visit_all_orbits(
       g, cell_type(g, cell_dim).mask(), [&](Dart d) { halves += n > cell_dim && !g.is_free(cell_dim + 1, d) ? 2 : 1; },

@@ -8,6 +8,10 @@
 // Boundary automorphisms: the cell's first start dart (in its traversal order) is sent to the
 // pattern's first start dart (in its local order) with the same word, so the result is
 // deterministic; a key holding several patterns uses the first one, or the selector's choice.
+// A cell is first compared with the word the previous cell was looked up by, numbered along it
+// from its dart (word_traversal.hpp): when every letter agrees, its word from that dart is that
+// stored word, so the dart is its first start dart and the lookup would give the same match (a
+// sequence of cells of one pattern is looked up without a traversal of its own or a hash).
 #pragma once
 #include <functional>
 #include <string>

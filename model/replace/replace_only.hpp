@@ -1,13 +1,13 @@
 // Replace only (Damiand & Nivoliers 2022 §7.1, Table 1: the hexahedral subdivision timed with "only
 // the replace part", every cell being known to match its one pattern): the cells are replaced by a
-// given pattern without a query, no word and no lookup. The cell's boundary still has to be mapped
-// onto the pattern's: it is traversed breadth-first from a dart d given as matched with the
-// pattern's start dart (StoreEntry::start), which numbers its darts in label order from d
-// (cell_sweep.hpp), and the k-th labelled darts of the two boundaries correspond (Theorem 1).
-// The traversal is checked against the pattern's boundary word (flags and neighbour labels in
-// label order, ReplacementTemplate::word; linear, no hashing): a cell that does not match from d
-// is left untouched and reported unmatched, never replaced wrongly. The isomorphism given by d is
-// used in either mode (orientation is not checked). The replacement is query-replace's
+// given pattern without a query, no word computed and no lookup. The cell's boundary still has to
+// be mapped onto the pattern's: from a dart d given as matched with the pattern's start dart
+// (StoreEntry::start), the cell is numbered along the pattern's boundary word
+// (ReplacementTemplate::word, flags and neighbour labels in label order) and checked against it in
+// the same pass (word_traversal.hpp): when every letter agrees, the k-th numbered dart is the
+// image of the pattern's k-th labelled boundary dart (Theorem 1); a cell that does not match
+// from d is left untouched and reported unmatched, never replaced wrongly. The isomorphism given
+// by d is used in either mode (orientation is not checked). The replacement is query-replace's
 // (cell_replacement.hpp).
 #pragma once
 #include <functional>

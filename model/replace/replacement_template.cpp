@@ -1,5 +1,7 @@
 #include "model/replace/replacement_template.hpp"
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
 
 namespace gmr::replace {
@@ -69,12 +71,14 @@ ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start) {
                                            "-linked outside the interior and boundary", p.name);
       t.link[d].push_back(y < k ? y : j);
       if (y >= k) t.relinks.emplace_back(j, y - k);
+      if (d == i - 1) t.relink_rank.push_back(y < k ? ReplacementTemplate::kInterior : y - k);
     }
     t.flag.push_back(x < p.map.flag.size() ? p.map.flag[x] : 0);
     const uint32_t v = p.vertex_of[x];
     const Dart anchor = p.vertex_anchor[v];
     if (anchor != kNoDart) {
       t.at_boundary_vertex.emplace_back(j, vertex_rank[index[anchor] - k]);
+      t.vertex_source.push_back(vertex_rank[index[anchor] - k]);
       continue;
     }
     if (interior_vertex[v] == UINT32_MAX) {
@@ -92,7 +96,13 @@ ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start) {
         }
     }
     t.at_interior_vertex.emplace_back(j, interior_vertex[v]);
+    t.vertex_source.push_back(t.boundary + interior_vertex[v]);
   }
+  for (const auto& [j, b] : t.at_boundary_vertex) t.vertex_reads.push_back(b);
+  for (const auto& w : t.weights)
+    for (const auto& [b, x] : w) t.vertex_reads.push_back(b);
+  std::sort(t.vertex_reads.begin(), t.vertex_reads.end());
+  t.vertex_reads.erase(std::unique(t.vertex_reads.begin(), t.vertex_reads.end()), t.vertex_reads.end());
   return t;
 }
 

@@ -26,6 +26,7 @@
 namespace gmr::replace {
 
 struct ReplacementTemplate {
+  static constexpr uint32_t kInterior = UINT32_MAX;
   int cell_dim = 2;
   uint32_t interior = 0;  // k: darts copied per half-cell
   uint32_t boundary = 0;  // |B|: boundary darts of a matched cell, in label order
@@ -33,9 +34,16 @@ struct ReplacementTemplate {
   // boundary neighbour (t = cell_dim - 1 only), j itself, overwritten by the relink.
   std::array<std::vector<uint32_t>, 4> link;
   std::vector<std::pair<uint32_t, uint32_t>> relinks;  // (interior dart j, boundary rank b) of alpha_{i-1}
+  // The same per interior dart: b, or kInterior when alpha_{i-1} stays in the interior.
+  std::vector<uint32_t> relink_rank;
   std::vector<uint32_t> flag;                          // per interior dart
   // The interior darts at a boundary vertex (j, boundary rank b) and at an interior vertex (j, v).
   std::vector<std::pair<uint32_t, uint32_t>> at_boundary_vertex, at_interior_vertex;
+  // The same per interior dart: b (< boundary) at a boundary vertex, boundary + v at interior
+  // vertex v.
+  std::vector<uint32_t> vertex_source;
+  // The boundary ranks whose positions a replacement reads (each boundary vertex's first dart).
+  std::vector<uint32_t> vertex_reads;
   // Per interior vertex: its weights on boundary darts in label order (empty: the origin, for a
   // pattern without geometry).
   std::vector<std::vector<std::pair<uint32_t, double>>> weights;

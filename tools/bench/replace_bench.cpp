@@ -155,8 +155,8 @@ size_t hex8() { return pattern_named("hex8"); }
 // arrays, copying them). `precondition` AssumeValid: the steps skip the validity check of their
 // input (the caller built the block and knows it valid).
 // `lookup` false: replace only (the paper's Table 1, "only the replace part"): split4 on every face
-// and hex8 on every volume without a query, each cell traversed from its smallest dart, a
-// flagged corner matched with the pattern's start (replace_only.hpp).
+// and hex8 on every volume without a query, each cell numbered along the pattern's word from its
+// smallest dart, a flagged corner matched with the pattern's start (replace_only.hpp).
 void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
                                       Precondition precondition = Precondition::CheckValidity, bool lookup = true) {
   const PatternStore& store = hex_patterns();
@@ -182,7 +182,7 @@ void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
   state.counters["volumes"] = static_cast<double>(volumes);
 }
 
-// One step of the reserved sequence timed alone (range(1): 0 the reservation, 1 the edge split, 2
+// One step of the reserved sequence timed alone (range(1): 0 the reservation with its room counts, 1 the edge split, 2
 // the faces, 3 the volumes; range(2): 0 query-replace, 1 replace only; AssumeValid): the map before the step is made once, and each
 // iteration copies it and reserves the final size untimed.
 void BM_HexStep(benchmark::State& state) {
@@ -192,7 +192,7 @@ void BM_HexStep(benchmark::State& state) {
   FlaggedMap before = block(side);
   const size_t final_size = subdivision_size(before, store);  // before any step runs
   auto run = [&](FlaggedMap& m, int s) {
-    if (s == 0) m.reserve(final_size);
+    if (s == 0) m.reserve(subdivision_size(m, store));  // as the sequence does
     if (s == 1) split_all_edges(m, 2);
     if (s == 2 && lookup) query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid);
     if (s == 3 && lookup) query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid);

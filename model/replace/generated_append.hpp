@@ -1,0 +1,49 @@
+// Appending generated elements to a vector, each written once into its final place: gen(x) for
+// x = 0..n-1 is constructed at the end (vector::insert from a forward range), with no
+// value-initialised state first (as resize would write) and no per-element size update (as
+// push_back does). Growth is vector::insert's (geometric), so the appended elements may be computed
+// from the vector's own elements only through copies taken before the call.
+#pragma once
+#include <cstddef>
+#include <iterator>
+#include <type_traits>
+#include <vector>
+
+namespace gmr::replace {
+
+namespace detail {
+template <class T, class Gen>
+class Generated {
+ public:
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = T;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const T*;
+  using reference = T;
+  Generated() = default;
+  Generated(const Gen* gen, size_t x) : gen_(gen), x_(x) {}
+  T operator*() const { return (*gen_)(x_); }
+  Generated& operator++() {
+    ++x_;
+    return *this;
+  }
+  Generated operator++(int) {
+    Generated old = *this;
+    ++x_;
+    return old;
+  }
+  bool operator==(const Generated& o) const { return x_ == o.x_; }
+
+ private:
+  const Gen* gen_ = nullptr;
+  size_t x_ = 0;
+};
+}  // namespace detail
+
+template <class T, class Gen>
+void append_generated(std::vector<T>& v, size_t n, const Gen& gen) {
+  using It = detail::Generated<T, Gen>;
+  v.insert(v.end(), It(&gen, 0), It(&gen, n));
+}
+
+}  // namespace gmr::replace

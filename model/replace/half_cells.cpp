@@ -1,0 +1,102 @@
+#include "model/replace/half_cells.hpp"
+
+#include <vector>
+
+#include "model/core/error.hpp"
+
+namespace gmr::replace {
+
+namespace {
+
+struct Sweep {
+  const Dart* link[3];  // alpha_0, alpha_1, alpha_2 (volumes)
+  int i;
+  Dart cap;
+  std::vector<uint64_t> bits;
+  std::vector<Dart> stack, walked, seeds;
+
+  bool met(Dart x) const { return bits[x >> 6] >> (x & 63) & 1; }
+  void meet(Dart x) { bits[x >> 6] |= uint64_t(1) << (x & 63); }
+
+  // Breadth-first over alpha_0..alpha_{i-1} from the darts on the stack (met), for a half-cell
+  // with free darts.
+  void traverse() {
+    while (!stack.empty()) {
+      const Dart x = stack.back();
+      stack.pop_back();
+      for (int j = 0; j < i; ++j) {
+        const Dart y = link[j][x];
+        if (y < cap && !met(y)) {
+          meet(y);
+          stack.push_back(y);
+        }
+      }
+    }
+  }
+  // The cycle of d's half-face, met; false when it meets a free dart (its darts then in walked).
+  bool walk_face(Dart d) {
+    walked.clear();
+    Dart x = d;
+    do {
+      meet(x);
+      walked.push_back(x);
+      const Dart y = link[0][x];
+      if (y == x || y >= cap) return false;
+      meet(y);
+      walked.push_back(y);
+      x = link[1][y];
+      if (x == y || x >= cap) return false;
+    } while (x != d);
+    return true;
+  }
+  // d's half-cell, met.
+  void half_cell(Dart d) {
+    if (i == 2) {
+      if (walk_face(d)) return;
+      stack = walked;
+      return traverse();
+    }
+    // A volume: its half-faces, joined by alpha_2.
+    seeds.assign(1, d);
+    while (!seeds.empty()) {
+      const Dart s = seeds.back();
+      seeds.pop_back();
+      if (met(s)) continue;
+      if (!walk_face(s)) {
+        stack = walked;
+        for (Dart x : seeds) stack.push_back(x), meet(x);
+        return traverse();
+      }
+      for (Dart x : walked) {
+        const Dart z = link[2][x];
+        if (z < cap && !met(z)) seeds.push_back(z);
+      }
+    }
+  }
+};
+
+}  // namespace
+
+size_t count_half_cells(const Map& g, int i) {
+  const int n = g.dimension();
+  if (g.is_omap() || (i != 2 && i != 3) || (n != i && n != i + 1))
+    throw Error(ErrorCode::Usage, "half-cells are half-faces or half-volumes of a G-map", "i = " + std::to_string(i));
+  Sweep s;
+  for (int j = 0; j < i; ++j) s.link[j] = g.links(j).data();
+  s.i = i;
+  s.cap = g.capacity();
+  s.bits.assign((size_t(s.cap) + 63) / 64, 0);
+  const Dart* across = n > i ? g.links(i + 1).data() : nullptr;
+  size_t halves = 0;
+  for (Dart d = 0; d < s.cap; ++d) {
+    if (s.met(d) || !g.alive(d)) continue;
+    // The cell's other half: a half-cell of its own (met in the sweep), or this one itself.
+    const Dart other = across ? across[d] : d;
+    const bool other_met = other >= s.cap || s.met(other);
+    s.half_cell(d);
+    halves += 1 + (other != d && !other_met && other < s.cap && s.met(other));
+  }
+  return halves;
+}
+
+}  // namespace gmr::replace
