@@ -21,10 +21,7 @@ void view_component(const Map& g, const scheme::ComponentInstance& c, const Orbi
       continue;
     }
     const Embedding<Vec3>& from = source[k]->values;
-    if (!view.fields[k]) view.fields[k].emplace(EmbeddingField{source[k]->arity, Embedding<Vec3>(from.name(), from.orbit_type())});
-    EmbeddingField& v = *view.fields[k];
-    v.arity = source[k]->arity;
-    v.values = Embedding<Vec3>(from.name(), from.orbit_type());
+    EmbeddingField& v = view.fields[k].emplace(EmbeddingField{source[k]->arity, Embedding<Vec3>(from.name(), from.orbit_type())});
     v.values.fit(view.map);
     for (uint32_t b = 0; b < sz; ++b) v.values.set_slot_unchecked(b, from.slot(c.darts[b]));
     v.values.reserve_values(from.num_values());
