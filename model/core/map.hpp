@@ -20,6 +20,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "model/core/generated_append.hpp"
 #include "model/core/map_spec.hpp"
 #include "model/core/orbit_type.hpp"
 
@@ -195,41 +196,9 @@ class ScopedMarker {
   bool clean_ = false;
 };
 
-namespace detail {
-// gen(x) for x = first, first + 1, ...: a forward iterator, so that vector::insert writes each
-// element once into its final place.
-template <class Gen>
-class GeneratedIterator {
- public:
-  using iterator_category = std::forward_iterator_tag;
-  using value_type = Dart;
-  using difference_type = std::ptrdiff_t;
-  using pointer = const Dart*;
-  using reference = Dart;
-  GeneratedIterator() = default;
-  GeneratedIterator(const Gen* gen, size_t x) : gen_(gen), x_(x) {}
-  Dart operator*() const { return (*gen_)(x_); }
-  GeneratedIterator& operator++() {
-    ++x_;
-    return *this;
-  }
-  GeneratedIterator operator++(int) {
-    GeneratedIterator old = *this;
-    ++x_;
-    return old;
-  }
-  bool operator==(const GeneratedIterator& o) const { return x_ == o.x_; }
-
- private:
-  const Gen* gen_ = nullptr;
-  size_t x_ = 0;
-};
-}  // namespace detail
-
 template <class Gen>
 void LinkAppender::append(size_t count, Gen&& gen) {
-  using It = detail::GeneratedIterator<std::remove_cvref_t<Gen>>;
-  links_.insert(links_.end(), It(&gen, 0), It(&gen, count));
+  append_generated(links_, count, gen);
 }
 
 template <class Fill>

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "model/replace/generated_append.hpp"
+#include "model/core/generated_append.hpp"
 
 namespace gmr::replace {
 

@@ -2,7 +2,7 @@
 
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
-#include "model/replace/generated_append.hpp"
+#include "model/core/generated_append.hpp"
 
 #include <algorithm>
 

@@ -9,30 +9,32 @@
 #include <type_traits>
 #include <vector>
 
-namespace gmr::replace {
+namespace gmr {
 
 namespace detail {
+// gen(x) for x = first, first + 1, ...: a forward iterator, so that vector::insert writes each
+// element once into its final place.
 template <class T, class Gen>
-class Generated {
+class GeneratedIterator {
  public:
   using iterator_category = std::forward_iterator_tag;
   using value_type = T;
   using difference_type = std::ptrdiff_t;
   using pointer = const T*;
   using reference = T;
-  Generated() = default;
-  Generated(const Gen* gen, size_t x) : gen_(gen), x_(x) {}
+  GeneratedIterator() = default;
+  GeneratedIterator(const Gen* gen, size_t x) : gen_(gen), x_(x) {}
   T operator*() const { return (*gen_)(x_); }
-  Generated& operator++() {
+  GeneratedIterator& operator++() {
     ++x_;
     return *this;
   }
-  Generated operator++(int) {
-    Generated old = *this;
+  GeneratedIterator operator++(int) {
+    GeneratedIterator old = *this;
     ++x_;
     return old;
   }
-  bool operator==(const Generated& o) const { return x_ == o.x_; }
+  bool operator==(const GeneratedIterator& o) const { return x_ == o.x_; }
 
  private:
   const Gen* gen_ = nullptr;
@@ -42,8 +44,8 @@ class Generated {
 
 template <class T, class Gen>
 void append_generated(std::vector<T>& v, size_t n, const Gen& gen) {
-  using It = detail::Generated<T, Gen>;
+  using It = detail::GeneratedIterator<T, Gen>;
   v.insert(v.end(), It(&gen, 0), It(&gen, n));
 }
 
-}  // namespace gmr::replace
+}  // namespace gmr
