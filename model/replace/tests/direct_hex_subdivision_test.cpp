@@ -18,13 +18,6 @@
 namespace gmr::replace {
 namespace {
 
-FlaggedMap positioned_polycube(const std::vector<Voxel>& voxels) {
-  FlaggedMap m{make_polycube(voxels), {}, {}};
-  m.flag.assign(m.map.capacity(), 1);
-  m.position = unit_hex_positions(m.map);
-  return m;
-}
-
 // The per-dart positions, rounded and sorted (a multiset invariant under dart renumbering).
 std::vector<std::array<long long, 3>> position_multiset(const FlaggedMap& m) {
   std::vector<std::array<long long, 3>> out;
@@ -37,7 +30,7 @@ std::vector<std::array<long long, 3>> position_multiset(const FlaggedMap& m) {
 }
 
 TEST(DirectHexSubdivision, UnitPositionsOfAPolycube) {
-  const FlaggedMap m = positioned_polycube({{0, 0, 0}, {1, 0, 0}});
+  const FlaggedMap m = testing::positioned_polycube({{0, 0, 0}, {1, 0, 0}});
   // 12 vertices at integer points; every dart of a vertex at the same place.
   std::vector<std::array<long long, 3>> points = position_multiset(m);
   points.erase(std::unique(points.begin(), points.end()), points.end());
@@ -46,7 +39,7 @@ TEST(DirectHexSubdivision, UnitPositionsOfAPolycube) {
 
 TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
   const std::vector<Voxel> voxels{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}};
-  const FlaggedMap input = positioned_polycube(voxels);
+  const FlaggedMap input = testing::positioned_polycube(voxels);
   FlaggedMap direct = subdivide_hexahedra(input);
   EXPECT_TRUE(is_valid(direct.map));
   EXPECT_EQ(direct.map.size(), 8 * input.map.size());
@@ -82,8 +75,8 @@ TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
   for (Precondition pre : {Precondition::CheckValidity, Precondition::AssumeValid}) {
-    FlaggedMap qr = positioned_polycube(voxels);
-    FlaggedMap direct = positioned_polycube(voxels);
+    FlaggedMap qr = testing::positioned_polycube(voxels);
+    FlaggedMap direct = testing::positioned_polycube(voxels);
     for (int level = 1; level <= 2; ++level) {
       direct = subdivide_hexahedra(direct);
       const size_t darts = qr.map.size();
@@ -113,7 +106,7 @@ TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
 TEST(DirectHexSubdivision, ValidityIsCheckedUnlessAssumed) {
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
-  FlaggedMap broken = positioned_polycube({{0, 0, 0}});
+  FlaggedMap broken = testing::positioned_polycube({{0, 0, 0}});
   broken.map.set_alpha(3, 0, 1);  // one direction only: not an involution
   EXPECT_THROW(query_replace(broken, store, 2), Error);
   EXPECT_NO_THROW(query_replace(broken, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid));

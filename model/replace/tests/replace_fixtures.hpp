@@ -9,6 +9,7 @@
 #include "model/core/orbit.hpp"
 #include "model/replace/edge_split.hpp"
 #include "model/replace/pattern_folder.hpp"
+#include "model/replace/unit_hex_positions.hpp"
 #include "model/testing/source_tree.hpp"
 
 namespace gmr::replace::testing {
@@ -27,6 +28,13 @@ inline Pattern pattern_file(const std::string& set, const std::string& name) {
 inline FlaggedMap all_flagged(Map g) {
   FlaggedMap m{std::move(g), {}, {}};
   m.flag.assign(m.map.capacity(), 1);
+  return m;
+}
+
+// A polycube with every dart flagged and the unit positions of its vertices.
+inline FlaggedMap positioned_polycube(const std::vector<Voxel>& voxels) {
+  FlaggedMap m = all_flagged(make_polycube(voxels));
+  m.position = unit_hex_positions(m.map);
   return m;
 }
 

@@ -17,13 +17,6 @@
 namespace gmr::replace {
 namespace {
 
-FlaggedMap positioned_voxels(const std::vector<Voxel>& voxels) {
-  FlaggedMap m{make_polycube(voxels), {}, {}};
-  m.flag.assign(m.map.capacity(), 1);
-  m.position = unit_hex_positions(m.map);
-  return m;
-}
-
 PatternStore hex_subdivision_patterns() {
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
@@ -53,7 +46,7 @@ const std::vector<Voxel> kSixVoxels{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}, 
 TEST(ReplaceOnly, HexSubdivisionIsQueryReplaceDartForDart) {
   const PatternStore store = hex_subdivision_patterns();
   const size_t split4 = index_of_pattern(store, "split4"), hex8 = index_of_pattern(store, "hex8");
-  FlaggedMap only = positioned_voxels(kSixVoxels), qr = only, direct = only;
+  FlaggedMap only = testing::positioned_polycube(kSixVoxels), qr = only, direct = only;
   for (int level = 1; level <= 2; ++level) {
     direct = subdivide_hexahedra(direct);
     split_all_edges(only, 2);
@@ -80,7 +73,7 @@ TEST(ReplaceOnly, HexSubdivisionIsQueryReplaceDartForDart) {
 TEST(ReplaceOnly, ListedCellsFromOtherStartDarts) {
   const PatternStore store = hex_subdivision_patterns();
   const size_t split4 = index_of_pattern(store, "split4"), hex8 = index_of_pattern(store, "hex8");
-  FlaggedMap listed = positioned_voxels(kSixVoxels);
+  FlaggedMap listed = testing::positioned_polycube(kSixVoxels);
   const FlaggedMap direct = subdivide_hexahedra(listed);
   split_all_edges(listed, 2);
   auto largest_flagged = [&](int cell_dim) {
@@ -109,7 +102,7 @@ TEST(ReplaceOnly, ListedCellsFromOtherStartDarts) {
 TEST(ReplaceOnly, CellNotMatchingFromItsDartIsLeftUntouched) {
   const PatternStore store = hex_subdivision_patterns();
   const size_t split4 = index_of_pattern(store, "split4");
-  FlaggedMap m = positioned_voxels({{0, 0, 0}, {1, 0, 0}});
+  FlaggedMap m = testing::positioned_polycube({{0, 0, 0}, {1, 0, 0}});
   const FlaggedMap before = m;
   const QueryReplaceReport r = replace_only(m, store, split4);
   EXPECT_EQ(r.unmatched.size(), r.cells);
@@ -134,7 +127,7 @@ TEST(ReplaceOnly, CellNotMatchingFromItsDartIsLeftUntouched) {
 TEST(ReplaceOnly, RefusesBadArgumentsBeforeAnyChange) {
   const PatternStore store = hex_subdivision_patterns();
   const size_t split4 = index_of_pattern(store, "split4"), hex8 = index_of_pattern(store, "hex8");
-  FlaggedMap m = positioned_voxels({{0, 0, 0}, {1, 0, 0}});
+  FlaggedMap m = testing::positioned_polycube({{0, 0, 0}, {1, 0, 0}});
   split_all_edges(m, 2);
   const FlaggedMap before = m;
   EXPECT_THROW(replace_only(m, store, store.patterns().size()), Error);
