@@ -64,13 +64,13 @@ class Evaluator {
   // value tables through pointers taken here (Evaluator::load).
   void memoise_collects(bool on);
 
-  // Memo mode: the values of p at the classes whose left node 0 is at nodes[0..n), into out, when
-  // p is one affine combination of node values (combines_node_values; evaluator_batch.cpp): run's
-  // values bit for bit, without a run per class. Returns the number of classes done: n, or the
-  // first class that fails (no dart, no value, wrong mass), which evaluate() then reports; 0 when
-  // p is not of that form or memo mode is off.
+  // Memo mode: the values of p at the classes whose left node 0 is at nodes[0..n), appended to out,
+  // when p is one affine combination of node values (combines_node_values; evaluator_batch.cpp):
+  // run's values bit for bit, without a run per class. Returns the number of classes done (values
+  // appended): n, or the first class that fails (no dart, no value, wrong mass), which evaluate()
+  // then reports; 0 when p is not of that form or memo mode is off.
   static bool combines_node_values(const Program& p);
-  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
+  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out) const;
 
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
@@ -161,7 +161,8 @@ class Evaluator {
   const Dart* held_links_[kMaxDim] = {};
   std::vector<HeldField> held_fields_;
   void hold_tables();
-  size_t combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
+  size_t combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target,
+                                  std::vector<Vec3>& out) const;
   std::vector<CollectMemo> memos_;
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.
