@@ -83,8 +83,8 @@ class Evaluator {
   Val checked(Val v, const Expr& e, ValueType target) const;
   [[noreturn]] __attribute__((noinline, cold)) void fail_mass(const Expr& e, double mass, ValueType target) const;
   Val body_value(const Expr& e);
-  void members(const Expr& e, std::vector<Val>& out);
-  bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
+  void members(const Expr& e, MemberSum& out);
+  bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, MemberSum& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
   Dart held_dart_of(const NodeRef& r, const Expr& e);
   Val load(const LoadRef& r);
@@ -104,7 +104,6 @@ class Evaluator {
   const std::string* where_ = nullptr;
   std::vector<std::vector<Dart>> scratch_;
   std::vector<uint32_t> slots_, sorted_;
-  std::vector<std::vector<Val>> vals_;  // multiset buffers per nesting depth
   struct CollectMemo {
     Function function;
     DimMask orbit;
@@ -124,7 +123,7 @@ class Evaluator {
   };
   const OrbitIds& orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;
-  void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
+  void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, MemberSum& out);
   Val member_value(const Expr& e, Dart x);
   bool list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit);
   bool listed_orbit(DimMask mo, Dart d, std::vector<Dart>& in_orbit) const;
@@ -136,7 +135,7 @@ class Evaluator {
   };
   std::vector<OrbitLists> lists_;
   bool body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
-                               std::vector<Val>& out);
+                               MemberSum& out);
   struct LastWalk {
     DimMask mask = 0;
     Dart dart = kNoDart;
