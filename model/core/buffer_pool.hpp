@@ -4,10 +4,14 @@
 // slots, orbit indices, classes, memoised values), and fresh memory is paid page by page on first
 // touch (a page fault per 4 KiB; several microseconds each on a virtual machine, where this is most
 // of a subdivision's time: docs/embeddings.md "Measured"). Applying a scheme again and again would
-// pay it at every call. So:
-//  * take_buffer / give_buffer: a per-thread pool of large vectors (at least 1 MiB of storage; at
+// pay it at every call. Small maps pay it too: each application's tables, freed to malloc, leave
+// the top of the heap free, glibc gives it back to the system (brk, with a TLB flush) and the next
+// application faults the same pages in again, which made a subdivision of a 20-face mesh ten
+// times slower than its work (docs/embeddings.md "Small meshes"). So:
+//  * take_buffer / give_buffer: a per-thread pool of vectors (from one page, 4 KiB, of storage; at
 //    most 32 per element type, the smallest dropped first); take_buffer(n) returns the smallest
-//    pooled vector holding n elements, emptied, or an empty vector when none does;
+//    pooled vector holding n elements, emptied, or an empty vector when none does or when the
+//    smallest is more than twice as large as needed (a small table must not keep a large one);
 //  * Pooled<T>: a scratch vector taken from the pool (reserve(n) takes one with room for n) and
 //    given back when destroyed.
 // Map and Embedding give their large arrays back when destroyed and take them when they grow, so
@@ -23,6 +27,9 @@
 namespace gmr {
 
 namespace detail {
+constexpr size_t kPoolMinBytes = size_t(1) << 12;  // a page
+constexpr size_t kPoolMaxBuffers = 32;              // per element type
+constexpr size_t kPoolMaxSlack = 2;                 // capacity handed out / capacity needed
 // Set when the thread's pool is destroyed (a trivially destructible thread_local, readable until
 // the thread ends): a map destroyed later (a static one, or a thread_local made before the pool)
 // then frees its arrays instead of giving them to a pool that no longer exists.
@@ -53,7 +60,8 @@ std::vector<T> take_buffer(size_t min_capacity = 0) {
   size_t best = p.size();
   for (size_t k = 0; k < p.size(); ++k)
     if (p[k].capacity() >= min_capacity && (best == p.size() || p[k].capacity() < p[best].capacity())) best = k;
-  if (best == p.size()) return {};
+  const size_t needed = std::max(min_capacity, detail::kPoolMinBytes / sizeof(T));
+  if (best == p.size() || p[best].capacity() > detail::kPoolMaxSlack * needed) return {};
   std::vector<T> v = std::move(p[best]);
   p.erase(p.begin() + static_cast<std::ptrdiff_t>(best));
   v.clear();
@@ -62,14 +70,12 @@ std::vector<T> take_buffer(size_t min_capacity = 0) {
 
 template <class T>
 void give_buffer(std::vector<T>&& v) {
-  constexpr size_t kMinBytes = size_t(1) << 20;
-  constexpr size_t kMaxBuffers = 32;
-  if (v.capacity() * sizeof(T) < kMinBytes) return;
+  if (v.capacity() * sizeof(T) < detail::kPoolMinBytes) return;
   auto* pool = detail::buffer_pool<T>();
   if (!pool) return;  // v frees its storage
   auto& p = *pool;
   p.push_back(std::move(v));
-  if (p.size() > kMaxBuffers) {
+  if (p.size() > detail::kPoolMaxBuffers) {
     auto smallest = std::min_element(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.capacity() < b.capacity(); });
     p.erase(smallest);
   }

@@ -13,6 +13,7 @@
 
 #include "model/core/buffer_pool.hpp"
 #include "model/core/error.hpp"
+#include "model/core/generated_append.hpp"
 #include "model/core/huge_pages.hpp"
 #include "model/core/map.hpp"
 #include "model/core/orbit.hpp"
@@ -78,6 +79,13 @@ class Embedding {
   }
   // Sizes the slot table to g's capacity (new darts without value), for set_slot_unchecked.
   void fit(const Map& g) { grow(g); }
+  // The slots of the next n darts (from slots().size() on): gen(x) for x = 0..n-1, each written
+  // once (generated_append.hpp; fit would first write kNoValue).
+  template <class Gen>
+  void append_slots(size_t n, const Gen& gen) {
+    if (slot_.capacity() < slot_.size() + n) regrow(slot_, std::max(slot_.size() + n, 2 * slot_.size()));
+    append_generated(slot_, n, gen);
+  }
   // set_slot without sizing: d must be below the size reached by an earlier set_slot/set.
   void set_slot_unchecked(Dart d, uint32_t s) { slot_[d] = s; }
   const T& value(uint32_t s) const { return values_[s]; }

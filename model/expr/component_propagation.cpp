@@ -13,6 +13,16 @@ namespace gmr::expr {
 
 namespace {
 constexpr uint32_t kNone = UINT32_MAX;
+
+// Whether e collects or enumerates the orbits of type `dims` somewhere (the orbits the evaluator
+// lists: the classes' orbit lists are kept for them only).
+bool enumerates(const Expr& e, DimMask dims) {
+  if ((e.op == Expr::Op::Collect || e.op == Expr::Op::Comprehension) && e.word.empty() && e.orbit_mask == dims)
+    return true;
+  for (const auto& a : e.args)
+    if (enumerates(*a, dims)) return true;
+  return false;
+}
 }
 
 // For each field: the R nodes joined by explicit arcs of dimensions in <o_pi> (one kind per
@@ -59,6 +69,8 @@ void EmbeddingPropagation::derive_class_kinds() {
       }
       for (size_t p = 0; p < t.size(); ++p)
         if (k.dims >> t[p] & 1u) k.positions.push_back(p);
+      for (const auto& per_node : cs_.right)
+        for (const auto& x : per_node) k.listed = k.listed || (x && enumerates(*x, k.dims));
       kinds_[fi].push_back(std::move(k));
     }
   }
@@ -83,12 +95,12 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
     // Under one or two involutions an orbit is a pair, a path or an alternating cycle: walked
     // without a stack, from b along p then q then p ..., and the other way when it ends. Two
     // positions: p is the one of the higher dimension, the order of Evaluator::list_two_dims, and
-    // the orbit dart lists of the classes are kept in that order (orbit_list, orbit_start).
+    // orbit dart lists of the classes of a listed kind are kept in that order (orbit_list, orbit_start).
     size_t p0 = k.positions.empty() ? 0 : k.positions[0];
     size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
     const OrbitType& t = cs_.scheme->left.nodes[cs_.scheme->hook_nodes()[0]].label;
     if (t[p1] > t[p0]) std::swap(p0, p1);
-    const bool lists = p0 != p1;
+    const bool lists = p0 != p1 && k.listed;
     uint32_t* list = nullptr;
     size_t listed = 0;
     k.orbit_start.reserve(sz + 1);
@@ -201,11 +213,9 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
       if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
         // One affine combination of node values (Loop's edge mask): every class in one loop; the
         // view's node dart at a class's first orbit dart b is b.
-        k.values->resize(count);
-        const size_t done = ev.combine_classes(*k.program, k.first_b->data(), count, t, k.values->data());
+        const size_t done = ev.combine_classes(*k.program, k.first_b->data(), count, t, *k.values);
         evaluations_ += done;
-        if (done == count) continue;
-        k.values->resize(done);  // the class that fails is evaluated below, for its error
+        if (done == count) continue;  // else the class that fails is evaluated below, for its error
       }
       for (size_t id = k.values->size(); id < count; ++id) {
         const uint32_t b = (*k.first_b)[id];
@@ -225,18 +235,18 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
     }
 }
 
-// Step 3 on one kind without expression: each class takes the slot of its preserved darts. When
-// they hold different slots, the one taken is the general path's: the first met by the traversal
-// of the orbit of the result from the class's first dart in comatch order (its first node, its
-// first orbit dart).
-void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f,
-                                          ClassKind& k) {
+// Step 3 on one kind without expression: the slot each class takes, into chosen (per class): the
+// slot of its preserved darts. When they hold different slots, the one taken is the general
+// path's: the first met by the traversal of the orbit of the result from the class's first dart in
+// comatch order (its first node, its first orbit dart).
+void EmbeddingPropagation::inherited_slots(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f,
+                                           ClassKind& k, std::vector<uint32_t>& chosen) {
   constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
   Embedding<Vec3>& E = f.values;
   const size_t sz = c.size();
   const std::vector<uint32_t>& first_b = *k.first_b;
   const size_t classes = first_b.size();
-  std::vector<uint32_t> chosen(classes, kNoValue);
+  chosen.assign(classes, kNoValue);
   std::vector<bool> mixed(classes, false), reported(classes, false);
   auto preserved = [&](uint32_t v) { return c.engine->added_rank(v) == scheme::SchemeEngine::kAdded; };
   for (uint32_t v : k.nodes) {
@@ -281,34 +291,64 @@ void EmbeddingPropagation::inherit_values(const Map& g, const scheme::ComponentI
       if (chosen[id] == kNoValue)
         report("E-no-value", f, c.comatch(k.nodes[0], first_b[id]),
                "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
-  for (uint32_t v : k.nodes)
-    for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.comatch(v, b), chosen[(*k.class_of)[b]]);
 }
 
+// Steps 2 and 3: every dart of the result in the component takes the slot of its class, in its
+// node's kind: offset + class for a computed kind (its values appended), chosen[class] for an
+// inherited one. Preserved darts are written in place, computed kinds first (the traversal of a
+// mixed inherited class reads them), then each inherited kind; the added darts' slots, rank by
+// rank, are appended to the slot table when it ends where they start.
 void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentInstance& c) {
+  constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
   const size_t sz = c.size();
+  const size_t nr = cs_.scheme->right.size();
+  auto preserved = [&](uint32_t v) { return c.engine->added_rank(v) == scheme::SchemeEngine::kAdded; };
   for (size_t fi = 0; fi < m_.fields.size(); ++fi) {
     EmbeddingField& f = m_.fields[fi];
     Embedding<Vec3>& E = f.values;
-    E.fit(g);
-    // 2. computed values: one slot per class, written node by node.
-    for (ClassKind& k : kinds_[fi]) {
-      if (k.declaration < 0) continue;
-      const auto base = static_cast<uint32_t>(E.num_values());
-      E.reserve_values(E.num_values() + k.values->size());
-      for (const Vec3& x : *k.values) E.add_value(x);
-      for (uint32_t v : k.nodes) {
-        if (c.engine->added_rank(v) == scheme::SchemeEngine::kAdded) {
-          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(c.darts[b], base + (*k.class_of)[b]);
-        } else {
-          const Dart first = c.comatch(v, 0);
-          for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(first + b, base + (*k.class_of)[b]);
-        }
+    std::vector<ClassKind>& kinds = kinds_[fi];
+    if (E.slots().size() < c.base) E.append_slots(c.base - E.slots().size(), [](size_t) { return kNoValue; });
+    std::vector<uint32_t> offset(kinds.size(), 0);
+    chosen_.resize(std::max(chosen_.size(), kinds.size()));
+    std::vector<uint32_t> kind_of(nr, 0);
+    auto slot_of = [&](size_t ki) {
+      const uint32_t* const class_of = kinds[ki].class_of->data();
+      const uint32_t* const table = kinds[ki].declaration < 0 ? chosen_[ki].data() : nullptr;
+      const uint32_t off = offset[ki];
+      return [=](uint32_t b) { return table ? table[class_of[b]] : off + class_of[b]; };
+    };
+    auto write_preserved = [&](size_t ki) {
+      const auto slot = slot_of(ki);
+      for (uint32_t v : kinds[ki].nodes)
+        if (preserved(v)) c.for_each_dart([&](Dart x, uint32_t b) { E.set_slot_unchecked(x, slot(b)); });
+    };
+    for (size_t ki = 0; ki < kinds.size(); ++ki) {
+      for (uint32_t v : kinds[ki].nodes) kind_of[v] = static_cast<uint32_t>(ki);
+      if (kinds[ki].declaration < 0) continue;
+      offset[ki] = static_cast<uint32_t>(E.num_values());
+      E.reserve_values(E.num_values() + kinds[ki].values->size());
+      for (const Vec3& x : *kinds[ki].values) E.add_value(x);
+      write_preserved(ki);
+    }
+    for (size_t ki = 0; ki < kinds.size(); ++ki) {
+      if (kinds[ki].declaration >= 0) continue;
+      inherited_slots(g, c, f, kinds[ki], chosen_[ki]);
+      write_preserved(ki);
+    }
+    std::vector<uint32_t> node_of_rank(c.engine->added_count());
+    for (uint32_t v = 0; v < nr; ++v)
+      if (!preserved(v)) node_of_rank[c.engine->added_rank(v)] = v;
+    const bool appended = E.slots().size() == c.base;
+    if (!appended) E.fit(g);
+    for (uint32_t v : node_of_rank) {
+      const auto slot = slot_of(kind_of[v]);
+      if (appended) {
+        E.append_slots(sz, [&](size_t b) { return slot(static_cast<uint32_t>(b)); });
+      } else {
+        const Dart first = c.comatch(v, 0);
+        for (uint32_t b = 0; b < sz; ++b) E.set_slot_unchecked(first + b, slot(b));
       }
     }
-    // 3. inherited values.
-    for (ClassKind& k : kinds_[fi])
-      if (k.declaration < 0) inherit_values(g, c, f, k);
   }
 }
 

@@ -22,8 +22,7 @@ void view_component(const Map& g, const scheme::ComponentInstance& c, const Orbi
     }
     const Embedding<Vec3>& from = source[k]->values;
     EmbeddingField& v = view.fields[k].emplace(EmbeddingField{source[k]->arity, Embedding<Vec3>(from.name(), from.orbit_type())});
-    v.values.fit(view.map);
-    for (uint32_t b = 0; b < sz; ++b) v.values.set_slot_unchecked(b, from.slot(c.darts[b]));
+    v.values.append_slots(sz, [&](size_t b) { return from.slot(c.darts[b]); });
     v.values.reserve_values(from.num_values());
     for (const Vec3& x : from.values()) v.values.add_value(x);
   }

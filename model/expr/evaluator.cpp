@@ -37,7 +37,6 @@ Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::ve
     : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
   for (const EmbeddingSignature& s : sigs_) types_.push_back(s.type);
   scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
-  vals_.resize(kMaxNesting + 1);
 }
 
 void Evaluator::memoise_collects(bool on) {
@@ -219,7 +218,7 @@ Val Evaluator::field_value(int embedding, Dart d, const Expr& e) {
   return from_storage(f->values.value(slot), s.type);
 }
 
-void Evaluator::members(const Expr& e, std::vector<Val>& out) {
+void Evaluator::members(const Expr& e, MemberSum& out) {
   const Dart d = memo_on_ ? held_dart_of(e.ref, e) : dart_of(e.ref, e);
   const DimMask mo = e.orbit_mask;
   const DimMask mc = e.class_mask;
@@ -363,7 +362,7 @@ Val Evaluator::body_value(const Expr& e) {
 // marking each one met. The first darts are kept with the walk: a second comprehension over the
 // same walk and <c> (Loop's count and middle around a vertex) reuses them. A constant body (count's
 // [0 | ...]) is not evaluated per member.
-void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out) {
+void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, MemberSum& out) {
   const size_t depth = vars_.size();
   LastWalk& last = last_walk_[depth];
   const int kept = last.members[0] == mc ? 0 : last.members[1] == mc ? 1 : -1;
@@ -395,9 +394,7 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
     if (constant) {
       const Val v = b.begin ? Val{b.begin->value[0], b.begin->value[1], b.begin->value[2], b.begin->value[3]}
                             : Val{e.args[0]->number, 0, 0, 0};
-      // Written member by member: GCC's code for insert(end, n, v) stalls on every copy (a byte
-      // of v stored, then v reloaded whole from the stack).
-      for (size_t k = 0; k < firsts.size(); ++k) out.push_back(v);
+      for (size_t k = 0; k < firsts.size(); ++k) out.push_back(v);  // the sum in member order, as the body's
       return;
     }
   }
@@ -413,7 +410,7 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
 // the member's value computed (and the table filled) the usual way when it is not there yet. The
 // values are member_value's. Returns false for any other body.
 bool Evaluator::body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
-                                        std::vector<Val>& out) {
+                                        MemberSum& out) {
   const size_t depth = vars_.size();
   if (body.op == Instruction::Op::Load) {
     const LoadRef& l = loads_[body.index];
@@ -451,7 +448,7 @@ bool Evaluator::body_of_one_instruction(const Instruction& body, const std::vect
 // pi-orbit. When they hold pairwise different value slots, they are pairwise different pi-orbits
 // (every pi-orbit holds one slot, see the header) and the collect is their values, in order;
 // otherwise (two pieces share a slot) returns false and the caller marks whole pi-orbits.
-bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out) {
+bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, MemberSum& out) {
   const size_t depth = vars_.size();
   const std::vector<Dart>& in_orbit = scratch_[3 * depth];
   std::vector<Dart>& pieces = scratch_[3 * depth + 1];
@@ -587,15 +584,12 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
 // collect's <o>-orbit has no value there yet).
 __attribute__((always_inline)) inline Val Evaluator::aggregate_into(const Expr& e, CollectMemo* cm, const Instruction* body, const Instruction* body_end) {
   const Expr& arg = *e.args[0];
-  // One buffer per nesting depth: members() of a deeper comprehension uses the next one.
   const size_t depth = vars_.size();
-  std::vector<Val>& m = vals_[depth];
-  m.clear();
+  MemberSum m;
   bodies_[depth] = {body, body_end};
   members(arg, m);
-  Val acc;
-  for (const Val& v : m) acc = add(acc, v);
-  const size_t n = m.size();
+  const Val acc = m.sum;
+  const size_t n = m.n;
   if (e.function == Function::Middle && n == 0)
     fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
   const Val r = ops::finish_aggregate(e.function, acc, n);

@@ -64,13 +64,13 @@ class Evaluator {
   // value tables through pointers taken here (Evaluator::load).
   void memoise_collects(bool on);
 
-  // Memo mode: the values of p at the classes whose left node 0 is at nodes[0..n), into out, when
-  // p is one affine combination of node values (combines_node_values; evaluator_batch.cpp): run's
-  // values bit for bit, without a run per class. Returns the number of classes done: n, or the
-  // first class that fails (no dart, no value, wrong mass), which evaluate() then reports; 0 when
-  // p is not of that form or memo mode is off.
+  // Memo mode: the values of p at the classes whose left node 0 is at nodes[0..n), appended to out,
+  // when p is one affine combination of node values (combines_node_values; evaluator_batch.cpp):
+  // run's values bit for bit, without a run per class. Returns the number of classes done (values
+  // appended): n, or the first class that fails (no dart, no value, wrong mass), which evaluate()
+  // then reports; 0 when p is not of that form or memo mode is off.
   static bool combines_node_values(const Program& p);
-  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
+  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out) const;
 
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
@@ -83,8 +83,8 @@ class Evaluator {
   Val checked(Val v, const Expr& e, ValueType target) const;
   [[noreturn]] __attribute__((noinline, cold)) void fail_mass(const Expr& e, double mass, ValueType target) const;
   Val body_value(const Expr& e);
-  void members(const Expr& e, std::vector<Val>& out);
-  bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, std::vector<Val>& out);
+  void members(const Expr& e, MemberSum& out);
+  bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, MemberSum& out);
   Dart dart_of(const NodeRef& r, const Expr& e);
   Dart held_dart_of(const NodeRef& r, const Expr& e);
   Val load(const LoadRef& r);
@@ -104,7 +104,6 @@ class Evaluator {
   const std::string* where_ = nullptr;
   std::vector<std::vector<Dart>> scratch_;
   std::vector<uint32_t> slots_, sorted_;
-  std::vector<std::vector<Val>> vals_;  // multiset buffers per nesting depth
   struct CollectMemo {
     Function function;
     DimMask orbit;
@@ -124,7 +123,7 @@ class Evaluator {
   };
   const OrbitIds& orbit_ids(DimMask mask);
   std::vector<OrbitIds> ids_;
-  void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, std::vector<Val>& out);
+  void memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, MemberSum& out);
   Val member_value(const Expr& e, Dart x);
   bool list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit);
   bool listed_orbit(DimMask mo, Dart d, std::vector<Dart>& in_orbit) const;
@@ -136,7 +135,7 @@ class Evaluator {
   };
   std::vector<OrbitLists> lists_;
   bool body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
-                               std::vector<Val>& out);
+                               MemberSum& out);
   struct LastWalk {
     DimMask mask = 0;
     Dart dart = kNoDart;
@@ -161,7 +160,8 @@ class Evaluator {
   const Dart* held_links_[kMaxDim] = {};
   std::vector<HeldField> held_fields_;
   void hold_tables();
-  size_t combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const;
+  size_t combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target,
+                                  std::vector<Vec3>& out) const;
   std::vector<CollectMemo> memos_;
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.

@@ -35,7 +35,8 @@ struct Term {
 
 }  // namespace
 
-size_t Evaluator::combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, Vec3* out) const {
+size_t Evaluator::combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target,
+                                  std::vector<Vec3>& out) const {
   if (!memo_on_ || !combines_node_values(p)) return 0;
   const Instruction& ins = p.code[0];
   const LoadRef* const loads = p.loads.data() + ins.index;
@@ -69,14 +70,14 @@ size_t Evaluator::combine_classes(const Program& p, const Dart* nodes, size_t n,
       y = y + v[1] * term.weight;
       z = z + v[2] * term.weight;
     }
-    out[j] = {x, y, z};
+    out.push_back({x, y, z});
   }
   return n;
 }
 
 // combine_classes with the four lanes of run (scalar fields among the terms).
 size_t Evaluator::combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target,
-                                           Vec3* out) const {
+                                           std::vector<Vec3>& out) const {
   const Instruction& ins = p.code[0];
   const LoadRef* const loads = p.loads.data() + ins.index;
   const Dart cap = g_.capacity();
@@ -96,7 +97,7 @@ size_t Evaluator::combine_classes_in_lanes(const Program& p, const Dart* nodes, 
     }
     if ((target == ValueType::Point && std::fabs(acc.w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(acc.w) > 1e-9))
       return j;
-    out[j] = to_storage(acc);
+    out.push_back(to_storage(acc));
   }
   return n;
 }

@@ -90,8 +90,10 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     uint32_t expression_node = 0;    // its R node
     Pooled<uint32_t> class_of;       // per orbit dart b: the class (computed before the rewrite)
     Pooled<uint32_t> first_b;        // per class: its first orbit dart
-    // Kinds of two positions: the orbit darts of each class in the order of Evaluator::list_two_dims
-    // from its first one, class by class (class id from orbit_start[id] to orbit_start[id + 1]).
+    // Kinds of two positions whose orbits an expression enumerates (listed): the orbit darts of each
+    // class in the order of Evaluator::list_two_dims from its first one, class by class (class id
+    // from orbit_start[id] to orbit_start[id + 1]).
+    bool listed = false;
     Pooled<uint32_t> orbit_list;
     Pooled<uint32_t> orbit_start;
     Pooled<Vec3> values;             // per class: the value (computed classes)
@@ -99,7 +101,8 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   };
   void derive_class_kinds();
   uint32_t label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k);
-  void inherit_values(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f, ClassKind& k);
+  void inherited_slots(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f, ClassKind& k,
+                       std::vector<uint32_t>& chosen);
   std::vector<std::vector<ClassKind>> kinds_;  // per field, in order of expression node
   bool kinds_derived_ = false;
 
@@ -111,6 +114,7 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   size_t issue_count_ = 0, evaluations_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<Dart> stack_, touched_, orbit_darts_;
+  std::vector<std::vector<uint32_t>> chosen_;  // per kind without expression: its classes' slots
   ComponentView view_;  // the component evaluated (whole components, component_view.hpp)
   bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };

@@ -18,6 +18,20 @@ struct Val {
 
 namespace ops {
 inline Val add(const Val& a, const Val& b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
+}  // namespace ops
+
+// The multiset of an aggregate's members kept as all that middle, sum and count read of it: the
+// sum of the values in the order they are met, and their number (the members are not stored).
+struct MemberSum {
+  Val sum;
+  size_t n = 0;
+  void push_back(const Val& v) {
+    sum = ops::add(sum, v);
+    ++n;
+  }
+};
+
+namespace ops {
 inline Val sub(const Val& a, const Val& b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w}; }
 inline Val scale(const Val& a, double k) { return {a.x * k, a.y * k, a.z * k, a.w * k}; }
 inline Val neg(const Val& a) { return scale(a, -1.0); }

@@ -166,10 +166,10 @@ void write_preserved_links(Map& g, const SchemeEngine& e, const ComponentInstanc
       Dart* l = g.link_data(a.dim);
       const uint32_t rw = e.added_rank(w);
       if (rw == SchemeEngine::kAdded) {  // a loop on the preserved node
-        for (uint32_t b = 0; b < sz; ++b) l[darts[b]] = darts[b];
+        c.for_each_dart([&](Dart x, uint32_t) { l[x] = x; });
       } else {
         const Dart other = c.comatch(w, 0);
-        for (uint32_t b = 0; b < sz; ++b) l[darts[b]] = other + b;
+        c.for_each_dart([&](Dart x, uint32_t b) { l[x] = other + b; });
       }
     }
 }
@@ -203,7 +203,7 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
     rewritten += sz;
     const std::span<const Dart> orbit(w.darts.data(), sz);
     ComponentInstance c{&engine, orbit, std::span<const uint32_t>(w.nb.data(), sz * t.size()), t.size(), &w.index,
-                        g.capacity()};
+                        g.capacity(), sz == live};
     if (observer) observer->before_rewrite(g, c);
     if (engine.added_count() > 0) c.base = add_rewritten_darts(g, engine, c, links);  // 5, 6
     write_preserved_links(g, engine, c, t);                                             // 6

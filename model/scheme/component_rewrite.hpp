@@ -40,8 +40,23 @@ struct ComponentInstance {
   size_t arity = 0;
   const std::vector<uint32_t>* index = nullptr;  // index[x] = b for a dart x of the component
   Dart base = 0;                                 // the first added dart (valid after the rewrite)
+  bool whole_map = false;                        // the component holds every live dart of the map
 
   size_t size() const { return darts.size(); }
+  // f(x, b) for every dart x = O.darts[b] of the component: in dart order when the component is
+  // the whole map (writes to per-dart arrays are then sequential; in b order they land anywhere),
+  // else in b order.
+  template <class F>
+  void for_each_dart(F&& f) const {
+    if (whole_map) {
+      const uint32_t* const ix = index->data();
+      const size_t n = index->size();
+      for (Dart x = 0; x < n; ++x)
+        if (ix[x] != kNone) f(x, ix[x]);
+    } else {
+      for (uint32_t b = 0; b < darts.size(); ++b) f(darts[b], b);
+    }
+  }
   uint32_t neighbor(uint32_t b, size_t p) const { return nb[b * arity + p]; }
   // The dart of the result for R node v at orbit dart b.
   Dart comatch(uint32_t v, uint32_t b) const {

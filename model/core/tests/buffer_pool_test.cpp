@@ -15,9 +15,37 @@ TEST(BufferPool, TakesTheSmallestBufferThatHoldsTheRequest) {
   const std::vector<double> v = take_buffer<double>(300000);
   EXPECT_GE(v.capacity(), size_t(1) << 19);
   EXPECT_TRUE(v.empty());
-  const std::vector<double> w = take_buffer<double>(1000);
+  const std::vector<double> w = take_buffer<double>(size_t(1) << 17);
   EXPECT_GE(w.capacity(), size_t(1) << 18);
   EXPECT_LT(w.capacity(), size_t(1) << 19);
+}
+
+// A request does not take a pooled buffer more than twice as large as it needs: a small map built
+// after a large one does not keep the large one's arrays.
+TEST(BufferPool, LeavesBuffersFarLargerThanTheRequest) {
+  struct Link {  // a pool of its own
+    uint32_t d;
+  };
+  std::vector<Link> large(size_t(1) << 20);  // 4 MiB
+  const Link* const data = large.data();
+  give_buffer(std::move(large));
+  EXPECT_EQ(take_buffer<Link>(1000).capacity(), 0u);
+  EXPECT_EQ(take_buffer<Link>((size_t(1) << 19) - 1).capacity(), 0u);
+  EXPECT_EQ(take_buffer<Link>(size_t(1) << 19).data(), data);
+}
+
+// Tables from one page up are kept (the tables of an application on a small map are reused by the
+// next one instead of going back to malloc); smaller ones are freed.
+TEST(BufferPool, KeepsBuffersFromOnePageUp) {
+  struct Cell {  // 32 bytes, and a pool of its own
+    double v[4];
+  };
+  std::vector<Cell> page(128);  // 4 KiB
+  const Cell* const data = page.data();
+  give_buffer(std::move(page));
+  EXPECT_EQ(take_buffer<Cell>(100).data(), data);
+  give_buffer(std::vector<Cell>(64));  // 2 KiB
+  EXPECT_EQ(take_buffer<Cell>(10).capacity(), 0u);
 }
 
 // A map that outlives its thread's pool (made before the pool, so destroyed after it, as a static
@@ -26,7 +54,7 @@ TEST(BufferPool, TakesTheSmallestBufferThatHoldsTheRequest) {
 TEST(BufferPool, AMapDestroyedAfterThePoolFreesItsArrays) {
   std::thread([] {
     thread_local Map outliving(2, MapKind::GMap);  // constructed first: destroyed last
-    outliving.add_darts(size_t(1) << 19);  // link arrays above the pool's 1 MiB minimum; the
+    outliving.add_darts(size_t(1) << 19);  // link arrays the pool keeps; the
                                            // pool is constructed here, after the map
     Map scratch(2, MapKind::GMap);
     scratch.add_darts(size_t(1) << 19);

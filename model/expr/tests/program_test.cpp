@@ -417,8 +417,9 @@ TEST(ExpressionProgram, CombinationsOfManyClassesGiveRunsValuesAndStopAtTheFirst
       one.memoise_collects(true);
       many.memoise_collects(true);
       const std::vector<Dart> darts = s.g.darts();
-      std::vector<Vec3> out(darts.size());
-      const size_t done = many.combine_classes(p, darts.data(), darts.size(), t, out.data());
+      std::vector<Vec3> out;
+      const size_t done = many.combine_classes(p, darts.data(), darts.size(), t, out);
+      ASSERT_EQ(out.size(), done) << code;
       for (size_t j = 0; j < darts.size(); ++j) {
         const Outcome a = outcome(one, p, darts[j], t);
         const std::string where = code + ", seed " + std::to_string(seed) + ", dart " + std::to_string(darts[j]);
