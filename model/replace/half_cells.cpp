@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "model/core/error.hpp"
+#include "model/replace/word_traversal.hpp"
 
 namespace gmr::replace {
 
@@ -88,8 +89,9 @@ size_t count_half_cells(const Map& g, int i) {
   s.bits.assign((size_t(s.cap) + 63) / 64, 0);
   const Dart* across = n > i ? g.links(i + 1).data() : nullptr;
   size_t halves = 0;
-  for (Dart d = 0; d < s.cap; ++d) {
-    if (s.met(d) || !g.alive(d)) continue;
+  const MetBits met{s.bits.data(), s.cap};
+  for (Dart d = met.next_clear(0); d < s.cap; d = met.next_clear(d + 1)) {
+    if (!g.alive(d)) continue;
     // The cell's other half: a half-cell of its own (met in the sweep), or this one itself.
     const Dart other = across ? across[d] : d;
     const bool other_met = other >= s.cap || s.met(other);

@@ -97,6 +97,29 @@ TEST(WordTraversal, RefusesOtherWordsAndLeavesNothingMet) {
   EXPECT_TRUE(follow_word(digon, 2, 0, wd.data(), 4, none, small.met(digon.capacity()), out2.data()));
 }
 
+// The sweep's next unmet dart (MetBits::next_clear) is the first clear bit at or after a dart, as
+// a bit-by-bit scan finds it: sizes around word ends, bits set at random and in full words.
+TEST(WordTraversal, NextClearIsTheFirstUnmetDartFromAPlace) {
+  std::mt19937 rng(7);
+  for (Dart n : {1u, 63u, 64u, 65u, 128u, 130u, 200u}) {
+    for (int density : {0, 50, 95, 100}) {
+      Bits b(n);
+      const MetBits met = b.met(n);
+      for (Dart x = 0; x < n; ++x)
+        if (int(rng() % 100) < density) met.set(x);
+      for (Dart from = 0; from <= n + 1; ++from) {
+        Dart expected = n;
+        for (Dart x = from; x < n; ++x)
+          if (!met.test(x)) {
+            expected = x;
+            break;
+          }
+        EXPECT_EQ(met.next_clear(from), expected) << n << " " << density << " " << from;
+      }
+    }
+  }
+}
+
 // The half-cells of a map: per i-cell (<0..i-1, i+1>-orbit), two when alpha_{i+1} is not free,
 // else one: on closed and open surfaces, a map with deleted darts, a polycube (faces shared or
 // not, volumes) and a 2-G-map.
