@@ -173,10 +173,35 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   return r;
 }
 
-size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
+namespace {
+
+// The largest interior of the store's patterns of dimension cell_dim (0: none).
+size_t largest_interior(const PatternStore& store, int cell_dim) {
   size_t most = 0;
   for (const Pattern& p : store.patterns())
     if (p.cell_dim == cell_dim) most = std::max(most, p.interior_darts.size());
+  return most;
+}
+
+}  // namespace
+
+size_t replacement_room(const Map& g, const PatternStore& store, const std::vector<int>& cell_dims) {
+  const bool faces = std::count(cell_dims.begin(), cell_dims.end(), 2) == 1;
+  const bool volumes = std::count(cell_dims.begin(), cell_dims.end(), 3) == 1;
+  const size_t most_faces = largest_interior(store, 2), most_volumes = largest_interior(store, 3);
+  const bool together = faces && volumes && most_faces && most_volumes && !g.is_omap() && g.dimension() == 3;
+  size_t room = 0;
+  if (together) {
+    const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
+    room = h.faces * most_faces + h.volumes * most_volumes;
+  }
+  for (int c : cell_dims)
+    if (!together || (c != 2 && c != 3)) room += replacement_room(g, store, c);
+  return room;
+}
+
+size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
+  const size_t most = largest_interior(store, cell_dim);
   if (most == 0) return 0;
   const int n = g.dimension();
   if (!g.is_omap() && (cell_dim == 2 || cell_dim == 3) && (n == cell_dim || n == cell_dim + 1))

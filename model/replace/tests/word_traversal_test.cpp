@@ -122,7 +122,8 @@ TEST(WordTraversal, NextClearIsTheFirstUnmetDartFromAPlace) {
 
 // The half-cells of a map: per i-cell (<0..i-1, i+1>-orbit), two when alpha_{i+1} is not free,
 // else one: on closed and open surfaces, a map with deleted darts, a polycube (faces shared or
-// not, volumes) and a 2-G-map.
+// not, volumes) and a 2-G-map; in 3-G-maps the half-faces and half-volumes counted in one sweep
+// too.
 size_t halves_by_orbits(const Map& g, int i) {
   size_t h = 0;
   for (Dart d : orbit_representatives(g, cell_type(g, i))) h += g.dimension() > i && !g.is_free(i + 1, d) ? 2 : 1;
@@ -165,7 +166,13 @@ TEST(HalfCells, CountIsTheCellsWithTheirTwoSides) {
       if (g.dimension() != i && g.dimension() != i + 1) continue;
       EXPECT_EQ(count_half_cells(g, i), halves_by_orbits(g, i)) << g.dimension() << " " << i << " " << g.size();
     }
+    if (g.dimension() == 3) {  // both in one sweep (the free-dart maps: the faces swept apart)
+      const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
+      EXPECT_EQ(h.faces, halves_by_orbits(g, 2)) << g.size();
+      EXPECT_EQ(h.volumes, halves_by_orbits(g, 3)) << g.size();
+    }
   }
+  EXPECT_THROW(count_half_faces_and_volumes(make_cube(2)), Error);
 }
 
 // Query-replace looks a cell up through the word the previous cell matched when it agrees from the
