@@ -57,6 +57,12 @@ TEST(WordTraversal, FollowsTheCellsOwnWordAsTheTraversalNumbersIt) {
         EXPECT_EQ(out, b.dart);
         EXPECT_EQ(bits.count(), b.size());
         for (Dart x : b.dart) EXPECT_TRUE(bits.met(g.capacity()).test(x));
+        // Flags cut after the last flagged dart: the darts past the end read unflagged.
+        std::vector<uint32_t> cut(flag.begin(), flag.begin() + (g.capacity() - 1) / 3 * 3 + 1);
+        Bits again(g.capacity());
+        std::vector<Dart> out_cut(b.size());
+        ASSERT_TRUE(follow_word(g, i, d, w.data(), b.size(), cut, again.met(g.capacity()), out_cut.data()));
+        EXPECT_EQ(out_cut, b.dart);
       }
     }
   }
