@@ -14,6 +14,7 @@
 #include "model/replace/flagged_word.hpp"
 #include "model/replace/half_cells.hpp"
 #include "model/replace/query_replace.hpp"
+#include "model/replace/stride_prefetch.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 #include "model/replace/word_traversal.hpp"
 
@@ -124,6 +125,22 @@ TEST(WordTraversal, NextClearIsTheFirstUnmetDartFromAPlace) {
       }
     }
   }
+}
+
+// The next cell's prefetch (stride_prefetch.hpp) is a hint: for predictions inside the map, past
+// its end, below dart 0 (wrapping) and past the flags, it reads nothing it should not and changes
+// neither the map nor the flags.
+TEST(WordTraversal, PredictedCellPrefetchChangesNothing) {
+  const Map g = make_polycube({{0, 0, 0}, {1, 0, 0}});
+  const std::vector<uint32_t> flag(g.capacity() / 2, 1);  // the darts past half unflagged
+  const Map before_map = g;
+  const Dart cap = g.capacity();
+  const std::vector<Dart> last{0, 5, cap - 1, 3, cap / 2, 1};
+  const std::vector<Dart> before{0, 2, 0, 7, 1, cap - 1};  // strides 0, 3, beyond, below 0, ...
+  for (int i : {2, 3}) prefetch_predicted_cell(g, i, flag, last.data(), before.data(), static_cast<uint32_t>(last.size()));
+  EXPECT_TRUE(is_isomorphic(g, before_map));
+  for (int i = 0; i <= 3; ++i) EXPECT_EQ(g.links(i), before_map.links(i));
+  EXPECT_EQ(flag, std::vector<uint32_t>(cap / 2, 1));
 }
 
 // The half-cells of a map: per i-cell (<0..i-1, i+1>-orbit), two when alpha_{i+1} is not free,
