@@ -109,11 +109,13 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     if (by_last) {
       match = last;
       match.start = 0;
-      if (followed_twice && !deferred)
-        prefetch_predicted_cell(g, cell_dim, target.flag, followed.data(), followed_before.data(),
-                                static_cast<uint32_t>(followed.size()));
-      followed_before = followed;
-      followed_twice = true;
+      if (!deferred && predicts_cells(cell_dim)) {
+        if (followed_twice)
+          prefetch_predicted_cell(g, cell_dim, target.flag, followed.data(), followed_before.data(),
+                                  static_cast<uint32_t>(followed.size()));
+        followed_before = followed;
+        followed_twice = true;
+      }
     } else {
       sweep.traverse(rep, target.flag, positive, c);
       start = first_start_dart(c, store.mode());

@@ -43,9 +43,11 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, d);
     if (!starts) {
       // The next cell's darts fetched while this one is replaced (stride_prefetch.hpp).
-      if (numbered_before) prefetch_predicted_cell(g, cell_dim, target.flag, f.data(), before.data(), t.boundary);
-      before = f;
-      numbered_before = true;
+      if (predicts_cells(cell_dim)) {
+        if (numbered_before) prefetch_predicted_cell(g, cell_dim, target.flag, f.data(), before.data(), t.boundary);
+        before = f;
+        numbered_before = true;
+      }
       return replace(f.data(), shared);
     }
     pending.insert(pending.end(), f.begin(), f.end());
