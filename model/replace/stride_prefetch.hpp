@@ -23,8 +23,8 @@ namespace gmr::replace {
 // they save), so faces are not predicted.
 inline bool predicts_cells(int i) { return i == 3; }
 
-// last, before: the darts of the last two cells numbered along the same word (size each). Fetches
-// alpha_0..alpha_{i-1} and the flag of the predicted dart of every second label.
+// last, before: the darts of the last two cells numbered along the same word (size each), i = 2 or
+// 3. Fetches alpha_0..alpha_{i-1} and the flag of each predicted dart, once per cache line run.
 void prefetch_predicted_cell(const Map& g, int i, const std::vector<uint32_t>& flag, const Dart* last,
                              const Dart* before, uint32_t size);
 
