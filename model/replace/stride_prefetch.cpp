@@ -6,8 +6,8 @@ namespace {
 
 // For a fixed arity I: every second label (the darts of a cell come in runs: a dart and its
 // alpha_0 neighbour are usually numbered next to each other, so this covers its cache lines at
-// half the fetches; fetching every label was measured slower, the fetches crowding the memory
-// accesses of the replacement).
+// half the fetches; fetching at every label, a dart skipped when in the same 16 as the one before,
+// was measured slower: the fetches crowd the memory accesses of the replacement).
 template <int I>
 void prefetch_predicted(const Dart* const* link, const uint32_t* flag, Dart flagged, Dart capacity, const Dart* last,
                         const Dart* before, uint32_t size) {

@@ -24,7 +24,7 @@ namespace gmr::replace {
 inline bool predicts_cells(int i) { return i == 3; }
 
 // last, before: the darts of the last two cells numbered along the same word (size each), i = 2 or
-// 3. Fetches alpha_0..alpha_{i-1} and the flag of each predicted dart, once per cache line run.
+// 3. Fetches alpha_0..alpha_{i-1} and the flag of the predicted dart of every second label.
 void prefetch_predicted_cell(const Map& g, int i, const std::vector<uint32_t>& flag, const Dart* last,
                              const Dart* before, uint32_t size);
 
