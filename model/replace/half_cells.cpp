@@ -95,8 +95,8 @@ struct Sweep {
 
 namespace {
 
-// The half-cells of dimension i, counted by sweep s (set up here); with `faces`, a volume sweep of
-// a 3-G-map also counts its half-faces there.
+// The half-cells of dimension i, counted by sweep s (set up here); with s.across set (a volume
+// sweep of a 3-G-map), the half-faces it walks are counted too (s.faces).
 size_t sweep_half_cells(const Map& g, int i, Sweep& s) {
   const int n = g.dimension();
   for (int j = 0; j < i; ++j) s.link[j] = g.links(j).data();
