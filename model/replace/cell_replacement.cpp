@@ -44,7 +44,14 @@ void append_interior_positions(FlaggedMap& target, const ReplacementTemplate& t,
   const Vec3* p = pos.data();
   const Vec3* inner = at.data();
   const uint32_t* src = t.vertex_source.data();
-  auto position = [&](size_t j) { return src[j] < boundary ? p[f[src[j]]] : inner[src[j] - boundary]; };
+  // Both sources addressed and one selected (no branch on the template's per-dart pattern).
+  auto position = [&](size_t j) {
+    const uint32_t s = src[j];
+    const bool at_boundary = s < boundary;
+    const Vec3* from_boundary = p + f[at_boundary ? s : 0];
+    const Vec3* from_inner = inner + (at_boundary ? 0 : s - boundary);
+    return *(at_boundary ? from_boundary : from_inner);
+  };
   if (pos.capacity() < pos.size() + t.interior * (shared ? 2 : 1))  // p stays valid below
     pos.reserve(std::max(pos.size() + t.interior * (shared ? 2 : 1), 2 * pos.capacity()));
   p = pos.data();
@@ -132,14 +139,19 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
     // alpha_{i+1} read where it is now (the arrays may have moved as they grew; it is appended
     // after this dimension).
     const Dart* across = shared ? g.links(i + 1).data() : nullptr;
+    // Both links read and one selected (no branch on the template's per-dart pattern).
     out.append(k, [&](size_t j) {
       const uint32_t b = rank[j];
-      return b == ReplacementTemplate::kInterior ? from + link[j] : f[b];
+      const bool inside = b == ReplacementTemplate::kInterior;
+      const Dart boundary_dart = f[inside ? 0 : b];
+      return inside ? from + link[j] : boundary_dart;
     });
     if (shared)
       out.append(k, [&](size_t j) {
         const uint32_t b = rank[j];
-        return b == ReplacementTemplate::kInterior ? from + k + link[j] : across[f[b]];
+        const bool inside = b == ReplacementTemplate::kInterior;
+        const Dart boundary_dart = across[f[inside ? 0 : b]];
+        return inside ? from + k + link[j] : boundary_dart;
       });
   });
   // 2. The boundary's side of the relinks.

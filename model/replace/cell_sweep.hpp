@@ -38,8 +38,8 @@ class CellSweep {
       }
       return;
     }
-    for (Dart d = 0; d < capacity_; ++d)
-      if (!met_.test(d) && g_.alive(d)) visit(d);
+    for (Dart d = met_.next_clear(0); d < capacity_; d = met_.next_clear(d + 1))
+      if (g_.alive(d)) visit(d);
   }
   // The boundary of d's cell numbered by a breadth-first traversal from d (cell_boundary: local
   // index k is d's label k + 1 in the word from d, flagged_word.hpp); the cell is marked met, and

@@ -21,7 +21,10 @@ size_t split_edge(FlaggedMap& m, Dart d, unsigned k);
 // same edge. Returns the number of darts added.
 size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k);
 // Splits every edge of the map into k: split_edges on all edges, found without traversing them
-// (every dart pair (x, alpha_0 x) is split, in dart order). Returns the number of darts added.
+// (every dart pair (x, alpha_0 x) is split). On a map without deleted darts, the k - 1 new darts
+// next to dart x on its chain are numbered from x (first + (k - 1) x onwards), so every new link is
+// computed from x's own links in one sequential pass; with deleted darts, the pairs are taken in
+// dart order as split_edges numbers them. Returns the number of darts added.
 size_t split_all_edges(FlaggedMap& m, unsigned k);
 
 }  // namespace gmr::replace

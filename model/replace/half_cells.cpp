@@ -1,8 +1,10 @@
 #include "model/replace/half_cells.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "model/core/error.hpp"
+#include "model/replace/word_traversal.hpp"
 
 namespace gmr::replace {
 
@@ -14,6 +16,11 @@ struct Sweep {
   Dart cap;
   std::vector<uint64_t> bits;
   std::vector<Dart> stack, walked, seeds;
+  // With a volume sweep of a 3-G-map: the half-faces of the volumes walked, counted as
+  // count_half_cells(g, 2) counts them (faces_exact false once a volume was traversed instead).
+  const Dart* across = nullptr;
+  size_t faces = 0;
+  bool faces_exact = true;
 
   bool met(Dart x) const { return bits[x >> 6] >> (x & 63) & 1; }
   void meet(Dart x) { bits[x >> 6] |= uint64_t(1) << (x & 63); }
@@ -49,6 +56,13 @@ struct Sweep {
     } while (x != d);
     return true;
   }
+  // The walked half-face of s: one half-cell, two when alpha_3 sends it onto itself (alpha_3
+  // commutes with alpha_0 and alpha_1, so it sends the whole <0,1>-orbit onto one; the other
+  // half-face, when distinct, is counted when its volume is walked).
+  void count_half_face(Dart s) {
+    const Dart other = across[s];
+    faces += 1 + (other != s && std::find(walked.begin(), walked.end(), other) != walked.end());
+  }
   // d's half-cell, met.
   void half_cell(Dart d) {
     if (i == 2) {
@@ -63,10 +77,12 @@ struct Sweep {
       seeds.pop_back();
       if (met(s)) continue;
       if (!walk_face(s)) {
+        faces_exact = false;
         stack = walked;
         for (Dart x : seeds) stack.push_back(x), meet(x);
         return traverse();
       }
+      if (across) count_half_face(s);
       for (Dart x : walked) {
         const Dart z = link[2][x];
         if (z < cap && !met(z)) seeds.push_back(z);
@@ -77,19 +93,21 @@ struct Sweep {
 
 }  // namespace
 
-size_t count_half_cells(const Map& g, int i) {
+namespace {
+
+// The half-cells of dimension i, counted by sweep s (set up here); with s.across set (a volume
+// sweep of a 3-G-map), the half-faces it walks are counted too (s.faces).
+size_t sweep_half_cells(const Map& g, int i, Sweep& s) {
   const int n = g.dimension();
-  if (g.is_omap() || (i != 2 && i != 3) || (n != i && n != i + 1))
-    throw Error(ErrorCode::Usage, "half-cells are half-faces or half-volumes of a G-map", "i = " + std::to_string(i));
-  Sweep s;
   for (int j = 0; j < i; ++j) s.link[j] = g.links(j).data();
   s.i = i;
   s.cap = g.capacity();
   s.bits.assign((size_t(s.cap) + 63) / 64, 0);
   const Dart* across = n > i ? g.links(i + 1).data() : nullptr;
   size_t halves = 0;
-  for (Dart d = 0; d < s.cap; ++d) {
-    if (s.met(d) || !g.alive(d)) continue;
+  const MetBits met{s.bits.data(), s.cap};
+  for (Dart d = met.next_clear(0); d < s.cap; d = met.next_clear(d + 1)) {
+    if (!g.alive(d)) continue;
     // The cell's other half: a half-cell of its own (met in the sweep), or this one itself.
     const Dart other = across ? across[d] : d;
     const bool other_met = other >= s.cap || s.met(other);
@@ -97,6 +115,25 @@ size_t count_half_cells(const Map& g, int i) {
     halves += 1 + (other != d && !other_met && other < s.cap && s.met(other));
   }
   return halves;
+}
+
+}  // namespace
+
+size_t count_half_cells(const Map& g, int i) {
+  const int n = g.dimension();
+  if (g.is_omap() || (i != 2 && i != 3) || (n != i && n != i + 1))
+    throw Error(ErrorCode::Usage, "half-cells are half-faces or half-volumes of a G-map", "i = " + std::to_string(i));
+  Sweep s;
+  return sweep_half_cells(g, i, s);
+}
+
+HalfFacesAndVolumes count_half_faces_and_volumes(const Map& g) {
+  if (g.is_omap() || g.dimension() != 3)
+    throw Error(ErrorCode::Usage, "half-faces and half-volumes are counted together in 3-G-maps");
+  Sweep s;
+  s.across = g.links(3).data();
+  const size_t volumes = sweep_half_cells(g, 3, s);
+  return {s.faces_exact ? s.faces : count_half_cells(g, 2), volumes};
 }
 
 }  // namespace gmr::replace

@@ -14,4 +14,12 @@ namespace gmr::replace {
 // i = 2 (faces) or 3 (volumes) of a G-map of dimension i or i + 1.
 size_t count_half_cells(const Map& g, int i);
 
+// Both counts of a 3-G-map in one sweep: every half-face lies in exactly one volume, so the volume
+// sweep counts the half-faces it walks (when a volume meets a free dart below 3 and is traversed
+// instead, the half-faces are counted by a sweep of their own).
+struct HalfFacesAndVolumes {
+  size_t faces = 0, volumes = 0;
+};
+HalfFacesAndVolumes count_half_faces_and_volumes(const Map& g);
+
 }  // namespace gmr::replace

@@ -9,6 +9,7 @@
 #include "model/replace/cell_sweep.hpp"
 #include "model/replace/half_cells.hpp"
 #include "model/replace/orientation.hpp"
+#include "model/replace/stride_prefetch.hpp"
 
 namespace gmr::replace {
 
@@ -81,6 +82,10 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   StoreMatch last;
   std::vector<Dart> followed;
   std::vector<uint8_t> last_in_order;  // per hit of `last`: its ranks are the identity
+  // The cell numbered along last_key before the current one (when followed_twice): with it, the
+  // next cell's darts are fetched while the current one is replaced (stride_prefetch.hpp).
+  std::vector<Dart> followed_before;
+  bool followed_twice = false;
   auto replace = [&](uint32_t pattern, const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, store.replacement(pattern), image, shared);
     if (after_each) after_each();
@@ -104,6 +109,13 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     if (by_last) {
       match = last;
       match.start = 0;
+      if (!deferred && predicts_cells(cell_dim)) {
+        if (followed_twice)
+          prefetch_predicted_cell(g, cell_dim, target.flag, followed.data(), followed_before.data(),
+                                  static_cast<uint32_t>(followed.size()));
+        followed_before = followed;
+        followed_twice = true;
+      }
     } else {
       sweep.traverse(rep, target.flag, positive, c);
       start = first_start_dart(c, store.mode());
@@ -116,6 +128,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
         if (match.hits) {
           last_key = key;
           last = match;
+          followed_twice = false;
           followed.resize(c.size());
           last_in_order.clear();
           for (const std::vector<uint32_t>& ranks : *match.ranks) {
@@ -173,10 +186,35 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   return r;
 }
 
-size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
+namespace {
+
+// The largest interior of the store's patterns of dimension cell_dim (0: none).
+size_t largest_interior(const PatternStore& store, int cell_dim) {
   size_t most = 0;
   for (const Pattern& p : store.patterns())
     if (p.cell_dim == cell_dim) most = std::max(most, p.interior_darts.size());
+  return most;
+}
+
+}  // namespace
+
+size_t replacement_room(const Map& g, const PatternStore& store, const std::vector<int>& cell_dims) {
+  const bool faces = std::count(cell_dims.begin(), cell_dims.end(), 2) == 1;
+  const bool volumes = std::count(cell_dims.begin(), cell_dims.end(), 3) == 1;
+  const size_t most_faces = largest_interior(store, 2), most_volumes = largest_interior(store, 3);
+  const bool together = faces && volumes && most_faces && most_volumes && !g.is_omap() && g.dimension() == 3;
+  size_t room = 0;
+  if (together) {
+    const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
+    room = h.faces * most_faces + h.volumes * most_volumes;
+  }
+  for (int c : cell_dims)
+    if (!together || (c != 2 && c != 3)) room += replacement_room(g, store, c);
+  return room;
+}
+
+size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
+  const size_t most = largest_interior(store, cell_dim);
   if (most == 0) return 0;
   const int n = g.dimension();
   if (!g.is_omap() && (cell_dim == 2 || cell_dim == 3) && (n == cell_dim || n == cell_dim + 1))

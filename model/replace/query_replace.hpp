@@ -71,5 +71,9 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
 // half-faces. Splitting edges changes no cell, so the bound computed before an e-pattern holds
 // after it: a sequence (edges, faces, volumes) can reserve its final size once (FlaggedMap::reserve).
 size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim);
+// The bound of a sequence replacing the cells of each dimension of cell_dims in turn: the sum of
+// replacement_room over them, with the half-faces and half-volumes of a 3-G-map counted in one
+// sweep (count_half_faces_and_volumes, half_cells.hpp).
+size_t replacement_room(const Map& g, const PatternStore& store, const std::vector<int>& cell_dims);
 
 }  // namespace gmr::replace

@@ -3,6 +3,7 @@
 #include "model/core/error.hpp"
 #include "model/replace/cell_replacement.hpp"
 #include "model/replace/cell_sweep.hpp"
+#include "model/replace/stride_prefetch.hpp"
 
 namespace gmr::replace {
 
@@ -24,6 +25,8 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
   BoundaryGraph c;                  // a cell that does not match: its darts, to meet them
   std::vector<Dart> pending;        // with a list: the matched cells' boundaries in label order
   std::vector<uint8_t> pending_shared;
+  std::vector<Dart> before(t.boundary);  // without a list: the cell matched before (when numbered_before)
+  bool numbered_before = false;
   auto replace = [&](const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, t, image, shared);
     if (after_each) after_each();
@@ -38,7 +41,15 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
       return;
     }
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, d);
-    if (!starts) return replace(f.data(), shared);
+    if (!starts) {
+      // The next cell's darts fetched while this one is replaced (stride_prefetch.hpp).
+      if (predicts_cells(cell_dim)) {
+        if (numbered_before) prefetch_predicted_cell(g, cell_dim, target.flag, f.data(), before.data(), t.boundary);
+        before = f;
+        numbered_before = true;
+      }
+      return replace(f.data(), shared);
+    }
     pending.insert(pending.end(), f.begin(), f.end());
     pending_shared.push_back(shared);
   });

@@ -5,7 +5,8 @@ namespace gmr::replace {
 namespace {
 
 // follow_word for a fixed arity I (the cell dimension): the loops over the neighbours unrolled.
-template <int I>
+// AllFlagged: every dart of `met` has a flag (no bound check per dart).
+template <int I, bool AllFlagged>
 bool follow(const Dart* const* link, Dart d, const uint32_t* w, uint32_t size, const uint32_t* fl, Dart flagged,
             MetBits met, Dart* out) {
   uint32_t count = 1;
@@ -13,7 +14,7 @@ bool follow(const Dart* const* link, Dart d, const uint32_t* w, uint32_t size, c
   met.set(d);
   for (uint32_t k = 0; k < count; ++k) {
     const Dart x = out[k];
-    if ((x < flagged ? fl[x] : 0) != *w++) goto disagree;
+    if ((AllFlagged || x < flagged ? fl[x] : 0) != *w++) goto disagree;
     for (int j = 0; j < I; ++j) {
       const Dart y = link[j][x];
       const uint32_t l = *w++;
@@ -24,7 +25,7 @@ bool follow(const Dart* const* link, Dart d, const uint32_t* w, uint32_t size, c
         out[count++] = y;
         // y is read later in label order: its links and flag are fetched meanwhile.
         for (int p = 0; p < I; ++p) __builtin_prefetch(link[p] + y);
-        if (y < flagged) __builtin_prefetch(fl + y);
+        if (AllFlagged || y < flagged) __builtin_prefetch(fl + y);
       } else if (l == 0 || l > count || out[l - 1] != y) {
         goto disagree;
       }
@@ -44,9 +45,12 @@ bool follow_word(const Map& g, int i, Dart d, const uint32_t* word, uint32_t siz
   const Dart* link[kMaxDim];
   for (int j = 0; j < i; ++j) link[j] = g.links(j).data();
   const Dart flagged = static_cast<Dart>(flag.size());
+  const bool all = flagged >= met.size;  // as query-replace sizes the flags (begin_replacement)
   switch (i) {
-    case 2: return follow<2>(link, d, word, size, flag.data(), flagged, met, out);
-    case 3: return follow<3>(link, d, word, size, flag.data(), flagged, met, out);
+    case 2: return all ? follow<2, true>(link, d, word, size, flag.data(), flagged, met, out)
+                       : follow<2, false>(link, d, word, size, flag.data(), flagged, met, out);
+    case 3: return all ? follow<3, true>(link, d, word, size, flag.data(), flagged, met, out)
+                       : follow<3, false>(link, d, word, size, flag.data(), flagged, met, out);
     default: return false;  // cells are faces or volumes (begin_replacement)
   }
 }

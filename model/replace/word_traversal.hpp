@@ -25,6 +25,20 @@ struct MetBits {
   bool test(Dart x) const { return bits[x >> 6] >> (x & 63) & 1; }
   void set(Dart x) const { bits[x >> 6] |= uint64_t(1) << (x & 63); }
   void reset(Dart x) const { bits[x >> 6] &= ~(uint64_t(1) << (x & 63)); }
+  // The first dart x >= from whose bit is clear (size when none): the met darts skipped a word
+  // at a time.
+  Dart next_clear(Dart from) const {
+    if (from >= size) return size;
+    size_t w = from >> 6;
+    uint64_t clear = ~bits[w] & (~uint64_t(0) << (from & 63));
+    const size_t last = (size_t(size) - 1) >> 6;
+    while (clear == 0) {
+      if (++w > last) return size;
+      clear = ~bits[w];
+    }
+    const Dart x = static_cast<Dart>((w << 6) + static_cast<size_t>(__builtin_ctzll(clear)));
+    return x < size ? x : size;
+  }
 };
 
 // Follows `word` (per dart in label order: its flag, then the labels 1..size of its i neighbours

@@ -135,9 +135,9 @@ const PatternStore& hex_patterns() {
 }
 
 // The darts of the hexahedral subdivision of m: every edge split in 2, then the faces' and the
-// volumes' replacement rooms (the sequence's reservation).
+// volumes' replacement rooms, counted in one sweep (the sequence's reservation).
 size_t subdivision_size(const FlaggedMap& m, const PatternStore& store) {
-  return 2 * m.map.size() + replacement_room(m.map, store, 2) + replacement_room(m.map, store, 3);
+  return 2 * m.map.size() + replacement_room(m.map, store, {2, 3});
 }
 
 size_t pattern_named(const std::string& name) {

@@ -65,7 +65,7 @@ TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
 }
 
 // The sequence as the benchmark runs it: its final size reserved from replacement_room before
-// any step (no array grows: the link arrays stay in place), every edge split at once
+// any step (faces and volumes counted in one sweep, as the two counts give it) (no array grows: the link arrays stay in place), every edge split at once
 // (split_edges on the edges, or split_all_edges), then faces and volumes (validity checked by
 // query_replace, or assumed as the benchmark's AssumeValid variant does); the bound is exact for
 // hexahedra, and the result is the direct subdivision up to isomorphism, with the same positions,
@@ -81,7 +81,8 @@ TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
       direct = subdivide_hexahedra(direct);
       const size_t darts = qr.map.size();
       const size_t faces = replacement_room(qr.map, store, 2), volumes = replacement_room(qr.map, store, 3);
-      qr.reserve(2 * darts + faces + volumes);
+      EXPECT_EQ(replacement_room(qr.map, store, {2, 3}), faces + volumes);  // one sweep for both
+      qr.reserve(2 * darts + replacement_room(qr.map, store, {2, 3}));
       const Dart* links = qr.map.links(0).data();
       if (pre == Precondition::CheckValidity)
         EXPECT_EQ(split_edges(qr, orbit_representatives(qr.map, cell_type(qr.map, 1)), 2), darts);

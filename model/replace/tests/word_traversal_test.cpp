@@ -14,6 +14,7 @@
 #include "model/replace/flagged_word.hpp"
 #include "model/replace/half_cells.hpp"
 #include "model/replace/query_replace.hpp"
+#include "model/replace/stride_prefetch.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 #include "model/replace/word_traversal.hpp"
 
@@ -57,6 +58,12 @@ TEST(WordTraversal, FollowsTheCellsOwnWordAsTheTraversalNumbersIt) {
         EXPECT_EQ(out, b.dart);
         EXPECT_EQ(bits.count(), b.size());
         for (Dart x : b.dart) EXPECT_TRUE(bits.met(g.capacity()).test(x));
+        // Flags cut after the last flagged dart: the darts past the end read unflagged.
+        std::vector<uint32_t> cut(flag.begin(), flag.begin() + (g.capacity() - 1) / 3 * 3 + 1);
+        Bits again(g.capacity());
+        std::vector<Dart> out_cut(b.size());
+        ASSERT_TRUE(follow_word(g, i, d, w.data(), b.size(), cut, again.met(g.capacity()), out_cut.data()));
+        EXPECT_EQ(out_cut, b.dart);
       }
     }
   }
@@ -97,9 +104,49 @@ TEST(WordTraversal, RefusesOtherWordsAndLeavesNothingMet) {
   EXPECT_TRUE(follow_word(digon, 2, 0, wd.data(), 4, none, small.met(digon.capacity()), out2.data()));
 }
 
+// The sweep's next unmet dart (MetBits::next_clear) is the first clear bit at or after a dart, as
+// a bit-by-bit scan finds it: sizes around word ends, bits set at random and in full words.
+TEST(WordTraversal, NextClearIsTheFirstUnmetDartFromAPlace) {
+  std::mt19937 rng(7);
+  for (Dart n : {1u, 63u, 64u, 65u, 128u, 130u, 200u}) {
+    for (int density : {0, 50, 95, 100}) {
+      Bits b(n);
+      const MetBits met = b.met(n);
+      for (Dart x = 0; x < n; ++x)
+        if (int(rng() % 100) < density) met.set(x);
+      for (Dart from = 0; from <= n + 1; ++from) {
+        Dart expected = n;
+        for (Dart x = from; x < n; ++x)
+          if (!met.test(x)) {
+            expected = x;
+            break;
+          }
+        EXPECT_EQ(met.next_clear(from), expected) << n << " " << density << " " << from;
+      }
+    }
+  }
+}
+
+// The next cell's prefetch (stride_prefetch.hpp) is a hint: for predictions inside the map, past
+// its end, below dart 0 (wrapping) and past the flags, it reads nothing it should not and changes
+// neither the map nor the flags.
+TEST(WordTraversal, PredictedCellPrefetchChangesNothing) {
+  const Map g = make_polycube({{0, 0, 0}, {1, 0, 0}});
+  const std::vector<uint32_t> flag(g.capacity() / 2, 1);  // the darts past half unflagged
+  const Map before_map = g;
+  const Dart cap = g.capacity();
+  const std::vector<Dart> last{0, 5, cap - 1, 3, cap / 2, 1};
+  const std::vector<Dart> before{0, 2, 0, 7, 1, cap - 1};  // strides 0, 3, beyond, below 0, ...
+  for (int i : {2, 3}) prefetch_predicted_cell(g, i, flag, last.data(), before.data(), static_cast<uint32_t>(last.size()));
+  EXPECT_TRUE(is_isomorphic(g, before_map));
+  for (int i = 0; i <= 3; ++i) EXPECT_EQ(g.links(i), before_map.links(i));
+  EXPECT_EQ(flag, std::vector<uint32_t>(cap / 2, 1));
+}
+
 // The half-cells of a map: per i-cell (<0..i-1, i+1>-orbit), two when alpha_{i+1} is not free,
 // else one: on closed and open surfaces, a map with deleted darts, a polycube (faces shared or
-// not, volumes) and a 2-G-map.
+// not, volumes) and a 2-G-map; in 3-G-maps the half-faces and half-volumes counted in one sweep
+// too.
 size_t halves_by_orbits(const Map& g, int i) {
   size_t h = 0;
   for (Dart d : orbit_representatives(g, cell_type(g, i))) h += g.dimension() > i && !g.is_free(i + 1, d) ? 2 : 1;
@@ -142,7 +189,13 @@ TEST(HalfCells, CountIsTheCellsWithTheirTwoSides) {
       if (g.dimension() != i && g.dimension() != i + 1) continue;
       EXPECT_EQ(count_half_cells(g, i), halves_by_orbits(g, i)) << g.dimension() << " " << i << " " << g.size();
     }
+    if (g.dimension() == 3) {  // both in one sweep (the free-dart maps: the faces swept apart)
+      const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
+      EXPECT_EQ(h.faces, halves_by_orbits(g, 2)) << g.size();
+      EXPECT_EQ(h.volumes, halves_by_orbits(g, 3)) << g.size();
+    }
   }
+  EXPECT_THROW(count_half_faces_and_volumes(make_cube(2)), Error);
 }
 
 // Query-replace looks a cell up through the word the previous cell matched when it agrees from the
