@@ -15,6 +15,7 @@ struct Sweep {
   int i;
   Dart cap;
   std::vector<uint64_t> bits;
+  MetBits marks;  // over bits
   std::vector<Dart> stack, walked, seeds;
   // With a volume sweep of a 3-G-map: the half-faces of the volumes walked, counted as
   // count_half_cells(g, 2) counts them (faces_exact false once a volume was traversed instead).
@@ -22,8 +23,8 @@ struct Sweep {
   size_t faces = 0;
   bool faces_exact = true;
 
-  bool met(Dart x) const { return bits[x >> 6] >> (x & 63) & 1; }
-  void meet(Dart x) { bits[x >> 6] |= uint64_t(1) << (x & 63); }
+  bool met(Dart x) const { return marks.test(x); }
+  void meet(Dart x) { marks.set(x); }
 
   // Breadth-first over alpha_0..alpha_{i-1} from the darts on the stack (met), for a half-cell
   // with free darts.
@@ -91,10 +92,6 @@ struct Sweep {
   }
 };
 
-}  // namespace
-
-namespace {
-
 // The half-cells of dimension i, counted by sweep s (set up here); with s.across set (a volume
 // sweep of a 3-G-map), the half-faces it walks are counted too (s.faces).
 size_t sweep_half_cells(const Map& g, int i, Sweep& s) {
@@ -103,10 +100,10 @@ size_t sweep_half_cells(const Map& g, int i, Sweep& s) {
   s.i = i;
   s.cap = g.capacity();
   s.bits.assign((size_t(s.cap) + 63) / 64, 0);
+  s.marks = {s.bits.data(), s.cap};
   const Dart* across = n > i ? g.links(i + 1).data() : nullptr;
   size_t halves = 0;
-  const MetBits met{s.bits.data(), s.cap};
-  for (Dart d = met.next_clear(0); d < s.cap; d = met.next_clear(d + 1)) {
+  for (Dart d = s.marks.next_clear(0); d < s.cap; d = s.marks.next_clear(d + 1)) {
     if (!g.alive(d)) continue;
     // The cell's other half: a half-cell of its own (met in the sweep), or this one itself.
     const Dart other = across ? across[d] : d;

@@ -82,10 +82,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   StoreMatch last;
   std::vector<Dart> followed;
   std::vector<uint8_t> last_in_order;  // per hit of `last`: its ranks are the identity
-  // The cell numbered along last_key before the current one (when followed_twice): with it, the
-  // next cell's darts are fetched while the current one is replaced (stride_prefetch.hpp).
-  std::vector<Dart> followed_before;
-  bool followed_twice = false;
+  CellPredictor predictor;  // the next cell along last_key fetched while one is replaced
   auto replace = [&](uint32_t pattern, const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, store.replacement(pattern), image, shared);
     if (after_each) after_each();
@@ -109,13 +106,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     if (by_last) {
       match = last;
       match.start = 0;
-      if (!deferred && predicts_cells(cell_dim)) {
-        if (followed_twice)
-          prefetch_predicted_cell(g, cell_dim, target.flag, followed.data(), followed_before.data(),
-                                  static_cast<uint32_t>(followed.size()));
-        followed_before = followed;
-        followed_twice = true;
-      }
+      if (!deferred) predictor.numbered(g, cell_dim, target.flag, followed);
     } else {
       sweep.traverse(rep, target.flag, positive, c);
       start = first_start_dart(c, store.mode());
@@ -128,7 +119,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
         if (match.hits) {
           last_key = key;
           last = match;
-          followed_twice = false;
+          predictor.restart();
           followed.resize(c.size());
           last_in_order.clear();
           for (const std::vector<uint32_t>& ranks : *match.ranks) {

@@ -25,8 +25,7 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
   BoundaryGraph c;                  // a cell that does not match: its darts, to meet them
   std::vector<Dart> pending;        // with a list: the matched cells' boundaries in label order
   std::vector<uint8_t> pending_shared;
-  std::vector<Dart> before(t.boundary);  // without a list: the cell matched before (when numbered_before)
-  bool numbered_before = false;
+  CellPredictor predictor;  // without a list: the next cell fetched while one is replaced
   auto replace = [&](const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, t, image, shared);
     if (after_each) after_each();
@@ -42,12 +41,7 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
     }
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, d);
     if (!starts) {
-      // The next cell's darts fetched while this one is replaced (stride_prefetch.hpp).
-      if (predicts_cells(cell_dim)) {
-        if (numbered_before) prefetch_predicted_cell(g, cell_dim, target.flag, f.data(), before.data(), t.boundary);
-        before = f;
-        numbered_before = true;
-      }
+      predictor.numbered(g, cell_dim, target.flag, f);
       return replace(f.data(), shared);
     }
     pending.insert(pending.end(), f.begin(), f.end());
