@@ -216,6 +216,11 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
         const size_t done = ev.combine_classes(*k.program, k.first_b->data(), count, t, *k.values);
         evaluations_ += done;
         if (done == count) continue;  // else the class that fails is evaluated below, for its error
+      } else if (on_view && k.program) {
+        // Any other compiled program: the classes in lanes (evaluator_lanes.cpp), the same values.
+        const size_t done = ev.run_classes(*k.program, k.first_b->data(), count, t, *k.values);
+        evaluations_ += done;
+        if (done == count) continue;  // else the classes from the batch that fails, one by one
       }
       for (size_t id = k.values->size(); id < count; ++id) {
         const uint32_t b = (*k.first_b)[id];

@@ -71,6 +71,13 @@ class Evaluator {
   // then reports; 0 when p is not of that form or memo mode is off.
   static bool combines_node_values(const Program& p);
   size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out) const;
+  // Memo mode: the values of any program without unresolved node values (Instruction::Op::Value)
+  // at the classes whose left node 0 is at nodes[0..n), appended to out, evaluated kLanes classes
+  // at a time, instruction by instruction (evaluator_lanes.cpp): run's values bit for bit. Returns
+  // the number of classes done: n, or the first class of a batch that fails (an error of run, which
+  // evaluate() then reports); 0 when p does not run in lanes or memo mode is off.
+  static bool runs_in_lanes(const Program& p);
+  size_t run_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out);
 
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
@@ -163,6 +170,25 @@ class Evaluator {
   size_t combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target,
                                   std::vector<Vec3>& out) const;
   std::vector<CollectMemo> memos_;
+  // Evaluation in lanes (run_classes): the value stack and the let values of kLanes classes,
+  // row-major (row r of lane j at r * kLanes + j), and the members of the comprehensions of the
+  // batch (up to two kinds of them, as member_darts_).
+  static constexpr size_t kLanes = 64;
+  static constexpr size_t kLaneLets = 8;  // more let variables in scope: not run in lanes
+  std::vector<Val> lane_stack_, lane_lets_;
+  struct LaneMembers {
+    const Expr* comprehension = nullptr;  // its orbit, classes and start (equal ones share)
+    std::vector<Dart> darts;              // the first darts of the members, lane after lane
+    uint32_t start[kLanes + 1] = {};
+    bool fast = false;                    // every lane's members listed (else aggregate per lane)
+  };
+  LaneMembers lane_members_[2];
+  std::vector<Dart> lane_orbit_;
+  int lane_members_next_ = 0;
+  bool run_lanes(const Program& p, const Dart* nodes, size_t m, ValueType target, std::vector<Vec3>& out);
+  bool lane_load(const LoadRef& r, Dart d, Val& v) const;
+  const LaneMembers& lane_members(const Expr& comprehension, const Dart* nodes, size_t m);
+  Val lane_scalar(const Instruction* pc, const Instruction* end, const Dart* node, size_t lets, size_t lane, bool aggregate);
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.
   struct Body {

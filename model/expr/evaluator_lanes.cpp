@@ -1,0 +1,319 @@
+// Evaluator::run_classes (evaluator.hpp): a compiled program (program.hpp) evaluated for kLanes
+// classes at a time, instruction by instruction: each instruction does, lane after lane, what run
+// does for one class, so the dispatch and the set-up are paid once per instruction and batch
+// instead of once per class (Loop's vertex mask: ~2,000 instructions per class through run).
+//
+// The values are run's bit for bit: every lane performs run's floating-point operations in run's
+// order. A comprehension over a listed orbit of the hook (share_orbit_lists) whose body is a
+// constant or a node value of its variable (Loop's count and middle around a vertex) takes its
+// members as memo_members does: the listed orbit in order, one member per <c>-orbit met (told
+// apart by the shared numbers), at its first dart, summed in that order; the members are found
+// once per batch for the comprehensions of the same orbit, classes and start. Any other aggregate,
+// and a dart-free sub-expression whose kept value does not match the lane's let values (Pure), is
+// computed for that lane by run's own code (aggregate, run). A batch in which anything fails (a
+// missing dart or value, a division by zero, an empty barycentre, a wrong mass) appends nothing:
+// the caller evaluates its classes one by one, and the failing one reports run's error.
+#include <cmath>
+#include <cstring>
+
+#include "model/core/error.hpp"
+#include "model/expr/evaluator.hpp"
+
+namespace gmr::expr {
+
+namespace {
+
+using Op = Instruction::Op;
+
+// A node value of the program (not of a comprehension variable): the left node 0, the hook.
+bool reads_hook(const LoadRef& r) { return !r.variable && r.index == 0; }
+
+}  // namespace
+
+// The program's own instructions (not those of aggregate bodies and dart-free sub-expressions,
+// which run for one lane at a time) are all of run's except Value and Unknown, read the hook only,
+// and bind at most kLaneLets let variables.
+bool Evaluator::runs_in_lanes(const Program& p) {
+  size_t lets = 0;
+  for (size_t i = 0; i < p.code.size(); ++i) {
+    const Instruction& ins = p.code[i];
+    switch (ins.op) {
+      case Op::Value:
+      case Op::Unknown:
+      case Op::PureEnd: return false;
+      case Op::LetBind:
+        if (++lets > kLaneLets) return false;
+        break;
+      case Op::LetDrop: --lets; break;
+      case Op::Load:
+        if (!reads_hook(p.loads[ins.index])) return false;
+        break;
+      case Op::Combine:
+      case Op::CombineLoads:
+        for (uint32_t k = 0; k < ins.count; ++k)
+          if (!reads_hook(p.loads[ins.index + k])) return false;
+        break;
+      case Op::AggregateSet: i += ins.index; break;
+      case Op::Pure: i += ins.index + 1; break;
+      default: break;
+    }
+  }
+  return !p.code.empty();
+}
+
+size_t Evaluator::run_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out) {
+  if (!memo_on_ || !runs_in_lanes(p)) return 0;
+  where_ = nullptr;
+  loads_ = p.loads.data();
+  program_ = p.id;
+  code_ = p.code.data();
+  if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
+  lane_stack_.resize(p.max_stack * kLanes);
+  lane_lets_.resize(kLaneLets * kLanes);
+  for (size_t j = 0; j < n; j += kLanes) {
+    const size_t m = std::min(kLanes, n - j);
+    try {
+      if (!run_lanes(p, nodes + j, m, target, out)) return j;
+    } catch (const Error&) {
+      return j;
+    }
+  }
+  return n;
+}
+
+// load() on a given dart: false where load() fails.
+inline bool Evaluator::lane_load(const LoadRef& r, Dart d, Val& v) const {
+  if (d == kNoDart) return false;
+  for (uint8_t k = 0; k < r.length; ++k) d = held_links_[r.path[k]][d];
+  const HeldField& f = held_fields_[r.embedding];
+  if (d >= f.size || f.slots[d] == Embedding<Vec3>::kNoValue) return false;
+  const Vec3& x = f.values[f.slots[d]];
+  v = {x[0], f.type == ValueType::Scalar ? 0.0 : x[1], f.type == ValueType::Scalar ? 0.0 : x[2],
+       f.type == ValueType::Point ? 1.0 : 0.0};
+  return true;
+}
+
+// The members of `comprehension` (from the hook) at each lane: memo_members' first darts. fast is
+// false when a lane's orbit is not a listed one starting at its dart (the lanes then aggregate one
+// by one).
+const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension, const Dart* nodes, size_t m) {
+  const Expr& e = comprehension;
+  for (const LaneMembers& lm : lane_members_) {
+    const Expr* o = lm.comprehension;
+    if (o && o->orbit_mask == e.orbit_mask && o->class_mask == e.class_mask && o->ref.is_variable == e.ref.is_variable &&
+        o->ref.index == e.ref.index && o->ref.path == e.ref.path)
+      return lm;
+  }
+  LaneMembers& lm = lane_members_[lane_members_next_];
+  lane_members_next_ = 1 - lane_members_next_;
+  lm.comprehension = &e;
+  lm.fast = false;
+  lm.darts.clear();
+  if (!e.word.empty() || e.ref.is_variable || e.ref.index != 0 || g_.kind() != MapKind::GMap ||
+      __builtin_popcount(e.orbit_mask) != 2)
+    return lm;
+  const OrbitIds& o = orbit_ids(e.class_mask);
+  const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
+  const uint32_t* const index = o.index;
+  std::vector<Dart>& in_orbit = lane_orbit_;  // not scratch_[0]: members() keeps its last walk there
+  for (size_t j = 0; j < m; ++j) {
+    lm.start[j] = static_cast<uint32_t>(lm.darts.size());
+    Dart d = nodes[j];
+    if (d == kNoDart) return lm;
+    for (const int dim : e.ref.path) d = held_links_[dim][d];
+    if (!listed_orbit(e.orbit_mask, d, in_orbit)) return lm;
+    uint32_t met[kSmallOrbit];
+    size_t count = 0;
+    for (const Dart x : in_orbit) {
+      const uint32_t id = ids[index ? index[x] : x];
+      size_t k = count;
+      while (k > 0 && met[k - 1] != id) --k;
+      if (k > 0) continue;
+      met[count++] = id;
+      lm.darts.push_back(x);
+    }
+  }
+  lm.start[m] = static_cast<uint32_t>(lm.darts.size());
+  lm.fast = true;
+  return lm;
+}
+
+// One lane's value by run's own code: the aggregate at pc (aggregate) or the code [pc, end) (run),
+// with the lane's node dart and let values.
+Val Evaluator::lane_scalar(const Instruction* pc, const Instruction* end, const Dart* node, size_t lets, size_t lane,
+                           bool aggregate_at_pc) {
+  nodes_ = node;
+  vars_.clear();
+  lets_.clear();
+  for (size_t q = 0; q < lets; ++q) lets_.push_back(lane_lets_[q * kLanes + lane]);
+  top_ = 0;
+  if (aggregate_at_pc) return aggregate(*pc->expr, pc + 1, pc + 1 + pc->index);
+  return run(pc, end);
+}
+
+// The program at the m classes of nodes[0..m): true and their values appended, or false (nothing
+// appended) when one of them fails.
+bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueType target, std::vector<Vec3>& out) {
+  Val* const stack = lane_stack_.data();
+  Val* const lets = lane_lets_.data();
+  auto row = [&](size_t r) { return stack + r * kLanes; };
+  size_t sp = 0, nl = 0;  // rows on the stack, let variables bound
+  for (LaneMembers& lm : lane_members_) lm.comprehension = nullptr;
+  const Instruction* const end = p.code.data() + p.code.size();
+  for (const Instruction* pc = p.code.data(); pc != end; ++pc) {
+    const Expr& e = *pc->expr;
+    Val* const top = row(sp);  // the next row
+    Val* const a = sp >= 2 ? row(sp - 2) : nullptr;
+    Val* const b = sp >= 1 ? row(sp - 1) : nullptr;
+    switch (pc->op) {
+      case Op::Constant: {
+        const Val c{pc->value[0], pc->value[1], pc->value[2], pc->value[3]};
+        for (size_t j = 0; j < m; ++j) top[j] = c;
+        ++sp;
+        break;
+      }
+      case Op::LetGet: std::memcpy(top, lets + pc->index * kLanes, m * sizeof(Val)); ++sp; break;
+      case Op::LetBind: std::memcpy(lets + nl++ * kLanes, b, m * sizeof(Val)); --sp; break;
+      case Op::LetDrop: --nl; break;
+      case Op::Load: {
+        const LoadRef& r = loads_[pc->index];
+        for (size_t j = 0; j < m; ++j)
+          if (!lane_load(r, nodes[j], top[j])) return false;
+        ++sp;
+        break;
+      }
+      case Op::Combine:
+      case Op::CombineLoads: {
+        const LoadRef* l = loads_ + pc->index;
+        Val* const to = pc->op == Op::Combine ? top : b;
+        for (size_t j = 0; j < m; ++j) {
+          Val acc = pc->op == Op::Combine ? Val{pc->value[0], pc->value[1], pc->value[2], pc->value[3]} : b[j];
+          for (uint32_t k = 0; k < pc->count; ++k) {
+            Val v;
+            if (!lane_load(l[k], nodes[j], v)) return false;
+            acc = ops::add(acc, ops::scale(v, l[k].weight));
+          }
+          to[j] = acc;
+        }
+        if (pc->op == Op::Combine) ++sp;
+        break;
+      }
+      case Op::Accumulate:
+        for (size_t j = 0; j < m; ++j) a[j] = ops::add(a[j], ops::scale(b[j], pc->value[0]));
+        --sp;
+        break;
+      case Op::Neg:
+        for (size_t j = 0; j < m; ++j) b[j] = ops::neg(b[j]);
+        break;
+      case Op::Add:
+        for (size_t j = 0; j < m; ++j) a[j] = ops::add(a[j], b[j]);
+        --sp;
+        break;
+      case Op::Sub:
+        for (size_t j = 0; j < m; ++j) a[j] = ops::sub(a[j], b[j]);
+        --sp;
+        break;
+      case Op::ScaleLeft:
+        for (size_t j = 0; j < m; ++j) a[j] = ops::scale(b[j], a[j].x);
+        --sp;
+        break;
+      case Op::ScaleRight:
+        for (size_t j = 0; j < m; ++j) a[j] = ops::scale(a[j], b[j].x);
+        --sp;
+        break;
+      case Op::Div:
+        for (size_t j = 0; j < m; ++j) {
+          if (b[j].x == 0.0) return false;
+          a[j] = ops::divide(a[j], b[j].x);
+        }
+        --sp;
+        break;
+      case Op::Make: {
+        Val* const x = row(sp - 3);
+        for (size_t j = 0; j < m; ++j) x[j] = ops::make(e.function, x[j], a[j], b[j]);
+        sp -= 2;
+        break;
+      }
+      case Op::Cos: for (size_t j = 0; j < m; ++j) b[j] = ops::cos(b[j]); break;
+      case Op::Sin: for (size_t j = 0; j < m; ++j) b[j] = ops::sin(b[j]); break;
+      case Op::Abs: for (size_t j = 0; j < m; ++j) b[j] = ops::abs(b[j]); break;
+      case Op::Sqrt:
+        for (size_t j = 0; j < m; ++j) {
+          if (b[j].x < 0) return false;
+          b[j] = ops::sqrt(b[j]);
+        }
+        break;
+      case Op::Norm: for (size_t j = 0; j < m; ++j) b[j] = ops::norm(b[j]); break;
+      case Op::Clamp: for (size_t j = 0; j < m; ++j) b[j] = ops::clamp(b[j]); break;
+      case Op::Dot:
+        for (size_t j = 0; j < m; ++j) a[j] = ops::dot(a[j], b[j]);
+        --sp;
+        break;
+      case Op::Cross:
+        for (size_t j = 0; j < m; ++j) a[j] = ops::cross(a[j], b[j]);
+        --sp;
+        break;
+      case Op::AggregateArgs: {
+        const size_t n = pc->index;
+        if (e.function == Function::Middle && n == 0) return false;
+        Val* const first = row(sp - n);
+        for (size_t j = 0; j < m; ++j) {
+          Val acc;
+          for (size_t k = 0; k < n; ++k) acc = ops::add(acc, first[k * kLanes + j]);
+          first[j] = ops::finish_aggregate(e.function, acc, n);
+        }
+        sp = sp - n + 1;
+        break;
+      }
+      case Op::AggregateSet: {
+        const Expr& arg = *e.args[0];
+        const Instruction* const body = pc + 1;
+        const bool one_instruction_body =
+            arg.op == Expr::Op::Comprehension && pc->index == 1 &&
+            (body->op == Op::Constant ||
+             (body->op == Op::Load && loads_[body->index].variable && loads_[body->index].index == 0));
+        const LaneMembers* lm = one_instruction_body ? &lane_members(arg, nodes, m) : nullptr;
+        if (lm && lm->fast) {
+          const Val c{body->value[0], body->value[1], body->value[2], body->value[3]};
+          for (size_t j = 0; j < m; ++j) {
+            MemberSum s;
+            for (uint32_t k = lm->start[j]; k < lm->start[j + 1]; ++k) {
+              Val v = c;
+              if (body->op == Op::Load && !lane_load(loads_[body->index], lm->darts[k], v)) return false;
+              s.push_back(v);
+            }
+            if (e.function == Function::Middle && s.n == 0) return false;
+            top[j] = ops::finish_aggregate(e.function, s.sum, s.n);
+          }
+        } else {
+          for (size_t j = 0; j < m; ++j) top[j] = lane_scalar(pc, nullptr, nodes + j, nl, j, true);
+        }
+        ++sp;
+        pc += pc->index;
+        break;
+      }
+      case Op::Pure: {
+        const Instruction* const code_end = pc + pc->index + 2;  // past its PureEnd
+        for (size_t j = 0; j < m; ++j) {
+          const Kept* k = kept_for(pc);
+          bool kept = k && k->lets == nl;
+          for (size_t q = 0; kept && q < nl; ++q)
+            kept = std::memcmp(&k->key[q], &lets[q * kLanes + j], sizeof(Val)) == 0;
+          top[j] = kept ? k->value : lane_scalar(pc, code_end, nodes + j, nl, j, false);
+        }
+        ++sp;
+        pc = code_end - 1;
+        break;
+      }
+      default: return false;  // runs_in_lanes excludes the others
+    }
+  }
+  const Val* const v = row(sp - 1);
+  for (size_t j = 0; j < m; ++j)
+    if ((target == ValueType::Point && std::fabs(v[j].w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(v[j].w) > 1e-9))
+      return false;
+  for (size_t j = 0; j < m; ++j) out.push_back(to_storage(v[j]));
+  return true;
+}
+
+}  // namespace gmr::expr
