@@ -77,6 +77,68 @@ void EmbeddingPropagation::derive_class_kinds() {
   kinds_derived_ = true;
 }
 
+// The classes of a kind of one or two positions p0, p1 (p0 == p1: one), numbered in order of their
+// first orbit dart: each walked from its first dart b along p0, p1, p0, ... (O's links at those
+// positions), and from b along p1, p0, ... when the first way ends at a free dart. list (when not
+// null): the orbit darts of each class in that order, class after class, from start[id].
+struct Walk {
+  const uint32_t* nb;
+  size_t size, p0, p1;
+  uint32_t* class_of;
+  std::vector<uint32_t>& first_b;
+  uint32_t* list;
+  std::vector<uint32_t>& start;
+};
+
+// Arity 0: O's arity given at run time (`arity`); a surface's, 3, unrolled.
+template <size_t Arity, bool Lists>
+uint32_t walk_classes(const Walk& w, size_t arity_at_run_time) {
+  const size_t arity = Arity > 0 ? Arity : arity_at_run_time;
+  const uint32_t* const nb = w.nb;
+  uint32_t* const class_of = w.class_of;
+  const size_t sz = w.size;
+  uint32_t classes = 0;
+  size_t listed = 0;
+  for (uint32_t b = 0; b < sz; ++b) {
+    if (class_of[b] != kNone) continue;
+    const uint32_t id = classes++;
+    class_of[b] = id;
+    w.first_b.push_back(b);
+    if constexpr (Lists) {
+      w.start.push_back(static_cast<uint32_t>(listed));
+      w.list[listed++] = b;
+    }
+    // The links are involutions: the walk closes exactly when it is back at b (no read of
+    // class_of to find out); the step bound only guards against links that are not involutions.
+    size_t steps = 0;
+    // One step from x along position p: 0 on to y, 1 a free end, 2 back at b (closed).
+    auto step = [&](uint32_t& x, size_t p) {
+      const uint32_t y = nb[x * arity + p];
+      if (y == x) return 1;
+      if (y == b || ++steps >= sz) return 2;
+      class_of[y] = id;
+      if constexpr (Lists) w.list[listed++] = y;
+      x = y;
+      return 0;
+    };
+    uint32_t x = b;
+    int end = 0;
+    if (w.p0 == w.p1) {  // a pair
+      while (step(x, w.p0) == 0) {
+      }
+      continue;
+    }
+    while ((end = step(x, w.p0)) == 0 && (end = step(x, w.p1)) == 0) {
+    }
+    if (end == 2) continue;
+    x = b;  // a free end: the other way from b
+    while (step(x, w.p1) == 0 && step(x, w.p0) == 0) {
+    }
+  }
+  if constexpr (Lists) w.start.push_back(static_cast<uint32_t>(listed));
+  return classes;
+}
+
 // class_of[b] for every orbit dart: the orbits of the map before under k.dims, numbered in order
 // of their first orbit dart, listed in first_b. Returns their number.
 uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
@@ -93,57 +155,32 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   uint32_t classes = 0;
   if (k.positions.size() <= 2) {
     // Under one or two involutions an orbit is a pair, a path or an alternating cycle: walked
-    // without a stack, from b along p then q then p ..., and the other way when it ends. Two
-    // positions: p is the one of the higher dimension, the order of Evaluator::list_two_dims, and
-    // orbit dart lists of the classes of a listed kind are kept in that order (orbit_list, orbit_start).
+    // without a stack (walk_classes). Two positions: p0 is the one of the higher dimension, the
+    // order of Evaluator::list_two_dims, and orbit dart lists of the classes of a listed kind are
+    // kept in that order (orbit_list, orbit_start).
     size_t p0 = k.positions.empty() ? 0 : k.positions[0];
     size_t p1 = k.positions.size() < 2 ? p0 : k.positions[1];
     const OrbitType& t = cs_.scheme->left.nodes[cs_.scheme->hook_nodes()[0]].label;
     if (t[p1] > t[p0]) std::swap(p0, p1);
+    if (k.positions.empty()) {  // every orbit dart is a class of its own
+      for (uint32_t b = 0; b < sz; ++b) {
+        class_of[b] = classes++;
+        k.first_b->push_back(b);
+      }
+      k.orbit_start->clear();
+      return classes;
+    }
     const bool lists = p0 != p1 && k.listed;
-    uint32_t* list = nullptr;
-    size_t listed = 0;
     k.orbit_start.reserve(sz + 1);
     k.orbit_start->clear();
     if (lists) {
       k.orbit_list.reserve(sz);
       k.orbit_list->resize(sz);
-      list = k.orbit_list->data();
     }
-    for (uint32_t b = 0; b < sz; ++b) {
-      if (class_of[b] != kNone) continue;
-      const uint32_t id = classes++;
-      class_of[b] = id;
-      k.first_b->push_back(b);
-      if (k.positions.empty()) continue;
-      if (lists) {
-        k.orbit_start->push_back(static_cast<uint32_t>(listed));
-        list[listed++] = b;
-      }
-      // The links are involutions: the walk closes exactly when it is back at b (no read of
-      // class_of to find out); the step bound only guards against links that are not involutions.
-      size_t steps = 0;
-      for (int direction = 0; direction < 2; ++direction) {
-        uint32_t x = b;
-        size_t p = direction == 0 ? p0 : p1;
-        bool closed = false;
-        for (;;) {
-          const uint32_t y = nb[x * arity + p];
-          if (y == x) break;  // a free end: walk the other way
-          if (y == b || ++steps >= sz) {
-            closed = true;  // back at b: a cycle (or a pair under one position)
-            break;
-          }
-          class_of[y] = id;
-          if (lists) list[listed++] = y;
-          x = y;
-          p = p == p0 ? p1 : p0;
-        }
-        if (closed || p0 == p1) break;
-      }
-    }
-    if (lists) k.orbit_start->push_back(static_cast<uint32_t>(listed));
-    return classes;
+    const Walk w{nb, sz, p0, p1, class_of.data(), *k.first_b, lists ? k.orbit_list->data() : nullptr, *k.orbit_start};
+    if (arity == 3)
+      return lists ? walk_classes<3, true>(w, 3) : walk_classes<3, false>(w, 3);
+    return lists ? walk_classes<0, true>(w, arity) : walk_classes<0, false>(w, arity);
   }
   for (uint32_t b = 0; b < sz; ++b) {
     if (class_of[b] != kNone) continue;
