@@ -79,22 +79,20 @@ void EmbeddingPropagation::derive_class_kinds() {
 
 // The classes of a kind of one or two positions p0, p1 (p0 == p1: one), numbered in order of their
 // first orbit dart: each walked from its first dart b along p0, p1, p0, ... (O's links at those
-// positions), and from b along p1, p0, ... when the first way ends at a free dart. list (when not
-// null): the orbit darts of each class in that order, class after class, from start[id].
+// positions, n0 and n1), and from b along p1, p0, ... when the first way ends at a free dart. list
+// (when not null): the orbit darts of each class in that order, class after class, from start[id].
 struct Walk {
-  const uint32_t* nb;
-  size_t size, p0, p1;
+  const uint32_t* n0;  // O's links at p0 and p1
+  const uint32_t* n1;
+  size_t size;
   uint32_t* class_of;
   std::vector<uint32_t>& first_b;
   uint32_t* list;
   std::vector<uint32_t>& start;
 };
 
-// Arity 0: O's arity given at run time (`arity`); a surface's, 3, unrolled.
-template <size_t Arity, bool Lists>
-uint32_t walk_classes(const Walk& w, size_t arity_at_run_time) {
-  const size_t arity = Arity > 0 ? Arity : arity_at_run_time;
-  const uint32_t* const nb = w.nb;
+template <bool Lists>
+uint32_t walk_classes(const Walk& w) {
   uint32_t* const class_of = w.class_of;
   const size_t sz = w.size;
   uint32_t classes = 0;
@@ -111,9 +109,9 @@ uint32_t walk_classes(const Walk& w, size_t arity_at_run_time) {
     // The links are involutions: the walk closes exactly when it is back at b (no read of
     // class_of to find out); the step bound only guards against links that are not involutions.
     size_t steps = 0;
-    // One step from x along position p: 0 on to y, 1 a free end, 2 back at b (closed).
-    auto step = [&](uint32_t& x, size_t p) {
-      const uint32_t y = nb[x * arity + p];
+    // One step from x along the links nb: 0 on to y, 1 a free end, 2 back at b (closed).
+    auto step = [&](uint32_t& x, const uint32_t* nb) {
+      const uint32_t y = nb[x];
       if (y == x) return 1;
       if (y == b || ++steps >= sz) return 2;
       class_of[y] = id;
@@ -123,16 +121,16 @@ uint32_t walk_classes(const Walk& w, size_t arity_at_run_time) {
     };
     uint32_t x = b;
     int end = 0;
-    if (w.p0 == w.p1) {  // a pair
-      while (step(x, w.p0) == 0) {
+    if (w.n0 == w.n1) {  // a pair
+      while (step(x, w.n0) == 0) {
       }
       continue;
     }
-    while ((end = step(x, w.p0)) == 0 && (end = step(x, w.p1)) == 0) {
+    while ((end = step(x, w.n0)) == 0 && (end = step(x, w.n1)) == 0) {
     }
     if (end == 2) continue;
     x = b;  // a free end: the other way from b
-    while (step(x, w.p1) == 0 && step(x, w.p0) == 0) {
+    while (step(x, w.n1) == 0 && step(x, w.n0) == 0) {
     }
   }
   if constexpr (Lists) w.start.push_back(static_cast<uint32_t>(listed));
@@ -148,9 +146,6 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
   class_of.assign(sz, kNone);
   k.first_b.reserve(sz);  // pooled (the tables of one application reuse the previous one's)
   k.first_b->clear();
-  // O's links at the kind's positions (the orbit's own table: no dart index lookup).
-  const uint32_t* nb = c.nb.data();
-  const size_t arity = c.arity;
   (void)g;
   uint32_t classes = 0;
   if (k.positions.size() <= 2) {
@@ -177,10 +172,9 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
       k.orbit_list.reserve(sz);
       k.orbit_list->resize(sz);
     }
-    const Walk w{nb, sz, p0, p1, class_of.data(), *k.first_b, lists ? k.orbit_list->data() : nullptr, *k.orbit_start};
-    if (arity == 3)
-      return lists ? walk_classes<3, true>(w, 3) : walk_classes<3, false>(w, 3);
-    return lists ? walk_classes<0, true>(w, arity) : walk_classes<0, false>(w, arity);
+    // O's links at the kind's positions (the orbit's own tables: no dart index lookup).
+    const Walk w{c.nb[p0], c.nb[p1], sz, class_of.data(), *k.first_b, lists ? k.orbit_list->data() : nullptr, *k.orbit_start};
+    return lists ? walk_classes<true>(w) : walk_classes<false>(w);
   }
   for (uint32_t b = 0; b < sz; ++b) {
     if (class_of[b] != kNone) continue;
@@ -193,7 +187,7 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
       const uint32_t x = stack_.back();
       stack_.pop_back();
       for (size_t p : k.positions) {
-        const uint32_t y = nb[x * arity + p];
+        const uint32_t y = c.nb[p][x];
         if (class_of[y] == kNone) {
           class_of[y] = id;
           stack_.push_back(y);

@@ -1,18 +1,18 @@
-// ComponentView (component_view.hpp): O's links de-interleaved into the view's link arrays, the
-// slots gathered by orbit dart.
+// ComponentView (component_view.hpp): O's link arrays copied into the view's, the slots gathered
+// by orbit dart.
 #include "model/expr/component_view.hpp"
 
 namespace gmr::expr {
 
 void view_component(const Map& g, const scheme::ComponentInstance& c, const OrbitType& t,
                     const std::vector<const EmbeddingField*>& source, ComponentView& view) {
-  const size_t sz = c.size(), arity = c.arity;
+  const size_t sz = c.size();
   view.map = Map(g.dimension(), g.kind());
-  const uint32_t* const nb = c.nb.data();
   view.map.add_linked_darts(sz, [&](int i, Dart, LinkAppender& out) {
     size_t p = 0;
     while (p < t.size() && t[p] != i) ++p;
-    out.append(sz, [&](size_t b) { return nb[b * arity + p]; });
+    const uint32_t* const nb = c.nb[p];
+    out.append(sz, [nb](size_t b) { return nb[b]; });
   });
   view.fields.resize(source.size());
   for (size_t k = 0; k < source.size(); ++k) {

@@ -18,15 +18,15 @@ bool rewrites_whole_components(const SchemeEngine& engine, const Map& g) {
 namespace {
 
 // The flat tables of one call, reused by its components (their storage kept by the thread for its
-// next calls, buffer_pool.hpp). darts and nb are sized once per call for the live darts (no
-// component is larger); a component uses their first size() and size() * arity entries.
+// next calls, buffer_pool.hpp). darts and each position's links are sized once per call for the
+// live darts (no component is larger); a component uses their first size() entries.
 struct Workspace {
+  explicit Workspace(size_t arity) : nb_pools(arity) {}
   Pooled<uint32_t> index_pool;  // per dart of the map before the call: its b, or kNone (not yet met)
   Pooled<Dart> darts_pool;      // O.darts of the current component
-  Pooled<uint32_t> nb_pool;     // O's links
+  std::vector<Pooled<uint32_t>> nb_pools;  // O's links, one array per label position
   std::vector<uint32_t>& index = *index_pool;
   std::vector<Dart>& darts = *darts_pool;
-  std::vector<uint32_t>& nb = *nb_pool;
 };
 
 // Phase 1: the component of `hook` in the BFS order of orbit_graph, with O's links; returns its
@@ -43,7 +43,8 @@ size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w
   for (size_t p = 0; p < arity; ++p) link[p] = g.links(t[p]).data();
   uint32_t* index = w.index.data();
   Dart* darts = w.darts.data();
-  uint32_t* nb = w.nb.data();
+  uint32_t* nb[kMaxDim];
+  for (size_t p = 0; p < arity; ++p) nb[p] = w.nb_pools[p]->data();
   size_t n = 1;
   darts[0] = hook;
   index[hook] = 0;
@@ -61,7 +62,7 @@ size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w
         index[y] = b;
         darts[n++] = y;
       }
-      nb[k * arity + p] = b;
+      nb[p][k] = b;
     }
   }
   return n;
@@ -110,18 +111,17 @@ std::vector<AddedLink> added_links(const SchemeEngine& e, int n) {
 // node's block, explicit arcs lead to the same b in the other node's block or to O.darts[b].
 Dart add_rewritten_darts(Map& g, const SchemeEngine& e, const ComponentInstance& c,
                          const std::vector<AddedLink>& links) {
-  const size_t sz = c.size(), arity = c.arity;
+  const size_t sz = c.size();
   const auto dims = static_cast<size_t>(g.dimension()) + 1;
   const Dart* darts = c.darts.data();
-  const uint32_t* nb = c.nb.data();
   return g.add_linked_darts(e.added_count() * sz, [&](int j, Dart base, LinkAppender& out) {
     for (size_t r = 0; r < e.added_count(); ++r) {
       const Dart first = base + static_cast<Dart>(r * sz);
       const AddedLink& l = links[r * dims + static_cast<size_t>(j)];
       switch (l.kind) {
         case AddedLink::Implicit: {
-          const uint32_t* from = nb + l.position;
-          out.append(sz, [first, from, arity](size_t b) { return first + from[b * arity]; });
+          const uint32_t* from = c.nb[l.position];
+          out.append(sz, [first, from](size_t b) { return first + from[b]; });
           break;
         }
         case AddedLink::ToAdded: {
@@ -147,9 +147,7 @@ Dart add_rewritten_darts(Map& g, const SchemeEngine& e, const ComponentInstance&
 void write_preserved_links(Map& g, const SchemeEngine& e, const ComponentInstance& c, const OrbitType& t) {
   const RuleScheme& s = e.scheme();
   const size_t sz = c.size();
-  const size_t arity = c.arity;
   const Dart* darts = c.darts.data();
-  const uint32_t* nb = c.nb.data();
   for (uint32_t v = 0; v < s.right.size(); ++v) {
     if (e.added_rank(v) != SchemeEngine::kAdded) continue;
     const OrbitType& label = s.right.nodes[v].label;
@@ -157,7 +155,8 @@ void write_preserved_links(Map& g, const SchemeEngine& e, const ComponentInstanc
       const int j = label[p];
       if (j == OrbitType::kHole || j == t[p]) continue;
       Dart* lj = g.link_data(j);
-      for (uint32_t b = 0; b < sz; ++b) lj[darts[b]] = darts[nb[b * arity + p]];
+      const uint32_t* const nb = c.nb[p];
+      for (uint32_t b = 0; b < sz; ++b) lj[darts[b]] = darts[nb[b]];
     }
   }
   for (const auto& a : s.right.arcs)
@@ -185,7 +184,7 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   const OrbitType& t = s.left.nodes[engine.hook_nodes()[0]].label;
   const size_t nr = s.right.size();
   EverywhereApplication out;
-  Workspace w;
+  Workspace w(t.size());
   const Dart cap0 = g.capacity();
   w.index_pool.reserve(cap0);
   w.index.assign(cap0, ComponentInstance::kNone);
@@ -194,16 +193,18 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   g.reserve(g.capacity() + engine.added_count() * live);  // the links grow once
   w.darts_pool.reserve(live);
   w.darts.resize(live);
-  w.nb_pool.reserve(live * t.size());
-  w.nb.resize(live * t.size());
+  for (Pooled<uint32_t>& nb : w.nb_pools) {
+    nb.reserve(live);
+    nb->resize(live);
+  }
   size_t rewritten = 0;  // live darts of the components met so far: all met, no more hooks
   for (Dart d = 0; d < cap0 && rewritten < live; ++d) {
     if (!g.alive(d) || w.index[d] != ComponentInstance::kNone) continue;  // dead, or used
     const size_t sz = component_orbit(g, t, d, w);  // 1
     rewritten += sz;
     const std::span<const Dart> orbit(w.darts.data(), sz);
-    ComponentInstance c{&engine, orbit, std::span<const uint32_t>(w.nb.data(), sz * t.size()), t.size(), &w.index,
-                        g.capacity(), sz == live};
+    ComponentInstance c{&engine, orbit, {}, t.size(), &w.index, g.capacity(), sz == live};
+    for (size_t p = 0; p < t.size(); ++p) c.nb[p] = w.nb_pools[p]->data();
     if (observer) observer->before_rewrite(g, c);
     if (engine.added_count() > 0) c.base = add_rewritten_darts(g, engine, c, links);  // 5, 6
     write_preserved_links(g, engine, c, t);                                             // 6

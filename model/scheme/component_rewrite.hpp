@@ -12,7 +12,8 @@
 //                   = base + rank(v) · s + b          (v added, rank among the added nodes),
 // implicit arcs follow O's links (T[v][b] –j– T[v][nb(b, p)]), explicit arcs stay at b, and the
 // deleted darts are freed. This path does it on flat arrays shared by the components of one call
-// (the dart index doubles as the "used" table, no hashing, no match table), in three passes per
+// (the dart index doubles as the "used" table, no hashing, no match table; O's links one array
+// per label position, read in order by the passes after the BFS), in three passes per
 // component: the BFS (with prefetching), the added nodes' darts appended with their links — one
 // sequential write per dimension and node, each link written once (Map::add_linked_darts) — and
 // the preserved node's changed links (its implicit arcs whose relabeling keeps the dimension are
@@ -21,6 +22,7 @@
 // SchemeEngine::apply gives, dart for dart (tested against it on random maps and schemes in
 // model/scheme/tests/component_rewrite_test.cpp).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,7 +38,8 @@ struct ComponentInstance {
   static constexpr uint32_t kNone = UINT32_MAX;
   const SchemeEngine* engine = nullptr;
   std::span<const Dart> darts;        // O.darts[b] (BFS order of orbit_graph)
-  std::span<const uint32_t> nb;       // nb[b * arity + p] (O's link at position p)
+  // O's links, one array per label position: nb[p][b] is the orbit dart linked to b at position p.
+  std::array<const uint32_t*, kMaxDim> nb = {};
   size_t arity = 0;
   const std::vector<uint32_t>* index = nullptr;  // index[x] = b for a dart x of the component
   Dart base = 0;                                 // the first added dart (valid after the rewrite)
@@ -57,7 +60,7 @@ struct ComponentInstance {
       for (uint32_t b = 0; b < darts.size(); ++b) f(darts[b], b);
     }
   }
-  uint32_t neighbor(uint32_t b, size_t p) const { return nb[b * arity + p]; }
+  uint32_t neighbor(uint32_t b, size_t p) const { return nb[p][b]; }
   // The dart of the result for R node v at orbit dart b.
   Dart comatch(uint32_t v, uint32_t b) const {
     const uint32_t r = engine->added_rank(v);
