@@ -52,8 +52,9 @@ std::vector<std::vector<T>>* buffer_pool() {
 }
 }  // namespace detail
 
+// keep_contents: the vector is handed out as it was given back (Pooled::resize_for_overwrite).
 template <class T>
-std::vector<T> take_buffer(size_t min_capacity = 0) {
+std::vector<T> take_buffer(size_t min_capacity = 0, bool keep_contents = false) {
   auto* pool = detail::buffer_pool<T>();
   if (!pool) return {};
   auto& p = *pool;
@@ -64,7 +65,7 @@ std::vector<T> take_buffer(size_t min_capacity = 0) {
   if (best == p.size() || p[best].capacity() > detail::kPoolMaxSlack * needed) return {};
   std::vector<T> v = std::move(p[best]);
   p.erase(p.begin() + static_cast<std::ptrdiff_t>(best));
-  v.clear();
+  if (!keep_contents) v.clear();
   return v;
 }
 
@@ -96,9 +97,26 @@ class Pooled {
 
   // Room for n elements: the smallest pooled vector that has it (this one given back), else this
   // one grown in huge pages (huge_pages.hpp). Contents are kept only when no swap happens.
-  void reserve(size_t n) {
+  void reserve(size_t n) { reserve(n, false); }
+
+  // n elements whose values are unspecified (those an earlier use of the storage left): a table
+  // the caller writes whole before reading it. A pooled vector that held n elements or more is
+  // only cut to n, not filled (a subdivision's tables of every size come back each application).
+  void resize_for_overwrite(size_t n) {
+    reserve(n, true);
+    v_.resize(n);
+  }
+
+
+  std::vector<T>& operator*() { return v_; }
+  const std::vector<T>& operator*() const { return v_; }
+  std::vector<T>* operator->() { return &v_; }
+  const std::vector<T>* operator->() const { return &v_; }
+
+ private:
+  void reserve(size_t n, bool keep_contents) {
     if (v_.capacity() >= n) return;
-    std::vector<T> other = take_buffer<T>(n);
+    std::vector<T> other = take_buffer<T>(n, keep_contents);
     if (other.capacity() >= n) {
       std::swap(v_, other);
       give_buffer(std::move(other));
@@ -108,12 +126,6 @@ class Pooled {
     reserve_in_huge_pages(v_, n);
   }
 
-  std::vector<T>& operator*() { return v_; }
-  const std::vector<T>& operator*() const { return v_; }
-  std::vector<T>* operator->() { return &v_; }
-  const std::vector<T>* operator->() const { return &v_; }
-
- private:
   std::vector<T> v_;
 };
 

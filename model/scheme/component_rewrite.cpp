@@ -191,12 +191,8 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   const std::vector<AddedLink> links = added_links(engine, g.dimension());
   const size_t live = g.size();  // no component is larger; every live dart is rewritten
   g.reserve(g.capacity() + engine.added_count() * live);  // the links grow once
-  w.darts_pool.reserve(live);
-  w.darts.resize(live);
-  for (Pooled<uint32_t>& nb : w.nb_pools) {
-    nb.reserve(live);
-    nb->resize(live);
-  }
+  w.darts_pool.resize_for_overwrite(live);  // a component writes its entries before reading them
+  for (Pooled<uint32_t>& nb : w.nb_pools) nb.resize_for_overwrite(live);
   size_t rewritten = 0;  // live darts of the components met so far: all met, no more hooks
   for (Dart d = 0; d < cap0 && rewritten < live; ++d) {
     if (!g.alive(d) || w.index[d] != ComponentInstance::kNone) continue;  // dead, or used

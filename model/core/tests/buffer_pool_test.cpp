@@ -48,6 +48,33 @@ TEST(BufferPool, KeepsBuffersFromOnePageUp) {
   EXPECT_EQ(take_buffer<Cell>(10).capacity(), 0u);
 }
 
+// resize_for_overwrite hands out n elements: a pooled vector that held at least n is cut to n with
+// its values left as they were (no fill), one that held fewer is grown with value-initialised ones.
+TEST(BufferPool, ResizeForOverwriteLeavesAPooledTableUnfilled) {
+  struct Entry {  // a pool of its own
+    uint32_t v;
+  };
+  std::vector<Entry> used(5000, Entry{7});
+  const Entry* const data = used.data();
+  give_buffer(std::move(used));
+  {
+    Pooled<Entry> t;
+    t.resize_for_overwrite(4000);
+    ASSERT_EQ(t->data(), data);
+    EXPECT_EQ(t->size(), 4000u);
+    EXPECT_EQ((*t)[3999].v, 7u);  // left as the earlier use wrote it
+    t->resize(2000);              // given back holding 2000
+  }
+  Pooled<Entry> u;
+  u.resize_for_overwrite(3000);
+  ASSERT_EQ(u->data(), data);
+  EXPECT_EQ((*u)[1999].v, 7u);
+  EXPECT_EQ((*u)[2000].v, 0u);  // beyond what it held: value-initialised
+  Pooled<Entry> plain;
+  plain.reserve(10);
+  EXPECT_TRUE(plain->empty());  // reserve still hands out an emptied vector
+}
+
 // A map that outlives its thread's pool (made before the pool, so destroyed after it, as a static
 // map is) frees its arrays itself when destroyed; under ASan a give-back into the destroyed pool
 // is reported as a use after free.
