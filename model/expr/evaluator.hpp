@@ -183,7 +183,6 @@ class Evaluator {
     bool fast = false;                    // every lane's members listed (else aggregate per lane)
   };
   LaneMembers lane_members_[2];
-  std::vector<Dart> lane_orbit_;
   int lane_members_next_ = 0;
   bool run_lanes(const Program& p, const Dart* nodes, size_t m, ValueType target, std::vector<Vec3>& out);
   bool lane_load(const LoadRef& r, Dart d, Val& v) const;

@@ -112,19 +112,29 @@ const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension,
   if (!e.word.empty() || e.ref.is_variable || e.ref.index != 0 || g_.kind() != MapKind::GMap ||
       __builtin_popcount(e.orbit_mask) != 2)
     return lm;
+  const OrbitLists* listed = nullptr;  // listed_orbit's list, read in place
+  for (const OrbitLists& l : lists_)
+    if (l.mask == e.orbit_mask) {
+      listed = &l;
+      break;
+    }
+  if (!listed) return lm;
   const OrbitIds& o = orbit_ids(e.class_mask);
   const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
   const uint32_t* const index = o.index;
-  std::vector<Dart>& in_orbit = lane_orbit_;  // not scratch_[0]: members() keeps its last walk there
   for (size_t j = 0; j < m; ++j) {
     lm.start[j] = static_cast<uint32_t>(lm.darts.size());
     Dart d = nodes[j];
     if (d == kNoDart) return lm;
     for (const int dim : e.ref.path) d = held_links_[dim][d];
-    if (!listed_orbit(e.orbit_mask, d, in_orbit)) return lm;
+    const uint32_t orbit = listed->numbers[d];
+    const uint32_t* const in_orbit = listed->list + listed->start[orbit];
+    const size_t n = listed->start[orbit + 1] - listed->start[orbit];
+    if (in_orbit[0] != d || n > kSmallOrbit) return lm;  // as listed_orbit: d must start its list
     uint32_t met[kSmallOrbit];
     size_t count = 0;
-    for (const Dart x : in_orbit) {
+    for (size_t i = 0; i < n; ++i) {
+      const Dart x = in_orbit[i];
       const uint32_t id = ids[index ? index[x] : x];
       size_t k = count;
       while (k > 0 && met[k - 1] != id) --k;
