@@ -8,9 +8,6 @@
 // word otherwise waits on each region of the next cell in turn (a dart's neighbours are known only
 // once its links arrive), which is most of a traversal's time on cells whose darts lie in several
 // regions (a volume after its faces were replaced). A wrong prediction costs only the fetches.
-// The prediction is also checked as the next cell's numbering (check_numbering,
-// word_traversal.hpp): its reads known in advance, none waits on another; a wrong one is refused
-// at its first wrong label and the cell followed.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -32,8 +29,7 @@ void prefetch_predicted_cell(const Map& g, int i, const std::vector<uint32_t>& f
                              const Dart* before, uint32_t size);
 
 // The cells a sweep numbers along one word, one after the other: from the second on, each one
-// numbered fetches the next one's predicted darts and gives them to be checked (for the
-// dimensions predicts_cells allows).
+// numbered fetches the next one's predicted darts (for the dimensions predicts_cells allows).
 class CellPredictor {
  public:
   // A cell of dimension i numbered along the word (its darts in label order).
@@ -41,8 +37,7 @@ class CellPredictor {
     if (!predicts_cells(i)) return;
     before_.swap(last_);
     last_ = cell;
-    if (known_ < 2) ++known_;
-    if (known_ == 2)
+    if (++known_ >= 2)
       prefetch_predicted_cell(g, i, flag, last_.data(), before_.data(), static_cast<uint32_t>(cell.size()));
   }
   // The next cell's predicted darts in label order (last[k] + (last[k] - before[k]), wrapped
