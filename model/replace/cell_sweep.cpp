@@ -60,11 +60,4 @@ bool CellSweep::follow(Dart d, const uint32_t* word, uint32_t size, const std::v
   return true;
 }
 
-bool CellSweep::check(Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag,
-                      const Dart* numbering) {
-  if (!check_numbering(g_, cell_dim_, d, word, size, flag, met_, numbering)) return false;
-  meet(numbering, size);
-  return true;
-}
-
 }  // namespace gmr::replace

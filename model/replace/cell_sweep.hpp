@@ -49,9 +49,6 @@ class CellSweep {
   // k + 1): on success the cell is marked met as by traverse and true is returned; otherwise
   // nothing is marked (traverse then meets the cell).
   bool follow(Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag, Dart* out);
-  // follow with the numbering given (check_numbering: a predicted cell): on success the cell is
-  // marked met as by follow.
-  bool check(Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag, const Dart* numbering);
 
  private:
   [[noreturn]] static void throw_listed_twice(Dart d);

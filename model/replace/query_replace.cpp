@@ -100,14 +100,9 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     // found and its word looked up.
     StoreMatch match;
     uint32_t start = 0;
-    // Along that word, the cell is first checked as predicted from the last two cells numbered
-    // along it (stride_prefetch.hpp), then followed.
-    const uint32_t* along = last_key.data() + 1;
-    const uint32_t size = static_cast<uint32_t>(followed.size());
     const bool by_last = last.hits && (store.mode() == Mode::Unoriented || positive[rep]) &&
-                         ((!deferred && predictor.predict(followed.data(), size) &&
-                           sweep.check(rep, along, size, target.flag, followed.data())) ||
-                          sweep.follow(rep, along, size, target.flag, followed.data()));
+                         sweep.follow(rep, last_key.data() + 1, static_cast<uint32_t>(followed.size()), target.flag,
+                                      followed.data());
     if (by_last) {
       match = last;
       match.start = 0;

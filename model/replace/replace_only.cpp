@@ -33,11 +33,8 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
   };
   sweep.for_each_cell([&](Dart d) {
     ++r.cells;
-    // The cell numbered along the pattern's word from d, checked on the way (word_traversal.hpp):
-    // first as predicted from the last two cells (stride_prefetch.hpp), then by following it.
-    const bool as_predicted = !starts && predictor.predict(f.data(), t.boundary) &&
-                              sweep.check(d, t.word.data(), t.boundary, target.flag, f.data());
-    if (!as_predicted && !sweep.follow(d, t.word.data(), t.boundary, target.flag, f.data())) {
+    // The cell numbered along the pattern's word from d, checked on the way (word_traversal.hpp).
+    if (!sweep.follow(d, t.word.data(), t.boundary, target.flag, f.data())) {
       sweep.traverse(d, target.flag, {}, c);
       r.unmatched.push_back(d);
       return;

@@ -35,24 +35,16 @@ class CellPredictor {
   // A cell of dimension i numbered along the word (its darts in label order).
   void numbered(const Map& g, int i, const std::vector<uint32_t>& flag, const std::vector<Dart>& cell) {
     if (!predicts_cells(i)) return;
-    before_.swap(last_);
-    last_ = cell;
-    if (++known_ >= 2)
-      prefetch_predicted_cell(g, i, flag, last_.data(), before_.data(), static_cast<uint32_t>(cell.size()));
-  }
-  // The next cell's predicted darts in label order (last[k] + (last[k] - before[k]), wrapped
-  // below 0) into out (size darts, the word's); false when fewer than two cells are known.
-  bool predict(Dart* out, uint32_t size) const {
-    if (known_ < 2 || last_.size() != size) return false;
-    for (uint32_t k = 0; k < size; ++k) out[k] = 2 * last_[k] - before_[k];
-    return true;
+    if (known_) prefetch_predicted_cell(g, i, flag, cell.data(), before_.data(), static_cast<uint32_t>(cell.size()));
+    before_ = cell;
+    known_ = true;
   }
   // The next cell follows another word: nothing to predict from until two are numbered.
-  void restart() { known_ = 0; }
+  void restart() { known_ = false; }
 
  private:
-  std::vector<Dart> last_, before_;
-  int known_ = 0;
+  std::vector<Dart> before_;
+  bool known_ = false;
 };
 
 }  // namespace gmr::replace

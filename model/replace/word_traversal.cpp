@@ -37,59 +37,7 @@ disagree:
   return false;
 }
 
-constexpr uint32_t kAhead = 16;
-
-// check_numbering for a fixed arity I: follow with out given (a new label's dart compared with
-// the given one instead of stored).
-template <int I, bool AllFlagged>
-bool check(const Dart* const* link, Dart d, const uint32_t* w, uint32_t size, const uint32_t* fl, Dart flagged,
-           MetBits met, const Dart* out) {
-  uint32_t count = 1;
-  if (out[0] != d) return false;
-  met.set(d);
-  for (uint32_t k = 0; k < count; ++k) {
-    const Dart x = out[k];  // checked as a link of an earlier dart (or d): a dart of the map
-    // The dart kAhead labels on is known already: its links and flag fetched.
-    if (k + kAhead < size && out[k + kAhead] < met.size) {
-      for (int p = 0; p < I; ++p) __builtin_prefetch(link[p] + out[k + kAhead]);
-      if (AllFlagged || out[k + kAhead] < flagged) __builtin_prefetch(fl + out[k + kAhead]);
-    }
-    if ((AllFlagged || x < flagged ? fl[x] : 0) != *w++) goto disagree;
-    for (int j = 0; j < I; ++j) {
-      const Dart y = link[j][x];
-      const uint32_t l = *w++;
-      if (l == count + 1) {
-        if (count == size || out[count] != y || y >= met.size || met.test(y)) goto disagree;
-        met.set(y);
-        ++count;
-      } else if (l == 0 || l > count || out[l - 1] != y) {
-        goto disagree;
-      }
-    }
-  }
-  if (count == size) return true;
-disagree:
-  for (uint32_t k = 0; k < count; ++k) met.reset(out[k]);
-  return false;
-}
-
 }  // namespace
-
-bool check_numbering(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size,
-                     const std::vector<uint32_t>& flag, MetBits met, const Dart* numbering) {
-  if (size == 0) return false;
-  const Dart* link[kMaxDim];
-  for (int j = 0; j < i; ++j) link[j] = g.links(j).data();
-  const Dart flagged = static_cast<Dart>(flag.size());
-  const bool all = flagged >= met.size;
-  switch (i) {
-    case 2: return all ? check<2, true>(link, d, word, size, flag.data(), flagged, met, numbering)
-                       : check<2, false>(link, d, word, size, flag.data(), flagged, met, numbering);
-    case 3: return all ? check<3, true>(link, d, word, size, flag.data(), flagged, met, numbering)
-                       : check<3, false>(link, d, word, size, flag.data(), flagged, met, numbering);
-    default: return false;
-  }
-}
 
 bool follow_word(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag,
                  MetBits met, Dart* out) {

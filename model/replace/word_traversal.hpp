@@ -50,14 +50,4 @@ struct MetBits {
 bool follow_word(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag,
                  MetBits met, Dart* out);
 
-// follow_word with the numbering given: `numbering` (size darts, numbering[0] = d) is checked to be
-// the one follow_word gives from d, letter by letter as follow_word reads them (a new label's dart
-// must be the next given one). The darts to read are known before their links arrive, so the
-// reads of a cell do not wait on each other (a predicted cell, stride_prefetch.hpp). Returns true
-// with every dart of the orbit set in `met` exactly when follow_word would return true with out
-// equal to `numbering`; otherwise false with `met` as it was (the numbering was wrong, or the
-// cell does not follow the word from d: follow_word then tells which).
-bool check_numbering(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size,
-                     const std::vector<uint32_t>& flag, MetBits met, const Dart* numbering);
-
 }  // namespace gmr::replace

@@ -68,38 +68,6 @@ TEST(ReplaceOnly, HexSubdivisionIsQueryReplaceDartForDart) {
   }
 }
 
-// Without a list, each cell after the first two is first checked as predicted from the last two
-// (CellPredictor, check_numbering); listed cells are only followed. On a block of 2 x 2 x 8 (rows of 8
-// cells: predictions right inside a row, wrong after its end), the sweep gives the same map, dart for dart,
-// as the same cells listed in the sweep's order, and as query-replace.
-TEST(ReplaceOnly, PredictedCellsGiveTheMapOfListedCells) {
-  const PatternStore store = hex_subdivision_patterns();
-  const size_t split4 = index_of_pattern(store, "split4"), hex8 = index_of_pattern(store, "hex8");
-  std::vector<Voxel> voxels;
-  for (int x = 0; x < 2; ++x)
-    for (int y = 0; y < 2; ++y)
-      for (int z = 0; z < 8; ++z) voxels.push_back({x, y, z});
-  FlaggedMap swept = testing::positioned_polycube(voxels);
-  split_all_edges(swept, 2);
-  FlaggedMap listed = swept, qr = swept;
-  auto cells = [](const FlaggedMap& m, int dim) { return orbit_representatives(m.map, cell_type(m.map, dim)); };
-  for (int dim : {2, 3}) {
-    const size_t pattern = dim == 2 ? split4 : hex8;
-    const std::vector<Dart> starts = cells(listed, dim);
-    const QueryReplaceReport a = replace_only(swept, store, pattern, nullptr, Precondition::AssumeValid);
-    const QueryReplaceReport b = replace_only(listed, store, pattern, &starts, Precondition::AssumeValid);
-    const QueryReplaceReport c = query_replace(qr, store, dim, {}, {}, {}, nullptr, Precondition::AssumeValid);
-    EXPECT_TRUE(a.unmatched.empty() && b.unmatched.empty() && c.unmatched.empty());
-    EXPECT_EQ(a.matched[pattern], starts.size());
-    EXPECT_EQ(b.matched[pattern], starts.size());
-    EXPECT_EQ(c.matched[pattern], starts.size());
-    EXPECT_TRUE(same_darts(swept, listed)) << dim;
-    EXPECT_TRUE(same_darts(swept, qr)) << dim;
-  }
-  EXPECT_TRUE(is_valid(swept.map));
-  EXPECT_TRUE(is_isomorphic(subdivide_hexahedra(testing::positioned_polycube(voxels)).map, swept.map));
-}
-
 // Listed cells, each from another flagged dart (the largest of its cell): every start of a
 // transitive automorphism group gives an isomorphic result, valid after every replacement.
 TEST(ReplaceOnly, ListedCellsFromOtherStartDarts) {

@@ -14,7 +14,6 @@
 #include "model/replace/flagged_word.hpp"
 #include "model/replace/half_cells.hpp"
 #include "model/replace/query_replace.hpp"
-#include "model/replace/replace_only.hpp"
 #include "model/replace/stride_prefetch.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 #include "model/replace/word_traversal.hpp"
@@ -103,96 +102,6 @@ TEST(WordTraversal, RefusesOtherWordsAndLeavesNothingMet) {
   // The 2-gon's own word does agree.
   const Word wd = word_from(digon, 2, 0, none);
   EXPECT_TRUE(follow_word(digon, 2, 0, wd.data(), 4, none, small.met(digon.capacity()), out2.data()));
-}
-
-// A numbering given in advance (check_numbering) is accepted exactly when it is the one
-// follow_word gives: from every dart of the cube's and a polycube's faces and volumes, the
-// followed numbering is accepted and meets the same darts; the same numbering with two labels
-// swapped, a dart of another cell, a dart past the map, another first dart, or a dart met before is
-// refused, and nothing stays met.
-TEST(WordTraversal, ChecksAGivenNumberingAsFollowingFindsIt) {
-  for (const Map& g : {make_cube(2), make_polycube({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}})}) {
-    std::vector<uint32_t> flag(g.capacity(), 0);
-    for (Dart d = 0; d < g.capacity(); d += 3) flag[d] = 1 + d % 2;
-    for (int i : {2, 3}) {
-      for (Dart d = 0; d < g.capacity(); ++d) {
-        const Word w = word_from(g, i, d, flag);
-        const uint32_t size = static_cast<uint32_t>(cell_boundary(g, i, d, flag, {}).size());
-        Bits followed(g.capacity()), checked(g.capacity());
-        std::vector<Dart> out(size);
-        ASSERT_TRUE(follow_word(g, i, d, w.data(), size, flag, followed.met(g.capacity()), out.data()));
-        EXPECT_TRUE(check_numbering(g, i, d, w.data(), size, flag, checked.met(g.capacity()), out.data()))
-            << i << " " << d;
-        EXPECT_EQ(checked.words, followed.words);
-        Bits none(g.capacity());
-        auto refused = [&](std::vector<Dart> numbering, const char* what) {
-          EXPECT_FALSE(check_numbering(g, i, d, w.data(), size, flag, none.met(g.capacity()), numbering.data()))
-              << what << " " << i << " " << d;
-          EXPECT_EQ(none.count(), 0u) << what;
-        };
-        std::vector<Dart> swapped = out;
-        std::swap(swapped[size / 2], swapped[size - 1]);
-        refused(swapped, "two labels swapped");
-        std::vector<Dart> other = out;
-        other[size - 1] = out[0] == 0 ? g.capacity() - 1 : 0;
-        if (std::find(out.begin(), out.end(), other[size - 1]) == out.end()) refused(other, "a dart of another cell");
-        std::vector<Dart> past = out;
-        past[size / 2] = g.capacity() + 40;
-        refused(past, "a dart past the map");
-        std::vector<Dart> first = out;
-        first[0] = out[1];
-        refused(first, "another first dart");
-        none.met(g.capacity()).set(out[size - 1]);
-        EXPECT_FALSE(check_numbering(g, i, d, w.data(), size, flag, none.met(g.capacity()), out.data()));
-        EXPECT_EQ(none.count(), 1u);
-      }
-    }
-  }
-}
-
-// On a block whose faces were replaced (the hexahedral subdivision's volume step), the volumes
-// met one after the other by the sweep are predicted from the last two (CellPredictor): a
-// prediction is accepted by check_numbering exactly when it is the numbering follow_word gives,
-// with the same darts met; rows of 8 volumes: about half are (the fast path), the others are
-// followed.
-TEST(WordTraversal, PredictedVolumesAreAcceptedExactlyWhenFollowed) {
-  PatternStore store(Mode::Unoriented);
-  for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
-  size_t split4 = 0, hex8 = 0;
-  for (size_t p = 0; p < store.patterns().size(); ++p)
-    (store.patterns()[p].name == "split4" ? split4 : hex8) = p;
-  std::vector<Voxel> voxels;
-  for (int x = 0; x < 2; ++x)
-    for (int y = 0; y < 2; ++y)
-      for (int z = 0; z < 8; ++z) voxels.push_back({x, y, z});
-  FlaggedMap m = all_flagged(make_polycube(voxels));
-  split_all_edges(m, 2);
-  ASSERT_TRUE(replace_only(m, store, split4).unmatched.empty());
-  const ReplacementTemplate& t = store.replacement(hex8);
-  const Map& g = m.map;
-  Bits met(g.capacity());
-  CellPredictor predictor;
-  std::vector<Dart> out(t.boundary), predicted(t.boundary);
-  size_t cells = 0, accepted = 0;
-  for (Dart d = 0; d < g.capacity(); ++d) {
-    if (met.met(g.capacity()).test(d)) continue;
-    ++cells;
-    const bool known = predictor.predict(predicted.data(), t.boundary);
-    EXPECT_EQ(known, cells > 2);
-    Bits checked = met;
-    const bool ok = known && check_numbering(g, 3, d, t.word.data(), t.boundary, m.flag, checked.met(g.capacity()),
-                                             predicted.data());
-    ASSERT_TRUE(follow_word(g, 3, d, t.word.data(), t.boundary, m.flag, met.met(g.capacity()), out.data())) << d;
-    EXPECT_EQ(ok, known && predicted == out) << d;
-    if (ok) {
-      EXPECT_EQ(checked.words, met.words) << d;
-    }
-    accepted += ok;
-    predictor.numbered(g, 3, m.flag, out);
-  }
-  EXPECT_EQ(cells, voxels.size());
-  EXPECT_GT(accepted, cells / 3);     // the fast path taken inside rows
-  EXPECT_LT(accepted + 2, cells);     // and left after the ends of rows
 }
 
 // The sweep's next unmet dart (MetBits::next_clear) is the first clear bit at or after a dart, as
