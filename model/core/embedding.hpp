@@ -86,6 +86,15 @@ class Embedding {
     if (slot_.capacity() < slot_.size() + n) regrow(slot_, std::max(slot_.size() + n, 2 * slot_.size()));
     append_generated(slot_, n, gen);
   }
+  // The same with gen(x) = offset + classes[x]: the classes copied, then offset added to each (two
+  // passes the compiler vectorises, where a generator is one call per slot).
+  void append_slots_offset(const uint32_t* classes, size_t n, uint32_t offset) {
+    if (slot_.capacity() < slot_.size() + n) regrow(slot_, std::max(slot_.size() + n, 2 * slot_.size()));
+    const size_t first = slot_.size();
+    slot_.insert(slot_.end(), classes, classes + n);
+    uint32_t* const s = slot_.data() + first;
+    for (size_t x = 0; x < n; ++x) s[x] += offset;
+  }
   // set_slot without sizing: d must be below the size reached by an earlier set_slot/set.
   void set_slot_unchecked(Dart d, uint32_t s) { slot_[d] = s; }
   const T& value(uint32_t s) const { return values_[s]; }

@@ -378,7 +378,10 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     if (!appended) E.fit(g);
     for (uint32_t v : node_of_rank) {
       const auto slot = slot_of(kind_of[v]);
-      if (appended) {
+      const ClassKind& k = kinds[kind_of[v]];
+      if (appended && k.declaration >= 0) {  // computed: offset + class
+        E.append_slots_offset(k.class_of->data(), sz, offset[kind_of[v]]);
+      } else if (appended) {
         E.append_slots(sz, [&](size_t b) { return slot(static_cast<uint32_t>(b)); });
       } else {
         const Dart first = c.comatch(v, 0);

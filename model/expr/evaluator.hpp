@@ -178,7 +178,7 @@ class Evaluator {
   std::vector<Val> lane_stack_, lane_lets_;
   struct LaneMembers {
     const Expr* comprehension = nullptr;  // its orbit, classes and start (equal ones share)
-    std::vector<Dart> darts;              // the first darts of the members, lane after lane
+    std::vector<Dart> darts;              // the first darts of the members, lane after lane (from start[lane])
     uint32_t start[kLanes + 1] = {};
     bool fast = false;                    // every lane's members listed (else aggregate per lane)
   };

@@ -58,19 +58,30 @@ size_t Evaluator::combine_classes(const Program& p, const Dart* nodes, size_t n,
   if (!affine) return combine_classes_in_lanes(p, nodes, n, target, out);
   if ((target == ValueType::Point && std::fabs(mass - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(mass) > 1e-9))
     return 0;
+  // The values written in place (no call in the loop: the sums stay in registers); cut back to the
+  // classes done when one fails.
+  const size_t first = out.size();
+  out.resize(first + n);
+  Vec3* const to = out.data() + first;
   for (size_t j = 0; j < n; ++j) {
     double x = ins.value[0], y = ins.value[1], z = ins.value[2];
-    if (nodes[j] >= cap) return j;
+    bool found = nodes[j] < cap;
     for (const Term& term : terms) {
+      if (!found) break;
       Dart d = nodes[j];
       for (uint8_t s = 0; s < term.length; ++s) d = term.step[s][d];
-      if (d >= term.size || term.slots[d] == Embedding<Vec3>::kNoValue) return j;
+      found = d < term.size && term.slots[d] != Embedding<Vec3>::kNoValue;
+      if (!found) break;
       const Vec3& v = term.values[term.slots[d]];
       x = x + v[0] * term.weight;
       y = y + v[1] * term.weight;
       z = z + v[2] * term.weight;
     }
-    out.push_back({x, y, z});
+    if (!found) {
+      out.resize(first + j);
+      return j;
+    }
+    to[j] = {x, y, z};
   }
   return n;
 }

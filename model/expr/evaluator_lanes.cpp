@@ -70,6 +70,7 @@ size_t Evaluator::run_classes(const Program& p, const Dart* nodes, size_t n, Val
   if (stack_.size() < p.max_stack) stack_.resize(p.max_stack);
   lane_stack_.resize(p.max_stack * kLanes);
   lane_lets_.resize(kLaneLets * kLanes);
+  for (LaneMembers& lm : lane_members_) lm.darts.resize(kLanes * kSmallOrbit);
   for (size_t j = 0; j < n; j += kLanes) {
     const size_t m = std::min(kLanes, n - j);
     try {
@@ -108,7 +109,7 @@ const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension,
   lane_members_next_ = 1 - lane_members_next_;
   lm.comprehension = &e;
   lm.fast = false;
-  lm.darts.clear();
+  size_t listed_darts = 0;
   if (!e.word.empty() || e.ref.is_variable || e.ref.index != 0 || g_.kind() != MapKind::GMap ||
       __builtin_popcount(e.orbit_mask) != 2)
     return lm;
@@ -123,7 +124,7 @@ const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension,
   const uint32_t* const ids = o.numbers ? o.numbers : o.ids->data();
   const uint32_t* const index = o.index;
   for (size_t j = 0; j < m; ++j) {
-    lm.start[j] = static_cast<uint32_t>(lm.darts.size());
+    lm.start[j] = static_cast<uint32_t>(listed_darts);
     Dart d = nodes[j];
     if (d == kNoDart) return lm;
     for (const int dim : e.ref.path) d = held_links_[dim][d];
@@ -140,10 +141,10 @@ const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension,
       while (k > 0 && met[k - 1] != id) --k;
       if (k > 0) continue;
       met[count++] = id;
-      lm.darts.push_back(x);
+      lm.darts[listed_darts++] = x;  // sized for kLanes orbits of kSmallOrbit darts (run_classes)
     }
   }
-  lm.start[m] = static_cast<uint32_t>(lm.darts.size());
+  lm.start[m] = static_cast<uint32_t>(listed_darts);
   lm.fast = true;
   return lm;
 }
@@ -283,14 +284,30 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
             (body->op == Op::Constant ||
              (body->op == Op::Load && loads_[body->index].variable && loads_[body->index].index == 0));
         const LaneMembers* lm = one_instruction_body ? &lane_members(arg, nodes, m) : nullptr;
-        if (lm && lm->fast) {
+        if (lm && lm->fast && body->op == Op::Constant) {
           const Val c{body->value[0], body->value[1], body->value[2], body->value[3]};
           for (size_t j = 0; j < m; ++j) {
             MemberSum s;
+            for (uint32_t k = lm->start[j]; k < lm->start[j + 1]; ++k) s.push_back(c);
+            if (e.function == Function::Middle && s.n == 0) return false;
+            top[j] = ops::finish_aggregate(e.function, s.sum, s.n);
+          }
+        } else if (lm && lm->fast) {
+          // lane_load with what it reads taken once: the held link arrays of the path, the field.
+          const LoadRef& r = loads_[body->index];
+          const Dart* step[LoadRef::kMaxPath];
+          for (uint8_t q = 0; q < r.length; ++q) step[q] = held_links_[r.path[q]];
+          const HeldField& f = held_fields_[r.embedding];
+          const bool scalar = f.type == ValueType::Scalar, point = f.type == ValueType::Point;
+          const Dart* const darts = lm->darts.data();
+          for (size_t j = 0; j < m; ++j) {
+            MemberSum s;
             for (uint32_t k = lm->start[j]; k < lm->start[j + 1]; ++k) {
-              Val v = c;
-              if (body->op == Op::Load && !lane_load(loads_[body->index], lm->darts[k], v)) return false;
-              s.push_back(v);
+              Dart d = darts[k];
+              for (uint8_t q = 0; q < r.length; ++q) d = step[q][d];
+              if (d >= f.size || f.slots[d] == Embedding<Vec3>::kNoValue) return false;
+              const Vec3& x = f.values[f.slots[d]];
+              s.push_back({x[0], scalar ? 0.0 : x[1], scalar ? 0.0 : x[2], point ? 1.0 : 0.0});
             }
             if (e.function == Function::Middle && s.n == 0) return false;
             top[j] = ops::finish_aggregate(e.function, s.sum, s.n);
