@@ -176,6 +176,15 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
     Val* const top = row(sp);  // the next row
     Val* const a = sp >= 2 ? row(sp - 2) : nullptr;
     Val* const b = sp >= 1 ? row(sp - 1) : nullptr;
+    // An operation of one value (the top one, replaced) or of two (the two top ones, replaced by
+    // the result), lane after lane.
+    auto unary = [&](auto f) {
+      for (size_t j = 0; j < m; ++j) b[j] = f(b[j]);
+    };
+    auto binary = [&](auto f) {
+      for (size_t j = 0; j < m; ++j) a[j] = f(a[j], b[j]);
+      --sp;
+    };
     switch (pc->op) {
       case Op::Constant: {
         const Val c{pc->value[0], pc->value[1], pc->value[2], pc->value[3]};
@@ -209,29 +218,16 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         if (pc->op == Op::Combine) ++sp;
         break;
       }
-      case Op::Accumulate:
-        for (size_t j = 0; j < m; ++j) a[j] = ops::add(a[j], ops::scale(b[j], pc->value[0]));
-        --sp;
+      case Op::Accumulate: {
+        const double w = pc->value[0];
+        binary([w](const Val& x, const Val& y) { return ops::add(x, ops::scale(y, w)); });
         break;
-      case Op::Neg:
-        for (size_t j = 0; j < m; ++j) b[j] = ops::neg(b[j]);
-        break;
-      case Op::Add:
-        for (size_t j = 0; j < m; ++j) a[j] = ops::add(a[j], b[j]);
-        --sp;
-        break;
-      case Op::Sub:
-        for (size_t j = 0; j < m; ++j) a[j] = ops::sub(a[j], b[j]);
-        --sp;
-        break;
-      case Op::ScaleLeft:
-        for (size_t j = 0; j < m; ++j) a[j] = ops::scale(b[j], a[j].x);
-        --sp;
-        break;
-      case Op::ScaleRight:
-        for (size_t j = 0; j < m; ++j) a[j] = ops::scale(a[j], b[j].x);
-        --sp;
-        break;
+      }
+      case Op::Neg: unary([](const Val& x) { return ops::neg(x); }); break;
+      case Op::Add: binary([](const Val& x, const Val& y) { return ops::add(x, y); }); break;
+      case Op::Sub: binary([](const Val& x, const Val& y) { return ops::sub(x, y); }); break;
+      case Op::ScaleLeft: binary([](const Val& x, const Val& y) { return ops::scale(y, x.x); }); break;
+      case Op::ScaleRight: binary([](const Val& x, const Val& y) { return ops::scale(x, y.x); }); break;
       case Op::Div:
         for (size_t j = 0; j < m; ++j) {
           if (b[j].x == 0.0) return false;
@@ -245,25 +241,19 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         sp -= 2;
         break;
       }
-      case Op::Cos: for (size_t j = 0; j < m; ++j) b[j] = ops::cos(b[j]); break;
-      case Op::Sin: for (size_t j = 0; j < m; ++j) b[j] = ops::sin(b[j]); break;
-      case Op::Abs: for (size_t j = 0; j < m; ++j) b[j] = ops::abs(b[j]); break;
+      case Op::Cos: unary([](const Val& x) { return ops::cos(x); }); break;
+      case Op::Sin: unary([](const Val& x) { return ops::sin(x); }); break;
+      case Op::Abs: unary([](const Val& x) { return ops::abs(x); }); break;
       case Op::Sqrt:
         for (size_t j = 0; j < m; ++j) {
           if (b[j].x < 0) return false;
           b[j] = ops::sqrt(b[j]);
         }
         break;
-      case Op::Norm: for (size_t j = 0; j < m; ++j) b[j] = ops::norm(b[j]); break;
-      case Op::Clamp: for (size_t j = 0; j < m; ++j) b[j] = ops::clamp(b[j]); break;
-      case Op::Dot:
-        for (size_t j = 0; j < m; ++j) a[j] = ops::dot(a[j], b[j]);
-        --sp;
-        break;
-      case Op::Cross:
-        for (size_t j = 0; j < m; ++j) a[j] = ops::cross(a[j], b[j]);
-        --sp;
-        break;
+      case Op::Norm: unary([](const Val& x) { return ops::norm(x); }); break;
+      case Op::Clamp: unary([](const Val& x) { return ops::clamp(x); }); break;
+      case Op::Dot: binary([](const Val& x, const Val& y) { return ops::dot(x, y); }); break;
+      case Op::Cross: binary([](const Val& x, const Val& y) { return ops::cross(x, y); }); break;
       case Op::AggregateArgs: {
         const size_t n = pc->index;
         if (e.function == Function::Middle && n == 0) return false;
