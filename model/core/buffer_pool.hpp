@@ -107,7 +107,6 @@ class Pooled {
     v_.resize(n);
   }
 
-
   std::vector<T>& operator*() { return v_; }
   const std::vector<T>& operator*() const { return v_; }
   std::vector<T>* operator->() { return &v_; }
