@@ -111,11 +111,6 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
   return &memos_.back();
 }
 
-Val Evaluator::from_storage(const Vec3& s, ValueType t) {
-  return {s[0], t == ValueType::Scalar ? 0.0 : s[1], t == ValueType::Scalar ? 0.0 : s[2],
-          t == ValueType::Point ? 1.0 : 0.0};
-}
-
 void Evaluator::fail(const Expr& e, const std::string& msg, Dart d) const {
   std::string loc = (where_ && !where_->empty() ? *where_ + ", " : std::string()) + "column " + std::to_string(e.column);
   if (d != kNoDart) loc += ", dart " + std::to_string(d);
@@ -186,9 +181,7 @@ inline Val Evaluator::load(const LoadRef& r) {
     if (d < f.size) {
       const uint32_t slot = f.slots[d];
       if (slot != Embedding<Vec3>::kNoValue) {
-        const Vec3& v = f.values[slot];
-        return {v[0], f.type == ValueType::Scalar ? 0.0 : v[1], f.type == ValueType::Scalar ? 0.0 : v[2],
-                f.type == ValueType::Point ? 1.0 : 0.0};
+        return from_storage(f.values[slot], f.type);
       }
     }
     return field_value(r.embedding, d, *r.expr);  // its error

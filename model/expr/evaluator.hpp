@@ -81,7 +81,10 @@ class Evaluator {
 
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
-  static Val from_storage(const Vec3& s, ValueType t);
+  static Val from_storage(const Vec3& s, ValueType t) {
+    return {s[0], t == ValueType::Scalar ? 0.0 : s[1], t == ValueType::Scalar ? 0.0 : s[2],
+            t == ValueType::Point ? 1.0 : 0.0};
+  }
 
  private:
   Val eval(const Expr& e);

@@ -101,10 +101,7 @@ size_t Evaluator::combine_classes_in_lanes(const Program& p, const Dart* nodes, 
       for (uint8_t s = 0; s < r.length; ++s) d = held_links_[r.path[s]][d];
       const HeldField& f = held_fields_[r.embedding];
       if (d >= f.size || f.slots[d] == Embedding<Vec3>::kNoValue) return j;
-      const Vec3& v = f.values[f.slots[d]];
-      const Val x{v[0], f.type == ValueType::Scalar ? 0.0 : v[1], f.type == ValueType::Scalar ? 0.0 : v[2],
-                  f.type == ValueType::Point ? 1.0 : 0.0};
-      acc = ops::add(acc, ops::scale(x, r.weight));
+      acc = ops::add(acc, ops::scale(from_storage(f.values[f.slots[d]], f.type), r.weight));
     }
     if ((target == ValueType::Point && std::fabs(acc.w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(acc.w) > 1e-9))
       return j;

@@ -88,9 +88,7 @@ inline bool Evaluator::lane_load(const LoadRef& r, Dart d, Val& v) const {
   for (uint8_t k = 0; k < r.length; ++k) d = held_links_[r.path[k]][d];
   const HeldField& f = held_fields_[r.embedding];
   if (d >= f.size || f.slots[d] == Embedding<Vec3>::kNoValue) return false;
-  const Vec3& x = f.values[f.slots[d]];
-  v = {x[0], f.type == ValueType::Scalar ? 0.0 : x[1], f.type == ValueType::Scalar ? 0.0 : x[2],
-       f.type == ValueType::Point ? 1.0 : 0.0};
+  v = from_storage(f.values[f.slots[d]], f.type);
   return true;
 }
 
@@ -288,7 +286,6 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
           const Dart* step[LoadRef::kMaxPath];
           for (uint8_t q = 0; q < r.length; ++q) step[q] = held_links_[r.path[q]];
           const HeldField& f = held_fields_[r.embedding];
-          const bool scalar = f.type == ValueType::Scalar, point = f.type == ValueType::Point;
           const Dart* const darts = lm->darts.data();
           for (size_t j = 0; j < m; ++j) {
             MemberSum s;
@@ -296,8 +293,7 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
               Dart d = darts[k];
               for (uint8_t q = 0; q < r.length; ++q) d = step[q][d];
               if (d >= f.size || f.slots[d] == Embedding<Vec3>::kNoValue) return false;
-              const Vec3& x = f.values[f.slots[d]];
-              s.push_back({x[0], scalar ? 0.0 : x[1], scalar ? 0.0 : x[2], point ? 1.0 : 0.0});
+              s.push_back(from_storage(f.values[f.slots[d]], f.type));
             }
             if (e.function == Function::Middle && s.n == 0) return false;
             top[j] = ops::finish_aggregate(e.function, s.sum, s.n);
