@@ -12,10 +12,22 @@ namespace gmr {
 
 const char* to_string(MapKind kind) { return kind == MapKind::GMap ? "gmap" : "omap"; }
 
+Bitset::~Bitset() { give_buffer(std::move(words_)); }
+
 void Bitset::resize(size_t n) {
-  words_.resize((n + 63) / 64, 0);
+  const size_t words = (n + 63) / 64;
+  if (words > words_.capacity()) grow(std::max(words, 2 * words_.size()));
+  words_.resize(words, 0);
   if (n < size_ && n % 64 != 0) words_.back() &= (uint64_t(1) << (n % 64)) - 1;  // bits past n read 0 when regrown
   size_ = n;
+}
+
+void Bitset::grow(size_t words) {
+  std::vector<uint64_t> grown = take_buffer<uint64_t>(words);
+  reserve_in_huge_pages(grown, words);
+  grown.assign(words_.begin(), words_.end());
+  give_buffer(std::move(words_));
+  words_ = std::move(grown);
 }
 
 void Bitset::clear() { std::fill(words_.begin(), words_.end(), 0); }

@@ -33,6 +33,14 @@ inline constexpr Dart kNoDart = UINT32_MAX;
 // A bitset over dart indices; grows with the map.
 class Bitset {
  public:
+  Bitset() = default;
+  // The words go back to the thread's buffer pool (buffer_pool.hpp), as a map's link arrays.
+  ~Bitset();
+  Bitset(const Bitset&) = default;
+  Bitset(Bitset&&) noexcept = default;
+  Bitset& operator=(const Bitset&) = default;
+  Bitset& operator=(Bitset&&) noexcept = default;
+
   bool test(Dart d) const { return d < size_ && (words_[d >> 6] >> (d & 63)) & 1u; }
   void set(Dart d) { words_[d >> 6] |= uint64_t(1) << (d & 63); }
   void reset(Dart d) { words_[d >> 6] &= ~(uint64_t(1) << (d & 63)); }
@@ -46,6 +54,8 @@ class Bitset {
   const uint64_t* data() const { return words_.data(); }
 
  private:
+  // Room for `words` words, moved into a pooled or a fresh huge-page array (the old one pooled).
+  void grow(size_t words);
   std::vector<uint64_t> words_;
   size_t size_ = 0;
 };
