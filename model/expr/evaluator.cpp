@@ -595,6 +595,29 @@ __attribute__((always_inline)) inline Val Evaluator::aggregate_into(const Expr& 
   return r;
 }
 
+const Val* Evaluator::Kept::find(const Val* lets, size_t n, size_t stride) const {
+  for (size_t k = 0; k < used; ++k) {
+    const size_t i = k == 0 ? last : (k == last ? 0 : k);  // the last one found first
+    const Entry& e = entries[i];
+    bool same = e.lets == n;
+    for (size_t q = 0; same && q < n; ++q) same = std::memcmp(&e.key[q], &lets[q * stride], sizeof(Val)) == 0;
+    if (same) {
+      last = i;
+      return &e.value;
+    }
+  }
+  return nullptr;
+}
+
+void Evaluator::Kept::keep(const Val* lets, size_t n, const Val& value) {
+  Entry& e = entries[next];
+  used = std::max(used, next + 1);
+  next = (next + 1) % kKeptEntries;
+  e.lets = n;
+  std::copy(lets, lets + n, e.key);
+  e.value = value;
+}
+
 Evaluator::Kept* Evaluator::kept_for(const Instruction* at) {
   const auto offset = static_cast<size_t>(at - code_);
   for (Kept& k : kept_)
@@ -682,13 +705,14 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
       case Op::Pure: {
         const size_t n = lets_.size();
         const Kept* k = kept_for(pc);
-        if (k && k->lets == n && std::memcmp(k->key, lets_.data(), n * sizeof(Val)) == 0) {
-          *sp++ = k->value;
+        if (const Val* v = k ? k->find(lets_.data(), n, 1) : nullptr) {
+          *sp++ = *v;
           pc += pc->index + 1;  // past the code and its PureEnd
         }
         break;
       }
       case Op::PureEnd: {
+        ++pure_runs_;
         const size_t n = lets_.size();
         if (n > kKeptLets) break;
         const Instruction* at = pc - pc->index - 1;
@@ -699,9 +723,7 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
           k->program = program_;
           k->at = static_cast<size_t>(at - code_);
         }
-        k->lets = n;
-        std::copy(lets_.begin(), lets_.end(), k->key);
-        k->value = sp[-1];
+        k->keep(lets_.data(), n, sp[-1]);
         break;
       }
       case Op::Unknown: fail(e, "unknown function " + e.name);

@@ -79,6 +79,9 @@ class Evaluator {
   static bool runs_in_lanes(const Program& p);
   size_t run_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out);
 
+  // The dart-free sub-expressions computed so far (program.hpp, Pure) rather than found kept.
+  size_t pure_runs() const { return pure_runs_; }
+
   // Storage conversion of a value of type t, and back.
   static Vec3 to_storage(const Val& v) { return {v.x, v.y, v.z}; }
   static Val from_storage(const Vec3& s, ValueType t) {
@@ -200,17 +203,28 @@ class Evaluator {
   Body bodies_[kMaxNesting + 1];
   std::vector<Val> stack_;
   size_t top_ = 0;
-  // The last result of each dart-free sub-expression run (program.hpp, Pure), with the let values
-  // it was computed from.
+  // The last results of each dart-free sub-expression run (program.hpp, Pure), with the let values
+  // they were computed from: kKeptEntries per sub-expression, the oldest replaced (Loop's vertex
+  // weight is a function of the valence, and a mesh mixes a few valences in any order).
+  static constexpr size_t kKeptLets = 4;  // more let values in scope: not kept
+  static constexpr size_t kKeptEntries = 8;
   struct Kept {
     uint64_t program = 0;  // Program::id
     size_t at = 0;         // the Pure instruction's offset in its code
-    size_t lets = 0;
-    Val key[4];
-    Val value;
+    struct Entry {
+      size_t lets = 0;
+      Val key[kKeptLets];
+      Val value;
+    };
+    Entry entries[kKeptEntries];
+    size_t used = 0, next = 0;
+    mutable size_t last = 0;  // the entry found last
+    // The value kept for the n let values lets[0], lets[stride], ..., or nullptr.
+    const Val* find(const Val* lets, size_t n, size_t stride) const;
+    void keep(const Val* lets, size_t n, const Val& value);
   };
-  static constexpr size_t kKeptLets = 4;  // more let values in scope: not kept
   std::vector<Kept> kept_;
+  size_t pure_runs_ = 0;
   Kept* kept_for(const Instruction* at);
   uint64_t program_ = 0;                // the program run (evaluate): its id and code
   const Instruction* code_ = nullptr;

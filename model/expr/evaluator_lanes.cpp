@@ -309,10 +309,8 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         const Instruction* const code_end = pc + pc->index + 2;  // past its PureEnd
         for (size_t j = 0; j < m; ++j) {
           const Kept* k = kept_for(pc);
-          bool kept = k && k->lets == nl;
-          for (size_t q = 0; kept && q < nl; ++q)
-            kept = std::memcmp(&k->key[q], &lets[q * kLanes + j], sizeof(Val)) == 0;
-          top[j] = kept ? k->value : lane_scalar(pc, code_end, nodes + j, nl, j, false);
+          const Val* kept = k ? k->find(lets + j, nl, kLanes) : nullptr;
+          top[j] = kept ? *kept : lane_scalar(pc, code_end, nodes + j, nl, j, false);
         }
         ++sp;
         pc = code_end - 1;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
@@ -399,6 +400,37 @@ TEST(ExpressionProgram, DartFreeSubExpressionsKeepTheirLastResult) {
   EXPECT_GT(values, 0u);
 }
 
+
+// The last kKeptEntries results of a dart-free sub-expression are kept: over a surface whose faces
+// have a few sizes, met in any order, the weight of a face size is computed once per size.
+TEST(ExpressionProgram, DartFreeSubExpressionsKeepOneResultPerFewLetValues) {
+  const CheckContext ctx = context();
+  const std::string code = "let k = count(<0,1>_position(n0)) in cos(2 * pi / k) * (3 + 2 * cos(2 * pi / k))";
+  auto e = parse_expression(code);
+  check_expression(*e, ctx, ValueType::Scalar);
+  const std::optional<Program> p = compile_program(*e);
+  ASSERT_TRUE(p.has_value());
+  size_t tested = 0;
+  for (uint64_t seed = 0; seed < 20; ++seed) {
+    const Surface s = random_surface(seed);
+    std::vector<Dart> vertex(s.g.capacity());
+    for (Dart v : orbit_representatives(s.g, OrbitType{1, 2}))
+      for (Dart x : orbit(s.g, OrbitType{1, 2}, v)) vertex[x] = v;
+    std::set<size_t> sizes;  // the numbers of vertices of the faces (the count's values)
+    for (Dart r : orbit_representatives(s.g, OrbitType{0, 1})) {
+      std::set<Dart> met;
+      for (Dart x : orbit(s.g, OrbitType{0, 1}, r)) met.insert(vertex[x]);
+      sizes.insert(met.size());
+    }
+    if (sizes.size() < 2 || sizes.size() > 8) continue;  // one size, or more than are kept
+    ++tested;
+    Evaluator flat(s.g, kSigs, {&s.pos, &s.weight});
+    for (int twice = 0; twice < 2; ++twice)
+      for (Dart d : s.g.darts()) (void)flat.evaluate(*p, &d, ValueType::Scalar, "test");
+    EXPECT_EQ(flat.pure_runs(), sizes.size()) << seed;
+  }
+  EXPECT_GE(tested, 5u);
+}
 
 // Evaluator::combine_classes: a program of one Combine instruction evaluated for all darts of a
 // surface in one call gives run's values bit for bit; a dart whose load finds no value stops it
