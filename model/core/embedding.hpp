@@ -65,6 +65,11 @@ class Embedding {
     values_.push_back(std::move(v));
     return static_cast<uint32_t>(values_.size() - 1);
   }
+  // add_value of each of vs, in order (their slots follow the last one's).
+  void append_values(std::span<const T> vs) {
+    reserve_values(values_.size() + vs.size());
+    values_.insert(values_.end(), vs.begin(), vs.end());
+  }
   void reserve_values(size_t n) {
     if (values_.capacity() < n) regrow(values_, std::max(n, 2 * values_.capacity()));
   }

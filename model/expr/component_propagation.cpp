@@ -355,15 +355,15 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     };
     auto write_preserved = [&](size_t ki) {
       const auto slot = slot_of(ki);
+      const uint32_t* const class_of = kinds[ki].class_of->data();
       for (uint32_t v : kinds[ki].nodes)
-        if (preserved(v)) c.for_each_dart([&](Dart x, uint32_t b) { E.set_slot_unchecked(x, slot(b)); });
+        if (preserved(v)) c.for_each_dart([&](Dart x, uint32_t b) { E.set_slot_unchecked(x, slot(b)); }, class_of);
     };
     for (size_t ki = 0; ki < kinds.size(); ++ki) {
       for (uint32_t v : kinds[ki].nodes) kind_of[v] = static_cast<uint32_t>(ki);
       if (kinds[ki].declaration < 0) continue;
       offset[ki] = static_cast<uint32_t>(E.num_values());
-      E.reserve_values(E.num_values() + kinds[ki].values->size());
-      for (const Vec3& x : *kinds[ki].values) E.add_value(x);
+      E.append_values(*kinds[ki].values);
       write_preserved(ki);
     }
     for (size_t ki = 0; ki < kinds.size(); ++ki) {
