@@ -9,11 +9,11 @@
 // application faults the same pages in again, which made a subdivision of a 20-face mesh ten
 // times slower than its work (docs/embeddings.md "Small meshes"). So:
 //  * take_buffer / give_buffer: a per-thread pool of vectors (from one page, 4 KiB, of storage; at
-//    most 128 per element type, the smallest dropped first: three applications of a subdivision
-//    give back some forty tables of three sizes, and a smaller cap dropped the first application's
-//    at every run, which then paid their pages again); take_buffer(n) returns the smallest
-//    pooled vector holding n elements, emptied, or an empty vector when none does or when the
-//    smallest is more than twice as large as needed (a small table must not keep a large one);
+//    most 32 per element type, the smallest dropped first: a pool of 128 that kept every table of
+//    three applications of Loop made that benchmark 10 to 15 % slower although it removed their
+//    page faults, docs/embeddings.md "Measured"); take_buffer(n) returns the smallest pooled
+//    vector holding n elements, emptied, or an empty vector when none does or when the smallest
+//    is more than twice as large as needed (a small table must not keep a large one);
 //  * Pooled<T>: a scratch vector taken from the pool (reserve(n) takes one with room for n) and
 //    given back when destroyed.
 // Map, Bitset and Embedding give their large arrays back when destroyed and take them when they
@@ -30,7 +30,7 @@ namespace gmr {
 
 namespace detail {
 constexpr size_t kPoolMinBytes = size_t(1) << 12;  // a page
-constexpr size_t kPoolMaxBuffers = 128;             // per element type
+constexpr size_t kPoolMaxBuffers = 32;              // per element type
 constexpr size_t kPoolMaxSlack = 2;                 // capacity handed out / capacity needed
 // Set when the thread's pool is destroyed (a trivially destructible thread_local, readable until
 // the thread ends): a map destroyed later (a static one, or a thread_local made before the pool)

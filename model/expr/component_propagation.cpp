@@ -355,9 +355,8 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     };
     auto write_preserved = [&](size_t ki) {
       const auto slot = slot_of(ki);
-      const uint32_t* const class_of = kinds[ki].class_of->data();
       for (uint32_t v : kinds[ki].nodes)
-        if (preserved(v)) c.for_each_dart([&](Dart x, uint32_t b) { E.set_slot_unchecked(x, slot(b)); }, class_of);
+        if (preserved(v)) c.for_each_dart([&](Dart x, uint32_t b) { E.set_slot_unchecked(x, slot(b)); });
     };
     for (size_t ki = 0; ki < kinds.size(); ++ki) {
       for (uint32_t v : kinds[ki].nodes) kind_of[v] = static_cast<uint32_t>(ki);

@@ -22,15 +22,7 @@ void view_component(const Map& g, const scheme::ComponentInstance& c, const Orbi
     }
     const Embedding<Vec3>& from = source[k]->values;
     EmbeddingField& v = view.fields[k].emplace(EmbeddingField{source[k]->arity, Embedding<Vec3>(from.name(), from.orbit_type())});
-    // A gather by orbit dart (BFS order: random in the map), its loads prefetched kAhead ahead.
-    constexpr size_t kAhead = 16;
-    const std::span<const uint32_t> slots = from.slots();
-    const Dart* const darts = c.darts.data();
-    v.values.append_slots(sz, [&](size_t b) {
-      if (b + kAhead < sz) __builtin_prefetch(slots.data() + darts[b + kAhead]);
-      const Dart d = darts[b];
-      return d < slots.size() ? slots[d] : Embedding<Vec3>::kNoValue;
-    });
+    v.values.append_slots(sz, [&](size_t b) { return from.slot(c.darts[b]); });
     v.values.append_values(from.values());
   }
 }

@@ -49,17 +49,13 @@ struct ComponentInstance {
   // f(x, b) for every dart x = O.darts[b] of the component: in dart order when the component is
   // the whole map (writes to per-dart arrays are then sequential; in b order they land anywhere),
   // else in b order.
-  // read_by_b: a table f reads at b (random in dart order), prefetched a few darts ahead.
   template <class F>
-  void for_each_dart(F&& f, const uint32_t* read_by_b = nullptr) const {
+  void for_each_dart(F&& f) const {
     if (whole_map) {
-      constexpr size_t kAhead = 16;
       const uint32_t* const ix = index->data();
       const size_t n = index->size();
-      for (Dart x = 0; x < n; ++x) {
-        if (read_by_b && x + kAhead < n && ix[x + kAhead] != kNone) __builtin_prefetch(read_by_b + ix[x + kAhead]);
+      for (Dart x = 0; x < n; ++x)
         if (ix[x] != kNone) f(x, ix[x]);
-      }
     } else {
       for (uint32_t b = 0; b < darts.size(); ++b) f(darts[b], b);
     }
