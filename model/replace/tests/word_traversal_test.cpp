@@ -193,7 +193,25 @@ TEST(HalfCells, CountIsTheCellsWithTheirTwoSides) {
       const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
       EXPECT_EQ(h.faces, halves_by_orbits(g, 2)) << g.size();
       EXPECT_EQ(h.volumes, halves_by_orbits(g, 3)) << g.size();
+      // The closed maps' one-loop count against the general sweeps, one dimension each.
+      EXPECT_EQ(h.faces, count_half_cells(g, 2)) << g.size();
+      EXPECT_EQ(h.volumes, count_half_cells(g, 3)) << g.size();
     }
+  }
+  {
+    // A square whose half-face alpha_3 sends onto itself (the half-turn (alpha_0 alpha_1)^2, which
+    // commutes with alpha_0 and alpha_1), alpha_2 free: one volume, a face with two half-faces.
+    Map g = make_polygon(4, 3);
+    for (Dart x = 0; x < g.capacity(); ++x) {
+      const Dart turn = g.alpha(1, g.alpha(0, g.alpha(1, g.alpha(0, x))));
+      g.set_alpha(3, x, turn);
+    }
+    ASSERT_TRUE(is_valid(g));
+    const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
+    EXPECT_EQ(h.faces, 2u);
+    EXPECT_EQ(h.faces, halves_by_orbits(g, 2));
+    EXPECT_EQ(h.volumes, 1u);
+    EXPECT_EQ(h.volumes, count_half_cells(g, 3));
   }
   EXPECT_THROW(count_half_faces_and_volumes(make_cube(2)), Error);
 }
