@@ -15,9 +15,9 @@
 //
 // A dart-free sub-expression (it reads let variables and constants only: Loop's vertex weight
 // c = 5/8 - (3 + 2 cos(2 pi / k))^2 / 64 of the valence k) is a pure function of the let values in
-// scope; its code is enclosed in Pure ... PureEnd, and the evaluator keeps its last result with the
-// let values it was computed from (Evaluator::run): equal let values (bit for bit) give that
-// result again without running the code. A run that fails keeps nothing.
+// scope; its code is enclosed in Pure ... PureEnd, and the evaluator keeps its last results (eight)
+// with the let values each was computed from (Evaluator::run): equal let values (bit for bit) give
+// that result again without running the code. A run that fails keeps nothing.
 //
 // Semantics: those of the tree interpreter (Evaluator::evaluate on the Expr), which stays the
 // general path and the oracle; folding uses the same operations as the evaluation, so the values
