@@ -9,8 +9,8 @@
 // members as memo_members does: the listed orbit in order, one member per <c>-orbit met (told
 // apart by the shared numbers), at its first dart, summed in that order; the members are found
 // once per batch for the comprehensions of the same orbit, classes and start. Any other aggregate,
-// and a dart-free sub-expression none of whose kept results matches the lane's let values (Pure), is
-// computed for that lane by run's own code (aggregate, run). A batch in which anything fails (a
+// and a dart-free sub-expression none of whose kept results matches the lane's let values (Pure),
+// is computed for that lane by run's own code (aggregate, run). A batch in which anything fails (a
 // missing dart or value, a division by zero, an empty barycentre, a wrong mass) appends nothing:
 // the caller evaluates its classes one by one, and the failing one reports run's error.
 #include <cmath>
