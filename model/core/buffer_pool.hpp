@@ -11,9 +11,10 @@
 //  * take_buffer / give_buffer: a per-thread pool of vectors (from one page, 4 KiB, of storage; at
 //    most 32 per element type, the smallest dropped first: a pool of 128 that kept every table of
 //    three applications of Loop made that benchmark 10 to 15 % slower although it removed their
-//    page faults, docs/embeddings.md "Measured"); take_buffer(n) returns the smallest pooled
-//    vector holding n elements, emptied, or an empty vector when none does or when the smallest
-//    is more than twice as large as needed (a small table must not keep a large one);
+//    page faults, docs/embeddings.md "Measured", cause not established); take_buffer(n) returns
+//    the smallest pooled vector holding n elements, emptied, or an empty vector when none does or
+//    when the smallest is more than twice as large as needed (a small table must not keep a large
+//    one);
 //  * Pooled<T>: a scratch vector taken from the pool (reserve(n) takes one with room for n) and
 //    given back when destroyed.
 // Map, Bitset and Embedding give their large arrays back when destroyed and take them when they
