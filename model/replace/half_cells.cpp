@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "model/core/buffer_pool.hpp"
 #include "model/core/error.hpp"
 #include "model/replace/word_traversal.hpp"
 
@@ -138,12 +139,14 @@ bool count_closed_half_faces_and_volumes(const Map& g, HalfFacesAndVolumes& h) {
   if (g.has_holes()) return false;
   const Dart cap = g.capacity();
   const Dart *a0 = g.links(0).data(), *a1 = g.links(1).data(), *a2 = g.links(2).data(), *a3 = g.links(3).data();
-  thread_local std::vector<uint64_t> bits;
-  thread_local std::vector<Dart> seeds;
-  bits.assign((size_t(cap) + 63) / 64, 0);
-  if (seeds.size() < size_t(cap) + 1) seeds.resize(size_t(cap) + 1);
-  Dart* const seed = seeds.data();
-  const MetBits met{bits.data(), cap};
+  const size_t words = (size_t(cap) + 63) / 64;
+  Pooled<uint64_t> bits;
+  bits.reserve(words);
+  bits->assign(words, 0);
+  Pooled<Dart> seeds;
+  seeds.resize_for_overwrite(size_t(cap) + 1);
+  Dart* const seed = seeds->data();
+  const MetBits met{bits->data(), cap};
   size_t faces = 0, volumes = 0;
   for (Dart d = met.next_clear(0); d < cap; d = met.next_clear(d + 1)) {
     ++volumes;
