@@ -43,6 +43,7 @@ for path in sys.argv[1:]:
         benchmarks += json.load(open(path))["benchmarks"]
 runs = {}
 rates = {}
+paired = {}
 for b in benchmarks:
     name = b.get("run_name", b["name"])
     if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
@@ -51,6 +52,8 @@ for b in benchmarks:
     runs[name] = (b["real_time"], b["cpu_time"], b.get("time_unit", "ms"))
     if "darts_per_second" in b:
         rates[name] = b["darts_per_second"]
+    if "ratio_median" in b:
+        paired[name.split("/min_time")[0]] = b
 rows = []
 for name, (rt, ct, unit) in runs.items():
     if not name.endswith("/gmr"):
@@ -77,4 +80,10 @@ if rates:
         what = name[:-4]
         pr = rates[what + "/cgal"]
         print(f"{what:28} {r/1e6:9.1f}M/s {pr/1e6:9.1f}M/s {r/pr:10.2f}")
+if paired:
+    print()
+    print("gmr and CGAL in pairs (each pair: both on fresh copies, in turn first; median of the pairs' ratios)")
+    print(f"{'benchmark':28} {'gmr':>10} {'CGAL':>10} {'ratio':>7} {'pairs':>6}")
+    for name, b in paired.items():
+        print(f"{name:28} {b['gmr_ms_median']:8.1f}ms {b['cgal_ms_median']:8.1f}ms {b['ratio_median']:7.3f} {int(b['pairs']):6d}")
 PY

@@ -15,7 +15,9 @@
 // is the memory traffic any rewrite of these maps pays, as plain sequential loops: per iteration,
 // the links before copied into the result's arrays and every added dart's links written once from
 // them (3 arrays of the result's darts written, the arrays before read), in storage reused across
-// iterations as gmr's buffer pool reuses it.
+// iterations as gmr's buffer pool reuses it. `paired` runs gmr and CGAL one after the other in
+// every benchmark iteration and reports the median of the pairs' ratios (the comparison that holds
+// on a machine whose speed drifts: run_paired).
 #include <benchmark/benchmark.h>
 
 #include <CGAL/Simple_cartesian.h>
@@ -23,6 +25,7 @@
 #include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -72,21 +75,42 @@ const Fixture& fixture() {
   return f;
 }
 
+// A scheme with its expressions, read and compiled once.
+struct GmrSubdivision {
+  gmr::scheme::RuleScheme scheme;
+  gmr::scheme::SchemeEngine engine;
+  gmr::expr::CompiledScheme compiled;
+  explicit GmrSubdivision(const char* rule)
+      : scheme(gmr::io::read_scheme_file(std::string(GMR_RULES_DIR) + "/" + rule)),
+        engine(scheme),
+        compiled(gmr::expr::compile_scheme(scheme)) {}
+  // kIterations applications at every dart with positions; false on an embedding issue.
+  bool run(gmr::expr::EmbeddedMap& m) const {
+    for (int k = 0; k < kIterations; ++k) {
+      gmr::expr::EmbeddingPropagation p(compiled, m);
+      gmr::expr::apply_everywhere_embedded(engine, p, m);
+      if (p.issue_count() != 0) return false;
+    }
+    return true;
+  }
+};
+
+void cgal_catmull_clark(Mesh& m) {
+  CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
+}
+void cgal_loop(Mesh& m) {
+  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
+}
+
 void run_gmr(benchmark::State& state, const char* rule) {
   const Fixture& f = fixture();
-  const gmr::scheme::RuleScheme s = gmr::io::read_scheme_file(std::string(GMR_RULES_DIR) + "/" + rule);
-  const gmr::scheme::SchemeEngine engine(s);
-  const gmr::expr::CompiledScheme cs = gmr::expr::compile_scheme(s);
+  const GmrSubdivision sub(rule);
   size_t darts = 0, vertices = 0;
   for (auto _ : state) {
     state.PauseTiming();
     gmr::expr::EmbeddedMap m = f.map;
     state.ResumeTiming();
-    for (int k = 0; k < kIterations; ++k) {
-      gmr::expr::EmbeddingPropagation p(cs, m);
-      gmr::expr::apply_everywhere_embedded(engine, p, m);
-      if (p.issue_count() != 0) state.SkipWithError("embedding issues");
-    }
+    if (!sub.run(m)) state.SkipWithError("embedding issues");
     state.PauseTiming();
     darts = m.map.size();
     vertices = gmr::count_orbits(m.map, gmr::OrbitType{1, 2});
@@ -161,22 +185,55 @@ void run_cgal(benchmark::State& state, Subdivide subdivide) {
   state.counters["darts_after"] = static_cast<double>(darts);
 }
 
-void BM_catmull_clark_gmr(benchmark::State& state) { run_gmr(state, "quad_subdivision.json"); }
-void BM_catmull_clark_cgal(benchmark::State& state) {
-  run_cgal(state, [](Mesh& m) {
-    CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
-  });
+// gmr and CGAL in pairs: each benchmark iteration runs both on fresh copies of the mesh (copies
+// not timed), in turn first, and the ratio gmr/CGAL is taken within the pair, so that the
+// machine's speed, which drifts over seconds on a shared machine, divides out. Counters: the
+// median of the pairs' ratios and each library's median time (ms); the iteration time reported
+// is gmr's.
+void run_paired(benchmark::State& state, const char* rule, void (*cgal)(Mesh&)) {
+  using Clock = std::chrono::steady_clock;
+  const Fixture& f = fixture();
+  const GmrSubdivision sub(rule);
+  std::vector<double> ratios, gmr_ms, cgal_ms;
+  for (auto _ : state) {
+    gmr::expr::EmbeddedMap m = f.map;
+    Mesh mesh = f.mesh;
+    double tg = 0, tc = 0;
+    for (int turn = 0; turn < 2; ++turn) {
+      const bool gmr_turn = (turn == 0) == (ratios.size() % 2 == 0);
+      const auto t0 = Clock::now();
+      if (gmr_turn && !sub.run(m)) state.SkipWithError("embedding issues");
+      if (!gmr_turn) cgal(mesh);
+      const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+      (gmr_turn ? tg : tc) = ms;
+    }
+    benchmark::DoNotOptimize(mesh.number_of_vertices());
+    state.SetIterationTime(tg / 1000);
+    ratios.push_back(tg / tc);
+    gmr_ms.push_back(tg);
+    cgal_ms.push_back(tc);
+  }
+  auto median = [](std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  state.counters["ratio_median"] = median(ratios);
+  state.counters["gmr_ms_median"] = median(gmr_ms);
+  state.counters["cgal_ms_median"] = median(cgal_ms);
+  state.counters["pairs"] = static_cast<double>(ratios.size());
 }
+
+void BM_catmull_clark_gmr(benchmark::State& state) { run_gmr(state, "quad_subdivision.json"); }
+void BM_catmull_clark_cgal(benchmark::State& state) { run_cgal(state, cgal_catmull_clark); }
+void BM_catmull_clark_paired(benchmark::State& state) { run_paired(state, "quad_subdivision.json", cgal_catmull_clark); }
+void BM_loop_paired(benchmark::State& state) { run_paired(state, "loop_subdivision.json", cgal_loop); }
 void BM_loop_gmr(benchmark::State& state) { run_gmr(state, "loop_subdivision.json"); }
 void BM_catmull_clark_topology(benchmark::State& state) { run_gmr_topology(state, "quad_subdivision.json"); }
 void BM_loop_topology(benchmark::State& state) { run_gmr_topology(state, "loop_subdivision.json"); }
 void BM_catmull_clark_floor(benchmark::State& state) { run_link_floor(state, "quad_subdivision.json"); }
 void BM_loop_floor(benchmark::State& state) { run_link_floor(state, "loop_subdivision.json"); }
-void BM_loop_cgal(benchmark::State& state) {
-  run_cgal(state, [](Mesh& m) {
-    CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
-  });
-}
+void BM_loop_cgal(benchmark::State& state) { run_cgal(state, cgal_loop); }
 
 }  // namespace
 
@@ -184,6 +241,8 @@ BENCHMARK(BM_catmull_clark_gmr)->Name("subdivision_catmull_clark/gmr")->Unit(ben
 BENCHMARK(BM_catmull_clark_cgal)->Name("subdivision_catmull_clark/cgal")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_loop_gmr)->Name("subdivision_loop/gmr")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_loop_cgal)->Name("subdivision_loop/cgal")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_catmull_clark_paired)->Name("subdivision_catmull_clark/paired")->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(4);
+BENCHMARK(BM_loop_paired)->Name("subdivision_loop/paired")->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(2);
 BENCHMARK(BM_catmull_clark_topology)->Name("subdivision_catmull_clark/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_loop_topology)->Name("subdivision_loop/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_catmull_clark_floor)->Name("subdivision_catmull_clark/link_write_floor")->Unit(benchmark::kMillisecond)->UseRealTime();
