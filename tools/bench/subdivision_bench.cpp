@@ -125,8 +125,8 @@ void run_gmr(benchmark::State& state, const char* rule) {
 // The same applications without embeddings (the topology alone), to separate the engine's share.
 void run_gmr_topology(benchmark::State& state, const char* rule) {
   const Fixture& f = fixture();
-  const gmr::scheme::RuleScheme s = gmr::io::read_scheme_file(std::string(GMR_RULES_DIR) + "/" + rule);
-  const gmr::scheme::SchemeEngine engine(s);
+  const GmrSubdivision sub(rule);
+  const gmr::scheme::SchemeEngine& engine = sub.engine;
   for (auto _ : state) {
     state.PauseTiming();
     gmr::Map g = f.map.map;
@@ -138,8 +138,8 @@ void run_gmr_topology(benchmark::State& state, const char* rule) {
 
 void run_link_floor(benchmark::State& state, const char* rule) {
   const Fixture& f = fixture();
-  const gmr::scheme::RuleScheme s = gmr::io::read_scheme_file(std::string(GMR_RULES_DIR) + "/" + rule);
-  const gmr::scheme::SchemeEngine engine(s);
+  const GmrSubdivision sub(rule);
+  const gmr::scheme::SchemeEngine& engine = sub.engine;
   std::vector<size_t> sizes{f.map.map.capacity()};  // darts before each iteration, and after the last
   gmr::Map g = f.map.map;
   for (int k = 0; k < kIterations; ++k) {
