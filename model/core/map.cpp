@@ -71,6 +71,26 @@ void Map::grown_links(std::vector<Dart>& l, size_t n) {
   l = std::move(grown);
 }
 
+void Map::resize_for_overwrite(size_t k) {
+  if (capacity_ != 0)
+    throw Error(ErrorCode::Usage, "resize_for_overwrite of a map that has darts", "capacity " + std::to_string(capacity_));
+  if (k >= kNoDart)
+    throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")");
+  for (int i = lowest_dim(); i <= n_; ++i) {
+    auto& l = link_[i];
+    if (l.capacity() < k) {
+      // A pooled array is taken as it was given back: cut to k, not filled, when it held k links.
+      give_buffer(std::move(l));
+      l = take_buffer<Dart>(k, /*keep_contents=*/true);
+      reserve_in_huge_pages(l, k);
+    }
+    l.resize(k);
+  }
+  capacity_ = k;
+  dead_.resize(capacity_);
+  for (auto& m : marks_) m.resize(capacity_);
+}
+
 Dart Map::grow_capacity(size_t k) {
   if (capacity_ + k >= kNoDart)
     throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")");

@@ -118,6 +118,10 @@ class Map {
   bool has_holes() const { return !free_list_.empty(); }
   // Room for k darts in every link array (one move of the links when they grow).
   void reserve(size_t k);
+  // An empty map given k darts whose links are unspecified (what an earlier use of pooled storage
+  // left, buffer_pool.hpp): for a table the caller writes whole through link_data, in any order,
+  // before anything reads it. Throws Error(Usage) if the map has darts.
+  void resize_for_overwrite(size_t k);
 
   template <class F>
   void for_each_dart(F&& f) const {

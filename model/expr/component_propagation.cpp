@@ -212,7 +212,7 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
     view_component(g, c, s.left.nodes[s.hook_nodes()[0]].label, fields, view_);
     for (size_t k = 0; k < read.size(); ++k) read[k] = fields[k] ? &*view_.fields[k] : nullptr;
   }
-  Evaluator ev(on_view ? view_.map : g, cs_.embeddings, read);
+  Evaluator ev(on_view ? view_.map() : g, cs_.embeddings, read);
   ev.memoise_collects(on_view);
   std::vector<uint32_t> counts;
   for (auto& kinds : kinds_)

@@ -1,5 +1,5 @@
-// ComponentView (component_view.hpp): O's link arrays copied into the view's, the slots gathered
-// by orbit dart.
+// ComponentView (component_view.hpp): O's link arrays read in place or copied into the view's, the
+// slots gathered by orbit dart.
 #include "model/expr/component_view.hpp"
 
 namespace gmr::expr {
@@ -7,13 +7,15 @@ namespace gmr::expr {
 void view_component(const Map& g, const scheme::ComponentInstance& c, const OrbitType& t,
                     const std::vector<const EmbeddingField*>& source, ComponentView& view) {
   const size_t sz = c.size();
-  view.map = Map(g.dimension(), g.kind());
-  view.map.add_linked_darts(sz, [&](int i, Dart, LinkAppender& out) {
-    size_t p = 0;
-    while (p < t.size() && t[p] != i) ++p;
-    const uint32_t* const nb = c.nb[p];
-    out.append(sz, [nb](size_t b) { return nb[b]; });
-  });
+  view.orbit_map = c.orbit_map && c.orbit_map->capacity() == sz ? c.orbit_map : nullptr;
+  view.copy = Map(g.dimension(), g.kind());
+  if (!view.orbit_map)
+    view.copy.add_linked_darts(sz, [&](int i, Dart, LinkAppender& out) {
+      size_t p = 0;
+      while (p < t.size() && t[p] != i) ++p;
+      const uint32_t* const nb = c.nb[p];
+      out.append(sz, [nb](size_t b) { return nb[b]; });
+    });
   view.fields.resize(source.size());
   for (size_t k = 0; k < source.size(); ++k) {
     if (!source[k]) {

@@ -19,13 +19,18 @@
 namespace gmr::expr {
 
 struct ComponentView {
-  Map map{2};
+  // The view's links: O's own map (ComponentInstance::orbit_map) when the component is the whole
+  // map, read in place; else a copy of its first size() darts' links.
+  const Map& map() const { return orbit_map ? *orbit_map : copy; }
   std::vector<std::optional<EmbeddingField>> fields;  // fields[k]: the view of source[k], if any
+
+  const Map* orbit_map = nullptr;
+  Map copy{2};
 };
 
 // Fills `view` (its storage reused) with the view of component c of g, whose hook label is t
 // (position p of O follows dimension t[p]); `source` are the fields the expressions read (null:
-// a declared embedding the map lacks).
+// a declared embedding the map lacks). The view reads c.orbit_map: it is valid until the rewrite.
 void view_component(const Map& g, const scheme::ComponentInstance& c, const OrbitType& t,
                     const std::vector<const EmbeddingField*>& source, ComponentView& view);
 

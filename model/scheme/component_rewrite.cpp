@@ -18,13 +18,15 @@ bool rewrites_whole_components(const SchemeEngine& engine, const Map& g) {
 namespace {
 
 // The flat tables of one call, reused by its components (their storage kept by the thread for its
-// next calls, buffer_pool.hpp). darts and each position's links are sized once per call for the
-// live darts (no component is larger); a component uses their first size() entries.
+// next calls, buffer_pool.hpp). darts and O's links are sized once per call for the live darts (no
+// component is larger); a component uses their first size() entries. O's links are the link arrays
+// of a map of those darts (ComponentInstance::orbit_map): the label covers every dimension of the
+// map (rewrites_whole_components), so position p's array is the map's t[p]-link array.
 struct Workspace {
-  explicit Workspace(size_t arity) : nb_pools(arity) {}
+  explicit Workspace(int dimension) : orbit_map(dimension) {}
   Pooled<uint32_t> index_pool;  // per dart of the map before the call: its b, or kNone (not yet met)
   Pooled<Dart> darts_pool;      // O.darts of the current component
-  std::vector<Pooled<uint32_t>> nb_pools;  // O's links, one array per label position
+  Map orbit_map;                // O's links: nb(b, p) is orbit_map's t[p]-link of b
   std::vector<uint32_t>& index = *index_pool;
   std::vector<Dart>& darts = *darts_pool;
 };
@@ -44,7 +46,7 @@ size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w
   uint32_t* index = w.index.data();
   Dart* darts = w.darts.data();
   uint32_t* nb[kMaxDim];
-  for (size_t p = 0; p < arity; ++p) nb[p] = w.nb_pools[p]->data();
+  for (size_t p = 0; p < arity; ++p) nb[p] = w.orbit_map.link_data(t[p]);
   size_t n = 1;
   darts[0] = hook;
   index[hook] = 0;
@@ -184,7 +186,7 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   const OrbitType& t = s.left.nodes[engine.hook_nodes()[0]].label;
   const size_t nr = s.right.size();
   EverywhereApplication out;
-  Workspace w(t.size());
+  Workspace w(g.dimension());
   const Dart cap0 = g.capacity();
   w.index_pool.reserve(cap0);
   w.index.assign(cap0, ComponentInstance::kNone);
@@ -192,15 +194,15 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   const size_t live = g.size();  // no component is larger; every live dart is rewritten
   g.reserve(g.capacity() + engine.added_count() * live);  // the links grow once
   w.darts_pool.resize_for_overwrite(live);  // a component writes its entries before reading them
-  for (Pooled<uint32_t>& nb : w.nb_pools) nb.resize_for_overwrite(live);
+  w.orbit_map.resize_for_overwrite(live);
   size_t rewritten = 0;  // live darts of the components met so far: all met, no more hooks
   for (Dart d = 0; d < cap0 && rewritten < live; ++d) {
     if (!g.alive(d) || w.index[d] != ComponentInstance::kNone) continue;  // dead, or used
     const size_t sz = component_orbit(g, t, d, w);  // 1
     rewritten += sz;
     const std::span<const Dart> orbit(w.darts.data(), sz);
-    ComponentInstance c{&engine, orbit, {}, t.size(), &w.index, g.capacity(), sz == live};
-    for (size_t p = 0; p < t.size(); ++p) c.nb[p] = w.nb_pools[p]->data();
+    ComponentInstance c{&engine, orbit, {}, t.size(), &w.index, g.capacity(), sz == live, &w.orbit_map};
+    for (size_t p = 0; p < t.size(); ++p) c.nb[p] = w.orbit_map.link_data(t[p]);
     if (observer) observer->before_rewrite(g, c);
     if (engine.added_count() > 0) c.base = add_rewritten_darts(g, engine, c, links);  // 5, 6
     write_preserved_links(g, engine, c, t);                                             // 6

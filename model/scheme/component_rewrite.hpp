@@ -44,6 +44,10 @@ struct ComponentInstance {
   const std::vector<uint32_t>* index = nullptr;  // index[x] = b for a dart x of the component
   Dart base = 0;                                 // the first added dart (valid after the rewrite)
   bool whole_map = false;                        // the component holds every live dart of the map
+  // O as a map whose dart b is orbit dart b: the i-link of b < size() is nb[p][b] for the position
+  // p of dimension i (the hook's label covers every dimension). Its capacity is the call's room
+  // (the live darts of the map before it): equal to size() when the component is the whole map.
+  const Map* orbit_map = nullptr;
 
   size_t size() const { return darts.size(); }
   // f(x, b) for every dart x = O.darts[b] of the component: in dart order when the component is

@@ -104,6 +104,37 @@ TEST(Map, LinkedDartsWithMissingLinksLeaveTheMapUnchanged) {
   g.release_marker(m);
 }
 
+TEST(Map, ResizeForOverwriteGivesAnEmptyMapDartsToWrite) {
+  // The links of a dropped map go back to the pool; a map resized for overwrite may get them with
+  // their old contents, which the caller overwrites (here: 300 isolated edges).
+  { Map dropped = make_polygon(300); }
+  Map g(1);
+  const int m = g.reserve_marker();
+  g.resize_for_overwrite(600);
+  ASSERT_EQ(g.capacity(), 600u);
+  EXPECT_EQ(g.size(), 600u);
+  for (int i = 0; i <= 1; ++i) {
+    ASSERT_EQ(g.links(i).size(), 600u);
+    Dart* l = g.link_data(i);
+    for (Dart d = 0; d < 600; ++d) l[d] = i == 0 ? d ^ 1 : d;
+  }
+  for (Dart d = 0; d < 600; ++d) {
+    EXPECT_TRUE(g.alive(d)) << d;
+    EXPECT_FALSE(g.is_marked(d, m)) << d;
+  }
+  EXPECT_EQ(g.alpha(0, 2), 3u);
+  EXPECT_EQ(g.count_links(0), 300u);
+  EXPECT_EQ(g.count_links(1), 600u);
+  EXPECT_TRUE(is_valid(g));
+  g.release_marker(m);
+  // Only an empty map: a map with darts is refused and left as it was.
+  Map h = make_polygon(3);
+  const Map before = h;
+  EXPECT_THROW(h.resize_for_overwrite(10), Error);
+  EXPECT_EQ(h.capacity(), before.capacity());
+  for (int i = 0; i <= 2; ++i) EXPECT_EQ(h.links(i), before.links(i)) << i;
+}
+
 TEST(Map, BitsetShrunkThenRegrownReadsZeroPastTheCut) {
   Bitset b;
   b.resize(100);

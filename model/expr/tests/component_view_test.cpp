@@ -1,5 +1,6 @@
 // The view of a component (component_view.hpp) against the component on the map: the same links
-// and slots up to the numbering by orbit dart, the same values bit for bit for the expressions of
+// and slots up to the numbering by orbit dart (O's own map read in place for a whole-map component,
+// a copy otherwise), the same values bit for bit for the expressions of
 // the four subdivision schemes at every orbit dart (tree and program, memo mode), and an
 // evaluation error of an application located on the map, not on the view.
 #include <gtest/gtest.h>
@@ -59,24 +60,27 @@ Map random_surface(uint64_t seed) {
 class ViewChecker : public scheme::ComponentObserver {
  public:
   ViewChecker(const CompiledScheme& cs, const EmbeddedMap& m) : cs_(cs), m_(m) {}
-  size_t components = 0, evaluations = 0;
+  size_t components = 0, evaluations = 0, read_in_place = 0;
 
   void before_rewrite(const Map& g, const scheme::ComponentInstance& c) override {
     const scheme::RuleScheme& s = *cs_.scheme;
     std::vector<const EmbeddingField*> fields{&m_.fields[0]};
     ComponentView v;
     view_component(g, c, s.left.nodes[s.hook_nodes()[0]].label, fields, v);
-    ASSERT_EQ(v.map.capacity(), c.size());
+    ASSERT_EQ(v.map().capacity(), c.size());
+    ASSERT_NE(c.orbit_map, nullptr);
+    ASSERT_EQ(&v.map() == c.orbit_map, c.whole_map);
+    read_in_place += c.whole_map;
     const Embedding<Vec3>& on_map = m_.fields[0].values;
     const Embedding<Vec3>& on_view = v.fields[0]->values;
     for (uint32_t b = 0; b < c.size(); ++b) {
-      for (int i = 0; i <= g.dimension(); ++i) ASSERT_EQ(c.darts[v.map.alpha(i, b)], g.alpha(i, c.darts[b]));
+      for (int i = 0; i <= g.dimension(); ++i) ASSERT_EQ(c.darts[v.map().alpha(i, b)], g.alpha(i, c.darts[b]));
       ASSERT_EQ(on_view.slot(b), on_map.slot(c.darts[b]));
     }
     ASSERT_EQ(on_view.num_values(), on_map.num_values());
     for (uint32_t x = 0; x < on_map.num_values(); ++x) ASSERT_EQ(on_view.value(x), on_map.value(x));
 
-    Evaluator map_ev(g, cs_.embeddings, fields), view_ev(v.map, cs_.embeddings, {&*v.fields[0]});
+    Evaluator map_ev(g, cs_.embeddings, fields), view_ev(v.map(), cs_.embeddings, {&*v.fields[0]});
     map_ev.memoise_collects(true);
     view_ev.memoise_collects(true);
     const std::string where = "test";
@@ -114,6 +118,7 @@ TEST(ComponentView, LinksSlotsAndValuesAreTheComponentsNumberedByOrbitDart) {
     const scheme::RuleScheme s = io::read_scheme_file(component_view_test::rules_dir() + file);
     const scheme::SchemeEngine engine(s);
     const CompiledScheme cs = compile_scheme(s);
+    size_t whole = 0, parts = 0;
     for (uint64_t seed = 0; seed < 8; ++seed) {
       gt::Rng rng(100 + seed);
       EmbeddedMap m = random_positions(rng, random_surface(seed));
@@ -122,7 +127,11 @@ TEST(ComponentView, LinksSlotsAndValuesAreTheComponentsNumberedByOrbitDart) {
       scheme::apply_everywhere_by_components(engine, m.map, false, &check);
       EXPECT_GT(check.components, 0u) << file << ", seed " << seed;
       EXPECT_GT(check.evaluations, 0u) << file << ", seed " << seed;
+      whole += check.read_in_place;
+      parts += check.components - check.read_in_place;
     }
+    EXPECT_GT(whole, 0u) << file;  // both ways of making the view were compared
+    EXPECT_GT(parts, 0u) << file;
   }
 }
 
