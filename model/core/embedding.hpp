@@ -73,6 +73,17 @@ class Embedding {
   void reserve_values(size_t n) {
     if (values_.capacity() < n) regrow(values_, std::max(n, 2 * values_.capacity()));
   }
+  // Values appended by fill(values), which is given the value array itself and only pushes onto its
+  // end (no buffer of its own copied in). A reader holding values() keeps a valid span only while
+  // the array stays within the capacity it had (reserve_values first).
+  template <class Fill>
+  void append_values_by(Fill&& fill) {
+    fill(values_);
+  }
+  // The values from slot n on dropped (appended for a rewrite that did not happen).
+  void truncate_values(size_t n) {
+    if (n < values_.size()) values_.erase(values_.begin() + static_cast<std::ptrdiff_t>(n), values_.end());
+  }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
   // The slot table (slot(d) for d below its size) and the values, for readers that hold them
   // while neither changes.
@@ -99,6 +110,10 @@ class Embedding {
     slot_.insert(slot_.end(), classes, classes + n);
     uint32_t* const s = slot_.data() + first;
     for (size_t x = 0; x < n; ++x) s[x] += offset;
+  }
+  // Room for n slots (appends up to n copy no slot); geometric, as the appends grow it.
+  void reserve_slots(size_t n) {
+    if (slot_.capacity() < n) regrow(slot_, std::max(n, 2 * slot_.capacity()));
   }
   // set_slot without sizing: d must be below the size reached by an earlier set_slot/set.
   void set_slot_unchecked(Dart d, uint32_t s) { slot_[d] = s; }

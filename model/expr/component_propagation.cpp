@@ -212,63 +212,92 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
     view_component(g, c, s.left.nodes[s.hook_nodes()[0]].label, fields, view_);
     for (size_t k = 0; k < read.size(); ++k) read[k] = fields[k] ? &*view_.fields[k] : nullptr;
   }
+  // Every kind's classes first, so that each field's value array grows once, to its final size,
+  // before the evaluator holds its values.
+  std::vector<uint32_t> counts;
+  for (size_t fi = 0; fi < kinds_.size(); ++fi) {
+    size_t computed = 0;
+    for (ClassKind& k : kinds_[fi]) {
+      counts.push_back(label_classes(g, c, k));
+      if (k.declaration >= 0) computed += counts.back();
+    }
+    Embedding<Vec3>& E = m_.fields[fi].values;
+    E.reserve_values(E.num_values() + computed);
+  }
   Evaluator ev(on_view ? view_.map() : g, cs_.embeddings, read);
   ev.memoise_collects(on_view);
-  std::vector<uint32_t> counts;
-  for (auto& kinds : kinds_)
-    for (ClassKind& k : kinds) {
-      counts.push_back(label_classes(g, c, k));
-      // The classes of a kind are the orbits of the map before under k.dims, numbered: the
-      // evaluator's memo mode tells orbits apart by these numbers (the view's dart b is orbit dart
-      // b) instead of numbering them by a sweep.
-      if (on_view) ev.share_orbit_numbers(k.dims, k.class_of->data(), nullptr);
-      if (on_view && !k.orbit_start->empty())
-        ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start->data(), k.class_of->data());
-    }
+  // The classes of a kind are the orbits of the map before under k.dims, numbered: the evaluator's
+  // memo mode tells orbits apart by these numbers (the view's dart b is orbit dart b) instead of
+  // numbering them by a sweep.
+  if (on_view)
+    for (auto& kinds : kinds_)
+      for (ClassKind& k : kinds) {
+        ev.share_orbit_numbers(k.dims, k.class_of->data(), nullptr);
+        if (!k.orbit_start->empty())
+          ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start->data(), k.class_of->data());
+      }
+  // Each computed kind's values appended to its field's value array, class by class from slot
+  // k.offset (step 1's buffer is the array itself); all of them dropped again if one fails.
   size_t ki = 0;
-  for (auto& kinds : kinds_)
-    for (ClassKind& k : kinds) {
-      const uint32_t count = counts[ki++];
-      k.values->clear();
-      if (k.declaration < 0) continue;
-      const auto e = static_cast<size_t>(k.declaration);
-      const Expr& x = *cs_.right[e][k.expression_node];
-      const std::string where = "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name +
-                                ", embedding " + cs_.embeddings[e].name;
-      const ValueType t = cs_.embeddings[e].type;
-      auto evaluate = [&](Evaluator& on, const Dart* node_dart) {
-        return k.program ? on.evaluate(*k.program, node_dart, t, where) : on.evaluate(x, node_dart, t, where);
-      };
-      k.values.reserve(count);
-      k.values->clear();
-      if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
-        // One affine combination of node values (Loop's edge mask): every class in one loop; the
-        // view's node dart at a class's first orbit dart b is b.
-        const size_t done = ev.combine_classes(*k.program, k.first_b->data(), count, t, *k.values);
-        evaluations_ += done;
-        if (done == count) continue;  // else the class that fails is evaluated below, for its error
-      } else if (on_view && k.program) {
-        // Any other compiled program: the classes in lanes (evaluator_lanes.cpp), the same values.
-        const size_t done = ev.run_classes(*k.program, k.first_b->data(), count, t, *k.values);
-        evaluations_ += done;
-        if (done == count) continue;  // else the classes from the batch that fails, one by one
+  for (size_t fi = 0; fi < kinds_.size(); ++fi) {
+    Embedding<Vec3>& E = m_.fields[fi].values;
+    const size_t had = E.num_values();
+    try {
+      for (ClassKind& k : kinds_[fi]) {
+        const uint32_t count = counts[ki++];
+        if (k.declaration < 0) continue;
+        k.offset = static_cast<uint32_t>(E.num_values());
+        E.append_values_by([&](std::vector<Vec3>& values) { evaluate_classes(ev, g, c, k, count, on_view, fields, values); });
       }
-      for (size_t id = k.values->size(); id < count; ++id) {
-        const uint32_t b = (*k.first_b)[id];
-        const Dart node_dart = on_view ? b : c.darts[b];     // the hook, L's only node
-        try {
-          k.values->push_back(Evaluator::to_storage(evaluate(ev, &node_dart)));
-        } catch (const Error&) {
-          if (!on_view) throw;
-          // The same error located on the map (its darts' numbers): the class evaluated there.
-          Evaluator on_map(g, cs_.embeddings, fields);
-          on_map.memoise_collects(true);
-          evaluate(on_map, &c.darts[b]);
-          throw;
-        }
-        ++evaluations_;
-      }
+    } catch (...) {
+      E.truncate_values(had);
+      throw;
     }
+  }
+}
+
+// Step 1 for one computed kind: the values of its count classes pushed onto out, each evaluated at
+// its first orbit dart (the view's dart, or the map's).
+void EmbeddingPropagation::evaluate_classes(Evaluator& ev, const Map& g, const scheme::ComponentInstance& c,
+                                            const ClassKind& k, uint32_t count, bool on_view,
+                                            const std::vector<const EmbeddingField*>& fields, std::vector<Vec3>& out) {
+  const scheme::RuleScheme& s = *cs_.scheme;
+  const auto e = static_cast<size_t>(k.declaration);
+  const Expr& x = *cs_.right[e][k.expression_node];
+  const std::string where =
+      "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name + ", embedding " + cs_.embeddings[e].name;
+  const ValueType t = cs_.embeddings[e].type;
+  auto evaluate = [&](Evaluator& on, const Dart* node_dart) {
+    return k.program ? on.evaluate(*k.program, node_dart, t, where) : on.evaluate(x, node_dart, t, where);
+  };
+  const size_t first = out.size();
+  if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
+    // One affine combination of node values (Loop's edge mask): every class in one loop; the
+    // view's node dart at a class's first orbit dart b is b.
+    const size_t done = ev.combine_classes(*k.program, k.first_b->data(), count, t, out);
+    evaluations_ += done;
+    if (done == count) return;  // else the class that fails is evaluated below, for its error
+  } else if (on_view && k.program) {
+    // Any other compiled program: the classes in lanes (evaluator_lanes.cpp), the same values.
+    const size_t done = ev.run_classes(*k.program, k.first_b->data(), count, t, out);
+    evaluations_ += done;
+    if (done == count) return;  // else the classes from the batch that fails, one by one
+  }
+  for (size_t id = out.size() - first; id < count; ++id) {
+    const uint32_t b = (*k.first_b)[id];
+    const Dart node_dart = on_view ? b : c.darts[b];  // the hook, L's only node
+    try {
+      out.push_back(Evaluator::to_storage(evaluate(ev, &node_dart)));
+    } catch (const Error&) {
+      if (!on_view) throw;
+      // The same error located on the map (its darts' numbers): the class evaluated there.
+      Evaluator on_map(g, cs_.embeddings, fields);
+      on_map.memoise_collects(true);
+      evaluate(on_map, &c.darts[b]);
+      throw;
+    }
+    ++evaluations_;
+  }
 }
 
 // Step 3 on one kind without expression: the slot each class takes, into chosen (per class): the
@@ -343,6 +372,7 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     EmbeddingField& f = m_.fields[fi];
     Embedding<Vec3>& E = f.values;
     std::vector<ClassKind>& kinds = kinds_[fi];
+    E.reserve_slots(g.capacity());  // the slot table grown once, to the darts after the rewrite
     if (E.slots().size() < c.base) E.append_slots(c.base - E.slots().size(), [](size_t) { return kNoValue; });
     std::vector<uint32_t> offset(kinds.size(), 0);
     chosen_.resize(std::max(chosen_.size(), kinds.size()));
@@ -361,8 +391,7 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     for (size_t ki = 0; ki < kinds.size(); ++ki) {
       for (uint32_t v : kinds[ki].nodes) kind_of[v] = static_cast<uint32_t>(ki);
       if (kinds[ki].declaration < 0) continue;
-      offset[ki] = static_cast<uint32_t>(E.num_values());
-      E.append_values(*kinds[ki].values);
+      offset[ki] = kinds[ki].offset;  // its values appended before the rewrite
       write_preserved(ki);
     }
     for (size_t ki = 0; ki < kinds.size(); ++ki) {

@@ -96,11 +96,14 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     bool listed = false;
     Pooled<uint32_t> orbit_list;
     Pooled<uint32_t> orbit_start;
-    Pooled<Vec3> values;             // per class: the value (computed classes)
+    uint32_t offset = 0;             // computed kinds: the value slot of class 0 (class id at offset + id)
     std::optional<Program> program;  // the expression compiled (program.hpp), when it compiles
   };
   void derive_class_kinds();
   uint32_t label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k);
+  void evaluate_classes(Evaluator& ev, const Map& g, const scheme::ComponentInstance& c, const ClassKind& k,
+                        uint32_t count, bool on_view, const std::vector<const EmbeddingField*>& fields,
+                        std::vector<Vec3>& out);
   void inherited_slots(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f, ClassKind& k,
                        std::vector<uint32_t>& chosen);
   std::vector<std::vector<ClassKind>> kinds_;  // per field, in order of expression node

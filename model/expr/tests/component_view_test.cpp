@@ -162,6 +162,9 @@ TEST(ComponentView, AnEvaluationErrorNamesADartOfTheMap) {
       const auto d = static_cast<Dart>(std::stoul(match[1]));
       EXPECT_TRUE(before.map.alive(d)) << what;
       EXPECT_FALSE(before.fields[0].values.has(d)) << "seed " << seed << ": " << what;
+      // The values evaluated before the failing class are dropped with it: nothing was rewritten.
+      EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values()) << "seed " << seed;
+      EXPECT_EQ(m.map.size(), before.map.size()) << "seed " << seed;
       ++checked;
     }
   }
