@@ -237,22 +237,24 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
           ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start->data(), k.class_of->data());
       }
   // Each computed kind's values appended to its field's value array, class by class from slot
-  // k.offset (step 1's buffer is the array itself); all of them dropped again if one fails.
-  size_t ki = 0;
-  for (size_t fi = 0; fi < kinds_.size(); ++fi) {
-    Embedding<Vec3>& E = m_.fields[fi].values;
-    const size_t had = E.num_values();
-    try {
+  // k.offset (step 1's buffer is the array itself); every field's appended values dropped again if
+  // one class fails.
+  std::vector<size_t> had;
+  for (size_t fi = 0; fi < kinds_.size(); ++fi) had.push_back(m_.fields[fi].values.num_values());
+  try {
+    size_t ki = 0;
+    for (size_t fi = 0; fi < kinds_.size(); ++fi) {
+      Embedding<Vec3>& E = m_.fields[fi].values;
       for (ClassKind& k : kinds_[fi]) {
         const uint32_t count = counts[ki++];
         if (k.declaration < 0) continue;
         k.offset = static_cast<uint32_t>(E.num_values());
         E.append_values_by([&](std::vector<Vec3>& values) { evaluate_classes(ev, g, c, k, count, on_view, fields, values); });
       }
-    } catch (...) {
-      E.truncate_values(had);
-      throw;
     }
+  } catch (...) {
+    for (size_t fi = 0; fi < kinds_.size(); ++fi) m_.fields[fi].values.truncate_values(had[fi]);
+    throw;
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <regex>
 
 #include "model/core/orbit.hpp"
@@ -202,4 +203,38 @@ TEST(ComponentView, ValuesAreTheGeneralPathsBitForBitWhenNothingIsFused) {
     }
   }
   EXPECT_GT(compared, 1000u);
+}
+
+TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
+  using namespace component_view_test;
+  // Loop's scheme with a second point embedding on vertices, "shade", copied and averaged like the
+  // positions; the map's fields are position then shade, and one vertex has no shade: the
+  // positions are evaluated and appended first, then the shade fails, and both fields are left as
+  // they were.
+  nlohmann::json doc = nlohmann::json::parse(std::ifstream(component_view_test::rules_dir() + "loop_subdivision.json"));
+  doc["embeddings"].push_back({{"name", "shade"}, {"orbit", "<1,2>"}, {"type", "point"}});
+  doc["right"]["nodes"][0]["expressions"].push_back({{"embedding", "shade"}, {"code", "n0.shade"}});
+  doc["right"]["nodes"][1]["expressions"].push_back({{"embedding", "shade"}, {"code", "(n0.shade + n0@0.shade) / 2"}});
+  const scheme::RuleScheme s = io::scheme_from_json(doc, "loop with shade");
+  const scheme::SchemeEngine engine(s);
+  const CompiledScheme cs = compile_scheme(s);
+  size_t checked = 0;
+  for (uint64_t seed = 0; seed < 6; ++seed) {
+    gt::Rng rng(500 + seed);
+    const Map g = random_surface(seed * 3 + 1);
+    EmbeddedMap m = random_positions(rng, g);
+    EmbeddingField shade{3, Embedding<Vec3>("shade", OrbitType{1, 2})};
+    const auto vertices = orbit_representatives(g, OrbitType{1, 2});
+    for (size_t i = 1; i < vertices.size(); ++i) shade.values.set(g, vertices[i], Vec3{static_cast<double>(i), 2.0, 3.0});
+    m.fields.push_back(std::move(shade));
+    const EmbeddedMap before = m;
+    EmbeddingPropagation p(cs, m);
+    EXPECT_THROW(apply_everywhere_embedded(engine, p, m), Error) << "seed " << seed;
+    ASSERT_GT(before.fields[0].values.num_values(), 0u);
+    EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values()) << "seed " << seed;
+    EXPECT_EQ(m.fields[1].values.num_values(), before.fields[1].values.num_values()) << "seed " << seed;
+    EXPECT_EQ(m.map.size(), before.map.size()) << "seed " << seed;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6u);
 }
