@@ -99,13 +99,13 @@ class Embedding {
   // once (generated_append.hpp; fit would first write kNoValue).
   template <class Gen>
   void append_slots(size_t n, const Gen& gen) {
-    if (slot_.capacity() < slot_.size() + n) regrow(slot_, std::max(slot_.size() + n, 2 * slot_.size()));
+    reserve_slots(slot_.size() + n);
     append_generated(slot_, n, gen);
   }
   // The same with gen(x) = offset + classes[x]: the classes copied, then offset added to each (two
   // passes the compiler vectorises, where a generator is one call per slot).
   void append_slots_offset(const uint32_t* classes, size_t n, uint32_t offset) {
-    if (slot_.capacity() < slot_.size() + n) regrow(slot_, std::max(slot_.size() + n, 2 * slot_.size()));
+    reserve_slots(slot_.size() + n);
     const size_t first = slot_.size();
     slot_.insert(slot_.end(), classes, classes + n);
     uint32_t* const s = slot_.data() + first;

@@ -361,8 +361,8 @@ void EmbeddingPropagation::inherited_slots(const Map& g, const scheme::Component
 }
 
 // Steps 2 and 3: every dart of the result in the component takes the slot of its class, in its
-// node's kind: offset + class for a computed kind (its values appended), chosen[class] for an
-// inherited one. Preserved darts are written in place, computed kinds first (the traversal of a
+// node's kind: k.offset + class for a computed kind (its values appended before the rewrite),
+// chosen[class] for an inherited one. Preserved darts are written in place, computed kinds first (the traversal of a
 // mixed inherited class reads them), then each inherited kind; the added darts' slots, rank by
 // rank, are appended to the slot table when it ends where they start.
 void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentInstance& c) {
@@ -376,13 +376,12 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     std::vector<ClassKind>& kinds = kinds_[fi];
     E.reserve_slots(g.capacity());  // the slot table grown once, to the darts after the rewrite
     if (E.slots().size() < c.base) E.append_slots(c.base - E.slots().size(), [](size_t) { return kNoValue; });
-    std::vector<uint32_t> offset(kinds.size(), 0);
     chosen_.resize(std::max(chosen_.size(), kinds.size()));
     std::vector<uint32_t> kind_of(nr, 0);
     auto slot_of = [&](size_t ki) {
       const uint32_t* const class_of = kinds[ki].class_of->data();
       const uint32_t* const table = kinds[ki].declaration < 0 ? chosen_[ki].data() : nullptr;
-      const uint32_t off = offset[ki];
+      const uint32_t off = kinds[ki].offset;
       return [=](uint32_t b) { return table ? table[class_of[b]] : off + class_of[b]; };
     };
     auto write_preserved = [&](size_t ki) {
@@ -393,7 +392,6 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     for (size_t ki = 0; ki < kinds.size(); ++ki) {
       for (uint32_t v : kinds[ki].nodes) kind_of[v] = static_cast<uint32_t>(ki);
       if (kinds[ki].declaration < 0) continue;
-      offset[ki] = kinds[ki].offset;  // its values appended before the rewrite
       write_preserved(ki);
     }
     for (size_t ki = 0; ki < kinds.size(); ++ki) {
@@ -410,7 +408,7 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
       const auto slot = slot_of(kind_of[v]);
       const ClassKind& k = kinds[kind_of[v]];
       if (appended && k.declaration >= 0) {  // computed: offset + class
-        E.append_slots_offset(k.class_of->data(), sz, offset[kind_of[v]]);
+        E.append_slots_offset(k.class_of->data(), sz, k.offset);
       } else if (appended) {
         E.append_slots(sz, [&](size_t b) { return slot(static_cast<uint32_t>(b)); });
       } else {

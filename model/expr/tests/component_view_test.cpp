@@ -218,7 +218,6 @@ TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
   const scheme::RuleScheme s = io::scheme_from_json(doc, "loop with shade");
   const scheme::SchemeEngine engine(s);
   const CompiledScheme cs = compile_scheme(s);
-  size_t checked = 0;
   for (uint64_t seed = 0; seed < 6; ++seed) {
     gt::Rng rng(500 + seed);
     const Map g = random_surface(seed * 3 + 1);
@@ -234,7 +233,5 @@ TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
     EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values()) << "seed " << seed;
     EXPECT_EQ(m.fields[1].values.num_values(), before.fields[1].values.num_values()) << "seed " << seed;
     EXPECT_EQ(m.map.size(), before.map.size()) << "seed " << seed;
-    ++checked;
   }
-  EXPECT_EQ(checked, 6u);
 }
