@@ -8,15 +8,21 @@
 // the top of the heap free, glibc gives it back to the system (brk, with a TLB flush) and the next
 // application faults the same pages in again, which made a subdivision of a 20-face mesh ten
 // times slower than its work (docs/embeddings.md "Small meshes"). So:
-//  * take_buffer / give_buffer: a per-thread pool of vectors (from one page, 4 KiB, of storage; at
-//    most 32 per element type, the smallest dropped first: a pool of 128 that kept every table of
-//    three applications of Loop made that benchmark 10 to 15 % slower although it removed their
-//    page faults, docs/embeddings.md "Measured", cause not established); take_buffer(n) returns
-//    the smallest pooled vector holding n elements, emptied, or an empty vector when none does or
-//    when the smallest is more than twice as large as needed (a small table must not keep a large
-//    one);
-//  * Pooled<T>: a scratch vector taken from the pool (reserve(n) takes one with room for n) and
-//    given back when destroyed.
+//  * take_buffer / give_buffer: a per-thread pool of vectors per element type and per kind of
+//    storage (from one page, 4 KiB, of storage; at most 32 per pool, the smallest dropped first);
+//    take_buffer(n) returns the smallest pooled vector holding n elements, emptied, or an empty
+//    vector when none does or when the smallest is more than twice as large as needed (a small
+//    table must not keep a large one);
+//  * two kinds of storage, two pools: MapStorage (the default: link arrays, embedding slots and
+//    values, bitsets, which live as long as their map) and ScratchTables (the tables of one
+//    application: the rewrite's orbit index, the classes and orbit lists of the propagation, the
+//    evaluator's memo tables). In one pool the scratch tables of three Loop subdivisions pushed
+//    the maps' arrays out and each other (32 entries): about 400 page faults per run in steady
+//    state, none with two pools; a single pool of 128 also removed them but made query-replace's
+//    sequence (maps only) 5 to 15 % slower warm, cause not established (docs/embeddings.md
+//    "Two pools");
+//  * Pooled<T, Pool>: a scratch vector taken from a pool (reserve(n) takes one with room for n)
+//    and given back to it when destroyed.
 // Map, Bitset and Embedding give their large arrays back when destroyed and take them when they
 // grow, so the storage of a map dropped after one subdivision serves the next (memory is kept by
 // the thread until it ends, as a malloc arena keeps its free chunks).
@@ -31,34 +37,38 @@ namespace gmr {
 
 namespace detail {
 constexpr size_t kPoolMinBytes = size_t(1) << 12;  // a page
-constexpr size_t kPoolMaxBuffers = 32;              // per element type
+constexpr size_t kPoolMaxBuffers = 32;              // per pool (element type and storage kind)
 constexpr size_t kPoolMaxSlack = 2;                 // capacity handed out / capacity needed
 // Set when the thread's pool is destroyed (a trivially destructible thread_local, readable until
 // the thread ends): a map destroyed later (a static one, or a thread_local made before the pool)
 // then frees its arrays instead of giving them to a pool that no longer exists.
-template <class T>
+template <class T, class Storage>
 bool& buffer_pool_gone() {
   thread_local bool gone = false;
   return gone;
 }
-template <class T>
+template <class T, class Storage>
 struct BufferPool {
   std::vector<std::vector<T>> buffers;
-  ~BufferPool() { buffer_pool_gone<T>() = true; }
+  ~BufferPool() { buffer_pool_gone<T, Storage>() = true; }
 };
 // The thread's pool, or nullptr once it is destroyed.
-template <class T>
+template <class T, class Storage>
 std::vector<std::vector<T>>* buffer_pool() {
-  if (buffer_pool_gone<T>()) return nullptr;
-  thread_local BufferPool<T> p;
+  if (buffer_pool_gone<T, Storage>()) return nullptr;
+  thread_local BufferPool<T, Storage> p;
   return &p.buffers;
 }
 }  // namespace detail
 
+// The kinds of storage, each with its own pools (above).
+struct MapStorage;
+struct ScratchTables;
+
 // keep_contents: the vector is handed out as it was given back (Pooled::resize_for_overwrite).
-template <class T>
+template <class T, class Storage = MapStorage>
 std::vector<T> take_buffer(size_t min_capacity = 0, bool keep_contents = false) {
-  auto* pool = detail::buffer_pool<T>();
+  auto* pool = detail::buffer_pool<T, Storage>();
   if (!pool) return {};
   auto& p = *pool;
   size_t best = p.size();
@@ -72,10 +82,10 @@ std::vector<T> take_buffer(size_t min_capacity = 0, bool keep_contents = false) 
   return v;
 }
 
-template <class T>
+template <class T, class Storage = MapStorage>
 void give_buffer(std::vector<T>&& v) {
   if (v.capacity() * sizeof(T) < detail::kPoolMinBytes) return;
-  auto* pool = detail::buffer_pool<T>();
+  auto* pool = detail::buffer_pool<T, Storage>();
   if (!pool) return;  // v frees its storage
   auto& p = *pool;
   p.push_back(std::move(v));
@@ -85,11 +95,11 @@ void give_buffer(std::vector<T>&& v) {
   }
 }
 
-template <class T>
+template <class T, class Storage = MapStorage>
 class Pooled {
  public:
-  Pooled() : v_(take_buffer<T>()) {}
-  ~Pooled() { give_buffer(std::move(v_)); }
+  Pooled() : v_(take_buffer<T, Storage>()) {}
+  ~Pooled() { give_buffer<T, Storage>(std::move(v_)); }
   Pooled(Pooled&& o) noexcept : v_(std::move(o.v_)) {}
   Pooled& operator=(Pooled&& o) noexcept {
     std::swap(v_, o.v_);
@@ -118,13 +128,13 @@ class Pooled {
  private:
   void reserve(size_t n, bool keep_contents) {
     if (v_.capacity() >= n) return;
-    std::vector<T> other = take_buffer<T>(n, keep_contents);
+    std::vector<T> other = take_buffer<T, Storage>(n, keep_contents);
     if (other.capacity() >= n) {
       std::swap(v_, other);
-      give_buffer(std::move(other));
+      give_buffer<T, Storage>(std::move(other));
       return;
     }
-    give_buffer(std::move(other));
+    give_buffer<T, Storage>(std::move(other));
     reserve_in_huge_pages(v_, n);
   }
 

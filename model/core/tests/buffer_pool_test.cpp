@@ -48,6 +48,22 @@ TEST(BufferPool, KeepsBuffersFromOnePageUp) {
   EXPECT_EQ(take_buffer<Cell>(10).capacity(), 0u);
 }
 
+// A map's arrays and an application's scratch tables are pooled apart: scratch tables beyond their
+// pool's limit do not push a map's array out, and neither kind is handed out as the other.
+TEST(BufferPool, ScratchTablesAndMapStorageArePooledApart) {
+  struct Slot {  // a pool of its own
+    uint32_t v;
+  };
+  constexpr size_t n = size_t(1) << 12;
+  std::vector<Slot> array(n);
+  const Slot* const data = array.data();
+  give_buffer(std::move(array));
+  for (int k = 0; k < 40; ++k) give_buffer<Slot, ScratchTables>(std::vector<Slot>(n));
+  EXPECT_EQ(take_buffer<Slot>(n).data(), data);
+  EXPECT_EQ(take_buffer<Slot>(n).capacity(), 0u);
+  EXPECT_GE((take_buffer<Slot, ScratchTables>(n).capacity()), n);
+}
+
 // A bitset's words come from the pool and go back to it (the dead-dart set and the markers of a
 // map grow with it): the next bitset of that size reuses them, every bit reading 0.
 TEST(BufferPool, ABitsetsWordsServeTheNextBitset) {
