@@ -19,10 +19,10 @@
 //    evaluator's memo tables). In one pool the scratch tables of three Loop subdivisions pushed
 //    the maps' arrays out and each other (32 entries): about 400 page faults per run in steady
 //    state, none with two pools; a single pool of 128 also removed them but made query-replace's
-//    sequence (maps only) 5 to 15 % slower warm, cause not established (docs/embeddings.md
+//    sequence (maps only) about 10 % slower warm, cause not established (docs/embeddings.md
 //    "Two pools");
-//  * Pooled<T, Pool>: a scratch vector taken from a pool (reserve(n) takes one with room for n)
-//    and given back to it when destroyed.
+//  * Pooled<T, Storage>: a scratch vector taken from a pool (reserve(n) takes one with room for n)
+//    and given back to it when destroyed; ScratchTable<T> for the tables of one application.
 // Map, Bitset and Embedding give their large arrays back when destroyed and take them when they
 // grow, so the storage of a map dropped after one subdivision serves the next (memory is kept by
 // the thread until it ends, as a malloc arena keeps its free chunks).
@@ -140,5 +140,9 @@ class Pooled {
 
   std::vector<T> v_;
 };
+
+// A table of one application (the ScratchTables pools).
+template <class T>
+using ScratchTable = Pooled<T, ScratchTables>;
 
 }  // namespace gmr

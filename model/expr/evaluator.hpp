@@ -121,8 +121,8 @@ class Evaluator {
     Function function;
     DimMask orbit;
     int embedding;
-    Pooled<uint32_t, ScratchTables> at;  // per dart: index in values, or kNone
-    Pooled<Val, ScratchTables> values;
+    ScratchTable<uint32_t> at;  // per dart: index in values, or kNone
+    ScratchTable<Val> values;
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);
@@ -130,7 +130,7 @@ class Evaluator {
   // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
   struct OrbitIds {
     DimMask mask;
-    Pooled<uint32_t, ScratchTables> ids;  // the number of every dart's orbit, or:
+    ScratchTable<uint32_t> ids;  // the number of every dart's orbit, or:
     const uint32_t* numbers = nullptr;  // share_orbit_numbers
     const uint32_t* index = nullptr;
   };

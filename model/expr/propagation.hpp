@@ -88,15 +88,15 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
     std::vector<size_t> positions;   // the same as positions of O (o[p] in dims)
     int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
     uint32_t expression_node = 0;    // its R node
-    Pooled<uint32_t, ScratchTables> class_of;       // per orbit dart b: the class (computed before the rewrite)
-    Pooled<uint32_t, ScratchTables> first_b;        // per class: its first orbit dart
-    // Kinds of two positions whose orbits an expression enumerates (listed): the orbit darts of each
-    // class in the order of Evaluator::list_two_dims from its first one, class by class (class id
-    // from orbit_start[id] to orbit_start[id + 1]).
+    ScratchTable<uint32_t> class_of;  // per orbit dart b: the class (computed before the rewrite)
+    ScratchTable<uint32_t> first_b;   // per class: its first orbit dart
+    // Kinds of two positions whose orbits an expression enumerates (listed): the orbit darts of
+    // each class in the order of Evaluator::list_two_dims from its first one, class by class (class
+    // id from orbit_start[id] to orbit_start[id + 1]).
     bool listed = false;
-    Pooled<uint32_t, ScratchTables> orbit_list;
-    Pooled<uint32_t, ScratchTables> orbit_start;
-    uint32_t offset = 0;             // computed kinds: the value slot of class 0 (class id at offset + id)
+    ScratchTable<uint32_t> orbit_list;
+    ScratchTable<uint32_t> orbit_start;
+    uint32_t offset = 0;             // computed kinds: class id's value slot is offset + id
     std::optional<Program> program;  // the expression compiled (program.hpp), when it compiles
   };
   void derive_class_kinds();

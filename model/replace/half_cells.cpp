@@ -140,10 +140,10 @@ bool count_closed_half_faces_and_volumes(const Map& g, HalfFacesAndVolumes& h) {
   const Dart cap = g.capacity();
   const Dart *a0 = g.links(0).data(), *a1 = g.links(1).data(), *a2 = g.links(2).data(), *a3 = g.links(3).data();
   const size_t words = (size_t(cap) + 63) / 64;
-  Pooled<uint64_t> bits;
+  ScratchTable<uint64_t> bits;
   bits.reserve(words);
   bits->assign(words, 0);
-  Pooled<Dart> seeds;
+  ScratchTable<Dart> seeds;
   seeds.resize_for_overwrite(size_t(cap) + 1);
   Dart* const seed = seeds->data();
   const MetBits met{bits->data(), cap};

@@ -24,9 +24,9 @@ namespace {
 // map (rewrites_whole_components), so position p's array is the map's t[p]-link array.
 struct Workspace {
   explicit Workspace(int dimension) : orbit_map(dimension) {}
-  Pooled<uint32_t, ScratchTables> index_pool;  // per dart of the map before the call: its b, or kNone (not yet met)
-  Pooled<Dart, ScratchTables> darts_pool;      // O.darts of the current component
-  Map orbit_map;                // O's links: nb(b, p) is orbit_map's t[p]-link of b
+  ScratchTable<uint32_t> index_pool;  // per dart of the map before the call: its b, or kNone
+  ScratchTable<Dart> darts_pool;      // O.darts of the current component
+  Map orbit_map;                      // O's links: nb(b, p) is orbit_map's t[p]-link of b
   std::vector<uint32_t>& index = *index_pool;
   std::vector<Dart>& darts = *darts_pool;
 };
