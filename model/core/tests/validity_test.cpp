@@ -1,6 +1,8 @@
 // Validity reports every violation with its location (dart, dimensions, path).
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "model/core/builders.hpp"
 #include "model/core/validity.hpp"
 
@@ -79,4 +81,60 @@ TEST(Validity, HighDimensions) {
       EXPECT_FALSE(is_valid(g)) << n;
     }
   }
+}
+
+namespace {
+
+// Thesis Def. 1 read literally: every link is a dart, every alpha_i an involution, and
+// (alpha_i alpha_j)^2 the identity for i + 2 <= j.
+bool valid_by_definition(const Map& g) {
+  const int n = g.dimension();
+  const Dart cap = g.capacity();
+  for (Dart d = 0; d < cap; ++d)
+    for (int i = 0; i <= n; ++i) {
+      const Dart e = g.alpha(i, d);
+      if (e >= cap || g.alpha(i, e) != d) return false;
+    }
+  for (Dart d = 0; d < cap; ++d)
+    for (int i = 0; i <= n; ++i)
+      for (int j = i + 2; j <= n; ++j)
+        if (g.alpha(i, g.alpha(j, g.alpha(i, g.alpha(j, d)))) != d) return false;
+  return true;
+}
+
+}  // namespace
+
+// The verdict on G-maps without deleted darts (one pass over the darts when the map is valid, the
+// per-condition passes otherwise) is the definition's, on maps broken in every way a link can be:
+// a link out of range, a link set in one direction only, two i-links exchanged (alpha_i stays an
+// involution; the cycle conditions may break or not).
+TEST(Validity, VerdictIsTheDefinitionsOnBrokenGMaps) {
+  std::mt19937 rng(20261203);
+  size_t valid = 0, invalid = 0;
+  for (int round = 0; round < 600; ++round) {
+    Map g = round % 3 == 0 ? make_cube(3) : round % 3 == 1 ? make_grid(3, 2, 2) : make_cube(2);
+    const Dart cap = g.capacity();
+    const int n = g.dimension();
+    auto dart = [&] { return static_cast<Dart>(rng() % cap); };
+    const int i = static_cast<int>(rng() % static_cast<unsigned>(n + 1));
+    const Dart d = dart(), e = dart();
+    switch (round % 4) {
+      case 0: g.set_alpha(i, d, cap + static_cast<Dart>(rng() % 3)); break;
+      case 1: g.set_alpha(i, d, e); break;
+      default: {  // d -i- e and d1 -i- e1 for d -i- d1 and e -i- e1
+        const Dart d1 = g.alpha(i, d), e1 = g.alpha(i, e);
+        if (d == e || d1 == e) break;  // nothing to exchange
+        g.set_alpha(i, d1, e1), g.set_alpha(i, e1, d1);
+        g.set_alpha(i, d, e), g.set_alpha(i, e, d);
+        if (d1 == d && e1 != e) g.set_alpha(i, e1, e1);  // d was free: e's partner becomes free
+        if (e1 == e && d1 != d) g.set_alpha(i, d1, d1);
+      }
+    }
+    const bool expected = valid_by_definition(g);
+    EXPECT_EQ(check_validity(g).ok(), expected) << "round " << round;
+    EXPECT_EQ(is_valid(g), expected) << "round " << round;
+    (expected ? valid : invalid) += 1;
+  }
+  EXPECT_GT(valid, 50u);
+  EXPECT_GT(invalid, 300u);
 }
