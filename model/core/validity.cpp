@@ -43,27 +43,27 @@ namespace {
 // (a G-map, Def. 32): true when no dart breaks a condition as the passes of check_validity read
 // them (a link in range, alpha_i(alpha_i(d)) == d, and alpha_j(alpha_i(d)) == alpha_i(alpha_j(d))
 // for the cycle pairs). Each dart's links are loaded once for all the conditions instead of once
-// per condition's pass, so a valid map, the usual case, is checked in one sweep; a map with a
-// violation is then checked again by the passes, which report the violations in their order.
+// per condition's pass, so a valid map, the usual case, is checked in one sweep; the sweep stops
+// at the first broken dart, and the passes then report the violations in their order.
 template <int Dims>
 bool dense_gmap_is_valid(const Map& g, int lo) {
   const Dart cap = g.capacity();
   const Dart* l[Dims];
   for (int k = 0; k < Dims; ++k) l[k] = g.links(lo + k).data();
-  bool ok = true;
   for (Dart d = 0; d < cap; ++d) {
     Dart e[Dims];
-    bool in_range = true;
+    bool ok = true;
     for (int k = 0; k < Dims; ++k) {
       e[k] = l[k][d];
-      in_range &= e[k] < cap;
+      ok &= e[k] < cap;
     }
-    if (!in_range) return false;  // before any read through an out-of-range link
+    if (!ok) return false;  // before any read through an out-of-range link
     for (int k = 0; k < Dims; ++k) ok &= l[k][e[k]] == d;
     for (int a = 0; a < Dims; ++a)
       for (int b = a + 2; b < Dims; ++b) ok &= l[b][e[a]] == l[a][e[b]];
+    if (!ok) return false;  // the passes will name it
   }
-  return ok;
+  return true;
 }
 
 // Whether the one-pass check above applies to g and finds it valid.
