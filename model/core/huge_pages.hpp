@@ -8,18 +8,33 @@
 // 4 MiB is advised; elsewhere (other systems, smaller ranges) this does nothing. The advice is a
 // hint: contents and semantics are unchanged.
 #pragma once
+#include <algorithm>
 #include <cstddef>
+#include <iterator>
 
 namespace gmr {
 
 void advise_huge_pages(const void* data, size_t bytes);
 
-// v.reserve(n), the new storage advised (for a vector about to grow into it).
+// v.reserve(n), the new storage advised (for a vector about to grow into it) before v's elements
+// are moved into it: v.reserve would write them first, faulting their pages in 4 KiB.
 template <class V>
 void reserve_in_huge_pages(V& v, size_t n) {
   if (v.capacity() >= n) return;
-  v.reserve(n);
-  advise_huge_pages(v.data(), v.capacity() * sizeof(typename V::value_type));
+  V grown;
+  grown.reserve(n);
+  advise_huge_pages(grown.data(), grown.capacity() * sizeof(typename V::value_type));
+  grown.insert(grown.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
+  v.swap(grown);
+}
+
+// v grown to n elements, the new ones set to `value`, into storage at least twice as large when it
+// grows, advised (a per-dart table that grows with its map).
+template <class V>
+void resize_in_huge_pages(V& v, size_t n, const typename V::value_type& value) {
+  if (v.size() >= n) return;
+  if (v.capacity() < n) reserve_in_huge_pages(v, std::max(n, 2 * v.capacity()));
+  v.resize(n, value);
 }
 
 }  // namespace gmr

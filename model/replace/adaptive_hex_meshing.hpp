@@ -25,7 +25,7 @@ struct MeshingLevel {
   size_t face_replacements = 0;
   size_t volume_replacements = 0;
   size_t balanced = 0;        // hexahedra refined for the balance only
-  double seconds = 0;         // CPU time of the level
+  double seconds = 0;         // CPU time of the level (the count of its volumes not included)
 };
 
 // Whether the axis-aligned box [lo, hi] meets the surface.

@@ -4,6 +4,7 @@
 
 
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
 
 namespace gmr::replace {
@@ -25,7 +26,7 @@ namespace {
 // The dart -> local index table of this thread: UINT32_MAX everywhere between uses.
 std::vector<uint32_t>& local_index(Dart capacity) {
   thread_local std::vector<uint32_t> local;
-  if (local.size() < capacity) local.resize(capacity, UINT32_MAX);
+  resize_in_huge_pages(local, capacity, UINT32_MAX);
   return local;
 }
 

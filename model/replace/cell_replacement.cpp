@@ -52,8 +52,7 @@ void append_interior_positions(FlaggedMap& target, const ReplacementTemplate& t,
     const Vec3* from_inner = inner + (at_boundary ? 0 : s - boundary);
     return *(at_boundary ? from_boundary : from_inner);
   };
-  if (pos.capacity() < pos.size() + t.interior * (shared ? 2 : 1))  // p stays valid below
-    pos.reserve(std::max(pos.size() + t.interior * (shared ? 2 : 1), 2 * pos.capacity()));
+  target.grow_flags(pos.size() + t.interior * (shared ? 2 : 1));  // p stays valid below
   p = pos.data();
   const size_t base = pos.size();
   append_generated(pos, t.interior, position);
@@ -161,6 +160,7 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
     g.set_alpha(i - 1, y, first + j);
   }
   // 3. Flags and positions, appended.
+  target.grow_flags(g.capacity());
   for (int h = 0; h < (shared ? 2 : 1); ++h) target.flag.insert(target.flag.end(), t.flag.begin(), t.flag.end());
   if (target.positioned()) append_interior_positions(target, t, f, shared);
   return size_t(k) * (shared ? 2 : 1);

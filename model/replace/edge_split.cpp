@@ -1,6 +1,7 @@
 #include "model/replace/edge_split.hpp"
 
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/generated_append.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 // indexed by dart, reset after each use.
 std::vector<Dart>& chain_heads(Dart capacity) {
   thread_local std::vector<Dart> near;
-  if (near.size() < capacity) near.resize(capacity, kNoDart);
+  resize_in_huge_pages(near, capacity, kNoDart);
   return near;
 }
 
@@ -129,8 +130,7 @@ void make_room(FlaggedMap& m, size_t total) {
   bool room = true;
   for (int d = 0; d <= g.dimension(); ++d) room &= g.links(d).capacity() >= total;
   if (!room) g.reserve(std::max(total, 2 * first));
-  if (m.flag.capacity() < total) m.flag.reserve(std::max(total, 2 * m.flag.size()));
-  if (m.positioned() && m.position.capacity() < total) m.position.reserve(std::max(total, 2 * m.position.size()));
+  m.grow_flags(total);
 }
 
 // Every pair split on a map without holes: old dart x gets the h = k - 1 new darts

@@ -1,10 +1,25 @@
 #include "model/replace/flagged_map.hpp"
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/position.hpp"
 
 namespace gmr::replace {
+
+void FlaggedMap::grow_flags(size_t darts) {
+  if (flag.capacity() < darts) reserve_in_huge_pages(flag, std::max(darts, 2 * flag.capacity()));
+  if (positioned() && position.capacity() < darts)
+    reserve_in_huge_pages(position, std::max(darts, 2 * position.capacity()));
+}
+
+void FlaggedMap::reserve(size_t darts) {
+  map.reserve(darts);
+  reserve_in_huge_pages(flag, darts);
+  if (positioned()) reserve_in_huge_pages(position, darts);
+}
 
 size_t FlaggedMap::flagged() const {
   size_t n = 0;

@@ -20,18 +20,19 @@ struct FlaggedMap {
   std::vector<Vec3> position;  // per dart (its vertex's position); empty: no geometry
 
   bool positioned() const { return !position.empty(); }
+  // A flag (0) and a position (the origin) for every dart of the map.
   void resize_flags() {
+    grow_flags(map.capacity());
     flag.resize(map.capacity(), 0);
     if (positioned()) position.resize(map.capacity(), Vec3{0, 0, 0});
   }
+  // Room for the flags and positions of `darts` darts, grown geometrically (at least twice the
+  // room they had) in huge pages (huge_pages.hpp: fresh pages are faulted in 2 MiB, not 4 KiB).
+  void grow_flags(size_t darts);
   size_t flagged() const;
-  // Room for `darts` darts in the links, flags and positions (a sequence of replacements whose
-  // growth is bounded beforehand then grows no array, query_replace.hpp).
-  void reserve(size_t darts) {
-    map.reserve(darts);
-    flag.reserve(darts);
-    if (positioned()) position.reserve(darts);
-  }
+  // Room for `darts` darts in the links, flags and positions, exactly (a sequence of replacements
+  // whose growth is bounded beforehand then grows no array, query_replace.hpp).
+  void reserve(size_t darts);
 };
 
 // Reads the flags of a gmr.gmap content; throws Error(Schema) at `where` for an embedding "flag"

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/position.hpp"
 #include "model/core/validity.hpp"
@@ -68,6 +69,42 @@ TEST(AdaptiveMeshing, SphereFourLevelsValidAndBalanced) {
     finest = std::max(finest, b);
   }
   EXPECT_EQ(finest, 4);
+}
+
+// The map is checked once, before the first level; each step keeps it valid (checked here after
+// every level: the meshing to 1, 2, 3 and 4 levels, each from the box), and the levels of a longer
+// run repeat those of a shorter one.
+TEST(AdaptiveMeshing, EveryLevelLeavesAValidMap) {
+  PatternStore store(Mode::Unoriented);
+  for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
+  const BoxTest meets = [](const Vec3& lo, const Vec3& hi) { return sphere_meets(lo, hi, {0.2, 0.1, -0.15}, 0.6); };
+  std::vector<MeshingLevel> previous;
+  for (int levels = 1; levels <= 4; ++levels) {
+    FlaggedMap m = box_hexahedron({-1, -1, -1}, 2);
+    const std::vector<MeshingLevel> run = refine_adaptively(m, store, levels, meets);
+    EXPECT_TRUE(is_valid(m.map)) << levels << " levels";
+    EXPECT_EQ(count_cells(m.map, 3), run.back().volumes);
+    for (size_t l = 0; l < previous.size(); ++l) {
+      EXPECT_EQ(run[l].volumes, previous[l].volumes) << levels << " levels, level " << l + 1;
+      EXPECT_EQ(run[l].face_replacements, previous[l].face_replacements);
+      EXPECT_EQ(run[l].balanced, previous[l].balanced);
+    }
+    previous = run;
+  }
+}
+
+TEST(AdaptiveMeshing, RefusesAnInvalidMap) {
+  PatternStore store(Mode::Unoriented);
+  for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
+  FlaggedMap m = box_hexahedron({0, 0, 0}, 1);
+  m.map.set_alpha(2, 0, 5);  // one way only: alpha_2 is no longer an involution
+  try {
+    refine_adaptively(m, store, 1, [](const Vec3&, const Vec3&) { return true; });
+    FAIL() << "an invalid map was refined";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidMap);
+    EXPECT_NE(std::string(e.what()).find("not valid"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
