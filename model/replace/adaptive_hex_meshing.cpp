@@ -68,7 +68,8 @@ struct Refinement {
 // every coarser hexahedron sharing a vertex with one to refine (the balance). Each vertex of a
 // hexahedron is visited once per hexahedron (its darts in the hexahedron marked through their
 // <1, 2>-orbit, its corner), its whole vertex orbit read for the volumes around it.
-Refinement hexahedra_to_refine(const Map& g, const Volumes& v, int l, const BoxTest& meets_surface) {
+Refinement hexahedra_to_refine(const Map& g, const Volumes& v, int l,
+                               const BoxTest& meets_surface) {
   std::vector<uint8_t> chosen(v.dart.size(), 0);
   std::vector<uint32_t> refine;
   for (uint32_t k = 0; k < v.dart.size(); ++k)
@@ -77,17 +78,20 @@ Refinement hexahedra_to_refine(const Map& g, const Volumes& v, int l, const BoxT
       refine.push_back(k);
     }
   const size_t meeting = refine.size();
-  const DimMask volume = cell_type(g, 3).mask(), corner = DimMask(0b0110), vertex = vertex_orbit_type(g).mask();
+  const DimMask volume = cell_type(g, 3).mask(), corner = DimMask(0b0110),
+                vertex = vertex_orbit_type(g).mask();
   ScopedMarker in_volume(g), at_corner(g), at_vertex(g);
   std::vector<Dart> darts, corners, around, stack;
   for (size_t i = 0; i < refine.size(); ++i) {
     const uint32_t k = refine[i];
     darts.clear();
-    visit_orbit_marked(g, volume, v.dart[k], in_volume.id(), stack, [&](Dart x) { darts.push_back(x); });
+    visit_orbit_marked(g, volume, v.dart[k], in_volume.id(), stack,
+                       [&](Dart x) { darts.push_back(x); });
     corners.clear();
     for (Dart x : darts) {
       if (at_corner.test(x)) continue;
-      visit_orbit_marked(g, corner, x, at_corner.id(), stack, [&](Dart y) { corners.push_back(y); });
+      visit_orbit_marked(g, corner, x, at_corner.id(), stack,
+                         [&](Dart y) { corners.push_back(y); });
       around.clear();
       visit_orbit_marked(g, vertex, x, at_vertex.id(), stack, [&](Dart y) { around.push_back(y); });
       for (Dart y : around) {
@@ -112,7 +116,9 @@ Refinement hexahedra_to_refine(const Map& g, const Volumes& v, int l, const BoxT
 std::vector<Dart> volume_darts(const Map& g, const std::vector<Dart>& group) {
   std::vector<Dart> darts, stack;
   ScopedMarker seen(g);
-  for (Dart h : group) visit_orbit_marked(g, cell_type(g, 3).mask(), h, seen.id(), stack, [&](Dart x) { darts.push_back(x); });
+  for (Dart h : group)
+    visit_orbit_marked(g, cell_type(g, 3).mask(), h, seen.id(), stack,
+                       [&](Dart x) { darts.push_back(x); });
   for (Dart x : darts) seen.unmark(x);
   seen.set_clean();
   return darts;
@@ -137,20 +143,25 @@ std::vector<Dart> orbits_met(const Map& g, DimMask mask, const std::vector<Dart>
 // their edges between two corners (flagged ends), f-patterns on their faces (one dart per face),
 // the v-pattern on the volumes; then flags every dart of the new hexahedra. The map is valid
 // before (refine_adaptively checks it) and each step keeps it valid, so the steps do not check it.
-void refine_group(FlaggedMap& m, const PatternStore& store, const std::vector<Dart>& group, MeshingLevel& r) {
+void refine_group(FlaggedMap& m, const PatternStore& store, const std::vector<Dart>& group,
+                  MeshingLevel& r) {
   Map& g = m.map;
-  const std::vector<Dart> edges = orbits_met(g, cell_type(g, 1).mask(), volume_darts(g, group),
-                                             [&](Dart x) { return m.flag[x] && m.flag[g.alpha(0, x)]; });
+  const std::vector<Dart> edges =
+      orbits_met(g, cell_type(g, 1).mask(), volume_darts(g, group),
+                 [&](Dart x) { return m.flag[x] && m.flag[g.alpha(0, x)]; });
   split_edges(m, edges, 2);
   const std::vector<Dart> faces =
       orbits_met(g, cell_type(g, 2).mask(), volume_darts(g, group), [](Dart) { return true; });
-  r.face_replacements += query_replace(m, store, 2, {}, {}, {}, &faces, Precondition::AssumeValid).replaced();
+  r.face_replacements +=
+      query_replace(m, store, 2, {}, {}, {}, &faces, Precondition::AssumeValid).replaced();
   // The darts of the new hexahedra: the volumes' darts now and the copies.
   const std::vector<Dart> old = volume_darts(g, group);
   const Dart first_new = g.capacity();
-  const QueryReplaceReport vr = query_replace(m, store, 3, {}, {}, {}, &group, Precondition::AssumeValid);
+  const QueryReplaceReport vr =
+      query_replace(m, store, 3, {}, {}, {}, &group, Precondition::AssumeValid);
   if (!vr.unmatched.empty())
-    throw Error(ErrorCode::InvalidMap, "a hexahedron to refine matched no pattern (unbalanced mesh)",
+    throw Error(ErrorCode::InvalidMap,
+                "a hexahedron to refine matched no pattern (unbalanced mesh)",
                 "dart " + std::to_string(vr.unmatched.front()));
   r.volume_replacements += vr.replaced();
   m.resize_flags();

@@ -59,7 +59,7 @@ TEST(HugePages, TheMovedElementsLandInHugePages) {
   if (modes.find("[madvise]") == std::string::npos && modes.find("[always]") == std::string::npos)
     GTEST_SKIP() << "transparent huge pages are off: " << modes;
   std::vector<uint64_t> v(size_t(2) << 20, 1);  // 16 MiB
-  reserve_in_huge_pages(v, size_t(8) << 20);   // 64 MiB: a fresh mapping
+  reserve_in_huge_pages(v, size_t(8) << 20);    // 64 MiB: a fresh mapping
   EXPECT_GE(anon_huge_kb(v.data(), v.size() * sizeof(uint64_t)), 2048);
 }
 

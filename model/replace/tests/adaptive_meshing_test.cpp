@@ -77,7 +77,9 @@ TEST(AdaptiveMeshing, SphereFourLevelsValidAndBalanced) {
 TEST(AdaptiveMeshing, EveryLevelLeavesAValidMap) {
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
-  const BoxTest meets = [](const Vec3& lo, const Vec3& hi) { return sphere_meets(lo, hi, {0.2, 0.1, -0.15}, 0.6); };
+  const BoxTest meets = [](const Vec3& lo, const Vec3& hi) {
+    return sphere_meets(lo, hi, {0.2, 0.1, -0.15}, 0.6);
+  };
   std::vector<MeshingLevel> previous;
   for (int levels = 1; levels <= 4; ++levels) {
     FlaggedMap m = box_hexahedron({-1, -1, -1}, 2);
