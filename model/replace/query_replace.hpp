@@ -75,5 +75,15 @@ size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim);
 // replacement_room over them, with the half-faces and half-volumes of a 3-G-map counted in one
 // sweep (count_half_faces_and_volumes, half_cells.hpp).
 size_t replacement_room(const Map& g, const PatternStore& store, const std::vector<int>& cell_dims);
+// The same bound from the number of darts alone, without a sweep: a cell a pattern replaces has
+// as many darts as that pattern's boundary (a half-face each side of a face of a 3-G-map), and
+// half-cells of one dimension share no dart, so a map of `darts` darts has at most darts / b
+// replaced half-cells of a dimension whose patterns' smallest boundary has b darts, each given at
+// most the largest interior i; the dimensions of cell_dims are replaced in turn, each on the darts
+// the previous ones left. `darts` counts the map when the first of them runs (after any edge
+// split). Exact when every cell matches a pattern with both the smallest boundary and the largest
+// interior (a uniform subdivision: one pattern per dimension); with patterns of very different
+// sizes it reserves more than replacement_room, which counts the cells.
+size_t replacement_room_bound(size_t darts, const PatternStore& store, const std::vector<int>& cell_dims);
 
 }  // namespace gmr::replace

@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <ctime>
 #include <cstdlib>
 #include <map>
 #include <stdexcept>
@@ -24,6 +25,7 @@
 #include "model/core/builders.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/orbit.hpp"
+#include "model/core/validity.hpp"
 #include "model/replace/configurations.hpp"
 #include "model/replace/direct_hex_subdivision.hpp"
 #include "model/replace/edge_split.hpp"
@@ -134,10 +136,11 @@ const PatternStore& hex_patterns() {
   return s;
 }
 
-// The darts of the hexahedral subdivision of m: every edge split in 2, then the faces' and the
-// volumes' replacement rooms, counted in one sweep (the sequence's reservation).
+// The darts of the hexahedral subdivision of m (the sequence's reservation): every edge split in
+// 2, then the faces' and the volumes' replacement rooms bounded from the dart count (exact here:
+// one pattern per dimension).
 size_t subdivision_size(const FlaggedMap& m, const PatternStore& store) {
-  return 2 * m.map.size() + replacement_room(m.map, store, {2, 3});
+  return 2 * m.map.size() + replacement_room_bound(2 * m.map.size(), store, {2, 3});
 }
 
 size_t pattern_named(const std::string& name) {
@@ -149,37 +152,65 @@ size_t pattern_named(const std::string& name) {
 size_t split4() { return pattern_named("split4"); }
 size_t hex8() { return pattern_named("hex8"); }
 
-// Query-replace as an application runs the sequence: its final size reserved once from the
+// How the sequence below looks cells up and checks its input.
+enum class Sequence {
+  QueryReplace,             // queries; the input's validity checked once, before the first step
+  QueryReplaceAssumeValid,  // queries; no validity check (the caller built the block)
+  ReplaceOnly,              // no query: the paper's Table 1, "only the replace part"
+};
+
+// Query-replace as an application runs the sequence (refine_adaptively does the same): the
+// input checked once when asked (each step keeps the map valid: the replacement tests check it
+// after every step, so the steps themselves skip the check), its final size reserved once from the
 // patterns (replacement_room), every edge split in 2 at once (split_all_edges), f-pattern on the
-// faces, v-pattern on the volumes. `reserved` false: no reservation and one split_edge per edge (each step grows the
-// arrays, copying them). `precondition` AssumeValid: the steps skip the validity check of their
-// input (the caller built the block and knows it valid).
-// `lookup` false: replace only (the paper's Table 1, "only the replace part"): split4 on every face
-// and hex8 on every volume without a query, each cell numbered along the pattern's word from its
-// smallest dart, a flagged corner matched with the pattern's start (replace_only.hpp).
-void hex_subdivision_by_query_replace(benchmark::State& state, bool reserved,
-                                      Precondition precondition = Precondition::CheckValidity, bool lookup = true) {
+// faces, v-pattern on the volumes. ReplaceOnly: split4 on every face and hex8 on every volume
+// without a query, each cell numbered along the pattern's word from its smallest dart, a flagged
+// corner matched with the pattern's start (replace_only.hpp). Returns the volumes made, 0 if a cell
+// matched no pattern.
+size_t subdivide_by_patterns(FlaggedMap& m, Sequence sequence) {
   const PatternStore& store = hex_patterns();
+  if (sequence == Sequence::QueryReplace) {
+    const ValidityReport v = check_validity(m.map, 1);
+    if (!v.ok()) throw std::runtime_error("the block is not valid");
+  }
+  m.reserve(subdivision_size(m, store));
+  split_all_edges(m, 2);
+  const bool lookup = sequence != Sequence::ReplaceOnly;
+  const QueryReplaceReport f = lookup ? query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid)
+                                      : replace_only(m, store, split4(), nullptr, Precondition::AssumeValid);
+  const QueryReplaceReport v = lookup ? query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid)
+                                      : replace_only(m, store, hex8(), nullptr, Precondition::AssumeValid);
+  if (!f.unmatched.empty() || !v.unmatched.empty()) return 0;
+  return v.replaced() * 8;
+}
+
+void hex_subdivision_by_patterns(benchmark::State& state, Sequence sequence) {
   const FlaggedMap& input = block(static_cast<int>(state.range(0)));
   size_t volumes = 0;
   for (auto _ : state) {
     state.PauseTiming();
     FlaggedMap m = input;
     state.ResumeTiming();
-    if (reserved) {
-      m.reserve(subdivision_size(m, store));
-      split_all_edges(m, 2);
-    } else {
-      for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
-    }
-    const QueryReplaceReport f = lookup ? query_replace(m, store, 2, {}, {}, {}, nullptr, precondition)
-                                        : replace_only(m, store, split4(), nullptr, precondition);
-    const QueryReplaceReport v = lookup ? query_replace(m, store, 3, {}, {}, {}, nullptr, precondition)
-                                        : replace_only(m, store, hex8(), nullptr, precondition);
-    if (!f.unmatched.empty() || !v.unmatched.empty()) state.SkipWithError("a cell was not matched");
-    volumes = v.replaced() * 8;
+    volumes = subdivide_by_patterns(m, sequence);
+    if (!volumes) state.SkipWithError("a cell was not matched");
   }
   state.counters["volumes"] = static_cast<double>(volumes);
+}
+
+// Without the reservation: one split_edge per edge, each step growing the arrays (copying them),
+// each step checking its input.
+void BM_HexSubdivisionQueryReplaceUnreserved(benchmark::State& state) {
+  const PatternStore& store = hex_patterns();
+  const FlaggedMap& input = block(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    state.PauseTiming();
+    FlaggedMap m = input;
+    state.ResumeTiming();
+    for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, 2);
+    const QueryReplaceReport f = query_replace(m, store, 2);
+    const QueryReplaceReport v = query_replace(m, store, 3);
+    if (!f.unmatched.empty() || !v.unmatched.empty()) state.SkipWithError("a cell was not matched");
+  }
 }
 
 // One step of the reserved sequence timed alone (range(1): 0 the reservation with its room counts, 1 the edge split, 2
@@ -209,15 +240,11 @@ void BM_HexStep(benchmark::State& state) {
   }
 }
 
-void BM_HexSubdivisionQueryReplace(benchmark::State& state) { hex_subdivision_by_query_replace(state, true); }
-void BM_HexSubdivisionQueryReplaceUnreserved(benchmark::State& state) { hex_subdivision_by_query_replace(state, false); }
+void BM_HexSubdivisionQueryReplace(benchmark::State& state) { hex_subdivision_by_patterns(state, Sequence::QueryReplace); }
 void BM_HexSubdivisionQueryReplaceAssumeValid(benchmark::State& state) {
-  hex_subdivision_by_query_replace(state, true, Precondition::AssumeValid);
+  hex_subdivision_by_patterns(state, Sequence::QueryReplaceAssumeValid);
 }
-
-void BM_HexSubdivisionReplaceOnly(benchmark::State& state) {
-  hex_subdivision_by_query_replace(state, true, Precondition::AssumeValid, false);
-}
+void BM_HexSubdivisionReplaceOnly(benchmark::State& state) { hex_subdivision_by_patterns(state, Sequence::ReplaceOnly); }
 
 void BM_HexSubdivisionDirect(benchmark::State& state) {
   const FlaggedMap& input = block(static_cast<int>(state.range(0)));
@@ -227,6 +254,50 @@ void BM_HexSubdivisionDirect(benchmark::State& state) {
     darts = r.map.size();
   }
   state.counters["volumes"] = static_cast<double>(darts / 48);
+}
+
+double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
+
+// A sequence against the direct subdivision in one process, pair by pair (range(1): 0 query-replace
+// with its input checked once, 1 with AssumeValid, 2 replace only): each iteration runs both on
+// copies of the block, the one that goes first alternating, each timed alone (thread CPU time;
+// the copies and the results' destruction not timed), so that both see the same load and the same
+// state of the allocator. Counters: the medians of the two times over the iterations and their
+// ratio, the overhead of the target (sequence / direct).
+void BM_HexSubdivisionPaired(benchmark::State& state) {
+  const FlaggedMap& input = block(static_cast<int>(state.range(0)));
+  const Sequence sequence = static_cast<Sequence>(state.range(1));
+  std::vector<double> direct, method;
+  bool method_first = true;
+  for (auto _ : state) {
+    for (int turn = 0; turn < 2; ++turn) {
+      if ((turn == 0) == method_first) {
+        FlaggedMap m = input;
+        const double t0 = thread_cpu_ms();
+        const size_t volumes = subdivide_by_patterns(m, sequence);
+        method.push_back(thread_cpu_ms() - t0);
+        if (!volumes) state.SkipWithError("a cell was not matched");
+      } else {
+        const double t0 = thread_cpu_ms();
+        FlaggedMap r = subdivide_hexahedra(input);
+        direct.push_back(thread_cpu_ms() - t0);
+        benchmark::DoNotOptimize(r.map.size());
+      }
+    }
+    method_first = !method_first;
+  }
+  state.counters["direct_ms"] = median(direct);
+  state.counters["method_ms"] = median(method);
+  state.counters["ratio"] = median(method) / median(direct);
 }
 
 BENCHMARK(BM_QueryByPatternStore)->Unit(benchmark::kMillisecond);
@@ -255,6 +326,10 @@ BENCHMARK(BM_HexStep)
 BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(20);
 BENCHMARK(BM_HexSubdivisionReplaceOnly)->Unit(benchmark::kMillisecond)->Arg(20);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(20);
+// Pairs per size: about 3 s of work each.
+BENCHMARK(BM_HexSubdivisionPaired)->Unit(benchmark::kMillisecond)->ArgsProduct({{12}, {0, 1, 2}})->Iterations(200);
+BENCHMARK(BM_HexSubdivisionPaired)->Unit(benchmark::kMillisecond)->ArgsProduct({{16}, {0, 1, 2}})->Iterations(100);
+BENCHMARK(BM_HexSubdivisionPaired)->Unit(benchmark::kMillisecond)->ArgsProduct({{20}, {0, 1, 2}})->Iterations(50);
 
 }  // namespace
 

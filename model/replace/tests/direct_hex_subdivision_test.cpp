@@ -65,10 +65,11 @@ TEST(DirectHexSubdivision, SameMapAndPositionsAsQueryReplace) {
 }
 
 // The sequence as the benchmark runs it: its final size reserved from replacement_room before
-// any step (faces and volumes counted in one sweep, as the two counts give it) (no array grows: the link arrays stay in place), every edge split at once
-// (split_edges on the edges, or split_all_edges), then faces and volumes (validity checked by
-// query_replace, or assumed as the benchmark's AssumeValid variant does); the bound is exact for
-// hexahedra, and the result is the direct subdivision up to isomorphism, with the same positions,
+// any step (faces and volumes counted in one sweep, as the two counts give it) (no array grows: the
+// link arrays stay in place), every edge split at once (split_edges on the edges, or
+// split_all_edges), then faces and volumes (validity checked by query_replace, or assumed as the
+// benchmark's AssumeValid variant does); the bound is exact for hexahedra (so is the bound from the
+// dart count), and the result is the direct subdivision up to isomorphism, with the same positions,
 // valid after every replacement.
 TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
   const std::vector<Voxel> voxels{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};
@@ -82,6 +83,7 @@ TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
       const size_t darts = qr.map.size();
       const size_t faces = replacement_room(qr.map, store, 2), volumes = replacement_room(qr.map, store, 3);
       EXPECT_EQ(replacement_room(qr.map, store, {2, 3}), faces + volumes);  // one sweep for both
+      EXPECT_EQ(replacement_room_bound(2 * darts, store, {2, 3}), faces + volumes);  // from the darts alone
       qr.reserve(2 * darts + replacement_room(qr.map, store, {2, 3}));
       const Dart* links = qr.map.links(0).data();
       if (pre == Precondition::CheckValidity)

@@ -98,9 +98,12 @@ TEST(MarchingCubes, VoxelisedSphereGivesAClosedSurface) {
     for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1)))
       if (inside(m.position[e]) != inside(m.position[m.map.alpha(0, e)])) split_edge(m, e, 2);
     const PatternStore store = marching_cubes_store(mode);
+    // Patterns of many sizes: the room bounded from the dart count holds.
+    const size_t room = replacement_room_bound(m.map.size(), store, {2, 3});
     auto check = [&] { ASSERT_TRUE(is_valid(m.map)); };
     const QueryReplaceReport f = query_replace(m, store, 2, check);
     const QueryReplaceReport v = query_replace(m, store, 3, check);
+    EXPECT_LE(f.darts_added + v.darts_added, room);
     EXPECT_GT(f.replaced(), 0u);
     EXPECT_EQ(v.replaced(), cut_volumes);
     // The surface: faces whose vertices are all new (cut points).
