@@ -1,6 +1,7 @@
 #include "model/replace/direct_hex_subdivision.hpp"
 
 #include "model/core/error.hpp"
+#include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
 
 namespace gmr::replace {
@@ -85,11 +86,14 @@ FlaggedMap subdivide_hexahedra(const FlaggedMap& m) {
       h.set_alpha(3, base + w, (w & 4 ? across : a3) + w);
     }
   });
+  // Flags and positions in huge pages, as query-replace grows them (FlaggedMap::grow_flags).
+  reserve_in_huge_pages(r.flag, h.capacity());
   r.flag.assign(h.capacity(), 1);
   if (m.positioned()) {
     const std::vector<Vec3>& p = m.position;
     std::vector<Vec3> face, cell;
     centres(g, p, face, cell);
+    reserve_in_huge_pages(r.position, h.capacity());
     r.position.resize(h.capacity());
     g.for_each_dart([&](Dart d) {
       const Dart e1 = g.alpha(1, d), e3 = g.alpha(1, g.alpha(2, d));
