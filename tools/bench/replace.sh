@@ -13,7 +13,12 @@
 #            freed (every run touches new pages, except the link arrays the map keeps in its
 #            buffer pool, buffer_pool.hpp);
 #   warm:    in one process, freed memory kept and reused (after the first run no page is new):
-#            the work itself.
+#            the work itself;
+#   paired:  in one process, each sequence and the direct subdivision run in pairs, alternating
+#            (BM_HexSubdivisionPaired: 200, 100, 50 pairs at sides 12, 16, 20; thread CPU time),
+#            with glibc's default allocator and with freed memory kept (as warm); per process the
+#            ratio of the medians, sequence / direct; printed per side and variant: the median and
+#            the range over the repetitions (one process each).
 # The methods alternate per size (in fresh, per repetition). The machine load is printed before
 # and after.
 #
@@ -21,12 +26,12 @@
 #   GMR_BENCH_REPS=3 tools/bench/replace.sh
 #   GMR_BENCH_REBUILD=0 tools/bench/replace.sh      # use build-bench as is
 #   GMR_BENCH_BUILD=/tmp/b tools/bench/replace.sh   # build directory (default: build-bench)
-#   GMR_BENCH_REGIMES="warm" tools/bench/replace.sh # a subset of: fresh cold warm
+#   GMR_BENCH_REGIMES="warm" tools/bench/replace.sh # a subset of: fresh cold warm paired
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=${GMR_BENCH_BUILD:-$root/build-bench}
 reps=${GMR_BENCH_REPS:-7}
-regimes=${GMR_BENCH_REGIMES:-fresh cold warm}
+regimes=${GMR_BENCH_REGIMES:-fresh cold warm paired}
 jobs=$(nproc 2>/dev/null || echo 2)
 if [[ "${GMR_BENCH_REBUILD:-1}" == 1 || ! -x "$build/tools/bench/gmr_bench_replace" ]]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
@@ -51,8 +56,16 @@ for regime in $regimes; do
         done
       done
     done
+  elif [[ $regime == paired ]]; then
+    for ((r = 0; r < reps; ++r)); do
+      for memory in default warm; do
+        GLIBC_TUNABLES=$([[ $memory == warm ]] && echo "${tunables[warm]}" || echo "") "$bench" \
+          --benchmark_filter='^BM_HexSubdivisionPaired/' --benchmark_format=json 2>/dev/null >"$data/paired-$memory-$r.json"
+      done
+    done
   else
-    GLIBC_TUNABLES=${tunables[$regime]} "$bench" --benchmark_filter=HexSubdivision \
+    GLIBC_TUNABLES=${tunables[$regime]} "$bench" \
+      --benchmark_filter='^BM_HexSubdivision(QueryReplace|QueryReplaceAssumeValid|ReplaceOnly|Direct|QueryReplaceUnreserved)/' \
       --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
       --benchmark_out="$data/$regime.json" --benchmark_out_format=json >/dev/null 2>&1
   fi
@@ -65,6 +78,8 @@ print(f"{'memory':7} {'side':>4} {'volumes':>7} {'direct':>8} {'qr':>8} {'overhe
       f"{'overhead':>8} {'replace only':>12} {'overhead':>8} {'qr unreserved':>13}   (CPU ms, medians)")
 for regime in regimes:
     med = {}
+    if regime == "paired":
+        continue
     if regime == "fresh":
         runs = {}
         for f in glob.glob(f"{data}/fresh-*.json"):
@@ -92,3 +107,24 @@ for regime in regimes:
         u = cell("QueryReplaceUnreserved", side, d, False)
         print(f"{regime:7} {side:>4} {int(vol):>7} {d:>8.1f} {q:>8} {qo:>8} {a:>15} {ao:>8} {o:>12} {oo:>8} {u:>13}")
 PY
+if [[ " $regimes " == *" paired "* ]]; then
+  python3 - "$data" <<'PY'
+import glob, json, re, statistics, sys
+data = sys.argv[1]
+variants = {"0": "qr, input checked once", "1": "qr assume-valid", "2": "replace only"}
+print(f"{'paired':7} {'memory':8} {'side':>4} {'direct ms':>9}  " + "  ".join(f"{v:>22}" for v in variants.values()))
+for memory in ("default", "warm"):
+    ratios, direct = {}, {}
+    for f in glob.glob(f"{data}/paired-{memory}-*.json"):
+        for b in json.load(open(f))["benchmarks"]:
+            side, variant = re.match(r"BM_HexSubdivisionPaired/(\d+)/(\d)", b["run_name"]).groups()
+            ratios.setdefault((int(side), variant), []).append(b["ratio"])
+            direct.setdefault(int(side), []).append(b["direct_ms"])
+    for side in sorted(direct):
+        cells = []
+        for v in variants:
+            r = ratios.get((side, v), [])
+            cells.append(f"{statistics.median(r):.2f} [{min(r):.2f}-{max(r):.2f}]" if r else "")
+        print(f"{'':7} {memory:8} {side:>4} {statistics.median(direct[side]):>9.2f}  " + "  ".join(f"{c:>22}" for c in cells))
+PY
+fi
