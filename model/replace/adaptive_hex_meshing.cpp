@@ -124,7 +124,7 @@ std::vector<Dart> volume_darts(const Map& g, const std::vector<Dart>& group) {
   return darts;
 }
 
-// One dart per <mask>-orbit met by `darts`, in their order.
+// One dart per <mask>-orbit of `darts`: the first of its darts, in their order, that is `wanted`.
 std::vector<Dart> orbits_met(const Map& g, DimMask mask, const std::vector<Dart>& darts,
                              const std::function<bool(Dart)>& wanted) {
   std::vector<Dart> reps, met, stack;
@@ -189,7 +189,9 @@ std::vector<MeshingLevel> refine_adaptively(FlaggedMap& m, const PatternStore& s
   Map& g = m.map;
   if (g.dimension() != 3 || !m.positioned()) throw Error(ErrorCode::InvalidMap, "adaptive meshing needs a positioned 3-G-map");
   const ValidityReport valid = check_validity(g, 1);
-  if (!valid.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + valid.violations.front().describe());
+  if (!valid.ok())
+    throw Error(ErrorCode::InvalidMap,
+                "the map is not valid: " + valid.violations.front().describe());
   m.resize_flags();
   double root = 0;
   {
