@@ -28,12 +28,18 @@ void reserve_in_huge_pages(V& v, size_t n) {
   v.swap(grown);
 }
 
-// v grown to n elements, the new ones set to `value`, into storage at least twice as large when it
-// grows, advised (a per-dart table that grows with its map).
+// Room for n elements in v: when it grows, at least twice the room it had, advised (an array that
+// grows with its map).
+template <class V>
+void grow_in_huge_pages(V& v, size_t n) {
+  if (v.capacity() < n) reserve_in_huge_pages(v, std::max(n, 2 * v.capacity()));
+}
+
+// v grown to n elements, the new ones set to `value` (grow_in_huge_pages: a per-dart table).
 template <class V>
 void resize_in_huge_pages(V& v, size_t n, const typename V::value_type& value) {
   if (v.size() >= n) return;
-  if (v.capacity() < n) reserve_in_huge_pages(v, std::max(n, 2 * v.capacity()));
+  grow_in_huge_pages(v, n);
   v.resize(n, value);
 }
 

@@ -52,8 +52,7 @@ void append_interior_positions(FlaggedMap& target, const ReplacementTemplate& t,
     const Vec3* from_inner = inner + (at_boundary ? 0 : s - boundary);
     return *(at_boundary ? from_boundary : from_inner);
   };
-  target.grow_flags(pos.size() + t.interior * (shared ? 2 : 1));  // p stays valid below
-  p = pos.data();
+  p = pos.data();  // stays valid below: replace_cell grew the positions for the copies
   const size_t base = pos.size();
   append_generated(pos, t.interior, position);
   if (shared) append_generated(pos, t.interior, [&](size_t j) { return p[base + j]; });

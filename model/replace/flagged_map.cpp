@@ -1,7 +1,5 @@
 #include "model/replace/flagged_map.hpp"
 
-#include <algorithm>
-
 #include "model/core/error.hpp"
 #include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
@@ -10,9 +8,8 @@
 namespace gmr::replace {
 
 void FlaggedMap::grow_flags(size_t darts) {
-  if (flag.capacity() < darts) reserve_in_huge_pages(flag, std::max(darts, 2 * flag.capacity()));
-  if (positioned() && position.capacity() < darts)
-    reserve_in_huge_pages(position, std::max(darts, 2 * position.capacity()));
+  grow_in_huge_pages(flag, darts);
+  if (positioned()) grow_in_huge_pages(position, darts);
 }
 
 void FlaggedMap::reserve(size_t darts) {

@@ -207,13 +207,12 @@ size_t replacement_room(const Map& g, const PatternStore& store, const std::vect
 size_t replacement_room_bound(size_t darts, const PatternStore& store, const std::vector<int>& cell_dims) {
   size_t room = 0;
   for (int c : cell_dims) {
-    size_t least = SIZE_MAX, most = 0;
+    const size_t most = largest_interior(store, c);
+    if (most == 0) continue;
+    size_t least = SIZE_MAX;
     for (const Pattern& p : store.patterns())
-      if (p.cell_dim == c) {
-        least = std::min<size_t>(least, p.boundary.size());
-        most = std::max(most, p.interior_darts.size());
-      }
-    if (most > 0) room += (darts + room) / least * most;
+      if (p.cell_dim == c) least = std::min<size_t>(least, p.boundary.size());
+    room += (darts + room) / least * most;
   }
   return room;
 }
