@@ -4,10 +4,10 @@
 #include <numeric>
 
 #include "model/core/error.hpp"
-#include "model/io/json_reader.hpp"
-#include "model/io/json_writer.hpp"
+#include "model/map_io/json_reader.hpp"
+#include "model/map_io/json_writer.hpp"
 #include "model/core/orbit.hpp"
-#include "model/io/read_file.hpp"
+#include "model/map_io/read_file.hpp"
 
 namespace gmr::inference {
 

@@ -112,11 +112,11 @@ std::vector<uint32_t> classes(const GraphScheme& g, DimMask mask) {
 
 }  // namespace
 
-ExpressionInference infer_expressions(const RuleScheme& s, const expr::EmbeddedMap& before,
-                                      const std::vector<Dart>& hooks, const expr::EmbeddedMap& after,
+ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& before,
+                                      const std::vector<Dart>& hooks, const EmbeddedMap& after,
                                       const std::string& embedding) {
-  const expr::EmbeddingField* fb = before.find(embedding);
-  const expr::EmbeddingField* fa = after.find(embedding);
+  const EmbeddingField* fb = before.find(embedding);
+  const EmbeddingField* fa = after.find(embedding);
   if (!fb || !fa) throw Error(ErrorCode::Usage, "both objects need the embedding '" + embedding + "'", "embedding");
   const OrbitType pos_orbit = fb->orbit();
   const DimMask mask = pos_orbit.mask();

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
 namespace gmr::inference {
@@ -45,8 +45,8 @@ struct ExpressionInference {
 
 // `embedding` names the positions (a point embedding on <1..n>). Throws gmr::Error(Usage) when
 // the scheme does not apply at `hooks` or its result differs from `after`.
-ExpressionInference infer_expressions(const scheme::RuleScheme& s, const expr::EmbeddedMap& before,
-                                      const std::vector<Dart>& hooks, const expr::EmbeddedMap& after,
+ExpressionInference infer_expressions(const scheme::RuleScheme& s, const EmbeddedMap& before,
+                                      const std::vector<Dart>& hooks, const EmbeddedMap& after,
                                       const std::string& embedding = "position");
 
 }  // namespace gmr::inference

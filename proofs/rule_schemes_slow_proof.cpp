@@ -6,7 +6,7 @@
 
 #include "checker/scheme_checker.hpp"
 #include "checker/smt/scheme_verifier.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;

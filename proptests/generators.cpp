@@ -4,7 +4,7 @@
 
 #include "model/graph/dgraph.hpp"
 #include "model/draw/map_dot.hpp"
-#include "model/io/gmap_json.hpp"
+#include "model/map_io/map_json.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 
@@ -188,7 +188,7 @@ rc::Gen<std::vector<Dart>> gen_permutation(size_t k) {
 }
 
 std::string describe_counterexample(const Map& g) {
-  std::string s = "--- counterexample (gmr.gmap) ---\n" + write_gmap_json(g, {});
+  std::string s = "--- counterexample (gmr.gmap) ---\n" + write_map_json(g, {});
   s += "\n--- diagram (DOT) ---\n" + to_dot(g);
   return s;
 }

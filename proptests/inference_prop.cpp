@@ -30,8 +30,8 @@
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
 #include "model/draw/rule_dot.hpp"
-#include "model/io/gmap_json.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/map_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
 #include "model/scheme/scheme_engine.hpp"
@@ -93,7 +93,7 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole
   }
   RC_LOG() << "scheme " << s.name << " at " << h << "\nscheme DOT:\n" << draw::to_dot(s)
            << "before (gmr.gmap, the component of dart 0, darts renumbered):\n" << describe_counterexample(g)
-           << "\nafter (gmr.gmap):\n" << write_gmap_json(after, {}) << "\n";
+           << "\nafter (gmr.gmap):\n" << write_map_json(after, {}) << "\n";
   if (h == kNoDart) {
     RC_TAG("not applicable");
     return;
@@ -122,7 +122,7 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole
     RC_TAG("one orbit");
     RC_ASSERT(schemes_isomorphic(r.scheme, s));
     if (other.size() == 0u) return;
-    RC_LOG() << "other map (gmr.gmap):\n" << write_gmap_json(other, {}) << "\n";
+    RC_LOG() << "other map (gmr.gmap):\n" << write_map_json(other, {}) << "\n";
     const Dart d = *rc::gen::inRange<Dart>(0, static_cast<Dart>(other.capacity()));
     if (!other.alive(d)) return;
     Map by_s = other;

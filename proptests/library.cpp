@@ -7,8 +7,8 @@
 
 #include "checker/scheme_checker.hpp"
 #include "model/core/error.hpp"
-#include "model/io/jme_import.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/jme_import.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 namespace gmr::prop {

@@ -9,8 +9,8 @@
 
 #include "model/graph/constraints.hpp"
 #include "model/graph/dgraph.hpp"
-#include "model/io/gmap_json.hpp"
-#include "model/io/off.hpp"
+#include "model/map_io/map_json.hpp"
+#include "model/map_io/off.hpp"
 #include "model/core/position.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
@@ -133,7 +133,7 @@ TEST(ModelProps, SignatureEqualityIsIsomorphism) {
 TEST(ModelProps, JsonRoundTrip) {
   EXPECT_TRUE(check_property<MapCase>("json_roundtrip", gen_map_case(), [](const MapCase& c) {
     const Map g = c.build();
-    const GMapFile f = read_gmap_json(write_gmap_json(g, {}));
+    const EmbeddedMap f = read_map_json(write_map_json(g, {}));
     RC_ASSERT(f.map.dimension() == g.dimension());
     RC_ASSERT(f.map.size() == g.size());
     RC_ASSERT(is_isomorphic(g, f.map));
@@ -159,7 +159,7 @@ TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
     const Map h = permute_darts(g, *gen_permutation(g.capacity()));
     RC_ASSERT(signature(g) == signature(h));
     RC_ASSERT(is_isomorphic(g, h));
-    const GMapFile f = read_gmap_json(write_gmap_json(g, {}));
+    const EmbeddedMap f = read_map_json(write_map_json(g, {}));
     RC_ASSERT(f.map.is_omap());
     RC_ASSERT(is_isomorphic(g, f.map));
     // Swapping the beta_1 images of two darts keeps a valid 2-O-map (beta_1 stays a permutation,
@@ -201,7 +201,7 @@ TEST(ModelProps, OffRoundTrip) {
       RC_TAG("not OFF-writable");
       RC_DISCARD(e.what());
     }
-    PositionedMap back;
+    EmbeddedMap back;
     try {
       back = read_off(text, "roundtrip.off");
     } catch (const Error& e) {
@@ -214,7 +214,7 @@ TEST(ModelProps, OffRoundTrip) {
     std::multiset<Vec3> pg, pb;
     for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) pg.insert(pos.get(rep));
     for (Dart rep : orbit_representatives(back.map, OrbitType{1, 2})) {
-      pb.insert(back.position.get(rep));
+      pb.insert(back.position().get(rep));
     }
     RC_ASSERT(pg == pb);
   }));

@@ -5,7 +5,7 @@
 #include "model/testing/rule_family.hpp"
 #include "model/draw/rule_dot.hpp"
 #include "model/testing/random_maps.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "model/scheme/scheme_instantiation.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"

@@ -4,7 +4,7 @@
 
 #include "model/draw/rule_dot.hpp"
 #include "model/testing/random_schemes.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 

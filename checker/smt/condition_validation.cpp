@@ -9,7 +9,7 @@
 #include "checker/smt/counterexample.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "model/core/error.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 
 namespace gmr::smt {
 

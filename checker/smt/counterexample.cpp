@@ -4,7 +4,7 @@
 #include <set>
 
 #include "model/draw/map_dot.hpp"
-#include "model/io/gmap_json.hpp"
+#include "model/map_io/map_json.hpp"
 
 namespace gmr::smt {
 using graph::ArcId;
@@ -43,7 +43,7 @@ nlohmann::ordered_json to_json(const Rule& r, unsigned bound, const Counterexamp
   j["rule"] = r.name();
   j["engine"] = to_string(c.engine);
   j["bound"] = bound;
-  j["G"] = io::gmap_to_json(c.G);
+  j["G"] = io::map_to_json(c.G);
   j["gluing_fails"] = c.gluing_fails;  // the match fails the gluing condition (consistency semantics; no H)
   nlohmann::ordered_json m = nlohmann::ordered_json::object();
   for (Node v = 0; v < r.left().num_nodes(); ++v) m[r.left().name(v)] = c.match.node[v];

@@ -17,7 +17,7 @@
 #include "checker/smt/symbolic_cycle.hpp"
 #include "checker/smt/symbolic_derivation.hpp"
 #include "model/core/error.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 
 namespace gmr::smt {
 using graph::Node;

@@ -4,8 +4,8 @@
 
 #include "checker/dot_overlay.hpp"
 #include "checker/rule_check.hpp"
-#include "model/io/rule_json.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/rule_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;

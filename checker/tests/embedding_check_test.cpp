@@ -8,8 +8,8 @@
 #include <filesystem>
 
 #include "checker/scheme_checker.hpp"
-#include "model/io/jme_import.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/jme_import.hpp"
+#include "model/rule_io/scheme_json.hpp"
 
 using namespace gmr;
 using namespace gmr::checker;

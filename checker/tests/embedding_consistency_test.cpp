@@ -22,15 +22,15 @@ namespace {
 
 double unit(Rng& rng) { return static_cast<double>(uniform(rng, 0, 1000)) / 1000.0; }
 
-expr::EmbeddedMap random_embedded_map(Rng& rng) {
+EmbeddedMap random_embedded_map(Rng& rng) {
   GluedPolygonsOptions opt;
   opt.min_sides = 2;
   opt.max_faces = 6;
-  expr::EmbeddedMap m;
+  EmbeddedMap m;
   m.map = random_glued_polygons(rng, opt);
-  expr::EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+  EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
   for (Dart r : orbit_representatives(m.map, OrbitType{1, 2})) pos.values.set(m.map, r, {unit(rng), unit(rng), unit(rng)});
-  expr::EmbeddingField col{3, Embedding<Vec3>("colour", OrbitType{0, 1})};
+  EmbeddingField col = EmbeddingField::numeric("colour", OrbitType{0, 1});
   for (Dart r : orbit_representatives(m.map, OrbitType{0, 1})) col.values.set(m.map, r, {unit(rng), unit(rng), unit(rng)});
   m.fields.push_back(std::move(pos));
   m.fields.push_back(std::move(col));
@@ -63,7 +63,7 @@ TEST(EmbeddingConsistency, AcceptedSchemesGiveConsistentResults) {
     ++accepted;
     const scheme::SchemeEngine engine(s);
     const expr::CompiledScheme cs = expr::compile_scheme(s);
-    expr::EmbeddedMap m = random_embedded_map(rng);
+    EmbeddedMap m = random_embedded_map(rng);
     const Dart hook = static_cast<Dart>(uniform(rng, 0, m.map.size() - 1));
     expr::EmbeddingPropagation p(cs, m);
     if (!engine.apply(m.map, {hook}, &p)) continue;

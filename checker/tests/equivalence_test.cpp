@@ -20,7 +20,7 @@
 #include "checker/rule_check.hpp"
 #include "model/testing/rule_family.hpp"
 #include "checker/semantic.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;

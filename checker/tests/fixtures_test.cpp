@@ -1,7 +1,7 @@
 // Worked examples of the thesis (Ch. 3 examples and figures) that are concrete rules, loaded from
 // checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is applicable to
 // small maps — against the semantics. The rule-scheme, rewriting-system and product fixtures are in
-// checker/tests/word_scheme_test.cpp (F8, F9, F10), checker/tests/word_rewriting_test.cpp (F14)
+// model/words/tests/word_scheme_test.cpp (F8, F9, F10), model/words/tests/word_rewriting_test.cpp (F14)
 // and model/graph/tests/graph_product_test.cpp (F15).
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include "model/core/builders.hpp"
 #include "model/rewrite/dpo.hpp"
 #include "model/core/orbit.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 #include "model/testing/source_tree.hpp"

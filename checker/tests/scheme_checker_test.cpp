@@ -6,7 +6,7 @@
 #include <map>
 
 #include "checker/scheme_checker.hpp"
-#include "model/io/jme_import.hpp"
+#include "model/rule_io/jme_import.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"
 #include "model/testing/source_tree.hpp"
 

@@ -12,7 +12,7 @@
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
 #include "model/scheme/scheme_engine.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 #include "model/testing/source_tree.hpp"

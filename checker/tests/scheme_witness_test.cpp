@@ -9,7 +9,7 @@
 
 #include "checker/scheme_checker.hpp"
 #include "model/core/builders.hpp"
-#include "model/io/jme_import.hpp"
+#include "model/rule_io/jme_import.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/validity.hpp"
 #include "model/testing/source_tree.hpp"

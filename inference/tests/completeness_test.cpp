@@ -20,7 +20,7 @@
 #include "model/core/orbit.hpp"
 #include "model/core/builders.hpp"
 #include "model/graph/map_family.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/testing/source_tree.hpp"
 

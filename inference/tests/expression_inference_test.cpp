@@ -11,8 +11,8 @@
 #include "inference/expression_inference.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/propagation.hpp"
-#include "model/io/off.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/off.hpp"
+#include "model/rule_io/scheme_json.hpp"
 
 using namespace gmr;
 using namespace gmr::inference;
@@ -25,12 +25,12 @@ std::string source(const std::string& rel) {
   return std::string(s ? s : ".") + "/" + rel;
 }
 
-expr::EmbeddedMap load(const std::string& off) {
-  return expr::to_embedded_map(to_gmap_file(io::read_off_file(source(off))));
+EmbeddedMap load(const std::string& off) {
+  return io::read_off_file(source(off));
 }
 
 // The object after: `s` (with its expressions) applied at `hook`.
-expr::EmbeddedMap apply(const scheme::RuleScheme& s, expr::EmbeddedMap m, Dart hook) {
+EmbeddedMap apply(const scheme::RuleScheme& s, EmbeddedMap m, Dart hook) {
   const expr::CompiledScheme cs = expr::compile_scheme(s);
   expr::EmbeddingPropagation p(cs, m);
   EXPECT_TRUE(scheme::SchemeEngine(s).apply(m.map, {hook}, &p));
@@ -44,9 +44,9 @@ scheme::RuleScheme without_expressions(scheme::RuleScheme s) {
 }
 
 // Re-applying the inferred scheme to the object before gives the object after's positions.
-void expect_reproduces(const ExpressionInference& inf, const expr::EmbeddedMap& before, const expr::EmbeddedMap& after,
+void expect_reproduces(const ExpressionInference& inf, const EmbeddedMap& before, const EmbeddedMap& after,
                        Dart hook) {
-  const expr::EmbeddedMap again = apply(inf.scheme, before, hook);
+  const EmbeddedMap again = apply(inf.scheme, before, hook);
   const auto& a = again.find("position")->values;
   const auto& b = after.find("position")->values;
   for (Dart d = 0; d < after.map.capacity(); ++d) {
@@ -65,8 +65,8 @@ const InferredExpression& node(const ExpressionInference& inf, const std::string
 
 TEST(ExpressionInference, VertexInsertionMidpoint) {
   const scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/vertex_insertion.json"));
-  const expr::EmbeddedMap before = load("tools/data/cube.off");
-  const expr::EmbeddedMap after = apply(s, before, 0);
+  const EmbeddedMap before = load("tools/data/cube.off");
+  const EmbeddedMap after = apply(s, before, 0);
   const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
   EXPECT_EQ(node(inf, "n0").status, Status::Kept);
   ASSERT_EQ(node(inf, "n1").status, Status::Solved);
@@ -80,8 +80,8 @@ TEST(ExpressionInference, QuadSubdivisionEdgeAndFacePoints) {
   scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
   s.right.nodes[0].expressions.clear();
   s.right.nodes[1].expressions[0].code = "middle(<0>_position(n0))";
-  const expr::EmbeddedMap before = load("tools/data/cube.off");
-  const expr::EmbeddedMap after = apply(s, before, 0);
+  const EmbeddedMap before = load("tools/data/cube.off");
+  const EmbeddedMap after = apply(s, before, 0);
   const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
   EXPECT_EQ(node(inf, "n0").status, Status::Kept);
   ASSERT_EQ(node(inf, "n1").status, Status::Solved);
@@ -99,8 +99,8 @@ TEST(ExpressionInference, CatmullClarkOnTheCubeIsReproducedNotRecovered) {
   // symmetric points it has (thesis §8.4: inferred expressions are not unique and may differ from
   // the ground truth).
   const scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
-  const expr::EmbeddedMap before = load("tools/data/cube.off");
-  const expr::EmbeddedMap after = apply(s, before, 0);
+  const EmbeddedMap before = load("tools/data/cube.off");
+  const EmbeddedMap after = apply(s, before, 0);
   const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
   for (const auto& n : inf.nodes) std::cout << "[ infer    ] " << n.node << ": " << n.code << "\n";
   ASSERT_EQ(node(inf, "n0").status, Status::Solved);
@@ -112,8 +112,8 @@ TEST(ExpressionInference, NoSolutionIsReported) {
   // combination of the points of interest gives them on the cube.
   scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
   s.right.nodes[3].expressions[0].code = "middle(<0,1>_position(n0)) + 0.1 * (n0@0.position - n0.position)";
-  const expr::EmbeddedMap before = load("tools/data/cube.off");
-  const expr::EmbeddedMap after = apply(s, before, 0);
+  const EmbeddedMap before = load("tools/data/cube.off");
+  const EmbeddedMap after = apply(s, before, 0);
   const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
   EXPECT_EQ(node(inf, "n3").status, Status::NoSolution);
   EXPECT_EQ(node(inf, "n1").status, Status::Solved);

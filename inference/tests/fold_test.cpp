@@ -6,7 +6,7 @@
 #include "inference/tests/inference_support.hpp"
 #include "model/core/builders.hpp"
 #include "model/graph/dgraph.hpp"
-#include "model/io/off.hpp"
+#include "model/map_io/off.hpp"
 #include "model/core/orbit.hpp"
 #include "model/scheme/scheme_instantiation.hpp"
 #include "model/core/signature.hpp"
@@ -22,7 +22,7 @@ using namespace gmr::inference::test;
 // Thesis §7.2.2, Fig. 7.8: the cube folded on <1,2> from a vertex dart has 8 nodes; n1 (reached by
 // the 0-arc) is <_,2>, and the opposite vertex is relabeled <2,1>.
 TEST(FoldTrace, CubeOnVertexOrbitGivesEightNodesOppositeVertexSwapped) {
-  const PositionedMap cube = read_off_file(source_dir() + "/tools/data/cube.off");
+  const EmbeddedMap cube = read_off_file(source_dir() + "/tools/data/cube.off");
   const JointGraph j = joint_from_map(cube.map);
   for (Dart a : {Dart{0}, Dart{17}, Dart{46}}) {
     const FoldResult f = fold(j, ot("<1,2>"), a);
@@ -31,13 +31,13 @@ TEST(FoldTrace, CubeOnVertexOrbitGivesEightNodesOppositeVertexSwapped) {
     EXPECT_EQ(f.nodes[0].label, ot("<1,2>"));
     EXPECT_EQ(f.nodes[1].label, ot("<_,2>"));
     EXPECT_EQ(f.arcs[0].dim, 0);
-    const Vec3 p = cube.position.get(a);
+    const Vec3 p = cube.position().get(a);
     size_t swapped = 0;
     for (const auto& n : f.nodes) {
       if (n.label != ot("<2,1>")) continue;
       ++swapped;
       for (uint32_t x : n.darts) {
-        const Vec3 q = cube.position.get(j.origin(x));
+        const Vec3 q = cube.position().get(j.origin(x));
         for (size_t c = 0; c < 3; ++c) EXPECT_EQ(q[c], 1 - p[c]);
       }
     }
@@ -82,11 +82,11 @@ TEST(FoldTrace, SquarePyramidFromBaseCornerIsRelabelingFailure) {
 // Thesis §7.2.4: the open box folded on <0,2> along a vertical edge: after the 1-step, (a,n1) has
 // a non-loop 2-link and (b,n1) a 2-loop — an instantiation failure.
 TEST(FoldTrace, OpenBoxOnEdgeOrbitIsInstantiationFailure) {
-  const PositionedMap box = read_off_file(data("open_box.off"));
+  const EmbeddedMap box = read_off_file(data("open_box.off"));
   const JointGraph j = joint_from_map(box.map);
   size_t tried = 0;
   for (Dart a : box.map.darts()) {
-    const Vec3 p = box.position.get(a), q = box.position.get(box.map.alpha(0, a));
+    const Vec3 p = box.position().get(a), q = box.position().get(box.map.alpha(0, a));
     if (!(p[0] == q[0] && p[1] == q[1] && p[2] == 0 && q[2] == 1)) continue;  // bottom end of a vertical edge
     const FoldResult f = fold(j, ot("<0,2>"), a);
     ASSERT_FALSE(f.ok());

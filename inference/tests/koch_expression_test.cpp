@@ -22,8 +22,8 @@
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/propagation.hpp"
-#include "model/io/off.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/off.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/scheme_engine.hpp"
 
 // A named namespace: the tests are built as one unity source.
@@ -46,7 +46,7 @@ Vec3 operator*(double k, const Vec3& a) { return {k * a[0], k * a[1], k * a[2]};
 
 // Per dart of a flat (z = 0) map: its edge rotated by 90 degrees away from the polygon of its face
 // (the face walked along alpha0 alpha1, oriented by its signed area).
-std::vector<Vec3> outward_edges(const expr::EmbeddedMap& m) {
+std::vector<Vec3> outward_edges(const EmbeddedMap& m) {
   const auto& pos = m.find("position")->values;
   std::vector<Vec3> out(m.map.capacity(), Vec3{0, 0, 0});
   for (Dart rep : orbit_representatives(m.map, OrbitType{0, 1})) {
@@ -71,10 +71,10 @@ std::vector<Vec3> outward_edges(const expr::EmbeddedMap& m) {
 
 // `m` with vertex positions pos(d) (one value per <1,2>-orbit).
 template <class Pos>
-expr::EmbeddedMap with_positions(const Map& g, Pos pos) {
-  expr::EmbeddedMap m;
+EmbeddedMap with_positions(const Map& g, Pos pos) {
+  EmbeddedMap m;
   m.map = g;
-  m.fields.push_back({3, Embedding<Vec3>("position", OrbitType{1, 2})});
+  m.fields.push_back(EmbeddingField::numeric("position", OrbitType{1, 2}));
   for (Dart r : orbit_representatives(g, OrbitType{1, 2})) m.fields[0].values.set(g, r, pos(r));
   return m;
 }
@@ -88,7 +88,7 @@ std::vector<uint32_t> node_of(const scheme::SchemeApplication& app, size_t capac
 }
 
 // One true von Koch step on every edge of the flat map `m`.
-expr::EmbeddedMap koch_step(const expr::EmbeddedMap& m) {
+EmbeddedMap koch_step(const EmbeddedMap& m) {
   const auto& pos = m.find("position")->values;
   const std::vector<Vec3> out = outward_edges(m);
   Map g = m.map;
@@ -122,13 +122,13 @@ void print(const ExpressionInference& inf) {
               << "\n";
 }
 
-expr::EmbeddedMap square() {
-  return expr::to_embedded_map(to_gmap_file(io::read_off_file(source("inference/tests/data/square_pillow.off"))));
+EmbeddedMap square() {
+  return io::read_off_file(source("inference/tests/data/square_pillow.off"));
 }
 
 TEST(ExpressionInference, VonKochFromTheSquareReproducesTheFirstIteration) {
-  const expr::EmbeddedMap sq = square();
-  const expr::EmbeddedMap sq1 = koch_step(sq);
+  const EmbeddedMap sq = square();
+  const EmbeddedMap sq1 = koch_step(sq);
   const ExpressionInference inf = infer_expressions(koch(), sq, {0}, sq1);
   print(inf);
   EXPECT_EQ(node(inf, "n0").status, Status::Kept);
@@ -140,7 +140,7 @@ TEST(ExpressionInference, VonKochFromTheSquareReproducesTheFirstIteration) {
   EXPECT_NE(node(inf, "n3").code.find("middle(<0>_position(n0))"), std::string::npos);
   EXPECT_NE(node(inf, "n3").code.find("middle(<0,1>_position(n0))"), std::string::npos);
   // Applied to the square, the inferred scheme gives the first iteration.
-  expr::EmbeddedMap again = sq;
+  EmbeddedMap again = sq;
   const expr::CompiledScheme cs = expr::compile_scheme(inf.scheme);
   expr::EmbeddingPropagation prop(cs, again);
   ASSERT_TRUE(scheme::SchemeEngine(inf.scheme).apply(again.map, {0}, &prop));
@@ -151,13 +151,13 @@ TEST(ExpressionInference, VonKochFromTheSquareReproducesTheFirstIteration) {
 }
 
 TEST(ExpressionInference, VonKochFailsFromTheSecondIteration) {
-  const expr::EmbeddedMap sq = square();
-  const expr::EmbeddedMap sq1 = koch_step(sq);
-  const expr::EmbeddedMap sq2 = koch_step(sq1);
+  const EmbeddedMap sq = square();
+  const EmbeddedMap sq1 = koch_step(sq);
+  const EmbeddedMap sq2 = koch_step(sq1);
   // (a) The expressions inferred from the square, applied to the first iteration: the thirds are
   // right, the apexes are not (the 16-gon's barycentre is not in the normal of its edges).
   const ExpressionInference from_square = infer_expressions(koch(), sq, {0}, sq1);
-  expr::EmbeddedMap got = sq1;
+  EmbeddedMap got = sq1;
   const expr::CompiledScheme cs = expr::compile_scheme(from_square.scheme);
   expr::EmbeddingPropagation prop(cs, got);
   const scheme::SchemeApplication app = scheme::SchemeEngine(from_square.scheme).apply(got.map, {0}, &prop);

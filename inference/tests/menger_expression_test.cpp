@@ -39,16 +39,16 @@ using gmr::inference::test::polycube::menger_of;
 
 // A polycube with vertex positions (one value per <1,2,3>-orbit): `pos(d)` for a dart d.
 template <class Pos>
-expr::EmbeddedMap embedded(const Map& g, Pos pos) {
-  expr::EmbeddedMap m;
+EmbeddedMap embedded(const Map& g, Pos pos) {
+  EmbeddedMap m;
   m.map = g;
-  m.fields.push_back({3, Embedding<Vec3>("position", OrbitType{1, 2, 3})});
+  m.fields.push_back(EmbeddingField::numeric("position", OrbitType{1, 2, 3}));
   for (Dart r : orbit_representatives(g, OrbitType{1, 2, 3})) m.fields[0].values.set(g, r, pos(r));
   return m;
 }
 
 // Positions of the unit voxels of make_polycube(voxels), scaled by `scale`.
-expr::EmbeddedMap polycube_with_positions(const std::vector<Voxel>& voxels, double scale) {
+EmbeddedMap polycube_with_positions(const std::vector<Voxel>& voxels, double scale) {
   const auto corner = local_corners();
   return embedded(make_polycube(voxels), [&](Dart d) {
     const Voxel& v = voxels[d / kVoxelDarts];
@@ -59,8 +59,8 @@ expr::EmbeddedMap polycube_with_positions(const std::vector<Voxel>& voxels, doub
 
 // `result` (a topology isomorphic to make_polycube(sub) through the darts pair (d, d2)) with the
 // positions of the Menger voxels `sub` at scale 1/3.
-expr::EmbeddedMap with_menger_positions(const Map& result, Dart d, const std::vector<Voxel>& sub, Dart d2) {
-  const expr::EmbeddedMap target = polycube_with_positions(sub, 1.0 / 3.0);
+EmbeddedMap with_menger_positions(const Map& result, Dart d, const std::vector<Voxel>& sub, Dart d2) {
+  const EmbeddedMap target = polycube_with_positions(sub, 1.0 / 3.0);
   const OrbitType all = OrbitType::range(0, 3);
   const auto pairs = orbit_isomorphism(result, all, d, target.map, all, d2);
   EXPECT_TRUE(pairs.has_value());
@@ -93,10 +93,10 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   ASSERT_EQ(menger.right.size(), 20u);
 
   // 2. Before: unit cubes; after: the engine's result of the scheme, with the Menger positions.
-  const expr::EmbeddedMap before = polycube_with_positions(cubes, 1.0);
+  const EmbeddedMap before = polycube_with_positions(cubes, 1.0);
   auto [result, app] = apply_scheme(before.map, menger, {0});
   ASSERT_TRUE(app.applied) << app.why;
-  const expr::EmbeddedMap after = with_menger_positions(result, 0, sub, image_of(0, 0));
+  const EmbeddedMap after = with_menger_positions(result, 0, sub, image_of(0, 0));
 
   // 3. Expressions, by node.
   const ExpressionInference inf = infer_expressions(menger, before, {0}, after);
@@ -130,7 +130,7 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   // 4. The inferred expressions reproduce the Menger positions on another polycube (an L-shaped
   // tricube): they agree with the generation expressions on cubes.
   const std::vector<Voxel> tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  expr::EmbeddedMap got = polycube_with_positions(tri, 1.0);
+  EmbeddedMap got = polycube_with_positions(tri, 1.0);
   const expr::CompiledScheme cs = expr::compile_scheme(inf.scheme);
   expr::EmbeddingPropagation prop(cs, got);
   const SchemeApplication a2 = SchemeEngine(inf.scheme).apply(got.map, {0}, &prop);
@@ -140,7 +140,7 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   Dart corner0 = 0;
   for (size_t k = 0; k < tri_sub.size(); ++k)
     if (tri_sub[k] == Voxel{2 * corner[0][0], 2 * corner[0][1], 2 * corner[0][2]}) corner0 = static_cast<Dart>(k) * kVoxelDarts;
-  const expr::EmbeddedMap want = with_menger_positions(got.map, 0, tri_sub, corner0);
+  const EmbeddedMap want = with_menger_positions(got.map, 0, tri_sub, corner0);
   const auto& gv = got.fields[0].values;
   const auto& wv = want.fields[0].values;
   for (Dart d = 0; d < got.map.capacity(); ++d) {

@@ -44,13 +44,13 @@ RuleScheme infer_menger222() {
 
 // Positions carried from `source` to `target` through the isomorphism that sends dart `t` to `s`
 // (Algorithm 1's BFS labelings from both darts; the words must agree).
-expr::EmbeddedMap carry_positions(const expr::EmbeddedMap& source, Dart s, const Map& target,
+EmbeddedMap carry_positions(const EmbeddedMap& source, Dart s, const Map& target,
                                   Dart t) {
   EXPECT_EQ(bfs_word(source.map, s), bfs_word(target, t));
   const std::vector<Dart> ls = bfs_labeling(source.map, s), lt = bfs_labeling(target, t);
-  expr::EmbeddedMap out;
+  EmbeddedMap out;
   out.map = target;
-  out.fields.push_back({3, Embedding<Vec3>("position", OrbitType{1, 2, 3})});
+  out.fields.push_back(EmbeddingField::numeric("position", OrbitType{1, 2, 3}));
   const auto& from = source.fields[0].values;
   std::vector<bool> done(target.capacity(), false);
   for (size_t k = 0; k < lt.size(); ++k) {
@@ -90,12 +90,12 @@ TEST(RuleInference, MengerPolycube222FromTwoGluedCubes) {
 TEST(ExpressionInference, MengerPolycube222Positions) {
   const pc::PolycubeSubdivision ex = menger222(kGluedCubes);
   const RuleScheme m = infer_menger222();
-  const expr::EmbeddedMap before = pc::with_positions(ex.before, ex.cubes, 1.0);
+  const EmbeddedMap before = pc::with_positions(ex.before, ex.cubes, 1.0);
   // The object after as the engine numbers it: the topological result, with the positions of the
   // polycube built voxel by voxel (side 1/5) carried over by the isomorphism fixing the hook.
   auto [topo, app] = apply_scheme(ex.before, m, {0});
   ASSERT_TRUE(app.applied) << app.why;
-  const expr::EmbeddedMap after = carry_positions(pc::with_positions(ex.after, ex.sub, 0.2),
+  const EmbeddedMap after = carry_positions(pc::with_positions(ex.after, ex.sub, 0.2),
                                                   ex.mapping.pairs[0].second, topo, 0);
   const ExpressionInference inf = infer_expressions(m, before, {0}, after);
   size_t kept = 0, solved = 0;
@@ -121,7 +121,7 @@ TEST(ExpressionInference, MengerPolycube222Positions) {
   EXPECT_EQ(solved, 9u);
   EXPECT_FALSE(weights.empty());
   // The inferred expressions reproduce the object after, and on a single cube give the pattern.
-  expr::EmbeddedMap again = before;
+  EmbeddedMap again = before;
   {
     const expr::CompiledScheme cs = expr::compile_scheme(inf.scheme);
     expr::EmbeddingPropagation p(cs, again);

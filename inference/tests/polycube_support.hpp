@@ -10,7 +10,7 @@
 #include "inference/dart_mapping.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 
 namespace gmr::inference::test::polycube {
 
@@ -70,11 +70,11 @@ struct PolycubeSubdivision {
 };
 
 // Positions of a polycube (on <1,2,3>): the corner of each dart of voxel v is (v + corner) * scale.
-inline expr::EmbeddedMap with_positions(const Map& polycube, const std::vector<Voxel>& voxels,
+inline EmbeddedMap with_positions(const Map& polycube, const std::vector<Voxel>& voxels,
                                         double scale) {
-  expr::EmbeddedMap m;
+  EmbeddedMap m;
   m.map = polycube;
-  m.fields.push_back({3, Embedding<Vec3>("position", OrbitType{1, 2, 3})});
+  m.fields.push_back(EmbeddingField::numeric("position", OrbitType{1, 2, 3}));
   const auto corner = local_corners();
   std::vector<bool> done(polycube.capacity(), false);
   for (size_t k = 0; k < voxels.size(); ++k)

@@ -11,9 +11,9 @@
 #include "inference/tests/inference_support.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
-#include "model/io/off.hpp"
+#include "model/map_io/off.hpp"
 #include "model/scheme/scheme_engine.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/sew.hpp"
 #include "model/core/signature.hpp"
@@ -130,7 +130,7 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   EXPECT_TRUE(schemes_isomorphic(r.scheme, lib, {.exact_positions = true}));
   EXPECT_EQ(res.attempts.size(), 1u);  // one orbit: the whole cube
   EXPECT_TRUE(is_isomorphic(apply_at_own_hooks(cube, r), sub));
-  const PositionedMap box = read_off_file(data("open_box.off"));
+  const EmbeddedMap box = read_off_file(data("open_box.off"));
   for (const Map& g : {make_torus(5, 4), box.map, make_prism(7)}) {
     auto [mine, a1] = apply_scheme(g, r.scheme, {0});
     auto [theirs, a2] = apply_scheme(g, lib, {0});

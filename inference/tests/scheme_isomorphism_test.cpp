@@ -5,7 +5,7 @@
 
 #include "inference/scheme_isomorphism.hpp"
 #include "inference/tests/inference_support.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 
 using namespace gmr;
 using namespace gmr::inference;

@@ -3,11 +3,11 @@
 // A whole-map rewrite writes tables as large as the map (the map's own link arrays and embedding
 // slots, orbit indices, classes, memoised values), and fresh memory is paid page by page on first
 // touch (a page fault per 4 KiB; several microseconds each on a virtual machine, where this is most
-// of a subdivision's time: docs/embeddings.md "Measured"). Applying a scheme again and again would
+// of a subdivision's time: docs/embeddings.md "Performance"). Applying a scheme again and again would
 // pay it at every call. Small maps pay it too: each application's tables, freed to malloc, leave
 // the top of the heap free, glibc gives it back to the system (brk, with a TLB flush) and the next
 // application faults the same pages in again, which made a subdivision of a 20-face mesh ten
-// times slower than its work (docs/embeddings.md "Small meshes"). So:
+// times slower than its work (docs/embeddings.md "Performance"). So:
 //  * take_buffer / give_buffer: a per-thread pool of vectors per element type and per kind of
 //    storage (from one page, 4 KiB, of storage; at most 32 per pool, the smallest dropped first);
 //    take_buffer(n) returns the smallest pooled vector holding n elements, emptied, or an empty
@@ -20,7 +20,7 @@
 //    the maps' arrays out and each other (32 entries): about 400 page faults per run in steady
 //    state, none with two pools; a single pool of 128 also removed them but made query-replace's
 //    sequence (maps only) about 10 % slower warm, cause not established (docs/embeddings.md
-//    "Two pools");
+//    "Tried and dropped");
 //  * Pooled<T, Storage>: a scratch vector taken from a pool (reserve(n) takes one with room for n)
 //    and given back to it when destroyed; ScratchTable<T> for the tables of one application.
 // Map, Bitset and Embedding give their large arrays back when destroyed and take them when they

@@ -2,7 +2,7 @@
 
 #include <graphviz/gvc.h>
 
-#include "model/io/atomic_write.hpp"
+#include "model/map_io/atomic_write.hpp"
 #include "model/core/error.hpp"
 
 namespace gmr::draw {

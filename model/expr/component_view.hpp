@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "model/core/map.hpp"
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/scheme/component_rewrite.hpp"
 
 namespace gmr::expr {

@@ -21,7 +21,7 @@
 #include "model/core/buffer_pool.hpp"
 #include "model/core/map.hpp"
 #include "model/expr/ast.hpp"
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/expr/program.hpp"
 #include "model/expr/type_check.hpp"
 #include "model/expr/value_ops.hpp"

@@ -48,7 +48,32 @@ std::string text(const Vec3& v, int arity) {
 using detail::same_value;
 using detail::text;
 
+namespace {
+
+// Rule applications carry numeric embeddings only (embedded_map.hpp): a JSON embedding would
+// leave the new orbits without values. Error(Schema) naming the first value that is not numeric.
+void require_numeric_embeddings(const EmbeddedMap& m) {
+  for (const EmbeddingField& f : m.fields) {
+    if (f.is_numeric()) continue;
+    int arity = 0;
+    for (Dart rep : orbit_representatives(m.map, f.orbit())) {
+      if (!f.has(rep)) continue;
+      const nlohmann::json v = f.value_json(rep);
+      const std::string where = "embedding '" + f.name() + "', dart " + std::to_string(rep);
+      int a = 0;
+      if (numeric_value_problem(v, a))
+        throw Error(ErrorCode::Schema,
+                    "rule applications carry numeric embeddings only (a number or [x, y, z]); found " + v.dump(), where);
+      if (arity != 0 && a != arity) throw Error(ErrorCode::Schema, "the embedding mixes numbers and triples", where);
+      arity = a;
+    }
+  }
+}
+
+}  // namespace
+
 EmbeddingPropagation::EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m) : cs_(cs), m_(m) {
+  require_numeric_embeddings(m);
   for (const auto& sig : cs.embeddings) {
     const int arity_wanted = arity(sig.type);
     EmbeddingField* f = m.find(sig.name);

@@ -37,7 +37,7 @@
 #include "model/core/buffer_pool.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/component_view.hpp"
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/component_rewrite.hpp"
@@ -61,7 +61,8 @@ struct PropagationIssue {
 class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::ComponentObserver {
  public:
   // Binds the declarations to m's fields (declarations the map lacks are left out).
-  // Error(Schema) when a field of the same name has another orbit type or arity.
+  // Error(Schema) when a field of the same name has another orbit type or arity, or when a field
+  // holds JSON values (rule applications carry numeric embeddings only).
   EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m);
 
   void before_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/core/gmap_file.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/core/vec3.hpp"
 
 namespace gmr::replace {
@@ -37,9 +37,9 @@ struct FlaggedMap {
 
 // Reads the flags of a gmr.gmap content; throws Error(Schema) at `where` for an embedding "flag"
 // on another orbit type or with a value that is not a boolean or a non-negative integer.
-FlaggedMap flagged_map(const GMapFile& f, const std::string& where = {});
+FlaggedMap flagged_map(const EmbeddedMap& f, const std::string& where = {});
 // The map with its flags as the embedding "flag" (every dart gets a value: false when unflagged)
 // and its positions, if any.
-GMapFile to_gmap_file(const FlaggedMap& m);
+EmbeddedMap to_embedded_map(const FlaggedMap& m);
 
 }  // namespace gmr::replace

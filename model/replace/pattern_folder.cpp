@@ -3,12 +3,12 @@
 #include <algorithm>
 
 #include "model/core/error.hpp"
-#include "model/io/gmap_json.hpp"
+#include "model/map_io/map_json.hpp"
 
 namespace gmr::replace {
 
 Pattern load_pattern(const std::filesystem::path& file) {
-  const GMapFile f = io::read_gmap_json_file(file);
+  const EmbeddedMap f = io::read_map_json_file(file);
   return make_pattern(file.string(), flagged_map(f, file.string()));
 }
 

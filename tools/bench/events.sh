@@ -4,8 +4,8 @@
 # application with the static events confirmed (static) and with the dynamic detector (dynamic),
 # and the ratios dynamic/static (whole step) and (dynamic - apply)/(static - apply) (detection
 # only; empty when static - apply is below the timer's noise, 0.5 us). Then the summary per scenario
-# and size over the orbit types other than the component type <0,...,n> (ranges, as in the README
-# and docs/events.md), and the plot docs/events_bench.svg (gnuplot).
+# and size over the orbit types other than the component type <0,...,n> (ranges, as in
+# docs/benchmarks.md), and the plot docs/events_bench.svg (gnuplot).
 #
 #   tools/bench/events.sh                                   # everything (tens of minutes)
 #   tools/bench/events.sh --benchmark_filter='creation/'    # extra arguments go to Google Benchmark

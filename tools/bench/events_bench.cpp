@@ -39,8 +39,8 @@
 #include "checker/events/event_log.hpp"
 #include "checker/events/static_events.hpp"
 #include "model/core/builders.hpp"
-#include "model/io/jme_import.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/jme_import.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/scheme_engine.hpp"
 
 using namespace gmr;

@@ -21,7 +21,7 @@
 #include "inference/tests/polycube_support.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/signature.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/scheme_engine.hpp"
 
 using namespace gmr;

@@ -35,10 +35,10 @@
 
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/expr/propagation.hpp"
-#include "model/io/off.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/off.hpp"
+#include "model/rule_io/scheme_json.hpp"
 
 namespace {
 
@@ -60,11 +60,11 @@ std::string mesh_path() {
 }
 
 struct Fixture {
-  gmr::expr::EmbeddedMap map;
+  gmr::EmbeddedMap map;
   Mesh mesh;
   Fixture() {
     const std::string off = mesh_path();
-    map = gmr::expr::to_embedded_map(gmr::to_gmap_file(gmr::io::read_off_file(off)));
+    map = gmr::io::read_off_file(off);
     std::ifstream in(off);
     if (!CGAL::IO::read_OFF(in, mesh)) throw std::runtime_error("CGAL cannot read " + off);
   }
@@ -85,7 +85,7 @@ struct GmrSubdivision {
         engine(scheme),
         compiled(gmr::expr::compile_scheme(scheme)) {}
   // kIterations applications at every dart with positions; false on an embedding issue.
-  bool run(gmr::expr::EmbeddedMap& m) const {
+  bool run(gmr::EmbeddedMap& m) const {
     for (int k = 0; k < kIterations; ++k) {
       gmr::expr::EmbeddingPropagation p(compiled, m);
       gmr::expr::apply_everywhere_embedded(engine, p, m);
@@ -108,7 +108,7 @@ void run_gmr(benchmark::State& state, const char* rule) {
   size_t darts = 0, vertices = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    gmr::expr::EmbeddedMap m = f.map;
+    gmr::EmbeddedMap m = f.map;
     state.ResumeTiming();
     if (!sub.run(m)) state.SkipWithError("embedding issues");
     state.PauseTiming();
@@ -196,7 +196,7 @@ void run_paired(benchmark::State& state, const char* rule, void (*cgal)(Mesh&)) 
   const GmrSubdivision sub(rule);
   std::vector<double> ratios, gmr_ms, cgal_ms;
   for (auto _ : state) {
-    gmr::expr::EmbeddedMap m = f.map;
+    gmr::EmbeddedMap m = f.map;
     Mesh mesh = f.mesh;
     double tg = 0, tc = 0;
     for (int turn = 0; turn < 2; ++turn) {

@@ -4,15 +4,15 @@
 #include <filesystem>
 #include <iostream>
 
-#include "model/io/atomic_write.hpp"
-#include "model/io/gmap_json.hpp"
-#include "model/io/json_reader.hpp"
-#include "model/io/voxels.hpp"
-#include "model/io/obj.hpp"
-#include "model/io/off.hpp"
-#include "model/io/json_writer.hpp"
+#include "model/map_io/atomic_write.hpp"
+#include "model/map_io/map_json.hpp"
+#include "model/map_io/json_reader.hpp"
+#include "model/map_io/voxels.hpp"
+#include "model/map_io/obj.hpp"
+#include "model/map_io/off.hpp"
+#include "model/map_io/json_writer.hpp"
 #include "model/core/position.hpp"
-#include "model/io/read_file.hpp"
+#include "model/map_io/read_file.hpp"
 #include "model/draw/render.hpp"
 
 namespace gmr::cli {
@@ -81,17 +81,17 @@ Format output_format(const std::string& path, const std::string& override) {
   return detect(path, override, "--to", kOutputFormats);
 }
 
-GMapFile load_map(const std::string& path, const std::string& from) {
+EmbeddedMap load_map(const std::string& path, const std::string& from) {
   const Format f = input_format(path, from);
-  if (f == Format::Off) return to_gmap_file(path == "-" ? read_off(read_text_file(path), "<stdin>") : read_off_file(path));
-  if (f == Format::Obj) return to_gmap_file(read_obj(read_text_file(path), path == "-" ? "<stdin>" : path));
+  if (f == Format::Off) return path == "-" ? read_off(read_text_file(path), "<stdin>") : read_off_file(path);
+  if (f == Format::Obj) return read_obj(read_text_file(path), path == "-" ? "<stdin>" : path);
   // JSON: a gmr.gmap document, or a gmr.voxels set read as its polycube (builders.hpp).
   const std::string source = path == "-" ? "<stdin>" : path;
   const nlohmann::json doc = parse_json(read_text_file(path), source);
   const JsonAt at(doc, source);
   if (doc.is_object() && doc.contains("format") && doc["format"] == "gmr.voxels")
-    return GMapFile{make_polycube(voxels_from_json(at)), {}};
-  return gmap_from_json(at);
+    return EmbeddedMap(make_polycube(voxels_from_json(at)));
+  return map_from_json(at);
 }
 
 void write_output(const std::string& path, const std::string& text) {
@@ -105,29 +105,27 @@ void write_output(const std::string& path, const std::string& text) {
 namespace {
 
 // The positions a mesh format needs, or an error located at the output naming what is missing.
-PositionedMap positioned_for_output(const GMapFile& f, const std::string& path, Format format) {
+const PositionEmbedding& positions_for_output(const EmbeddedMap& f, const std::string& path, Format format) {
   if (!f.find(kPositionName))
     throw Error(ErrorCode::Schema,
                 std::string("the map has no \"position\" embedding: ") + to_string(format) +
                     " output needs vertex coordinates (write json, dot or svg instead)",
                 path);
-  return to_positioned(f);
+  return f.position();
 }
 
 }  // namespace
 
-void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot,
+void save_map(const EmbeddedMap& f, const std::string& path, Format format, const DotOptions& dot,
               size_t max_rendered_darts) {
   switch (format) {
-    case Format::Json: write_output(path, write_gmap_json(f)); return;
+    case Format::Json: write_output(path, write_map_json(f)); return;
     case Format::Off: {
-      const PositionedMap m = positioned_for_output(f, path, format);
-      write_output(path, write_off(m.map, m.position));
+      write_output(path, write_off(f.map, positions_for_output(f, path, format)));
       return;
     }
     case Format::Obj: {
-      const PositionedMap m = positioned_for_output(f, path, format);
-      write_output(path, write_obj(m.map, m.position));
+      write_output(path, write_obj(f.map, positions_for_output(f, path, format)));
       return;
     }
     case Format::Dot: write_output(path, to_dot(f.map, dot)); return;

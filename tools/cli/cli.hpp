@@ -15,7 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "model/core/gmap_file.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/core/validity.hpp"
 #include "model/draw/map_dot.hpp"
 
@@ -42,14 +42,14 @@ Format output_format(const std::string& path, const std::string& override);
 inline constexpr const char* kInputFormats = "json|off|obj";
 inline constexpr const char* kOutputFormats = "json|off|obj|dot|svg|png";
 
-GMapFile load_map(const std::string& path, const std::string& from = {});
+EmbeddedMap load_map(const std::string& path, const std::string& from = {});
 // Graphviz lays out a few hundred darts in seconds and a 300,000-dart map in hours: drawings
 // rendered to SVG/PNG are refused above this many darts unless raised (`gmr dot --max-darts`).
 inline constexpr size_t kMaxRenderedDarts = 1000;
 
 // Writes `f` to `path` (atomically; "-" = standard output for text formats). SVG/PNG of maps with
 // more than `max_rendered_darts` darts are refused with Error(Usage).
-void save_map(const GMapFile& f, const std::string& path, Format format, const DotOptions& dot = {},
+void save_map(const EmbeddedMap& f, const std::string& path, Format format, const DotOptions& dot = {},
               size_t max_rendered_darts = kMaxRenderedDarts);
 // Writes text to `path` atomically, or to standard output for "-".
 void write_output(const std::string& path, const std::string& text);

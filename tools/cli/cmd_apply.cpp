@@ -17,11 +17,11 @@
 
 #include "checker/events/concrete_scheme.hpp"
 #include "checker/events/event_format.hpp"
-#include "model/io/json_writer.hpp"
+#include "model/map_io/json_writer.hpp"
 #include "model/rewrite/dpo.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/error.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/match_syntax.hpp"
@@ -85,7 +85,7 @@ int run_apply(const ApplyArgs& a) {
   if (!a.hooks.empty() || a.all)
     throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
   const Rule& r = *in.concrete;
-  const GMapFile f = load_map(a.input, a.from);
+  const EmbeddedMap f = load_map(a.input, a.from);
   const Map& g = f.map;
   const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_match_pairs(r, g, a.match);
   const DGraph dg = to_dgraph(g);
@@ -159,7 +159,7 @@ int run_apply(const ApplyArgs& a) {
     print_violations(rep);
   }
   if (!rep.ok()) return kExitNegative;
-  if (!a.output.empty()) save_map(GMapFile{d.H, {}}, a.output, output_format(a.output, a.to));
+  if (!a.output.empty()) save_map(EmbeddedMap(d.H), a.output, output_format(a.output, a.to));
   return kExitOk;
 }
 

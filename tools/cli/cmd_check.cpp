@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "checker/rule_check.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/scheme_check.hpp"
 #include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files

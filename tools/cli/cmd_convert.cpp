@@ -17,7 +17,7 @@ struct ConvertArgs {
 
 int run_convert(const ConvertArgs& a) {
   const Format out = output_format(a.output, a.to);
-  const GMapFile f = load_map(a.input, a.from);
+  const EmbeddedMap f = load_map(a.input, a.from);
   DotOptions dot;
   dot.loops = a.loops;
   save_map(f, a.output, out, dot);

@@ -13,13 +13,13 @@
 #include <numbers>
 #include <optional>
 
-#include "model/io/atomic_write.hpp"
+#include "model/map_io/atomic_write.hpp"
 #include "model/core/builders.hpp"
-#include "model/io/face_list.hpp"
-#include "model/io/gmap_json.hpp"
-#include "model/io/obj.hpp"
-#include "model/io/off.hpp"
-#include "model/io/voxels.hpp"
+#include "model/map_io/face_list.hpp"
+#include "model/map_io/map_json.hpp"
+#include "model/map_io/obj.hpp"
+#include "model/map_io/off.hpp"
+#include "model/map_io/voxels.hpp"
 #include "model/core/signature.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/summary.hpp"
@@ -64,8 +64,8 @@ int run_demo(const DemoArgs& a) {
   const std::filesystem::path data(a.data.empty() ? default_data_dir() : a.data), out(a.out);
   constexpr size_t kTorusW = 12, kTorusH = 6;
 
-  const PositionedMap cube = read_off_file(data / "cube.off");
-  const PositionedMap torus = map_from_face_list(torus_mesh(kTorusW, kTorusH));
+  const EmbeddedMap cube = read_off_file(data / "cube.off");
+  const EmbeddedMap torus = map_from_face_list(torus_mesh(kTorusW, kTorusH));
   std::vector<Object> objects;
   objects.push_back({"stacked cubes", "make_stacked_cubes()", make_stacked_cubes(), std::nullopt});
   objects.push_back({"cube", "tools/data/cube.off", cube.map, is_isomorphic(cube.map, make_cube())});
@@ -88,20 +88,20 @@ int run_demo(const DemoArgs& a) {
     render_dot_file(dot, ImageFormat::Svg, out / (stem + ".svg"));
     written(out / (stem + ".svg"));
   };
-  auto save_json = [&](const GMapFile& f, const std::string& stem) {
-    write_gmap_json_file(out / (stem + ".json"), f);
+  auto save_json = [&](const EmbeddedMap& f, const std::string& stem) {
+    write_map_json_file(out / (stem + ".json"), f);
     written(out / (stem + ".json"));
   };
   draw(objects[0].map, "stacked_cubes");
   draw(cube.map, "cube");
-  write_obj_file(out / "cube.obj", cube.map, cube.position);
+  write_obj_file(out / "cube.obj", cube.map, cube.position());
   written(out / "cube.obj");
-  write_obj_file(out / "torus.obj", torus.map, torus.position);
+  write_obj_file(out / "torus.obj", torus.map, torus.position());
   written(out / "torus.obj");
-  save_json({objects[0].map, {}}, "stacked_cubes");
-  save_json(to_gmap_file(cube), "cube");
-  save_json(to_gmap_file(torus), "torus");
-  save_json({objects[4].map, {}}, "polycube");
+  save_json(EmbeddedMap(objects[0].map), "stacked_cubes");
+  save_json(cube, "cube");
+  save_json(torus, "torus");
+  save_json(EmbeddedMap(objects[4].map), "polycube");
 
   bool ok = true;
   std::vector<MapSummary> summaries;

@@ -29,7 +29,7 @@ int run_dot(const DotArgs& a) {
   const Format out = a.output == "-" && a.to.empty() ? Format::Dot : output_format(a.output, a.to);
   if (out != Format::Dot && out != Format::Svg && out != Format::Png)
     throw Error(ErrorCode::Usage, std::string("gmr dot writes dot, svg or png, not ") + to_string(out), a.output);
-  const GMapFile f = load_map(a.input, a.from);
+  const EmbeddedMap f = load_map(a.input, a.from);
   DotOptions opt;
   opt.loops = a.loops;
   opt.name = a.name;

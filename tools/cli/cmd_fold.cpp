@@ -25,7 +25,7 @@ struct FoldArgs {
 
 int run_fold(const FoldArgs& a) {
   using namespace gmr::inference;
-  const GMapFile f = load_map(a.input, a.from);
+  const EmbeddedMap f = load_map(a.input, a.from);
   const OrbitType o = parse_orbit_option(a.orbit, "--orbit");
   if (a.dart < 0 || a.dart > UINT32_MAX || !f.map.alive(static_cast<Dart>(a.dart)))
     throw Error(ErrorCode::Usage, std::to_string(a.dart) + " is not a dart of the map", "--dart");

@@ -23,8 +23,8 @@
 #include "model/core/error.hpp"
 #include "model/draw/render.hpp"
 #include "model/draw/rule_dot.hpp"
-#include "model/io/atomic_write.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/atomic_write.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/inference_args.hpp"
 
@@ -49,7 +49,7 @@ struct InferArgs {
 int run_infer(const InferArgs& a) {
   using namespace gmr::inference;
   if (!a.orbit.empty() && a.all_orbits) throw Error(ErrorCode::Usage, "give either --orbit or --all-orbits", "--all-orbits");
-  const GMapFile g = load_map(a.before, a.from), h = load_map(a.after, a.from);
+  const EmbeddedMap g = load_map(a.before, a.from), h = load_map(a.after, a.from);
   const DartMapping m = a.map.empty() ? identity_mapping(g.map, h.map) : read_mapping_file(a.map);
   JointGraph j(0);
   try {

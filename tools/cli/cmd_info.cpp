@@ -17,11 +17,11 @@ struct InfoArgs {
 };
 
 int run_info(const InfoArgs& a) {
-  const GMapFile f = load_map(a.input, a.from);
+  const EmbeddedMap f = load_map(a.input, a.from);
   const MapSummary s = summarize(f.map);
-  auto value_count = [&](const JsonEmbedding& e) {
+  auto value_count = [&](const EmbeddingField& e) {
     size_t k = 0;
-    for (Dart rep : orbit_representatives(f.map, e.orbit_type()))
+    for (Dart rep : orbit_representatives(f.map, e.orbit()))
       if (e.has(rep)) ++k;
     return k;
   };
@@ -30,8 +30,8 @@ int run_info(const InfoArgs& a) {
     j["file"] = a.input;
     add_to_json(j, s);
     nlohmann::ordered_json embs = nlohmann::ordered_json::array();
-    for (const auto& e : f.embeddings)
-      embs.push_back({{"name", e.name()}, {"orbit", e.orbit_type().str()}, {"values", value_count(e)}});
+    for (const auto& e : f.fields)
+      embs.push_back({{"name", e.name()}, {"orbit", e.orbit().str()}, {"values", value_count(e)}});
     j["embeddings"] = embs;
     print_json(j);
     return kExitOk;
@@ -52,9 +52,9 @@ int run_info(const InfoArgs& a) {
   }
   std::cout << "valid:       "
             << (s.valid ? "yes" : "no (" + std::to_string(s.violations) + " violations; see `gmr validate`)") << "\n";
-  std::cout << "embeddings:  " << (f.embeddings.empty() ? "none" : std::to_string(f.embeddings.size())) << "\n";
-  for (const auto& e : f.embeddings)
-    std::cout << "  " << e.name() << " " << e.orbit_type().str() << ": " << value_count(e) << " value(s)\n";
+  std::cout << "embeddings:  " << (f.fields.empty() ? "none" : std::to_string(f.fields.size())) << "\n";
+  for (const auto& e : f.fields)
+    std::cout << "  " << e.name() << " " << e.orbit().str() << ": " << value_count(e) << " value(s)\n";
   return kExitOk;
 }
 

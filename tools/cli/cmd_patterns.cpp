@@ -42,7 +42,7 @@ int run_generate(const GenerateArgs& a) {
   fs::create_directories(a.folder, ec);
   if (ec) throw Error(ErrorCode::Io, "cannot create the folder: " + ec.message(), a.folder);
   for (const replace::Pattern& p : patterns)
-    save_map(replace::to_gmap_file(p.map), (fs::path(a.folder) / (p.name + ".json")).string(), Format::Json);
+    save_map(replace::to_embedded_map(p.map), (fs::path(a.folder) / (p.name + ".json")).string(), Format::Json);
   std::cout << patterns.size() << " v-patterns (" << replace::to_string(mode) << " classes of hex-conformal) written to "
             << a.folder << "\n";
   return kExitOk;

@@ -56,7 +56,7 @@ int run_query_replace(const QueryReplaceArgs& a) {
   const auto t2 = std::chrono::steady_clock::now();
   const double ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
   const double read_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-  save_map(replace::to_gmap_file(m), a.output, out_format);
+  save_map(replace::to_embedded_map(m), a.output, out_format);
   const char* cell = a.cells == 2 ? "faces" : "volumes";
   if (a.json) {
     nlohmann::ordered_json j;

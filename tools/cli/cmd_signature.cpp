@@ -20,29 +20,29 @@ struct SignatureArgs {
   bool json = false;
 };
 
-std::vector<uint32_t> flags_from(const GMapFile& f, const std::string& name) {
-  const JsonEmbedding* e = f.find(name);
+std::vector<uint32_t> flags_from(const EmbeddedMap& f, const std::string& name) {
+  const EmbeddingField* e = f.find(name);
   if (!e) {
     std::string names;
-    for (const auto& x : f.embeddings) names += (names.empty() ? "" : ", ") + x.name();
+    for (const auto& x : f.fields) names += (names.empty() ? "" : ", ") + x.name();
     throw Error(ErrorCode::Usage, "no embedding \"" + name + "\" in the map (embeddings: " +
                                       (names.empty() ? "none" : names) + ")", "--flags");
   }
   std::map<std::string, uint32_t> rank;
   f.map.for_each_dart([&](Dart d) {
-    if (e->has(d)) rank.emplace(e->get(d).dump(), 0);
+    if (e->has(d)) rank.emplace(e->value_json(d).dump(), 0);
   });
   uint32_t next = 1;
   for (auto& [text, r] : rank) r = next++;
   std::vector<uint32_t> flags(f.map.capacity(), 0);
   f.map.for_each_dart([&](Dart d) {
-    if (e->has(d)) flags[d] = rank.at(e->get(d).dump());
+    if (e->has(d)) flags[d] = rank.at(e->value_json(d).dump());
   });
   return flags;
 }
 
 int run_signature(const SignatureArgs& a) {
-  const GMapFile f = load_map(a.input, a.from);
+  const EmbeddedMap f = load_map(a.input, a.from);
   std::vector<uint32_t> flags;
   if (!a.flags.empty()) flags = flags_from(f, a.flags);
   const Signature s = signature(f.map, a.flags.empty() ? nullptr : &flags);

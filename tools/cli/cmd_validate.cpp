@@ -21,17 +21,17 @@ struct ValidateArgs {
 
 // Orbits without one consistent value; for the "position" embedding, also values that are not
 // [x, y, z] (model/core/position.hpp).
-std::vector<EmbeddingIssue> embedding_issues(const Map& g, const JsonEmbedding& e) {
+std::vector<EmbeddingIssue> embedding_issues(const Map& g, const EmbeddingField& e) {
   std::vector<EmbeddingIssue> issues = e.check(g);
   if (e.name() != kPositionName) return issues;
-  for (Dart rep : orbit_representatives(g, e.orbit_type()))
+  for (Dart rep : orbit_representatives(g, e.orbit()))
     if (e.has(rep))
-      if (auto problem = position_value_problem(e.get(rep))) issues.push_back({rep, *problem});
+      if (auto problem = position_value_problem(e.value_json(rep))) issues.push_back({rep, *problem});
   return issues;
 }
 
 int run_validate(const ValidateArgs& a) {
-  const GMapFile f = load_map(a.input, a.from);
+  const EmbeddedMap f = load_map(a.input, a.from);
   const ValidityReport r = check_validity(f.map, a.limit);
   struct Issue {
     std::string embedding;
@@ -39,7 +39,7 @@ int run_validate(const ValidateArgs& a) {
   };
   std::vector<Issue> issues;
   if (r.ok())  // orbits of an invalid map do not describe cells: embeddings are checked on valid maps
-    for (const auto& e : f.embeddings)
+    for (const auto& e : f.fields)
       for (auto& i : embedding_issues(f.map, e)) issues.push_back({e.name(), i});
   const bool valid = r.ok() && issues.empty();
   if (a.json) {

@@ -19,9 +19,9 @@
 #include "checker/smt/counterexample.hpp"
 #include "checker/smt/scheme_conditions.hpp"
 #include "checker/smt/symbolic_validation.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/core/error.hpp"
-#include "model/io/read_file.hpp"
+#include "model/map_io/read_file.hpp"
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {

@@ -13,7 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "model/core/error.hpp"
-#include "model/io/atomic_write.hpp"
+#include "model/map_io/atomic_write.hpp"
 #include "tools/cli/cli.hpp"
 
 // ===== SUBCOMMAND REGISTRATION LIST =====================================================

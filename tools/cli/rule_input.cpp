@@ -3,11 +3,11 @@
 #include <filesystem>
 
 #include "model/core/error.hpp"
-#include "model/io/jme_import.hpp"
-#include "model/io/json_reader.hpp"
-#include "model/io/read_file.hpp"
-#include "model/io/rule_json.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/jme_import.hpp"
+#include "model/map_io/json_reader.hpp"
+#include "model/map_io/read_file.hpp"
+#include "model/rule_io/rule_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 
 namespace gmr::cli {
 using namespace gmr::io;

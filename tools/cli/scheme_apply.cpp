@@ -7,9 +7,9 @@
 #include "checker/events/event_format.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
-#include "model/io/json_writer.hpp"
+#include "model/map_io/json_writer.hpp"
 #include "model/expr/compiled_scheme.hpp"
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/expr/propagation.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
@@ -169,7 +169,7 @@ void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, Map& g) {
 // Prints the applications, the dart counts, the change in cells and the validity of the result.
 void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, const Change& change,
                    const Map& g, const ValidityReport& rep, const expr::EmbeddingPropagation& prop,
-                   const expr::EmbeddedMap& m) {
+                   const EmbeddedMap& m) {
   const size_t before = change.darts_before;
   const auto& apps = r.apps;
   const auto& hooks_used = r.hooks_used;
@@ -252,9 +252,8 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   const SchemeEngine engine = engine_for(s, a);
   check_hook_arguments(s, a);
   const expr::CompiledScheme cs = expr::compile_scheme(s);
-  GMapFile f = load_map(a.input, a.from);
-  if (a.no_embeddings) f.embeddings.clear();
-  expr::EmbeddedMap m = expr::to_embedded_map(f);
+  EmbeddedMap m = load_map(a.input, a.from);
+  if (a.no_embeddings) m.fields.clear();
   Map& g = m.map;
   lift_to_scheme(s, a, g);
   expr::EmbeddingPropagation prop(cs, m);
@@ -266,7 +265,7 @@ int apply_scheme_input(const RuleScheme& s, const SchemeApplyArgs& a) {
   const ValidityReport rep = check_validity(g, a.limit);
   print_applied(s, a, *r, {before, summary_before, summarize(g)}, g, rep, prop, m);
   if (!rep.ok() || prop.issue_count() > 0) return kExitNegative;
-  if (!a.output.empty()) save_map(expr::to_gmap_file(m), a.output, output_format(a.output, a.to));
+  if (!a.output.empty()) save_map(m, a.output, output_format(a.output, a.to));
   return kExitOk;
 }
 

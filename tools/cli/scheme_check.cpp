@@ -5,10 +5,10 @@
 #include <map>
 
 #include "checker/scheme_checker.hpp"
-#include "model/io/jme_import.hpp"
-#include "model/io/json_reader.hpp"
-#include "model/io/read_file.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/jme_import.hpp"
+#include "model/map_io/json_reader.hpp"
+#include "model/map_io/read_file.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "tools/cli/cli.hpp"
 
 namespace gmr::cli {
@@ -60,7 +60,7 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
     reps.push_back(check_scheme(r, opt));
     accepted += reps.back().ok();
   }
-  // Jerboa expressions translated into gmr's language (model/io/jme_expression.hpp).
+  // Jerboa expressions translated into gmr's language (model/rule_io/jme_expression.hpp).
   size_t expressions = 0, translated = 0;
   for (const auto& r : m.rules)
     for (const auto& n : r.right.nodes)

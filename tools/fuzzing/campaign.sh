@@ -23,10 +23,10 @@ mkdir -p "$out/findings"
 # The CTest seeds of each target (tools/fuzzing/CMakeLists.txt).
 seeds_of() {
   case "$1" in
-    gmap_json) ls "$root"/model/io/tests/data/*.json ;;
+    gmap_json) ls "$root"/model/map_io/tests/data/*.json ;;
     rule_json) ls "$root"/tools/data/rules/*.json "$root"/checker/tests/data/*.json ;;
     voxels) ls "$root"/tools/data/*.voxels.json ;;
-    off) ls "$root"/tools/data/*.off "$root"/model/io/tests/data/*.off ;;
+    off) ls "$root"/tools/data/*.off "$root"/model/map_io/tests/data/*.off ;;
     jme) ls "$root"/tools/data/jerboa/*.jme ;;
     obj|expression|orbit_type|match) ls "$root"/tools/fuzzing/seeds/"$1"/* ;;
   esac

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "model/io/read_file.hpp"
+#include "model/map_io/read_file.hpp"
 #include "model/testing/source_tree.hpp"
 
 namespace gmr::cli_test {
@@ -19,7 +19,7 @@ inline std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 inline std::string gmr_bin() { return gmr::testing::build_artifact("GMR_BIN"); }
 inline fs::path source_dir() { return gmr::testing::source_path("."); }
-inline fs::path test_data(const std::string& name) { return source_dir() / "model/io/tests/data" / name; }
+inline fs::path test_data(const std::string& name) { return source_dir() / "model/map_io/tests/data" / name; }
 inline fs::path tools_data(const std::string& name) { return source_dir() / "tools/data" / name; }
 
 struct Result {

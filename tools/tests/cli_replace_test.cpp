@@ -3,7 +3,7 @@
 
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
-#include "model/io/gmap_json.hpp"
+#include "model/map_io/map_json.hpp"
 #include "tools/tests/cli_fixture.hpp"
 
 namespace gmr::cli_test {
@@ -12,11 +12,11 @@ namespace {
 using CliReplace = Cli;
 
 // The polycube of tools/data as the gmr binary reads it (converted to gmr.gmap JSON).
-GMapFile load_voxels_map() {
+EmbeddedMap load_voxels_map() {
   const fs::path tmp = fs::temp_directory_path() / "gmr_cli_replace_polycube.json";
   const std::string cmd = q(gmr_bin()) + " convert " + q(tools_data("polycube.voxels.json")) + " " + q(tmp) + " >/dev/null";
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gmr convert failed");
-  GMapFile f = io::read_gmap_json_file(tmp);
+  EmbeddedMap f = io::read_map_json_file(tmp);
   fs::remove(tmp);
   return f;
 }
@@ -30,7 +30,7 @@ TEST_F(CliReplace, SubdividesTheCubeFacesWithTheConformalSet) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("6 faces, 6 replaced, 0 unmatched"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("split4: 6"), std::string::npos) << r.out;
-  const GMapFile f = io::read_gmap_json_file(out);
+  const EmbeddedMap f = io::read_map_json_file(out);
   EXPECT_TRUE(is_valid(f.map));
   EXPECT_EQ(count_cells(f.map, 2), 24u);
   EXPECT_EQ(f.map.size(), 192u);
@@ -66,7 +66,7 @@ TEST_F(CliReplace, OrientedModeOnTheTetrahedron) {
   EXPECT_EQ(j["mode"], "oriented");
   EXPECT_EQ(j["replaced"], 4);
   EXPECT_EQ(j["matched"]["triangle3"], 4);
-  const GMapFile f = io::read_gmap_json_file(out);
+  const EmbeddedMap f = io::read_map_json_file(out);
   EXPECT_TRUE(is_valid(f.map));
   EXPECT_EQ(f.map.size(), 96u);
   EXPECT_EQ(count_cells(f.map, 2), 12u);
@@ -75,7 +75,7 @@ TEST_F(CliReplace, OrientedModeOnTheTetrahedron) {
 // Hexahedral subdivision of a polycube in two calls: faces (after the e-pattern), then volumes.
 TEST_F(CliReplace, SubdividesAPolycubeFacesThenVolumes) {
   const fs::path faces = dir / "out" / "faces.json", volumes = dir / "out" / "volumes.json";
-  const GMapFile in = load_voxels_map();
+  const EmbeddedMap in = load_voxels_map();
   const auto c = count_all_cells(in.map);
   Result r = run("query-replace " + q(patterns("hex-subdivision")) + " " + q(tools_data("polycube.voxels.json")) +
                  " --split-edges 2 --flag-all --json -o " + q(faces));
@@ -84,7 +84,7 @@ TEST_F(CliReplace, SubdividesAPolycubeFacesThenVolumes) {
   r = run("query-replace " + q(patterns("hex-subdivision")) + " " + q(faces) + " --cells 3 --json -o " + q(volumes));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["matched"]["hex8"], c[3]);
-  const GMapFile f = io::read_gmap_json_file(volumes);
+  const EmbeddedMap f = io::read_map_json_file(volumes);
   EXPECT_TRUE(is_valid(f.map));
   EXPECT_EQ(count_cells(f.map, 3), 8 * c[3]);
   EXPECT_EQ(count_cells(f.map, 0), c[0] + c[1] + c[2] + c[3]);

@@ -49,7 +49,7 @@ TEST_F(Cli, DeclaredDartCountIsCheckedBeforeAllocating) {
   const auto start = std::chrono::steady_clock::now();
   expect_bad_input("info " + q(in), in.string() + ":$.alpha.0", "expected 100000000 entries (one per dart), found 8");
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
-  // Above the dart limit (model/io/read_limits.hpp), refused at the declaration.
+  // Above the dart limit (model/map_io/read_limits.hpp), refused at the declaration.
   const fs::path huge = dir / "darts_4294967294.json";
   write_edited_square(huge, [&](nlohmann::json& j) { j["darts"] = 4294967294u; });
   expect_bad_input("info " + q(huge), huge.string() + ":$.darts", "the input needs 4294967294 darts, above the limit");

@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/io/gmap_json.hpp"
-#include "model/io/off.hpp"
-#include "model/io/read_file.hpp"
+#include "model/map_io/map_json.hpp"
+#include "model/map_io/off.hpp"
+#include "model/map_io/read_file.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/signature.hpp"
 #include "tools/tests/cli_fixture.hpp"
@@ -100,9 +100,9 @@ TEST_F(Cli, ConvertRoundTripsAndFormats) {
   EXPECT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(json)).code, 0);
   EXPECT_EQ(run("convert " + q(json) + " " + q(off)).code, 0);
   EXPECT_EQ(run("convert " + q(json) + " " + q(obj)).code, 0);
-  const PositionedMap a = read_off_file(tools_data("cube.off")), b = read_off_file(off);
+  const EmbeddedMap a = read_off_file(tools_data("cube.off")), b = read_off_file(off);
   EXPECT_TRUE(is_isomorphic(a.map, b.map));
-  EXPECT_TRUE(is_isomorphic(a.map, read_gmap_json_file(json).map));
+  EXPECT_TRUE(is_isomorphic(a.map, read_map_json_file(json).map));
   EXPECT_NE(read_text_file(obj).find("\nf "), std::string::npos);
   for (const char* ext : {"dot", "svg", "png"}) {
     const fs::path p = dir / "out" / (std::string("square.") + ext);
@@ -117,7 +117,7 @@ TEST_F(Cli, ConvertRoundTripsAndFormats) {
   // --from / --to overrides and standard input/output.
   Result r = run("convert - - --from off --to json", tools_data("cube.off"));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(read_gmap_json(r.out).map.size(), 48u);
+  EXPECT_EQ(read_map_json(r.out).map.size(), 48u);
   EXPECT_EQ(outputs(), 6u);
 }
 
@@ -286,7 +286,7 @@ TEST_F(Cli, CheckAndApplyConcreteRule) {
   Result r = run("apply --json " + q(checker_data("F5_fig319a_unsew.json")) + " " + q(tools_data("cube.off")) + " -o " + q(out));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["valid"], true);
-  EXPECT_EQ(read_gmap_json_file(out).map.size(), 48u);
+  EXPECT_EQ(read_map_json_file(out).map.size(), 48u);
   // No match: sew on a closed cube; a scheme option on a concrete rule.
   EXPECT_EQ(run("apply " + q(checker_data("F5_fig319a_sew.json")) + " " + q(tools_data("cube.off")) + " -o " + q(dir / "out/x.json")).code, 1);
   expect_bad_input("apply --all " + q(checker_data("F5_fig319a_sew.json")) + " " + q(tools_data("cube.off")), "F5_fig319a_sew.json", "--match");
@@ -305,7 +305,7 @@ TEST_F(Cli, CheckAndApplyScheme) {
   ASSERT_EQ(j["tables"].size(), 1u);
   EXPECT_EQ(j["tables"][0]["comatch"]["n3"].size(), 48u);
   EXPECT_EQ(j["tables"][0]["comatch"]["n0"][0], j["tables"][0]["orbit"][0]);
-  EXPECT_EQ(read_gmap_json_file(out).map.size(), 192u);
+  EXPECT_EQ(read_map_json_file(out).map.size(), 192u);
   // --all: vertex insertion on every edge of the cube (12 applications), then quad subdivision once.
   r = run("apply --json --all " + q(rule_data("vertex_insertion.json")) + " " + q(tools_data("cube.off")));
   EXPECT_EQ(r.code, 0) << r.err;
@@ -346,22 +346,22 @@ TEST_F(Cli, ApplyCarriesPositions) {
   Result r = run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(off));
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("embeddings: position <1,2>"), std::string::npos) << r.out;
-  const PositionedMap m = read_off_file(off);
+  const EmbeddedMap m = read_off_file(off);
   EXPECT_EQ(count_orbits(m.map, OrbitType{1, 2}), 26u);
   // The corner (0,0,0) of the unit cube moves to (Q + 2R + 0)/3 with Q = (1/3,1/3,1/3) (mean of
   // the face points) and R = (1/6,1/6,1/6) (mean of the edge midpoints).
   bool corner = false;
   for (Dart d : orbit_representatives(m.map, OrbitType{1, 2})) {
-    const Vec3 p = m.position.get(d);
+    const Vec3 p = m.position().get(d);
     if (std::abs(p[0] - 2.0 / 9) < 1e-12 && std::abs(p[1] - 2.0 / 9) < 1e-12 && std::abs(p[2] - 2.0 / 9) < 1e-12) corner = true;
   }
   EXPECT_TRUE(corner);
   EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(obj)).code, 0);
   EXPECT_NE(read_text_file(obj).find("v 0.2222222222222222 0.2222222222222222 0.2222222222222222"), std::string::npos);
   EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(json)).code, 0);
-  const GMapFile f = read_gmap_json_file(json);
+  const EmbeddedMap f = read_map_json_file(json);
   ASSERT_NE(f.find("position"), nullptr);
-  EXPECT_EQ(write_gmap_json(read_gmap_json(write_gmap_json(f))), write_gmap_json(f));
+  EXPECT_EQ(write_map_json(read_map_json(write_map_json(f))), write_map_json(f));
   // gmr check reports the static embedding checks (sew with positions and no expression: E-merge).
   r = run("check " + q(source_dir() / "checker/tests/data/embeddings/sew2_positions.json"));
   EXPECT_EQ(r.code, 1) << r.out;

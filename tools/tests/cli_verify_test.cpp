@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/io/read_file.hpp"
+#include "model/map_io/read_file.hpp"
 #include "model/testing/source_tree.hpp"
 
 namespace fs = std::filesystem;

@@ -6,7 +6,7 @@
 #include "checker/events/concrete_scheme.hpp"
 #include "checker/events/tests/events_fixtures.hpp"
 #include "model/core/error.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "model/rewrite/dpo.hpp"
 
 using namespace gmr;
@@ -40,7 +40,7 @@ TEST(ConcreteScheme, UnsewIsASchemeOnTheEmptyOrbitType) {
 // the log agrees with the dynamic detector on every orbit type (Fig. 7a -> 7b, as the scheme F2).
 TEST(ConcreteScheme, UnsewOnTheGridAgreesWithDpoAndOracle) {
   const rewrite::Rule r = concrete_rule("F5_fig319a_unsew.json");
-  PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
+  EmbeddedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
   Map& g = m.map;
   const Dart a = edge_dart(m, {1, 1, 0}, {1, 2, 0});
   const std::vector<Dart> match = {a, g.alpha(0, a), g.alpha(2, a), g.alpha(0, g.alpha(2, a))};  // a b c d

@@ -5,7 +5,7 @@
 
 #include "checker/events/tests/events_fixtures.hpp"
 #include "model/core/builders.hpp"
-#include "model/io/jme_import.hpp"
+#include "model/rule_io/jme_import.hpp"
 
 using namespace gmr;
 using namespace gmr::events;

@@ -13,9 +13,9 @@
 #include "checker/events/static_events.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/position.hpp"
-#include "model/io/gmap_json.hpp"
-#include "model/io/off.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/map_json.hpp"
+#include "model/map_io/off.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 namespace gmr::events::testing {
@@ -88,9 +88,9 @@ inline std::vector<size_t> cells(const Map& g) {
 }
 
 // A dart at the vertex of position p on the edge towards position q (OFF maps).
-inline Dart edge_dart(const PositionedMap& m, Vec3 p, Vec3 q) {
+inline Dart edge_dart(const EmbeddedMap& m, Vec3 p, Vec3 q) {
   for (Dart d : m.map.darts())
-    if (m.position.get(d) == p && m.position.get(m.map.alpha(0, d)) == q) return d;
+    if (m.position().get(d) == p && m.position().get(m.map.alpha(0, d)) == q) return d;
   throw std::runtime_error("no such edge");
 }
 

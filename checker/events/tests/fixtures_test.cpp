@@ -39,7 +39,7 @@ void expect_merged_and_split(const OrbitTypeLog& l) {
   EXPECT_EQ(hs.size(), 2u);
 }
 
-Map house() { return io::read_gmap_json_file(event_data("house.json")).map; }
+Map house() { return io::read_map_json_file(event_data("house.json")).map; }
 
 // A cylinder of circumference one edge and height two quads: each circle (bottom, middle, top) is a
 // single edge whose two ends are one vertex. Quad k has darts 8k..8k+7: bottom side 8k, 8k+1,
@@ -148,7 +148,7 @@ TEST(Fixtures, F1FaceTriangulationTable1) {
 
 // Fig. 7a -> 7b -> 7c: 2-unsewing twice on the 2x2 grid of quads.
 TEST(Fixtures, F2UnsewTwice) {
-  PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
+  EmbeddedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
   Map& g = m.map;
   const auto rule = library_rule("unsew2");
   // First: the edge (1,1)-(1,2) between the top faces; the surface stays connected.
@@ -171,7 +171,7 @@ TEST(Fixtures, F2UnsewTwice) {
 
 // Fig. 8 (7b -> 7a): 2-sewing with two hooks undoes the first unsewing.
 TEST(Fixtures, F3SewTwoHooks) {
-  PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
+  EmbeddedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
   Map& g = m.map;
   const Map grid = g;
   const Dart a0 = edge_dart(m, {1, 1, 0}, {1, 2, 0});
@@ -190,7 +190,7 @@ TEST(Fixtures, F3SewTwoHooks) {
 
 // Fig. 9 (7c -> 7d): deleting the edge (1,0)-(1,1) between the bottom faces merges them.
 TEST(Fixtures, F4EdgeDeletion) {
-  PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
+  EmbeddedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
   Map& g = m.map;
   const auto unsew = library_rule("unsew2");
   ASSERT_TRUE(apply_checked(unsew, g, {edge_dart(m, {1, 1, 0}, {1, 2, 0})}).logged.application);
@@ -211,7 +211,7 @@ TEST(Fixtures, F4EdgeDeletion) {
 // edge, whose hook orbit has 2 darts (2-loops), rewires n1 onto itself: the <1> pattern orbit is
 // complete and implicitly merged, but the two <1>-orbits stay apart (modified).
 TEST(Fixtures, F4bBorderEdgeDeletionIsNoMerge) {
-  PositionedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
+  EmbeddedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
   Map& g = m.map;
   const auto rule = library_rule("edge_deletion");
   const StaticEvents st = analyse(rule, {OrbitType{1}});
@@ -231,7 +231,7 @@ TEST(Fixtures, F4bBorderEdgeDeletionIsNoMerge) {
 // split); then S1-(1,2), whose ends are both on the border, merges them and splits the result
 // (Fig. 1c), which disconnects the disk (a G-map has no pinched vertex).
 TEST(Fixtures, F5EdgeCollapseMergeThenMergeAndSplit) {
-  PositionedMap m = io::read_off_file(event_data("triangle_grid_2x2.off"));
+  EmbeddedMap m = io::read_off_file(event_data("triangle_grid_2x2.off"));
   Map& g = m.map;
   EXPECT_EQ(cells(g), (std::vector<size_t>{9, 16, 8, 1}));
   const auto rule = library_rule("edge_collapse");
@@ -255,7 +255,7 @@ TEST(Fixtures, F5EdgeCollapseMergeThenMergeAndSplit) {
 // Fig. 1e on a cylinder: collapsing an edge between the two border circles merges its two ends and
 // splits the result; the surface stays connected.
 TEST(Fixtures, F5EdgeCollapseOnCylinder) {
-  PositionedMap m = io::read_off_file(event_data("cylinder_4.off"));
+  EmbeddedMap m = io::read_off_file(event_data("cylinder_4.off"));
   Map& g = m.map;
   EXPECT_EQ(cells(g), (std::vector<size_t>{8, 16, 8, 1}));
   const Checked c = apply_checked(library_rule("edge_collapse"), g, {edge_dart(m, {1, 0, 0}, {1, 0, 1})});
@@ -300,12 +300,12 @@ TEST(Fixtures, StaticModificationRefutedOnALoop) {
   const StaticEvents st = analyse(rule, {OrbitType{0, 1}});
   ASSERT_EQ(st.orbits[0].events.size(), 1u);
   EXPECT_EQ(st.orbits[0].events[0].kind, PatternEventKind::Modification);
-  Map dart = io::read_gmap_json_file(event_data("free_dart.json")).map;
+  Map dart = io::read_map_json_file(event_data("free_dart.json")).map;
   const Checked c1 = apply_checked(rule, dart, {0});
   expect_oracle_agrees(c1);
   EXPECT_EQ(count(c1.log("<0,1>"), OrbitEventKind::NonModification, EventStatus::Refuted), 1u);
   EXPECT_EQ(count(c1.log("<0,1>"), OrbitEventKind::Modification), 0u);
-  Map corner = io::read_gmap_json_file(event_data("one_corner.json")).map;
+  Map corner = io::read_map_json_file(event_data("one_corner.json")).map;
   const Checked c2 = apply_checked(rule, corner, {0});
   expect_oracle_agrees(c2);
   EXPECT_EQ(count(c2.log("<0,1>"), OrbitEventKind::Modification, EventStatus::Certain), 1u);

@@ -13,7 +13,7 @@
 #include "checker/smt/condition_validation.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/scheme_conditions.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 #include "model/core/error.hpp"
 #include "model/testing/source_tree.hpp"

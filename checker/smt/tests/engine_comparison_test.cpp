@@ -15,9 +15,9 @@
 #include "checker/rule_check.hpp"
 #include "checker/scheme_checker.hpp"
 #include "checker/smt/scheme_verifier.hpp"
-#include "model/io/jme_import.hpp"
-#include "model/io/rule_json.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/jme_import.hpp"
+#include "model/rule_io/rule_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "checker/smt/rule_verifier.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "model/testing/rule_family.hpp"
 #include "model/testing/source_tree.hpp"
 

@@ -7,7 +7,7 @@
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/draw/map_dot.hpp"
-#include "model/io/read_file.hpp"
+#include "model/map_io/read_file.hpp"
 #include "model/draw/render.hpp"
 
 using namespace gmr;

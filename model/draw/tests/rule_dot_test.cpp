@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "model/draw/rule_dot.hpp"
-#include "model/io/rule_json.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/rule_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;

@@ -10,7 +10,7 @@
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/propagation.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/random_maps.hpp"
 #include "model/testing/random_schemes.hpp"
 
@@ -27,7 +27,7 @@ std::string rules_dir() {
 
 // Random values on every orbit of a field (some orbits left without value when `holes`).
 EmbeddingField random_field(gt::Rng& rng, const Map& g, const std::string& name, const OrbitType& o, bool holes) {
-  EmbeddingField f{3, Embedding<Vec3>(name, o)};
+  EmbeddingField f = EmbeddingField::numeric(name, o);
   for (Dart rep : orbit_representatives(g, o)) {
     if (holes && gt::chance(rng, 10)) continue;
     Vec3 x;

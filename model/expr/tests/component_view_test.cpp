@@ -15,7 +15,7 @@
 #include "model/expr/component_view.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/expr/propagation.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/random_maps.hpp"
 
 using namespace gmr;
@@ -38,7 +38,7 @@ std::string rules_dir() {
 EmbeddedMap random_positions(gt::Rng& rng, const Map& g) {
   EmbeddedMap m;
   m.map = g;
-  EmbeddingField f{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+  EmbeddingField f = EmbeddingField::numeric("position", OrbitType{1, 2});
   for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) {
     Vec3 x;
     for (double& c : x) c = static_cast<double>(gt::uniform(rng, 0, 1 << 20)) / 3.0 - 100000.0;
@@ -222,7 +222,7 @@ TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
     gt::Rng rng(500 + seed);
     const Map g = random_surface(seed * 3 + 1);
     EmbeddedMap m = random_positions(rng, g);
-    EmbeddingField shade{3, Embedding<Vec3>("shade", OrbitType{1, 2})};
+    EmbeddingField shade = EmbeddingField::numeric("shade", OrbitType{1, 2});
     const auto vertices = orbit_representatives(g, OrbitType{1, 2});
     for (size_t i = 1; i < vertices.size(); ++i) shade.values.set(g, vertices[i], Vec3{static_cast<double>(i), 2.0, 3.0});
     m.fields.push_back(std::move(shade));

@@ -61,7 +61,7 @@ TEST(EvaluatorMemo, MemoModeGivesThePlainValuesEverywhere) {
   for (uint64_t seed = 0; seed < 30; ++seed) {
     gt::Rng rng(300 + seed);
     const Map g = varied_surface(seed, rng);
-    EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+    EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
       pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)), static_cast<double>(gt::uniform(rng, 0, 1000)),
                             static_cast<double>(gt::uniform(rng, 0, 1000))});
@@ -112,7 +112,7 @@ TEST(EvaluatorMemo, TwoDimensionOrbitsAreListedInTheMarkedWalksOrder) {
     gt::Rng rng(700 + seed);
     const Map g = varied_surface(seed, rng);
     for (Dart d : g.darts()) paths += g.is_free(2, d) ? 1 : 0;
-    EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+    EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
       pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)) / 7.0, static_cast<double>(gt::uniform(rng, 0, 1000)) / 3.0,
                             static_cast<double>(gt::uniform(rng, 0, 1000)) / 11.0});
@@ -153,7 +153,7 @@ TEST(EvaluatorMemo, LoadsThroughHeldTablesGiveTheTreesValuesAndErrors) {
   for (uint64_t seed = 0; seed < 30; ++seed) {
     gt::Rng rng(1100 + seed);
     const Map g = varied_surface(seed, rng);
-    EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+    EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
       if (seed % 4 != 3 || gt::uniform(rng, 0, 9) != 0)  // every fourth surface: a few vertices without position
         pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)) / 7.0, static_cast<double>(gt::uniform(rng, 0, 1000)) / 3.0,

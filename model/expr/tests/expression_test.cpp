@@ -13,8 +13,8 @@
 #include "model/expr/evaluator.hpp"
 #include "model/expr/parser.hpp"
 #include "model/expr/propagation.hpp"
-#include "model/io/off.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/off.hpp"
+#include "model/rule_io/scheme_json.hpp"
 
 using namespace gmr;
 using namespace gmr::expr;
@@ -163,7 +163,7 @@ namespace {
 struct Square {
   EmbeddedMap m;
   std::vector<EmbeddingSignature> sigs{{"position", OrbitType{1, 2}, ValueType::Point}};
-  Square() { m = to_embedded_map(to_gmap_file(io::read_off_file(source("model/expr/tests/data/square.off")))); }
+  Square() { m = io::read_off_file(source("model/expr/tests/data/square.off")); }
   Val eval(const std::string& code, Dart d, ValueType t = ValueType::Point) {
     CheckContext c;
     c.nodes = {"n0"};
@@ -325,7 +325,7 @@ TEST(ExpressionEvaluation, CollectOnAFaceThroughOneVertexFourTimes) {
   m.map.link(2, 2, 7);
   m.map.link(2, 3, 6);
   ASSERT_TRUE(check_validity(m.map).ok());
-  EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
+  EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
   for (Dart r : orbit_representatives(m.map, OrbitType{1, 2})) pos.values.set(m.map, r, {1, 2, 3});
   m.fields.push_back(std::move(pos));
   ASSERT_EQ(count_orbits(m.map, OrbitType{1, 2}), 1u);

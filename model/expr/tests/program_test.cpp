@@ -18,7 +18,7 @@
 #include "model/expr/parser.hpp"
 #include "model/expr/program.hpp"
 #include "model/expr/type_check.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/random_maps.hpp"
 
 using namespace gmr;
@@ -53,8 +53,8 @@ std::pair<std::shared_ptr<Expr>, Program> compile(const std::string& code, Value
 
 struct Surface {
   Map g{2};
-  EmbeddingField pos{3, Embedding<Vec3>("position", OrbitType{1, 2})};
-  EmbeddingField weight{1, Embedding<Vec3>("weight", OrbitType{0, 1})};
+  EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
+  EmbeddingField weight = EmbeddingField::numeric("weight", OrbitType{0, 1}, 1);
 };
 
 // A random surface (1-gons and 2-gons on even seeds: faces through one vertex twice), positions on

@@ -19,11 +19,11 @@
 #include <vector>
 
 #include "model/expr/compiled_scheme.hpp"
-#include "model/expr/embedded_map.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/expr/propagation.hpp"
-#include "model/io/face_list.hpp"
-#include "model/io/off.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/face_list.hpp"
+#include "model/map_io/off.hpp"
+#include "model/rule_io/scheme_json.hpp"
 
 namespace gmr::expr::oracle {
 
@@ -52,7 +52,7 @@ inline io::FaceList gmr_subdivide(const std::string& off, Method method, int ite
   const scheme::RuleScheme s = io::read_scheme_file(source_dir() + "/tools/data/rules/" + rule_file(method));
   const scheme::SchemeEngine engine(s);
   const CompiledScheme cs = compile_scheme(s);
-  EmbeddedMap m = to_embedded_map(to_gmap_file(io::read_off_file(off)));
+  EmbeddedMap m = io::read_off_file(off);
   for (int k = 0; k < iterations; ++k) {
     EmbeddingPropagation p(cs, m);
     const auto all = apply_everywhere_embedded(engine, p, m);

@@ -1,5 +1,5 @@
 // Adaptive hexahedral meshing (Alg. 5) of CGAL's elephant to level 8, printing the table of
-// docs/query-replace.md (a Table 1 of the paper): per level the hexahedra, the face and volume
+// docs/benchmarks.md (a Table 1 of the paper): per level the hexahedra, the face and volume
 // replacements, the hexahedra refined for the balance and the CPU time; the map stays valid.
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 
 #include "model/core/position.hpp"
 #include "model/core/validity.hpp"
-#include "model/io/off.hpp"
+#include "model/map_io/off.hpp"
 #include "model/replace/query_replace.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 #include "model/testing/source_tree.hpp"
@@ -23,7 +23,7 @@ Vec3 affine(const Vec3& p) {
 
 // The unit cube of tools/data/cube.off, moved by `affine`, every dart flagged, lifted to dimension n.
 FlaggedMap affine_cube(int n) {
-  const PositionedMap pm = io::read_off_file(::gmr::testing::source_path("tools/data/cube.off"));
+  const EmbeddedMap pm = io::read_off_file(::gmr::testing::source_path("tools/data/cube.off"));
   FlaggedMap m{lift(pm.map, n), {}, {}};
   m.flag.assign(m.map.capacity(), 1);
   m.position.resize(m.map.capacity());
@@ -60,7 +60,7 @@ TEST(InteriorGeometry, FacePatternsReproduceAffineMaps) {
   EXPECT_EQ(query_replace(m, store, 2).replaced(), 6u);
   EXPECT_EQ(grid_points(m), 26u);  // 8 corners, 12 edge midpoints, 6 face centres
   // The positions go out as the embedding "position" (one value per vertex).
-  const GMapFile f = to_gmap_file(m);
+  const EmbeddedMap f = to_embedded_map(m);
   ASSERT_NE(f.find(kPositionName), nullptr);
   EXPECT_TRUE(f.find(kPositionName)->check(f.map).empty());
 }

@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include "model/core/builders.hpp"
-#include "model/io/gmap_json.hpp"
+#include "model/map_io/map_json.hpp"
 #include "model/replace/pattern_store.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 
@@ -21,7 +21,7 @@ struct TempDir {
   }
   ~TempDir() { fs::remove_all(path); }
   void write(const std::string& file, const Map& g) {
-    io::write_gmap_json_file(path / file, GMapFile{g, {}});
+    io::write_map_json_file(path / file, EmbeddedMap(g));
   }
 };
 

@@ -4,7 +4,7 @@
 #include "model/core/builders.hpp"
 #include "model/rewrite/dpo.hpp"
 #include "model/core/error.hpp"
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 

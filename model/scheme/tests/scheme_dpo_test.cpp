@@ -8,8 +8,8 @@
 
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
-#include "model/io/jme_import.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/rule_io/jme_import.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/tests/scheme_dpo_compare.hpp"
 #include "model/core/validity.hpp"
 #include "model/testing/source_tree.hpp"

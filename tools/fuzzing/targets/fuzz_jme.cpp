@@ -1,5 +1,5 @@
 // Jerboa .jme (XML): import every rule and validate each scheme's structure.
-#include "model/io/jme_import.hpp"
+#include "model/rule_io/jme_import.hpp"
 #include "tools/fuzzing/fuzz_target.hpp"
 
 void gmr::fuzzing::fuzz_one(std::string_view text) {

@@ -1,5 +1,5 @@
 // The --match syntax of `gmr apply` ("a=3,b=5") against a four-node rule and a 48-dart map.
-#include "model/io/rule_json.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "tools/cli/match_syntax.hpp"
 #include "tools/fuzzing/fuzz_target.hpp"
 

@@ -1,9 +1,9 @@
 // Wavefront OBJ meshes: read into a 2-G-map with positions (non-manifold input is a named error).
 #include "model/core/validity.hpp"
-#include "model/io/obj.hpp"
+#include "model/map_io/obj.hpp"
 #include "tools/fuzzing/fuzz_target.hpp"
 
 void gmr::fuzzing::fuzz_one(std::string_view text) {
-  const PositionedMap m = io::read_obj(text, "fuzz.obj");
+  const EmbeddedMap m = io::read_obj(text, "fuzz.obj");
   if (!is_valid(m.map)) __builtin_trap();  // the reader only builds valid maps
 }

@@ -1,8 +1,8 @@
 // gmr.rule JSON, concrete rules and rule schemes: read, then the scheme's structural validation
 // (what `gmr apply` checks before running the engine) and a write/read round trip.
-#include "model/io/json_reader.hpp"
-#include "model/io/rule_json.hpp"
-#include "model/io/scheme_json.hpp"
+#include "model/map_io/json_reader.hpp"
+#include "model/rule_io/rule_json.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "tools/fuzzing/fuzz_target.hpp"
 
 void gmr::fuzzing::fuzz_one(std::string_view text) {

@@ -1,6 +1,6 @@
 // gmr.voxels JSON: read, and build the polycube of small sets (what `gmr info` does with one).
 #include "model/core/validity.hpp"
-#include "model/io/voxels.hpp"
+#include "model/map_io/voxels.hpp"
 #include "tools/fuzzing/fuzz_target.hpp"
 
 void gmr::fuzzing::fuzz_one(std::string_view text) {
