@@ -1,6 +1,7 @@
 // `gmr query-replace` and `gmr patterns check` run as a user would.
 #include <fstream>
 
+#include "model/testing/scratch_dir.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
 #include "model/map_io/map_json.hpp"
@@ -13,7 +14,7 @@ using CliReplace = Cli;
 
 // The polycube of tools/data as the gmr binary reads it (converted to gmr.gmap JSON).
 EmbeddedMap load_voxels_map() {
-  const fs::path tmp = fs::temp_directory_path() / "gmr_cli_replace_polycube.json";
+  const fs::path tmp = gmr::testing::scratch_path("gmr_cli_replace_polycube") += ".json";
   const std::string cmd = q(gmr_bin()) + " convert " + q(tools_data("polycube.voxels.json")) + " " + q(tmp) + " >/dev/null";
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("gmr convert failed");
   EmbeddedMap f = io::read_map_json_file(tmp);

@@ -484,6 +484,22 @@ TEST_F(Cli, EventsPrintsTheStaticTable) {
   expect_bad_input("events " + tri + " --orbits \"<0;1>\"", "--orbits");
 }
 
+// A map with a JSON embedding (here a label string per face) converts and validates as it is, but a
+// rule application refuses it: new orbits would get no value (docs/embeddings.md). Without the
+// embeddings (--no-embeddings) it applies.
+TEST_F(Cli, ApplyRefusesJsonEmbeddingsThatConvertKeeps) {
+  const fs::path cube = dir / "cube.json", labelled = dir / "labelled.json", copy = dir / "out/copy.json";
+  ASSERT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(cube)).code, 0);
+  nlohmann::json j = nlohmann::json::parse(read_text_file(cube));
+  j["embeddings"].push_back({{"name", "label"}, {"orbit", "<0,1>"}, {"values", {{{"dart", 0}, {"value", "top"}}}}});
+  std::ofstream(labelled) << j.dump();
+  EXPECT_EQ(run("convert " + q(labelled) + " " + q(copy)).code, 0);
+  EXPECT_EQ(nlohmann::json::parse(read_text_file(copy))["embeddings"], j["embeddings"]);
+  expect_bad_input("apply " + q(rule_data("quad_subdivision.json")) + " " + q(labelled) + " --all",
+                   "embedding 'label', dart 0", "rule applications carry numeric embeddings only");
+  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(labelled) + " --all --no-embeddings").code, 0);
+}
+
 TEST_F(Cli, ApplyWritesTheEventLog) {
   const std::string tri = q(tools_data("rules/face_triangulation.json"));
   const std::string house = q(source_dir() / "checker/events/tests/data/house.json");

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/testing/scratch_dir.hpp"
 #include "model/map_io/read_file.hpp"
 #include "model/testing/source_tree.hpp"
 
@@ -30,8 +31,7 @@ class CliVerify : public ::testing::Test {
  protected:
   fs::path dir;
   void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("gmr_cli_verify_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir = gmr::testing::scratch_path("gmr_cli_verify_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir);
     fs::create_directories(dir);
   }

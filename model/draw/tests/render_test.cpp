@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "model/testing/scratch_dir.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/draw/map_dot.hpp"
@@ -26,7 +27,7 @@ TEST(Render, SvgAndPng) {
 }
 
 TEST(Render, BadDotIsAParseErrorAndLeavesNoFile) {
-  const fs::path dir = fs::temp_directory_path() / "gmr_render_test";
+  const fs::path dir = gmr::testing::scratch_path("gmr_render_test");
   fs::remove_all(dir);
   fs::create_directories(dir);
   try {

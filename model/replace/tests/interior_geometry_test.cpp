@@ -27,7 +27,7 @@ FlaggedMap affine_cube(int n) {
   FlaggedMap m{lift(pm.map, n), {}, {}};
   m.flag.assign(m.map.capacity(), 1);
   m.position.resize(m.map.capacity());
-  m.map.for_each_dart([&](Dart d) { m.position[d] = affine(pm.position.get(d)); });
+  m.map.for_each_dart([&](Dart d) { m.position[d] = affine(pm.position().get(d)); });
   return m;
 }
 

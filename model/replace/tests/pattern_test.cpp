@@ -3,6 +3,7 @@
 
 #include <fstream>
 
+#include "model/testing/scratch_dir.hpp"
 #include "model/core/builders.hpp"
 #include "model/map_io/map_json.hpp"
 #include "model/replace/pattern_store.hpp"
@@ -15,7 +16,7 @@ namespace fs = std::filesystem;
 
 struct TempDir {
   fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / ("gmr_replace_" + name)) {
+  explicit TempDir(const std::string& name) : path(gmr::testing::scratch_path("gmr_replace_" + name)) {
     fs::remove_all(path);
     fs::create_directories(path);
   }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "model/testing/scratch_dir.hpp"
 #include "model/core/error.hpp"
 #include "model/rule_io/rule_json.hpp"
 
@@ -53,7 +54,7 @@ TEST(RuleJson, ReadsAndDeducesStatuses) {
 
 TEST(RuleJson, RoundTripAndAtomicWrite) {
   const Rule r = parse_rule(kGood);
-  const auto dir = std::filesystem::temp_directory_path() / "gmr_rule_json_test";
+  const auto dir = gmr::testing::scratch_path("gmr_rule_json_test");
   std::filesystem::create_directories(dir);
   const auto path = dir / "r.json";
   write_rule_file(r, path);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "model/testing/scratch_dir.hpp"
 #include "model/core/error.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"
@@ -53,7 +54,7 @@ TEST(SchemeJson, RoundTrip) {
 }
 
 TEST(SchemeJson, AtomicFile) {
-  const auto dir = std::filesystem::temp_directory_path() / "gmr_scheme_json_test";
+  const auto dir = gmr::testing::scratch_path("gmr_scheme_json_test");
   std::filesystem::create_directories(dir);
   const auto path = dir / "quad.json";
   write_scheme_file(quad_subdivision(), path);
