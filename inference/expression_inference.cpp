@@ -122,7 +122,7 @@ ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& be
   const DimMask mask = pos_orbit.mask();
   // 1. The associated darts: the scheme applied to a copy of G gives H.
   Map g = before.map;
-  const SchemeApplication app = SchemeEngine(s).apply(g, hooks);
+  const SchemeApplication app = scheme::apply(SchemeEngine(s), g, hooks);
   if (!app) throw Error(ErrorCode::Usage, "the scheme does not apply to the object before: " + app.why, "scheme " + s.name);
   bool same = g.capacity() == after.map.capacity() && g.dimension() == after.map.dimension();
   for (Dart d = 0; same && d < g.capacity(); ++d) {

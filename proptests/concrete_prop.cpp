@@ -115,8 +115,8 @@ TEST(ConcreteProps, TwoDpoConstructionsAgree) {
     RC_CLASSIFY(matches.empty(), "no applicable match");
     for (const Match& m : matches) {
       std::string why;
-      const Derivation a = derive(r, G, m), b = derive_in_place(r, G, m);
-      if (!same_derivation(a, b, &why)) RC_FAIL("derive vs derive_in_place: " + why);
+      const Derivation a = derive(r, G, m), b = derive(r, G, m, Construction::Rewriting);
+      if (!same_derivation(a, b, &why)) RC_FAIL("categorical vs rewriting derivation: " + why);
       // On maps, when H is combinatorial (else both refuse).
       std::vector<Dart> dm;
       const auto darts = g.darts();
@@ -124,12 +124,12 @@ TEST(ConcreteProps, TwoDpoConstructionsAgree) {
       bool ok1 = true, ok2 = true;
       MapDerivation h1, h2;
       try {
-        h1 = apply_to_map(r, g, dm);
+        h1 = apply(r, g, dm, Construction::Categorical);
       } catch (const Error&) {
         ok1 = false;
       }
       try {
-        h2 = apply_in_map(r, g, dm);
+        h2 = apply(r, g, dm, Construction::Rewriting);
       } catch (const Error&) {
         ok2 = false;
       }

@@ -44,15 +44,16 @@ void log_equals_dynamic(const SchemeEngine& engine, const StaticEvents& st, size
     std::vector<Dart> hooks;
     for (size_t h = 0; h < s.hooks.size(); ++h)
       hooks.push_back(darts[*rc::gen::inRange<size_t>(0, darts.size())]);
-    const LoggedApplication la = apply_with_events(engine, st, g, hooks);
-    if (!la.application) continue;
+    EventRecorder recorder(s, st);
+    const SchemeApplication app = scheme::apply(engine, g, hooks, &recorder);
+    if (!app) continue;
     RC_TAG("applied");
     RC_LOG() << "map " << mc.str() << ", hooks";
     for (Dart h : hooks) RC_LOG() << " " << h;
     RC_LOG() << "\n";
     for (size_t t = 0; t < st.orbits.size(); ++t) {
-      const auto dyn = dynamic_events(before[t], g, &la.application.match);
-      const auto& log = la.log.orbits[t].events;
+      const auto dyn = dynamic_events(before[t], g, &app.match);
+      const auto& log = recorder.logs().back().orbits[t].events;
       if (!same_events(log, dyn)) {
         RC_LOG() << st.orbits[t].orbit.str() << "\nlog:\n" << listing(log) << "dynamic:\n" << listing(dyn);
         RC_FAIL("the event log differs from the dynamic detector");

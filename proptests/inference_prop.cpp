@@ -24,6 +24,8 @@
 // scheme by name, a random one also as JSON) and the inferred scheme's JSON and DOT.
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "inference/dart_mapping.hpp"
 #include "inference/fold.hpp"
 #include "inference/fold_check.hpp"
@@ -89,7 +91,7 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole
   Dart h = kNoDart;
   for (Dart k = 0; k < g.size() && h == kNoDart; ++k) {
     const Dart cand = static_cast<Dart>((offset + k) % g.size());
-    if (engine.apply(after, {cand}).applied) h = cand;
+    if (scheme::apply(engine, after, {cand}).applied) h = cand;
   }
   RC_LOG() << "scheme " << s.name << " at " << h << "\nscheme DOT:\n" << draw::to_dot(s)
            << "before (gmr.gmap, the component of dart 0, darts renumbered):\n" << describe_counterexample(g)
@@ -112,7 +114,7 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole
   if (!r.accepted()) return;
   std::vector<Dart> hooks;
   for (uint32_t k : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[k][0]);
-  auto [again, app2] = apply_scheme(g, r.scheme, hooks);
+  auto [again, app2] = scheme::apply(SchemeEngine(r.scheme), std::as_const(g), hooks);
   RC_ASSERT(app2.applied);
   RC_ASSERT(is_isomorphic(again, after));
   // G is a single <o>-orbit and G and H are simple (no free dart, no parallel links): L is one
@@ -126,8 +128,8 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole
     const Dart d = *rc::gen::inRange<Dart>(0, static_cast<Dart>(other.capacity()));
     if (!other.alive(d)) return;
     Map by_s = other;
-    if (!engine.apply(by_s, {d}).applied) return;
-    auto [by_r, app3] = apply_scheme(other, r.scheme, {d});
+    if (!scheme::apply(engine, by_s, {d}).applied) return;
+    auto [by_r, app3] = scheme::apply(SchemeEngine(r.scheme), std::as_const(other), {d});
     RC_ASSERT(app3.applied);
     RC_ASSERT(is_isomorphic(by_r, by_s));
     RC_TAG("agrees elsewhere");

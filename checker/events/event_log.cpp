@@ -339,8 +339,9 @@ struct EventRecorder::Impl {
   Impl(const RuleScheme& s, const StaticEvents& st) : rec(s, st) {}
 };
 
-EventRecorder::EventRecorder(const RuleScheme& s, const StaticEvents& analysis, scheme::ApplicationObserver* also)
-    : s_(s), impl_(std::make_unique<Impl>(s, analysis)), also_(also) {
+EventRecorder::EventRecorder(const RuleScheme& s, const StaticEvents& analysis,
+                             scheme::ApplicationObserver* also)
+    : s_(s), hook_nodes_(s.hook_nodes()), impl_(std::make_unique<Impl>(s, analysis)), also_(also) {
   if (analysis.rule != s.name || analysis.dimension != s.dimension)
     throw Error(ErrorCode::Usage, "the static events are those of rule \"" + analysis.rule + "\"",
                 "scheme " + s.name);
@@ -362,21 +363,12 @@ void EventRecorder::before_rewrite(const Map& before, const SchemeApplication& r
 void EventRecorder::after_rewrite(const Map& after, const SchemeApplication& res, const OrbitGraph& O) {
   EventLog log;
   log.rule = s_.name;
-  if (!O.darts.empty() && s_.hooks.size() == 1) log.hooks = {O.darts[0]};  // the hook orbit starts at the hook
+  // Hook k at orbit dart 0: the reference hook starts the hook orbit, and the orbit isomorphism of
+  // another hook's orbit sends it to that hook (scheme_engine.hpp, step 2).
+  for (uint32_t v : hook_nodes_) log.hooks.push_back(res.match_at(v, 0));
   log.orbits = impl_->rec.after(after, res);
   logs_.push_back(std::move(log));
   if (also_) also_->after_rewrite(after, res, O);
-}
-
-LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
-                                    Map& g, const std::vector<Dart>& hooks, scheme::ApplicationObserver* also) {
-  EventRecorder recorder(engine.scheme(), analysis, also);
-  LoggedApplication out;
-  out.application = engine.apply(g, hooks, &recorder);
-  if (out.application) out.log = std::move(recorder.logs().back());
-  out.log.rule = engine.scheme().name;
-  out.log.hooks = hooks;
-  return out;
 }
 
 }  // namespace gmr::events

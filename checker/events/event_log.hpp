@@ -59,16 +59,13 @@ struct EventLog {
   std::vector<OrbitTypeLog> orbits;  // in the order of StaticEvents::orbits
 };
 
-struct LoggedApplication {
-  scheme::SchemeApplication application;
-  EventLog log;  // empty orbits when the scheme was not applied
-};
-
-// An application observer (model/scheme/scheme_engine.hpp) that logs every application it sees,
-// e.g. those of apply_everywhere (model/scheme/apply_everywhere.hpp): one EventLog per successful
-// application, in order, each naming the orbits of the map just before and just after that
-// application. `analysis` must be the static events of `s`, else Error(Usage). `also` observes the
-// applications too. The scheme and the analysis must outlive the recorder.
+// The event log as an application observer (model/scheme/scheme_engine.hpp), passed to
+// scheme::apply or scheme::apply_everywhere (model/scheme/apply_everywhere.hpp): it logs every
+// application it sees, one EventLog per successful application, in order, each naming the orbits
+// of the map just before and just after that application, with the application's hook darts.
+// `analysis` (its orbit types) must be the static events of `s`, else Error(Usage). `also` (e.g.
+// the embedding propagation of model/expr) observes the applications too. The scheme and the
+// analysis must outlive the recorder.
 class EventRecorder : public scheme::ApplicationObserver {
  public:
   EventRecorder(const scheme::RuleScheme& s, const StaticEvents& analysis, scheme::ApplicationObserver* also = nullptr);
@@ -80,17 +77,10 @@ class EventRecorder : public scheme::ApplicationObserver {
  private:
   struct Impl;
   const scheme::RuleScheme& s_;
+  std::vector<uint32_t> hook_nodes_;  // L node of each hook
   std::unique_ptr<Impl> impl_;
   scheme::ApplicationObserver* also_;
   std::vector<EventLog> logs_;
 };
-
-// Applies `engine` at `hooks` in place and logs the events of every orbit type of `analysis`
-// (which must be the static events of engine.scheme()). Throws what SchemeEngine::apply throws, and
-// Error(Usage) when `analysis` belongs to another rule. `also` (e.g. the embedding propagation of
-// model/expr) observes the application too.
-LoggedApplication apply_with_events(const scheme::SchemeEngine& engine, const StaticEvents& analysis,
-                                    Map& g, const std::vector<Dart>& hooks,
-                                    scheme::ApplicationObserver* also = nullptr);
 
 }  // namespace gmr::events

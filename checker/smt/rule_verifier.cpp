@@ -43,7 +43,7 @@ std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vec
     c.gluing_fails = true;
     return c;
   }
-  rewrite::Derivation d = rewrite::derive_in_place(r, Gd, *m);
+  rewrite::Derivation d = rewrite::derive(r, Gd, *m, rewrite::Construction::Rewriting);
   auto viol = graph::check_gmap_constraints(d.H, r.dimension(), r.kind());
   if (viol.empty()) return std::nullopt;
   c.match = std::move(*m);

@@ -55,7 +55,7 @@ struct Counterexample {
   Map G{0};
   Match match;              // L node -> dart of G (as nodes of to_dgraph(G))
   bool gluing_fails = false;  // Consistency: the match fails the gluing condition (no H)
-  DGraph H;                 // the result of the derivation (derive_in_place)
+  DGraph H;                 // the result of the derivation (rewriting construction)
   std::vector<ConstraintViolation> violations;  // of H (check_gmap_constraints)
   Engine engine = Engine::Smt;
 };

@@ -66,7 +66,7 @@ TEST(EmbeddingConsistency, AcceptedSchemesGiveConsistentResults) {
     EmbeddedMap m = random_embedded_map(rng);
     const Dart hook = static_cast<Dart>(uniform(rng, 0, m.map.size() - 1));
     expr::EmbeddingPropagation p(cs, m);
-    if (!engine.apply(m.map, {hook}, &p)) continue;
+    if (!scheme::apply(engine, m.map, {hook}, &p)) continue;
     if (!check_validity(m.map).ok()) continue;
     bool overlap = false;
     for (const auto& i : p.issues()) overlap |= i.code == "E-overlap";

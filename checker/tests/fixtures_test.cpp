@@ -41,7 +41,8 @@ bool C(const Rule& r, int i, int j) { return check_cycle(r, i, j, diags); }
 Map apply_both(const Rule& r, const Map& g, const std::function<Dart(const std::string&)>& name_to_dart) {
   std::vector<Dart> m;
   for (Node v = 0; v < r.left().num_nodes(); ++v) m.push_back(name_to_dart(r.left().name(v)));
-  MapDerivation a = apply_in_map(r, g, m), b = apply_to_map(r, g, m);
+  MapDerivation a = apply(r, g, m, Construction::Rewriting),
+                b = apply(r, g, m, Construction::Categorical);
   EXPECT_TRUE(is_isomorphic(a.H, b.H));
   return a.H;
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "checker/scheme_checker.hpp"
 #include "model/core/builders.hpp"
@@ -35,7 +36,7 @@ struct Outcome {
 };
 
 Outcome apply_ok(const std::string& rule, const Map& g, const std::vector<Dart>& hooks) {
-  auto [h, a] = apply_scheme(g, lib(rule), hooks);
+  auto [h, a] = scheme::apply(SchemeEngine(lib(rule)), std::as_const(g), hooks);
   EXPECT_TRUE(a.applied) << rule << ": " << a.why;
   EXPECT_TRUE(is_valid(h)) << rule;
   return Outcome{h, h.size(), count_all_cells(h)};
@@ -138,7 +139,7 @@ TEST(SchemeLibrary, SewAndUnsew2) {
   Outcome s = apply_ok("sew2", u.map, {d, e});
   EXPECT_TRUE(is_isomorphic(s.map, cube));
   // Sewing non-free edges is not applicable.
-  auto [h, a] = apply_scheme(cube, lib("sew2"), {d, e});
+  auto [h, a] = scheme::apply(SchemeEngine(lib("sew2")), std::as_const(cube), {d, e});
   EXPECT_FALSE(a.applied);
 }
 

@@ -40,7 +40,7 @@ std::optional<Witness> find_witness(const RuleScheme& s) {
     const Map g = make_polycube(voxels);
     for (Dart d : g.darts()) {
       Map h = g;
-      SchemeApplication a = e.apply(h, {d});
+      SchemeApplication a = scheme::apply(e, h, {d});
       if (!a.applied) continue;
       ValidityReport v = check_validity(h, 1);
       if (!v.ok()) return Witness{name, d, v.violations.front().describe()};

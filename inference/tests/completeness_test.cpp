@@ -206,9 +206,9 @@ TEST(FoldCompleteness, StartsMarkedAfterAFailureFailTooOnJointGraphs) {
     const RuleScheme s = io::read_scheme_file(gmr::testing::source_path("tools/data/rules/" + std::string(rule) + ".json"));
     const Map cube = make_cube();
     Map once = cube;
-    ASSERT_TRUE(apply_scheme_in_place(once, s, {0}).applied);
+    ASSERT_TRUE(scheme::apply(SchemeEngine(s), once, {0}).applied);
     Map after = once;
-    ASSERT_TRUE(apply_scheme_in_place(after, s, {0}).applied);
+    ASSERT_TRUE(scheme::apply(SchemeEngine(s), after, {0}).applied);
     const JointGraph j = joint_from_pair(once, after, identity_mapping(once, after));
     for (const OrbitType& o : all_orbit_types(2)) {
       std::vector<uint8_t> seen(j.size(), 0);

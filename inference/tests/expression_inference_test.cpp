@@ -33,7 +33,7 @@ EmbeddedMap load(const std::string& off) {
 EmbeddedMap apply(const scheme::RuleScheme& s, EmbeddedMap m, Dart hook) {
   const expr::CompiledScheme cs = expr::compile_scheme(s);
   expr::EmbeddingPropagation p(cs, m);
-  EXPECT_TRUE(scheme::SchemeEngine(s).apply(m.map, {hook}, &p));
+  EXPECT_TRUE(scheme::apply(scheme::SchemeEngine(s), m.map, {hook}, &p));
   EXPECT_EQ(p.issue_count(), 0u);
   return m;
 }

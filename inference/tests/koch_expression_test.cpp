@@ -92,7 +92,7 @@ EmbeddedMap koch_step(const EmbeddedMap& m) {
   const auto& pos = m.find("position")->values;
   const std::vector<Vec3> out = outward_edges(m);
   Map g = m.map;
-  const scheme::SchemeApplication app = scheme::SchemeEngine(koch()).apply(g, {0});
+  const scheme::SchemeApplication app = scheme::apply(scheme::SchemeEngine(koch()), g, {0});
   EXPECT_TRUE(app.applied) << app.why;
   std::vector<Vec3> p(g.capacity(), Vec3{0, 0, 0});
   for (uint32_t b = 0; b < app.orbit_size(); ++b) {
@@ -143,7 +143,7 @@ TEST(ExpressionInference, VonKochFromTheSquareReproducesTheFirstIteration) {
   EmbeddedMap again = sq;
   const expr::CompiledScheme cs = expr::compile_scheme(inf.scheme);
   expr::EmbeddingPropagation prop(cs, again);
-  ASSERT_TRUE(scheme::SchemeEngine(inf.scheme).apply(again.map, {0}, &prop));
+  ASSERT_TRUE(scheme::apply(scheme::SchemeEngine(inf.scheme), again.map, {0}, &prop));
   const auto& a = again.fields[0].values;
   const auto& b = sq1.fields[0].values;
   for (Dart d = 0; d < again.map.capacity(); ++d)
@@ -160,7 +160,8 @@ TEST(ExpressionInference, VonKochFailsFromTheSecondIteration) {
   EmbeddedMap got = sq1;
   const expr::CompiledScheme cs = expr::compile_scheme(from_square.scheme);
   expr::EmbeddingPropagation prop(cs, got);
-  const scheme::SchemeApplication app = scheme::SchemeEngine(from_square.scheme).apply(got.map, {0}, &prop);
+  const scheme::SchemeApplication app =
+      scheme::apply(scheme::SchemeEngine(from_square.scheme), got.map, {0}, &prop);
   ASSERT_TRUE(app.applied) << app.why;
   EXPECT_EQ(prop.issue_count(), 0u);
   const std::vector<uint32_t> nd = node_of(app, got.map.capacity(), 4);

@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -94,7 +95,7 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
 
   // 2. Before: unit cubes; after: the engine's result of the scheme, with the Menger positions.
   const EmbeddedMap before = polycube_with_positions(cubes, 1.0);
-  auto [result, app] = apply_scheme(before.map, menger, {0});
+  auto [result, app] = scheme::apply(SchemeEngine(menger), std::as_const(before.map), {0});
   ASSERT_TRUE(app.applied) << app.why;
   const EmbeddedMap after = with_menger_positions(result, 0, sub, image_of(0, 0));
 
@@ -133,7 +134,7 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   EmbeddedMap got = polycube_with_positions(tri, 1.0);
   const expr::CompiledScheme cs = expr::compile_scheme(inf.scheme);
   expr::EmbeddingPropagation prop(cs, got);
-  const SchemeApplication a2 = SchemeEngine(inf.scheme).apply(got.map, {0}, &prop);
+  const SchemeApplication a2 = scheme::apply(SchemeEngine(inf.scheme), got.map, {0}, &prop);
   ASSERT_TRUE(a2.applied) << a2.why;
   EXPECT_EQ(prop.issue_count(), 0u);
   const std::vector<Voxel> tri_sub = menger_of(tri);

@@ -9,6 +9,7 @@
 
 #include <regex>
 #include <set>
+#include <utility>
 
 #include "inference/expression_inference.hpp"
 #include "inference/infer.hpp"
@@ -71,7 +72,7 @@ TEST(RuleInference, MengerPolycube222FromTwoGluedCubes) {
   EXPECT_EQ(m.left.size(), 1u);
   EXPECT_EQ(m.right.size(), 81u);
   // On one cube: the paper's polycube (81 volumes; 270 faces and 216 vertices on its boundary).
-  auto [one, app1] = apply_scheme(make_polycube({{0, 0, 0}}), m, {0});
+  auto [one, app1] = scheme::apply(SchemeEngine(m), make_polycube({{0, 0, 0}}), {0});
   ASSERT_TRUE(app1.applied) << app1.why;
   EXPECT_TRUE(check_validity(one).ok());
   EXPECT_EQ(count_cells(one, 3), 81u);
@@ -80,7 +81,7 @@ TEST(RuleInference, MengerPolycube222FromTwoGluedCubes) {
   EXPECT_EQ(signature(one), signature(make_polycube(menger_polycube_voxels(2, 2, 2))));
   // On an L-shaped tricube: the polycube of its (2,2,2)-Menger voxels, built voxel by voxel.
   const std::vector<Voxel> tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  auto [got, app3] = apply_scheme(make_polycube(tri), m, {0});
+  auto [got, app3] = scheme::apply(SchemeEngine(m), make_polycube(tri), {0});
   ASSERT_TRUE(app3.applied) << app3.why;
   EXPECT_TRUE(check_validity(got).ok());
   EXPECT_EQ(got.size(), 3 * 81 * 48u);
@@ -93,7 +94,7 @@ TEST(ExpressionInference, MengerPolycube222Positions) {
   const EmbeddedMap before = pc::with_positions(ex.before, ex.cubes, 1.0);
   // The object after as the engine numbers it: the topological result, with the positions of the
   // polycube built voxel by voxel (side 1/5) carried over by the isomorphism fixing the hook.
-  auto [topo, app] = apply_scheme(ex.before, m, {0});
+  auto [topo, app] = scheme::apply(SchemeEngine(m), std::as_const(ex.before), {0});
   ASSERT_TRUE(app.applied) << app.why;
   const EmbeddedMap after = carry_positions(pc::with_positions(ex.after, ex.sub, 0.2),
                                                   ex.mapping.pairs[0].second, topo, 0);
@@ -125,7 +126,7 @@ TEST(ExpressionInference, MengerPolycube222Positions) {
   {
     const expr::CompiledScheme cs = expr::compile_scheme(inf.scheme);
     expr::EmbeddingPropagation p(cs, again);
-    ASSERT_TRUE(SchemeEngine(inf.scheme).apply(again.map, {0}, &p));
+    ASSERT_TRUE(scheme::apply(SchemeEngine(inf.scheme), again.map, {0}, &p));
     EXPECT_EQ(p.issue_count(), 0u);
   }
   const auto& a = again.find("position")->values;

@@ -56,7 +56,7 @@ TEST(RuleInference, MengerLevelOneFromTwoGluedCubes) {
   EXPECT_EQ(menger.right.size(), 20u);
   // Applied to an L-shaped tricube: the polycube of its Menger voxels.
   const std::vector<Voxel> tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  auto [got, app] = apply_scheme(make_polycube(tri), menger, {0});
+  auto [got, app] = scheme::apply(SchemeEngine(menger), make_polycube(tri), {0});
   ASSERT_TRUE(app.applied) << app.why;
   EXPECT_TRUE(check_validity(got).ok());
   EXPECT_EQ(got.size(), 20 * 3 * 48u);

@@ -2,6 +2,8 @@
 // hooks, the scheme checker; the thesis' triangle -> hexagon cases and the quad subdivision.
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "checker/scheme_checker.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
@@ -31,7 +33,7 @@ namespace {
 
 // The after map of applying `s` at `hook` on a copy of g (the engine keeps preserved dart ids).
 Map applied(const Map& g, const RuleScheme& s, Dart hook) {
-  auto [h, app] = apply_scheme(g, s, {hook});
+  auto [h, app] = scheme::apply(SchemeEngine(s), std::as_const(g), {hook});
   EXPECT_TRUE(app.applied) << app.why;
   return h;
 }
@@ -40,7 +42,7 @@ Map applied(const Map& g, const RuleScheme& s, Dart hook) {
 Map apply_at_own_hooks(const Map& g, const InferredRule& r) {
   std::vector<Dart> hooks;
   for (uint32_t h : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[h][0]);
-  auto [out, app] = apply_scheme(g, r.scheme, hooks);
+  auto [out, app] = scheme::apply(SchemeEngine(r.scheme), std::as_const(g), hooks);
   EXPECT_TRUE(app.applied) << app.why;
   return out;
 }
@@ -76,7 +78,7 @@ TEST(RuleInference, TriangleToHexagonEdgeSplitIsValid) {
   EXPECT_EQ(r.scheme.right.nodes[1].label, ot("<1,_,2>"));
   // Applied to the triangle it gives the hexagon; applied to a square, an octagon.
   EXPECT_TRUE(is_isomorphic(apply_at_own_hooks(tri, r), hex));
-  auto [oct, app] = apply_scheme(make_polygon(4), r.scheme, {0});
+  auto [oct, app] = scheme::apply(SchemeEngine(r.scheme), make_polygon(4), {0});
   ASSERT_TRUE(app.applied);
   EXPECT_TRUE(is_isomorphic(oct, make_polygon(8)));
 }
@@ -132,8 +134,8 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   EXPECT_TRUE(is_isomorphic(apply_at_own_hooks(cube, r), sub));
   const EmbeddedMap box = read_off_file(data("open_box.off"));
   for (const Map& g : {make_torus(5, 4), box.map, make_prism(7)}) {
-    auto [mine, a1] = apply_scheme(g, r.scheme, {0});
-    auto [theirs, a2] = apply_scheme(g, lib, {0});
+    auto [mine, a1] = scheme::apply(SchemeEngine(r.scheme), std::as_const(g), {0});
+    auto [theirs, a2] = scheme::apply(SchemeEngine(lib), std::as_const(g), {0});
     ASSERT_TRUE(a1.applied && a2.applied);
     EXPECT_EQ(mine.size(), 4 * g.size());
     EXPECT_TRUE(check_validity(mine).ok());
@@ -182,7 +184,7 @@ TEST(RuleInference, MarkingSkipsEquivalentStartsAndDuplicatesAreMerged) {
   Map g = make_polygon(4);
   Map h = g;
   for (Dart e : {Dart{0}, Dart{2}, Dart{4}, Dart{6}}) {
-    auto app = apply_scheme_in_place(h, vi, {e});
+    auto app = scheme::apply(SchemeEngine(vi), h, {e});
     ASSERT_TRUE(app.applied) << app.why;
   }
   const JointGraph j = joint_from_pair(g, h, identity_mapping(g, h));
@@ -276,8 +278,8 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
     ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
     const RuleScheme& s = res.rules[0].scheme;
     EXPECT_TRUE(schemes_isomorphic(s, lib)) << scheme_to_json_text(s);
-    auto [mine, a1] = apply_scheme(c.other, s, {0});
-    auto [theirs, a2] = apply_scheme(c.other, lib, {0});
+    auto [mine, a1] = scheme::apply(SchemeEngine(s), std::as_const(c.other), {0});
+    auto [theirs, a2] = scheme::apply(SchemeEngine(lib), std::as_const(c.other), {0});
     ASSERT_EQ(a1.applied, a2.applied) << a1.why << a2.why;
     if (a1.applied) {
       EXPECT_EQ(signature(mine), signature(theirs));
@@ -308,8 +310,9 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
   const RuleScheme et = read_scheme_file(rule_file("edge_triangulation"));
   const Map tri = make_polygon(3);
   Map after = tri;
-  for (Dart e : {Dart{0}, Dart{2}, Dart{4}}) ASSERT_TRUE(apply_scheme_in_place(after, vi, {e}).applied);
-  ASSERT_TRUE(apply_scheme_in_place(after, ft, {0}).applied);
+  for (Dart e : {Dart{0}, Dart{2}, Dart{4}})
+    ASSERT_TRUE(scheme::apply(SchemeEngine(vi), after, {e}).applied);
+  ASSERT_TRUE(scheme::apply(SchemeEngine(ft), after, {0}).applied);
   ASSERT_EQ(after.size(), 36u);
   const JointGraph j = joint_from_pair(tri, after, identity_mapping(tri, after));
   InferOptions opt;
@@ -321,8 +324,8 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
   EXPECT_EQ(ps.right.size(), 6u);
   EXPECT_TRUE(schemes_isomorphic(ps, et)) << scheme_to_json_text(ps);
   for (const Map& g : {make_grid(1, 1), make_grid(3, 2), make_tetrahedron()}) {
-    auto [mine, a1] = apply_scheme(g, ps, {0});
-    auto [theirs, a2] = apply_scheme(g, et, {0});
+    auto [mine, a1] = scheme::apply(SchemeEngine(ps), std::as_const(g), {0});
+    auto [theirs, a2] = scheme::apply(SchemeEngine(et), std::as_const(g), {0});
     ASSERT_TRUE(a1.applied && a2.applied);
     EXPECT_EQ(mine.size(), 6 * g.size());
     EXPECT_EQ(signature(mine), signature(theirs));
@@ -394,8 +397,8 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
   size_t nodes = 1;
   for (int k = 1; k <= 3; ++k) {
     SCOPED_TRACE(k);
-    ASSERT_TRUE(apply_scheme_in_place(after, ds, {0}).applied);
-    ASSERT_TRUE(apply_scheme_in_place(tetra_k, ds, {0}).applied);
+    ASSERT_TRUE(scheme::apply(SchemeEngine(ds), after, {0}).applied);
+    ASSERT_TRUE(scheme::apply(SchemeEngine(ds), tetra_k, {0}).applied);
     nodes *= 4;
     const JointGraph j = joint_from_pair(cube, after, identity_mapping(cube, after));
     InferOptions opt;
@@ -406,7 +409,7 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
     EXPECT_EQ(r.left.size(), 1u);
     EXPECT_EQ(r.right.size(), nodes);
     EXPECT_EQ(schemes_isomorphic(r, ds), k == 1);
-    auto [got, app] = apply_scheme(make_tetrahedron(), r, {0});
+    auto [got, app] = scheme::apply(SchemeEngine(r), make_tetrahedron(), {0});
     ASSERT_TRUE(app.applied);
     EXPECT_EQ(signature(got), signature(tetra_k));
   }
@@ -433,10 +436,11 @@ TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   EXPECT_TRUE(schemes_isomorphic(r, s3)) << scheme_to_json_text(r);
   const RuleScheme ft = read_scheme_file(rule_file("face_triangulation"));
   Map mesh = make_cube();
-  for (Dart f : orbit_representatives(mesh, ot("<0,1>"))) ASSERT_TRUE(apply_scheme_in_place(mesh, ft, {f}).applied);
+  for (Dart f : orbit_representatives(mesh, ot("<0,1>")))
+    ASSERT_TRUE(scheme::apply(SchemeEngine(ft), mesh, {f}).applied);
   ASSERT_EQ(count_cells(mesh, 2), 24u);
-  auto [mine, a1] = apply_scheme(mesh, r, {0});
-  auto [theirs, a2] = apply_scheme(mesh, s3, {0});
+  auto [mine, a1] = scheme::apply(SchemeEngine(r), std::as_const(mesh), {0});
+  auto [theirs, a2] = scheme::apply(SchemeEngine(s3), std::as_const(mesh), {0});
   ASSERT_TRUE(a1.applied && a2.applied);
   EXPECT_TRUE(check_validity(mine).ok());
   EXPECT_EQ(count_cells(mine, 2), 72u);
@@ -501,7 +505,7 @@ TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
   for (const auto& c : cases) {
     SCOPED_TRACE(c.rule);
     const RuleScheme lib = read_scheme_file(rule_file(c.rule));
-    auto [after, app] = apply_scheme(c.before, lib, c.hooks);
+    auto [after, app] = scheme::apply(SchemeEngine(lib), std::as_const(c.before), c.hooks);
     ASSERT_TRUE(app.applied) << app.why;
     const HookedExample e{c.before, after, identity_mapping(c.before, after)};
     const InferenceResult res = infer_on(lib, e, c.cut);
@@ -520,7 +524,7 @@ namespace {
 // A local example (thesis §7.1.2): the hook's <o>-orbit, the darts 1-linked to it (when
 // with_neighbours) and, after, the preserved ones among them plus the created darts.
 HookedExample local_example(const Map& before, const RuleScheme& lib, Dart hook, const OrbitType& o, bool with_neighbours) {
-  auto [after, app] = apply_scheme(before, lib, {hook});
+  auto [after, app] = scheme::apply(SchemeEngine(lib), std::as_const(before), {hook});
   EXPECT_TRUE(app.applied) << app.why;
   std::vector<Dart> sel = orbit(before, o, hook);
   if (with_neighbours) {
@@ -566,8 +570,8 @@ TEST(RuleInference, LocalLibrarySchemesAreRecoveredThroughSelections) {
         EXPECT_EQ(res.attempts[k].outcome, AttemptOutcome::FoldFailed);
         EXPECT_NE(res.attempts[k].reason.find("partial hook orbit"), std::string::npos);
       }
-      auto [mine, a1] = apply_scheme(make_prism(5), s, {0});
-      auto [theirs, a2] = apply_scheme(make_prism(5), lib, {0});
+      auto [mine, a1] = scheme::apply(SchemeEngine(s), make_prism(5), {0});
+      auto [theirs, a2] = scheme::apply(SchemeEngine(lib), make_prism(5), {0});
       ASSERT_TRUE(a1.applied && a2.applied) << a1.why << a2.why;
       EXPECT_EQ(signature(mine), signature(theirs));
     }

@@ -235,14 +235,4 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::SchemeAppli
   }
 }
 
-scheme::SchemeApplication apply_embedded(const scheme::SchemeEngine& engine, EmbeddingPropagation& p,
-                                         EmbeddedMap& m, const std::vector<Dart>& hooks) {
-  return engine.apply(m.map, hooks, &p);
-}
-
-scheme::EverywhereApplication apply_everywhere_embedded(const scheme::SchemeEngine& engine, EmbeddingPropagation& p,
-                                                        EmbeddedMap& m) {
-  return scheme::apply_everywhere(engine, m.map, /*keep_tables=*/false, &p);
-}
-
 }  // namespace gmr::expr

@@ -58,6 +58,9 @@ struct PropagationIssue {
   std::string message;
 };
 
+// The propagation as an observer of the applications of a scheme to m.map: passed to scheme::apply
+// (scheme_engine.hpp) or scheme::apply_everywhere (apply_everywhere.hpp), whose whole-component
+// path it also observes.
 class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::ComponentObserver {
  public:
   // Binds the declarations to m's fields (declarations the map lacks are left out).
@@ -122,13 +125,5 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   ComponentView view_;  // the component evaluated (whole components, component_view.hpp)
   bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };
-
-// One application at the hook darts (scheme_engine.hpp), embeddings included.
-scheme::SchemeApplication apply_embedded(const scheme::SchemeEngine& engine, EmbeddingPropagation& p,
-                                         EmbeddedMap& m, const std::vector<Dart>& hooks);
-
-// Application at every dart (model/scheme/apply_everywhere.hpp), embeddings included.
-scheme::EverywhereApplication apply_everywhere_embedded(const scheme::SchemeEngine& engine, EmbeddingPropagation& p,
-                                                        EmbeddedMap& m);
 
 }  // namespace gmr::expr

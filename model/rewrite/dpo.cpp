@@ -77,9 +77,7 @@ void deleted_images(const Rule& r, const DGraph& G, const Match& m, std::vector<
 
 std::string added_name(const DGraph& R, Node v) { return R.node_str(v) + "'"; }
 
-}  // namespace
-
-Derivation derive(const Rule& r, const DGraph& G, const Match& m) {
+Derivation derive_categorical(const Rule& r, const DGraph& G, const Match& m) {
   require_gluing(r, G, m);
   std::vector<bool> dn, da;
   deleted_images(r, G, m, dn, da);
@@ -116,7 +114,7 @@ Derivation derive(const Rule& r, const DGraph& G, const Match& m) {
   return out;
 }
 
-Derivation derive_in_place(const Rule& r, const DGraph& G, const Match& m) {
+Derivation derive_rewriting(const Rule& r, const DGraph& G, const Match& m) {
   require_gluing(r, G, m);
   std::vector<bool> dn, da;
   deleted_images(r, G, m, dn, da);
@@ -179,6 +177,12 @@ Derivation derive_in_place(const Rule& r, const DGraph& G, const Match& m) {
   for (ArcId a = 0; a < R.num_arc_slots(); ++a)
     if (coa[a] != kNoArc) out.comatch_arc[a] = newarc[coa[a]];
   return out;
+}
+
+}  // namespace
+
+Derivation derive(const Rule& r, const DGraph& G, const Match& m, Construction c) {
+  return c == Construction::Categorical ? derive_categorical(r, G, m) : derive_rewriting(r, G, m);
 }
 
 bool same_derivation(const Derivation& a, const Derivation& b, std::string* why) {
@@ -255,7 +259,9 @@ std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const Map& g, siz
   return out;
 }
 
-MapDerivation apply_to_map(const Rule& r, const Map& g, const std::vector<Dart>& match) {
+namespace {
+
+MapDerivation apply_categorical(const Rule& r, const Map& g, const std::vector<Dart>& match) {
   check_rule_fits_map(r, g);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
@@ -268,7 +274,7 @@ MapDerivation apply_to_map(const Rule& r, const Map& g, const std::vector<Dart>&
   }
   auto m = match_from_nodes(r.left(), dg, nm);
   if (!m) throw Error(ErrorCode::Usage, "the node map is not a match of the left-hand side (injective, label-preserving)", "match");
-  Derivation der = derive(r, dg, *m);
+  Derivation der = derive_categorical(r, dg, *m);
   // H must be combinatorial to be stored as a map (I_H on every label).
   for (Node v = 0; v < der.H.num_nodes(); ++v)
     for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
@@ -283,8 +289,6 @@ MapDerivation apply_to_map(const Rule& r, const Map& g, const std::vector<Dart>&
   out.comatch.assign(der.comatch.begin(), der.comatch.end());
   return out;
 }
-
-namespace {
 
 // The unique x with alpha_i(x) == d in a valid map; throws Error(InvalidMap) when there is none.
 Dart predecessor(const Map& g, int i, Dart d) {
@@ -420,9 +424,7 @@ void remove_deleted_darts(const Rule& r, const Map& g, const std::vector<Dart>& 
   }
 }
 
-}  // namespace
-
-MapDerivation apply_in_map(const Rule& r, const Map& g, const std::vector<Dart>& match) {
+MapDerivation apply_rewriting(const Rule& r, const Map& g, const std::vector<Dart>& match) {
   check_rule_fits_map(r, g);
   const DGraph &R = r.right();
   if (match.size() != r.left().num_nodes()) throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");
@@ -438,6 +440,13 @@ MapDerivation apply_in_map(const Rule& r, const Map& g, const std::vector<Dart>&
   check_result_combinatorial(r, lnode_of, w);
   remove_deleted_darts(r, g, match, out);
   return out;
+}
+
+}  // namespace
+
+MapDerivation apply(const Rule& r, const Map& g, const std::vector<Dart>& match, Construction c) {
+  return c == Construction::Categorical ? apply_categorical(r, g, match)
+                                        : apply_rewriting(r, g, match);
 }
 
 }  // namespace gmr::rewrite

@@ -4,21 +4,24 @@
 // dangling condition: no arc of G outside m(L) may be incident to the image of a deleted node.
 // `dangling_arcs` names every such arc; the derivations throw Error(Usage) naming the first one.
 //
-// Two independent constructions are kept and tested against each other:
-//  * `derive` — the categorical one: the pushout complement D (G minus the images of the deleted
-//    nodes and arcs, as a new graph with the inclusion D -> G), then the pushout H of
-//    D <- L∩R -> R (D ⊔ (R \ L∩R) glued along L∩R), with the comatch m': R -> H;
-//  * `derive_in_place` — rewriting a copy of G: remove the matched deleted arcs, append the added
-//    nodes and arcs, then compact the deleted nodes away by moving the last node into each hole.
+// `derive` is the definition on D-graphs (the semantics the other applications are tested
+// against); `apply` applies a concrete rule to a map at one match and returns the result as a new
+// map (docs/architecture.md, "Applying rules"). Each is computed by one of two independent
+// constructions (`Construction`), kept and tested against each other:
+//  * Categorical — the pushout complement D (G minus the images of the deleted nodes and arcs, as
+//    a new graph with the inclusion D -> G), then the pushout H of D <- L∩R -> R (D ⊔ (R \ L∩R)
+//    glued along L∩R), with the comatch m': R -> H; on maps, through to_dgraph/to_gmap;
+//  * Rewriting — editing a copy of G: remove the matched deleted arcs, append the added nodes and
+//    arcs, then compact the deleted nodes away by moving the last node into each hole. On maps the
+//    links of a copy are rewritten directly (Jerboa style) in phases: check the match (injective,
+//    arcs present) and the gluing condition, take fresh darts for added nodes, remove the deleted
+//    L arcs and write the added R arcs, check incident arcs on every touched dart, remove the
+//    deleted darts.
 // Both give isomorphic H with the same comatch (`same_derivation` checks the bijection induced by
 // the two tracks G -> H and R -> H). H node names: G nodes keep theirs; added nodes are named
-// "<R name>'" (a prime per application).
-//
-// On maps: `apply_to_map` goes through to_dgraph/to_gmap; `apply_in_map` rewrites the links of a
-// copy of the map directly (Jerboa style) in phases: check the match (injective, arcs present) and
-// the gluing condition, take fresh darts for added nodes, remove the deleted L arcs and write the
-// added R arcs, check incident arcs on every touched dart, remove the deleted darts. Both throw Error(InvalidMap) when H is not combinatorial (the dart and dimension
-// are named) — other constraints of H (O, C) are left to validity.hpp.
+// "<R name>'" (a prime per application). On maps both throw Error(InvalidMap) when H is not
+// combinatorial (the dart and dimension are named) — other constraints of H (O, C) are left to
+// validity.hpp.
 #pragma once
 #include <string>
 #include <vector>
@@ -49,8 +52,15 @@ struct Derivation {
   std::vector<ArcId> comatch_arc; // R arc slot -> H arc (kNoArc for dead slots)
 };
 
-Derivation derive(const Rule& r, const DGraph& G, const Match& m);
-Derivation derive_in_place(const Rule& r, const DGraph& G, const Match& m);
+// The two constructions of a direct derivation (see above). Neither changes its input.
+enum class Construction {
+  Categorical,  // pushout complement, then pushout
+  Rewriting,    // a copy of G edited
+};
+
+// The direct derivation of G by r at m (Def. 25).
+Derivation derive(const Rule& r, const DGraph& G, const Match& m,
+                  Construction c = Construction::Categorical);
 
 // True iff the map  H1 -> H2  defined by  g_to_h1[g] |-> g_to_h2[g]  and  comatch1[v] |-> comatch2[v]
 // is a well-defined label-preserving graph isomorphism (arc multiplicities included) that also
@@ -64,7 +74,8 @@ struct MapDerivation {
 };
 // Matches are node maps L node -> dart.
 std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const Map& g, size_t limit = SIZE_MAX);
-MapDerivation apply_to_map(const Rule& r, const Map& g, const std::vector<Dart>& match);
-MapDerivation apply_in_map(const Rule& r, const Map& g, const std::vector<Dart>& match);
+// r applied to g at `match` (L node -> dart); g is unchanged.
+MapDerivation apply(const Rule& r, const Map& g, const std::vector<Dart>& match,
+                    Construction c = Construction::Rewriting);
 
 }  // namespace gmr::rewrite

@@ -19,16 +19,11 @@ size_t EverywhereApplication::darts_deleted() const {
   return n;
 }
 
-EverywhereApplication apply_everywhere(const SchemeEngine& engine, Map& g, bool keep_tables,
-                                       ApplicationObserver* observer) {
-  auto* by_components = dynamic_cast<ComponentObserver*>(observer);
-  if ((observer == nullptr || by_components != nullptr) && rewrites_whole_components(engine, g))
-    return apply_everywhere_by_components(engine, g, keep_tables, by_components);
-  return apply_everywhere_at_each_dart(engine, g, keep_tables, observer);
-}
+namespace {
 
-EverywhereApplication apply_everywhere_at_each_dart(const SchemeEngine& engine, Map& g, bool keep_tables,
-                                                    ApplicationObserver* observer) {
+// The contract of the header, one scheme::apply per visited dart.
+EverywhereApplication apply_at_each_dart(const SchemeEngine& engine, Map& g, bool keep_tables,
+                                         ApplicationObserver* observer) {
   const RuleScheme& s = engine.scheme();
   if (s.hooks.size() != 1)
     throw Error(ErrorCode::Usage,
@@ -40,7 +35,7 @@ EverywhereApplication apply_everywhere_at_each_dart(const SchemeEngine& engine, 
   std::vector<bool> used(g.capacity(), false);
   for (Dart d : darts) {
     if (used[d] || !g.alive(d)) continue;
-    SchemeApplication app = engine.apply(g, {d}, observer);
+    SchemeApplication app = scheme::apply(engine, g, {d}, observer);
     if (!app) {
       if (out.applications.empty()) out.last_failure = std::move(app);
       continue;
@@ -57,6 +52,28 @@ EverywhereApplication apply_everywhere_at_each_dart(const SchemeEngine& engine, 
   }
   if (!out.applications.empty()) out.last_failure = SchemeApplication{};
   return out;
+}
+
+}  // namespace
+
+EverywhereApplication apply_everywhere(const SchemeEngine& engine, Map& g,
+                                       const EverywhereOptions& options) {
+  ApplicationObserver* const observer = options.observer;
+  auto* const by_components = dynamic_cast<ComponentObserver*>(observer);
+  switch (options.path) {
+    case EverywherePath::Automatic:
+      if ((observer == nullptr || by_components != nullptr) && rewrites_whole_components(engine, g))
+        return detail::apply_by_components(engine, g, options.keep_tables, by_components);
+      break;
+    case EverywherePath::AtEachDart:
+      break;
+    case EverywherePath::ByComponents:
+      if (observer != nullptr && by_components == nullptr)
+        throw Error(ErrorCode::Usage, "the observer does not observe whole components",
+                    "scheme " + engine.scheme().name);
+      return detail::apply_by_components(engine, g, options.keep_tables, by_components);
+  }
+  return apply_at_each_dart(engine, g, options.keep_tables, observer);
 }
 
 }  // namespace gmr::scheme

@@ -177,8 +177,10 @@ void write_preserved_links(Map& g, const SchemeEngine& e, const ComponentInstanc
 
 }  // namespace
 
-EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine, Map& g, bool keep_tables,
-                                                     ComponentObserver* observer) {
+namespace detail {
+
+EverywhereApplication apply_by_components(const SchemeEngine& engine, Map& g, bool keep_tables,
+                                          ComponentObserver* observer) {
   if (!rewrites_whole_components(engine, g))
     throw Error(ErrorCode::Usage, "the scheme does not rewrite whole components of this map",
                 "scheme " + engine.scheme().name);
@@ -229,5 +231,7 @@ EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine,
   }
   return out;
 }
+
+}  // namespace detail
 
 }  // namespace gmr::scheme

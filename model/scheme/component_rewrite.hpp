@@ -19,7 +19,7 @@
 // the preserved node's changed links (its implicit arcs whose relabeling keeps the dimension are
 // the links it already has, and are not rewritten). The link arrays grow once per call, to the
 // final size. The result is the map
-// SchemeEngine::apply gives, dart for dart (tested against it on random maps and schemes in
+// scheme::apply gives, dart for dart (tested against it on random maps and schemes in
 // model/scheme/tests/component_rewrite_test.cpp).
 #pragma once
 #include <array>
@@ -80,15 +80,17 @@ class ComponentObserver {
   virtual void after_rewrite(const Map& g, const ComponentInstance& c) = 0;
 };
 
-// Whether apply_everywhere(engine, g) can take this path: one hook, L = the hook alone with every
-// dimension of g in its label, no `_`, I_S(0..n) holds (the scheme applies), and g is a G-map of
-// the scheme's dimension.
+// Whether apply_everywhere(engine, g) can take this path (EverywherePath::ByComponents): one hook,
+// L = the hook alone with every dimension of g in its label, no `_`, I_S(0..n) holds (the scheme
+// applies), and g is a G-map of the scheme's dimension.
 bool rewrites_whole_components(const SchemeEngine& engine, const Map& g);
 
-// The same result as apply_everywhere's application at each dart (same applications, hooks,
-// darts added and deleted; orbit, match and comatch tables with keep_tables). Requires
-// rewrites_whole_components (throws Error(Usage) otherwise).
-EverywhereApplication apply_everywhere_by_components(const SchemeEngine& engine, Map& g, bool keep_tables,
-                                                     ComponentObserver* observer = nullptr);
+namespace detail {
+// apply_everywhere's whole-component path: the same result as its application at each dart (same
+// applications, hooks, darts added and deleted; orbit, match and comatch tables with keep_tables).
+// Requires rewrites_whole_components (throws Error(Usage) otherwise).
+EverywhereApplication apply_by_components(const SchemeEngine& engine, Map& g, bool keep_tables,
+                                          ComponentObserver* observer);
+}  // namespace detail
 
 }  // namespace gmr::scheme

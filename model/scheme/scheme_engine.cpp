@@ -298,8 +298,8 @@ void SchemeEngine::remove_deleted_darts(Map& g, size_t s, const std::vector<Dart
     }
 }
 
-SchemeApplication SchemeEngine::apply(Map& g, const std::vector<Dart>& hook_darts,
-                                     ApplicationObserver* observer) const {
+SchemeApplication SchemeEngine::rewrite(Map& g, const std::vector<Dart>& hook_darts,
+                                        ApplicationObserver* observer) const {
   check_call(g, hook_darts);
   SchemeApplication res;
   if (!not_combinatorial_.empty()) {
@@ -323,15 +323,16 @@ SchemeApplication SchemeEngine::apply(Map& g, const std::vector<Dart>& hook_dart
   return res;
 }
 
-SchemeApplication apply_scheme_in_place(Map& g, const RuleScheme& s, const std::vector<Dart>& hook_darts) {
-  return SchemeEngine(s).apply(g, hook_darts);
+SchemeApplication apply(const SchemeEngine& engine, Map& g, const std::vector<Dart>& hook_darts,
+                        ApplicationObserver* observer) {
+  return engine.rewrite(g, hook_darts, observer);
 }
 
-std::pair<Map, SchemeApplication> apply_scheme(const Map& g, const RuleScheme& s,
-                                               const std::vector<Dart>& hook_darts) {
-  SchemeEngine e(s);
+std::pair<Map, SchemeApplication> apply(const SchemeEngine& engine, const Map& g,
+                                        const std::vector<Dart>& hook_darts,
+                                        ApplicationObserver* observer) {
   Map h = g;
-  SchemeApplication a = e.apply(h, hook_darts);
+  SchemeApplication a = apply(engine, h, hook_darts, observer);
   return {std::move(h), std::move(a)};
 }
 

@@ -1,6 +1,8 @@
 // The Jerboa rule-scheme application engine (thesis §4.3.4, §6.3.4).
 //
-// Given a scheme S of parameter <o> and one dart per hook (hooks[0] = reference hook):
+// `apply(engine, g, hooks)` applies a scheme at one hook set: in place on a `Map&`, on a copy
+// (returned with the report) on a `const Map&` (docs/architecture.md, "Applying rules"). Given a
+// scheme S of parameter <o> and one dart per hook (hooks[0] = reference hook):
 //  1. hook orbit: O = G<t>(d_ref), t = label of the reference hook (Alg. 4), darts indexed b = 0..s-1,
 //     nb(b,p) = index of O[b]@t[p];
 //  2. other hooks: orbit isomorphism (Alg. 5, orbit_isomorphism in model/core/orbit.hpp) of
@@ -87,6 +89,17 @@ class ApplicationObserver {
   virtual void after_rewrite(const Map& g, const SchemeApplication& app, const OrbitGraph& O) = 0;
 };
 
+class SchemeEngine;
+
+// S applied at `hook_darts` (hook_darts[k] is the dart for hooks[k]), in g. `observer` (optional)
+// sees the rewrite (embeddings, model/expr/propagation.hpp; events, checker/events/event_log.hpp).
+SchemeApplication apply(const SchemeEngine& engine, Map& g, const std::vector<Dart>& hook_darts,
+                        ApplicationObserver* observer = nullptr);
+// The same on a copy of g: the result map (the copy unchanged when not applicable) and the report.
+std::pair<Map, SchemeApplication> apply(const SchemeEngine& engine, const Map& g,
+                                        const std::vector<Dart>& hook_darts,
+                                        ApplicationObserver* observer = nullptr);
+
 // A scheme prepared for repeated application.
 class SchemeEngine {
  public:
@@ -98,10 +111,6 @@ class SchemeEngine {
   // Empty when the scheme satisfies I_S(0..n); else the reason it is never applicable.
   const std::string& not_combinatorial() const { return not_combinatorial_; }
 
-  // Applies in place. `hook_darts[k]` is the dart for hooks[k].
-  SchemeApplication apply(Map& g, const std::vector<Dart>& hook_darts,
-                          ApplicationObserver* observer = nullptr) const;
-
   // The tables of phases 5-7, for the whole-component path (component_rewrite.hpp).
   static constexpr uint32_t kAdded = UINT32_MAX;
   uint32_t right_source(uint32_t v) const { return r_source_[v]; }  // L node of R node v, or kAdded
@@ -111,7 +120,12 @@ class SchemeEngine {
   const std::vector<uint32_t>& hook_nodes() const { return hooks_; }
 
  private:
-  // The phases of apply, numbered as in the header comment. check_call throws on misuse; a check
+  friend SchemeApplication apply(const SchemeEngine&, Map&, const std::vector<Dart>&,
+                                 ApplicationObserver*);
+  // Phases 1-7 in g.
+  SchemeApplication rewrite(Map& g, const std::vector<Dart>& hook_darts,
+                            ApplicationObserver* observer) const;
+  // The phases of rewrite, numbered as in the header comment. check_call throws on misuse; a check
   // that fails marks `res` as not applicable and returns false.
   void check_call(const Map& g, const std::vector<Dart>& hook_darts) const;
   OrbitGraph hook_orbit(const Map& g, const std::vector<Dart>& hook_darts, SchemeApplication& res) const;  // 1
@@ -142,11 +156,6 @@ class SchemeEngine {
   size_t num_added_ = 0;
   std::string not_combinatorial_;
 };
-
-SchemeApplication apply_scheme_in_place(Map& g, const RuleScheme& s, const std::vector<Dart>& hook_darts);
-// Copy-based wrapper: the result map (a copy of g, unchanged when not applicable) and the report.
-std::pair<Map, SchemeApplication> apply_scheme(const Map& g, const RuleScheme& s,
-                                               const std::vector<Dart>& hook_darts);
 
 // Incident arcs I_S(d) for d in 0..n (thesis Alg. 1 on the core): the first failure as text, or "".
 std::string incident_arcs_problem(const RuleScheme& s);

@@ -124,7 +124,8 @@ std::optional<std::vector<Node>> propagate_match(const WordRuleScheme& S, const 
   return m;
 }
 
-WordSchemeApplication apply_word_scheme(const Map& g, const WordRuleScheme& S, const std::vector<PathWord>& W, Dart d) {
+WordSchemeInstance instantiate_at(const Map& g, const WordRuleScheme& S, const std::vector<PathWord>& W,
+                                  Dart d) {
   if (!g.alive(d)) throw Error(ErrorCode::Usage, "no dart " + std::to_string(d), "hook dart");
   const DGraph G = to_dgraph(g);
   const std::vector<Dart> darts = g.darts();  // node k of G is darts[k]
@@ -135,8 +136,7 @@ WordSchemeApplication apply_word_scheme(const Map& g, const WordRuleScheme& S, c
   if (!m) throw Error(ErrorCode::Usage, "the instantiated left-hand side does not match at the hook", "dart " + std::to_string(d));
   std::vector<Dart> match;
   for (Node x : *m) match.push_back(darts[x]);
-  MapDerivation res = apply_to_map(rule, g, match);
-  return WordSchemeApplication{std::move(Pv), std::move(rule), std::move(match), std::move(res)};
+  return WordSchemeInstance{std::move(Pv), std::move(rule), std::move(match)};
 }
 
 }  // namespace gmr::words

@@ -84,13 +84,15 @@ Rule instantiate_word_rule(const WordRuleScheme& S, const PatternGraph& P);
 std::optional<std::vector<Node>> propagate_match(const WordRuleScheme& S, const PatternGraph& P, const Rule& inst,
                                                  const DGraph& G);
 
-struct WordSchemeApplication {
-  PatternGraph pattern;     // P_v
+// S instantiated at dart d of g with the word set W: a concrete rule and its match in g, applied
+// by rewrite::apply (model/rewrite/dpo.hpp; docs/architecture.md, "Applying rules").
+struct WordSchemeInstance {
+  PatternGraph pattern;     // P_v, the component of P_(G,W) holding d
   Rule rule;                // ι(S, P_v)
   std::vector<Dart> match;  // per L node of `rule`
-  MapDerivation result;     // DPO on the map (apply_to_map)
 };
-// Applies S at dart d of g with the word set W. Throws Error(Usage) when the propagated match fails.
-WordSchemeApplication apply_word_scheme(const Map& g, const WordRuleScheme& S, const std::vector<PathWord>& W, Dart d);
+// Throws Error(Usage) when d is not a dart of g or the propagated match fails.
+WordSchemeInstance instantiate_at(const Map& g, const WordRuleScheme& S, const std::vector<PathWord>& W,
+                                  Dart d);
 
 }  // namespace gmr::words

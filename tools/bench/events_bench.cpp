@@ -12,7 +12,7 @@
 //              merges the two volumes and their border faces: Jerboa's MergeHFaces, from the
 //              Jerboa fixture tools/data/jerboa/JerboaTrackingOrbit.jme.
 // Objects of about 10^3 to 10^6 darts. For each (scenario, size, orbit type) three benchmarks:
-//   apply     the application alone (SchemeEngine::apply);
+//   apply     the application alone (scheme::apply);
 //   static    the application with the event log of that orbit type (static events computed once,
 //             outside the timing; confirmation, naming of the touched orbits);
 //   dynamic   snapshot of G (orbit names and links), the application, the comparison with H.
@@ -86,7 +86,7 @@ Case local_split_case(double darts) {
 // The cube subdivided until it has about `darts` darts (48 * 4^k).
 Case split_case(double darts) {
   Case c{make_cube(), std::make_unique<SchemeEngine>(library_rule("quad_subdivision")), {0}};
-  while (static_cast<double>(c.object.size()) * 4 <= darts * 1.3) c.engine->apply(c.object, {0});
+  while (static_cast<double>(c.object.size()) * 4 <= darts * 1.3) scheme::apply(*c.engine, c.object, {0});
   return c;
 }
 // A stack of k cubes (48 darts each); the hook is a dart of the middle shared face.
@@ -101,7 +101,8 @@ Case merge_case(double darts) {
     if (!c.object.is_free(3, d) && d < c.object.alpha(3, d)) shared.push_back(d);
   c.hooks = {shared[shared.size() / 2]};
   Map probe = c.object;
-  if (!c.engine->apply(probe, c.hooks)) throw std::runtime_error("MergeHFaces does not apply to the stack");
+  if (!scheme::apply(*c.engine, probe, c.hooks))
+    throw std::runtime_error("MergeHFaces does not apply to the stack");
   return c;
 }
 
@@ -144,19 +145,21 @@ void run(benchmark::State& state, const std::string& scenario, Factory f, double
   auto step = [&](const Case& k, Map& g) {
     switch (m) {
       case Method::Apply: {
-        const auto app = k.engine->apply(g, k.hooks);
+        const auto app = scheme::apply(*k.engine, g, k.hooks);
         benchmark::DoNotOptimize(app.applied);
         break;
       }
       case Method::Static: {
-        const auto la = apply_with_events(*k.engine, st, g, k.hooks);
-        events = la.log.orbits[0].events.size();
-        traversed = la.log.orbits[0].traversed;
+        EventRecorder recorder(k.engine->scheme(), st);
+        scheme::apply(*k.engine, g, k.hooks, &recorder);
+        const EventLog& log = recorder.logs().back();
+        events = log.orbits[0].events.size();
+        traversed = log.orbits[0].traversed;
         break;
       }
       case Method::Dynamic: {
         const OrbitSnapshot before = snapshot(g, o);
-        const auto app = k.engine->apply(g, k.hooks);
+        const auto app = scheme::apply(*k.engine, g, k.hooks);
         events = dynamic_events(before, g, &app.match).size();
         break;
       }

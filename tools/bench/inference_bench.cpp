@@ -15,6 +15,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
@@ -48,8 +49,8 @@ Example powell_sabin() {
   Example ex;
   ex.before = make_polygon(3);
   ex.after = ex.before;
-  for (Dart e : {Dart{0}, Dart{2}, Dart{4}}) scheme::apply_scheme_in_place(ex.after, vi, {e});
-  scheme::apply_scheme_in_place(ex.after, ft, {0});
+  for (Dart e : {Dart{0}, Dart{2}, Dart{4}}) scheme::apply(scheme::SchemeEngine(vi), ex.after, {e});
+  scheme::apply(scheme::SchemeEngine(ft), ex.after, {0});
   ex.mapping = identity_mapping(ex.before, ex.after);
   ex.orbit = OrbitType{0, 1, 2};
   ex.right_nodes = 6;
@@ -62,7 +63,7 @@ Example doo_sabin_3() {
   Example ex;
   ex.before = make_cube();
   ex.after = ex.before;
-  for (int k = 0; k < 3; ++k) scheme::apply_scheme_in_place(ex.after, ds, {0});
+  for (int k = 0; k < 3; ++k) scheme::apply(scheme::SchemeEngine(ds), ex.after, {0});
   ex.mapping = identity_mapping(ex.before, ex.after);
   ex.orbit = OrbitType{0, 1, 2};
   ex.right_nodes = 64;
@@ -88,7 +89,7 @@ Example quad_torus(size_t w, size_t h) {
   Example ex;
   ex.before = make_torus(w, h);
   ex.after = ex.before;
-  scheme::apply_scheme_in_place(ex.after, qs, {0});
+  scheme::apply(scheme::SchemeEngine(qs), ex.after, {0});
   ex.mapping = identity_mapping(ex.before, ex.after);
   ex.orbit = OrbitType{0, 1, 2};
   ex.right_nodes = 4;
@@ -119,7 +120,8 @@ size_t naive(const Example& ex) {
     if (!r.accepted()) continue;
     std::vector<Dart> hooks;
     for (uint32_t h : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[h][0]);
-    auto [got, app] = scheme::apply_scheme(ex.before, r.scheme, hooks);
+    auto [got, app] =
+        scheme::apply(scheme::SchemeEngine(r.scheme), std::as_const(ex.before), hooks);
     if (app.applied && is_isomorphic(got, ex.after)) ++confirmed;
   }
   return confirmed;

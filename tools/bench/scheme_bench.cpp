@@ -131,7 +131,7 @@ Fixture& fixture() {
     Map g = gmr::make_torus(5, 7);
     CMap c;
     to_cgal(g, c);
-    if (!f->engine->apply(g, {0}).applied) std::abort();
+    if (!scheme::apply(*f->engine, g, {0}).applied) std::abort();
     cgal_quad_subdivision(c);
     const bool iso = gmr::is_isomorphic(g, from_cgal(c));
     std::fprintf(stderr, "[bench] quadsub on torus 5x7: gmr and CGAL results %s\n", iso ? "isomorphic" : "DIFFER");
@@ -142,7 +142,7 @@ Fixture& fixture() {
   to_cgal(f->torus, f->ctorus);
   Map g = f->torus;
   CMap c(f->ctorus);
-  if (!f->engine->apply(g, {0}).applied) std::abort();
+  if (!scheme::apply(*f->engine, g, {0}).applied) std::abort();
   cgal_quad_subdivision(c);
   const bool gv = gmr::is_valid(g), cv = c.is_valid(), same = same_cells(g, c);
   std::fprintf(stderr, "[bench] quadsub on torus %zux%zu: %zu -> %zu darts (CGAL %zu), valid gmr=%d cgal=%d, cell counts %s\n",
@@ -158,7 +158,7 @@ void quadsub_gmr(benchmark::State& state) {
     state.PauseTiming();
     Map g = f.torus;
     state.ResumeTiming();
-    const gmr::scheme::SchemeApplication a = f.engine->apply(g, {0});
+    const gmr::scheme::SchemeApplication a = scheme::apply(*f.engine, g, {0});
     benchmark::DoNotOptimize(a.darts_added);
     added += a.darts_added;
     state.PauseTiming();

@@ -88,7 +88,7 @@ struct GmrSubdivision {
   bool run(gmr::EmbeddedMap& m) const {
     for (int k = 0; k < kIterations; ++k) {
       gmr::expr::EmbeddingPropagation p(compiled, m);
-      gmr::expr::apply_everywhere_embedded(engine, p, m);
+      gmr::scheme::apply_everywhere(engine, m.map, {.keep_tables = false, .observer = &p});
       if (p.issue_count() != 0) return false;
     }
     return true;
@@ -131,7 +131,8 @@ void run_gmr_topology(benchmark::State& state, const char* rule) {
     state.PauseTiming();
     gmr::Map g = f.map.map;
     state.ResumeTiming();
-    for (int k = 0; k < kIterations; ++k) gmr::scheme::apply_everywhere(engine, g, /*keep_tables=*/false);
+    for (int k = 0; k < kIterations; ++k)
+      gmr::scheme::apply_everywhere(engine, g, {.keep_tables = false});
     benchmark::DoNotOptimize(g.size());
   }
 }
@@ -143,7 +144,7 @@ void run_link_floor(benchmark::State& state, const char* rule) {
   std::vector<size_t> sizes{f.map.map.capacity()};  // darts before each iteration, and after the last
   gmr::Map g = f.map.map;
   for (int k = 0; k < kIterations; ++k) {
-    gmr::scheme::apply_everywhere(engine, g, /*keep_tables=*/false);
+    gmr::scheme::apply_everywhere(engine, g, {.keep_tables = false});
     sizes.push_back(g.capacity());
   }
   const int dims = g.dimension() + 1;

@@ -60,14 +60,15 @@ bool log_concrete_application(const Rule& r, const Map& g, const std::vector<Dar
   for (const std::string& h : s.hooks) hooks.push_back(md[*s.left.find(h)]);
   const events::StaticEvents st = events::analyse(s, types);
   Map h = g;
-  events::LoggedApplication la = events::apply_with_events(engine, st, h, hooks);
-  if (!la.application) {
-    std::cout << r.name() << " as a scheme on <>: " << la.application.why << "\n";
+  events::EventRecorder recorder(s, st);
+  const scheme::SchemeApplication app = scheme::apply(engine, h, hooks, &recorder);
+  if (!app) {
+    std::cout << r.name() << " as a scheme on <>: " << app.why << "\n";
     return false;
   }
-  write_output(log_file, io::dump_json(events::event_log_to_json(s, st, la.log)));
+  write_output(log_file, io::dump_json(events::event_log_to_json(s, st, recorder.logs().back())));
   d.H = std::move(h);
-  d.comatch = la.application.comatch;
+  d.comatch = app.comatch;
   return true;
 }
 
@@ -126,7 +127,7 @@ int run_apply(const ApplyArgs& a) {
   for (Node v : chosen->node) md.push_back(darts[v]);
   MapDerivation d;
   try {
-    d = apply_in_map(r, g, md);
+    d = apply(r, g, md);
   } catch (const Error& e) {
     if (e.code() != ErrorCode::InvalidMap) throw;
     std::cout << "the result is not a map: " << e.location() << ": " << e.message() << "\n";

@@ -100,12 +100,13 @@ std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, Map& g, const 
   const std::vector<Dart> hooks = a.hooks.empty() ? std::vector<Dart>{} : parse_hooks(a.hooks, g);
   SchemeApplication app;
   if (a.events.empty()) {
-    app = engine.apply(g, hooks, obs);  // wrong count, dead dart: Error (exit 2)
+    app = scheme::apply(engine, g, hooks, obs);  // wrong count, dead dart: Error (exit 2)
   } else {
     const events::StaticEvents st = events::analyse(s, parse_orbit_list(a.orbits));
-    events::LoggedApplication la = events::apply_with_events(engine, st, g, hooks, obs);
-    app = std::move(la.application);
-    if (app) write_output(a.events, io::dump_json(events::event_log_to_json(s, st, la.log)));
+    events::EventRecorder recorder(s, st, obs);
+    app = scheme::apply(engine, g, hooks, &recorder);
+    if (app)
+      write_output(a.events, io::dump_json(events::event_log_to_json(s, st, recorder.logs().back())));
   }
   if (!app) {
     print_not_applicable(s, a, app.reason, app.why, s.name + ": " + app.why);
@@ -129,8 +130,9 @@ std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, Map& g, c
     st = events::analyse(s, parse_orbit_list(a.orbits));
     recorder.emplace(s, *st, obs);
   }
-  EverywhereApplication all = apply_everywhere(engine, g, /*keep_tables=*/a.json,
-                                               recorder ? &*recorder : obs);  // tables only with --json
+  // Tables only with --json.
+  EverywhereApplication all =
+      apply_everywhere(engine, g, {.keep_tables = a.json, .observer = recorder ? &*recorder : obs});
   if (recorder && !all.applications.empty())
     write_output(a.events, io::dump_json(events::event_logs_to_json(s, *st, recorder->logs())));
   if (all.applications.empty()) {

@@ -44,7 +44,7 @@ TEST(ConcreteScheme, UnsewOnTheGridAgreesWithDpoAndOracle) {
   Map& g = m.map;
   const Dart a = edge_dart(m, {1, 1, 0}, {1, 2, 0});
   const std::vector<Dart> match = {a, g.alpha(0, a), g.alpha(2, a), g.alpha(0, g.alpha(2, a))};  // a b c d
-  const rewrite::MapDerivation dpo = rewrite::apply_in_map(r, g, match);
+  const rewrite::MapDerivation dpo = rewrite::apply(r, g, match);
   const Checked c = apply_checked(scheme_of_concrete_rule(r), g, {a});
   expect_oracle_agrees(c);
   EXPECT_EQ(c.logged.application.match, match);

@@ -56,7 +56,7 @@ TEST(EventLogNaming, TheComponentIsTraversedOncePerSide) {
   ASSERT_FALSE(st.orbits[0].left.complete[0]);
   const scheme::SchemeEngine engine(rule);
   ASSERT_EQ(s.g.size(), 144u);
-  const LoggedApplication la = apply_with_events(engine, st, s.g, {s.hook});
+  const LoggedApplication la = apply_logged(engine, st, s.g, {s.hook});
   ASSERT_TRUE(la.application) << la.application.why;
   EXPECT_EQ(s.g.size(), 112u);
   EXPECT_EQ(la.log.orbits[0].traversed, 144u + 112u);
@@ -70,8 +70,8 @@ TEST(EventLogNaming, RepeatedApplicationsGiveTheSameLog) {
   const StaticEvents st = analyse(rule, {OrbitType{0, 1}});
   const scheme::SchemeEngine engine(rule);
   Stack a, b;
-  const LoggedApplication first = apply_with_events(engine, st, a.g, {a.hook});
-  const LoggedApplication second = apply_with_events(engine, st, b.g, {b.hook});
+  const LoggedApplication first = apply_logged(engine, st, a.g, {a.hook});
+  const LoggedApplication second = apply_logged(engine, st, b.g, {b.hook});
   ASSERT_TRUE(first.application && second.application);
   EXPECT_GT(first.log.orbits[0].traversed, 0u);
   EXPECT_EQ(first.log.orbits[0].traversed, second.log.orbits[0].traversed);

@@ -28,6 +28,21 @@ inline std::filesystem::path event_data(const std::string& name) {
   return source_dir() / "checker/events/tests/data" / name;
 }
 
+struct LoggedApplication {
+  scheme::SchemeApplication application;
+  EventLog log;  // empty orbits when the scheme was not applied
+};
+
+// Applies `engine` at `hooks` in g with the event log of `analysis` (EventRecorder).
+inline LoggedApplication apply_logged(const scheme::SchemeEngine& engine,
+                                      const StaticEvents& analysis, Map& g,
+                                      const std::vector<Dart>& hooks) {
+  EventRecorder recorder(engine.scheme(), analysis);
+  LoggedApplication out{scheme::apply(engine, g, hooks, &recorder), {}};
+  if (out.application) out.log = std::move(recorder.logs().back());
+  return out;
+}
+
 // A logged application and the dynamic detector's verdict for each analysed orbit type.
 struct Checked {
   LoggedApplication logged;
@@ -46,7 +61,7 @@ inline Checked apply_checked(const scheme::RuleScheme& s, Map& g, const std::vec
   std::vector<OrbitSnapshot> before;
   for (const auto& t : st.orbits) before.push_back(snapshot(g, t.orbit));
   const scheme::SchemeEngine engine(s);
-  Checked c{apply_with_events(engine, st, g, hooks), {}};
+  Checked c{apply_logged(engine, st, g, hooks), {}};
   if (!c.logged.application) return c;
   for (size_t t = 0; t < st.orbits.size(); ++t)
     c.dynamic.push_back(dynamic_events(before[t], g, &c.logged.application.match));

@@ -1,5 +1,5 @@
 // Embeddings through the whole-component path (propagation.hpp, "Whole components") against the
-// general path (one SchemeEngine::apply per visited dart with EmbeddingPropagation as observer):
+// general path (one scheme::apply per visited dart with EmbeddingPropagation as observer):
 // the same map dart for dart, the same value on every dart of every embedding, the same issues.
 #include <gtest/gtest.h>
 
@@ -58,10 +58,11 @@ Outcome run(const scheme::SchemeEngine& engine, const CompiledScheme& cs, Embedd
   Outcome out;
   EmbeddingPropagation p(cs, m);
   try {
-    if (by_components)
-      scheme::apply_everywhere_by_components(engine, m.map, false, &p);
-    else
-      scheme::apply_everywhere_at_each_dart(engine, m.map, false, &p);
+    scheme::apply_everywhere(engine, m.map,
+                             {.keep_tables = false,
+                              .observer = &p,
+                              .path = by_components ? scheme::EverywherePath::ByComponents
+                                                    : scheme::EverywherePath::AtEachDart});
   } catch (const Error&) {
     out.threw = true;
   }

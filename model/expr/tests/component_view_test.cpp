@@ -58,10 +58,18 @@ Map random_surface(uint64_t seed) {
 }
 
 // Before each component's rewrite: the view built and compared with the component on the map.
-class ViewChecker : public scheme::ComponentObserver {
+// Applied by components only: it fails when it sees an application at one dart.
+class ViewChecker : public scheme::ApplicationObserver, public scheme::ComponentObserver {
  public:
   ViewChecker(const CompiledScheme& cs, const EmbeddedMap& m) : cs_(cs), m_(m) {}
   size_t components = 0, evaluations = 0, read_in_place = 0;
+
+  void before_rewrite(const Map&, const scheme::SchemeApplication&,
+                      const scheme::OrbitGraph&) override {
+    ADD_FAILURE() << "applied at one dart";
+  }
+  void after_rewrite(const Map&, const scheme::SchemeApplication&,
+                     const scheme::OrbitGraph&) override {}
 
   void before_rewrite(const Map& g, const scheme::ComponentInstance& c) override {
     const scheme::RuleScheme& s = *cs_.scheme;
@@ -125,7 +133,9 @@ TEST(ComponentView, LinksSlotsAndValuesAreTheComponentsNumberedByOrbitDart) {
       EmbeddedMap m = random_positions(rng, random_surface(seed));
       ASSERT_TRUE(scheme::rewrites_whole_components(engine, m.map));
       ViewChecker check(cs, m);
-      scheme::apply_everywhere_by_components(engine, m.map, false, &check);
+      scheme::apply_everywhere(
+          engine, m.map,
+          {.keep_tables = false, .observer = &check, .path = scheme::EverywherePath::ByComponents});
       EXPECT_GT(check.components, 0u) << file << ", seed " << seed;
       EXPECT_GT(check.evaluations, 0u) << file << ", seed " << seed;
       whole += check.read_in_place;
@@ -154,7 +164,7 @@ TEST(ComponentView, AnEvaluationErrorNamesADartOfTheMap) {
     const EmbeddedMap before = m;
     EmbeddingPropagation p(cs, m);
     try {
-      apply_everywhere_embedded(engine, p, m);
+      scheme::apply_everywhere(engine, m.map, {.keep_tables = false, .observer = &p});
       ADD_FAILURE() << "seed " << seed << ": no error for a vertex without position";
     } catch (const Error& e) {
       std::smatch match;
@@ -191,8 +201,12 @@ TEST(ComponentView, ValuesAreTheGeneralPathsBitForBitWhenNothingIsFused) {
     EmbeddedMap b = a;
     for (int iteration = 0; iteration < 2; ++iteration) {
       EmbeddingPropagation pa(cs, a), pb(cs, b);
-      scheme::apply_everywhere_by_components(engine, a.map, false, &pa);
-      scheme::apply_everywhere_at_each_dart(engine, b.map, false, &pb);
+      scheme::apply_everywhere(
+          engine, a.map,
+          {.keep_tables = false, .observer = &pa, .path = scheme::EverywherePath::ByComponents});
+      scheme::apply_everywhere(
+          engine, b.map,
+          {.keep_tables = false, .observer = &pb, .path = scheme::EverywherePath::AtEachDart});
       ASSERT_EQ(a.map.capacity(), b.map.capacity());
       for (Dart d = 0; d < a.map.capacity(); ++d) {
         if (!a.map.alive(d)) continue;
@@ -228,7 +242,9 @@ TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
     m.fields.push_back(std::move(shade));
     const EmbeddedMap before = m;
     EmbeddingPropagation p(cs, m);
-    EXPECT_THROW(apply_everywhere_embedded(engine, p, m), Error) << "seed " << seed;
+    EXPECT_THROW(scheme::apply_everywhere(engine, m.map, {.keep_tables = false, .observer = &p}),
+                 Error)
+        << "seed " << seed;
     ASSERT_GT(before.fields[0].values.num_values(), 0u);
     EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values()) << "seed " << seed;
     EXPECT_EQ(m.fields[1].values.num_values(), before.fields[1].values.num_values()) << "seed " << seed;

@@ -221,7 +221,8 @@ TEST(ExpressionPropagation, VertexInsertionGivesMidpoints) {
   const CompiledScheme cs = compile_scheme(s);
   Square sq;
   EmbeddingPropagation p(cs, sq.m);
-  const auto all = apply_everywhere_embedded(scheme::SchemeEngine(s), p, sq.m);
+  const auto all = scheme::apply_everywhere(scheme::SchemeEngine(s), sq.m.map,
+                                            {.keep_tables = false, .observer = &p});
   EXPECT_EQ(all.count(), 4u);
   EXPECT_EQ(p.issue_count(), 0u);
   EXPECT_TRUE(sq.m.find("position")->values.check(sq.m.map).empty());
@@ -241,7 +242,7 @@ TEST(ExpressionPropagation, NewOrbitWithoutValueIsReported) {
   const CompiledScheme cs = compile_scheme(s);
   Square sq;
   EmbeddingPropagation p(cs, sq.m);
-  scheme::SchemeEngine(s).apply(sq.m.map, {0}, &p);
+  scheme::apply(scheme::SchemeEngine(s), sq.m.map, {0}, &p);
   ASSERT_EQ(p.issue_count(), 1u);
   EXPECT_EQ(p.issues()[0].code, "E-no-value");
 }
@@ -264,14 +265,14 @@ TEST(ExpressionPropagation, TwoValuesOnOneOrbitAreReported) {
   Square sq;
   const Dart d = 0, e = sq.m.map.alpha(1, 0);  // one vertex
   EmbeddingPropagation p(cs, sq.m);
-  ASSERT_TRUE(scheme::SchemeEngine(s).apply(sq.m.map, {d, e}, &p));
+  ASSERT_TRUE(scheme::apply(scheme::SchemeEngine(s), sq.m.map, {d, e}, &p));
   ASSERT_EQ(p.issue_count(), 1u);
   EXPECT_EQ(p.issues()[0].code, "E-overlap");
   // Two different vertices: no overlap, each vertex moves.
   Square sq2;
   const Dart f = sq2.m.map.alpha(0, 0);
   EmbeddingPropagation q(cs, sq2.m);
-  ASSERT_TRUE(scheme::SchemeEngine(s).apply(sq2.m.map, {d, f}, &q));
+  ASSERT_TRUE(scheme::apply(scheme::SchemeEngine(s), sq2.m.map, {d, f}, &q));
   EXPECT_EQ(q.issue_count(), 0u);
   EXPECT_EQ(sq2.m.find("position")->values.get(sq2.m.map.alpha(1, 0))[2], 1.0);  // the whole vertex
   EXPECT_EQ(sq2.m.find("position")->values.get(f)[2], 2.0);

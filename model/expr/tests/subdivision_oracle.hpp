@@ -55,7 +55,8 @@ inline io::FaceList gmr_subdivide(const std::string& off, Method method, int ite
   EmbeddedMap m = io::read_off_file(off);
   for (int k = 0; k < iterations; ++k) {
     EmbeddingPropagation p(cs, m);
-    const auto all = apply_everywhere_embedded(engine, p, m);
+    const auto all =
+        scheme::apply_everywhere(engine, m.map, {.keep_tables = false, .observer = &p});
     EXPECT_GT(all.count(), 0u);
     EXPECT_EQ(p.issue_count(), 0u) << (p.issues().empty() ? "" : p.issues()[0].message);
   }

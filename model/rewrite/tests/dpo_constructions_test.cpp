@@ -28,7 +28,8 @@ TEST(DpoConstructions, CategoricalEqualsInPlaceOnEveryApplication) {
         for (const Match& m : find_matches(r.left(), fam.graphs[g], 50)) {
           if (!satisfies_gluing(r, fam.graphs[g], m)) continue;
           ++applications;
-          const Derivation a = derive(r, fam.graphs[g], m), b = derive_in_place(r, fam.graphs[g], m);
+          const Derivation a = derive(r, fam.graphs[g], m),
+                           b = derive(r, fam.graphs[g], m, Construction::Rewriting);
           std::string why;
           ASSERT_TRUE(same_derivation(a, b, &why)) << why;
           EXPECT_EQ(a.D.num_nodes(), fam.graphs[g].num_nodes() - r.deleted_nodes().size());
@@ -37,12 +38,12 @@ TEST(DpoConstructions, CategoricalEqualsInPlaceOnEveryApplication) {
           bool ok1 = true, ok2 = true;
           MapDerivation x, y;
           try {
-            x = apply_in_map(r, fam.maps[g], md);
+            x = apply(r, fam.maps[g], md, Construction::Rewriting);
           } catch (const Error&) {
             ok1 = false;
           }
           try {
-            y = apply_to_map(r, fam.maps[g], md);
+            y = apply(r, fam.maps[g], md, Construction::Categorical);
           } catch (const Error&) {
             ok2 = false;
           }

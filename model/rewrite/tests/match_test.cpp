@@ -65,7 +65,8 @@ TEST(Dpo, SewOnMapsBothWays) {
   g.link(0, 0, 1);
   g.link(0, 2, 3);
   const std::vector<Dart> m{0, 1, 2, 3};
-  const MapDerivation a = apply_in_map(r, g, m), b = apply_to_map(r, g, m);
+  const MapDerivation a = apply(r, g, m, Construction::Rewriting),
+                      b = apply(r, g, m, Construction::Categorical);
   EXPECT_TRUE(is_valid(a.H));
   EXPECT_TRUE(is_isomorphic(a.H, b.H));
   EXPECT_EQ(a.H.alpha(2, 0), 2u);
@@ -93,7 +94,7 @@ TEST(Dpo, DanglingArcIsNamed) {
     EXPECT_EQ(e.code(), ErrorCode::Usage);
     EXPECT_EQ(e.location(), "match of a");
   }
-  EXPECT_THROW(apply_in_map(r, g, {0}), Error);
+  EXPECT_THROW(apply(r, g, {0}), Error);
 }
 
 TEST(Dpo, NonCombinatorialResultIsAnError) {
@@ -107,6 +108,6 @@ TEST(Dpo, NonCombinatorialResultIsAnError) {
   const Rule r(L, R, 1);
   Map g(1);
   g.add_darts(1);
-  EXPECT_THROW(apply_in_map(r, g, {0}), Error);
-  EXPECT_THROW(apply_to_map(r, g, {0}), Error);
+  EXPECT_THROW(apply(r, g, {0}), Error);
+  EXPECT_THROW(apply(r, g, {0}, Construction::Categorical), Error);
 }

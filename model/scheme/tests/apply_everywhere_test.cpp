@@ -27,7 +27,7 @@ Map disjoint_union(const Map& a, const Map& b) {
 Map replay(const Map& g0, const RuleScheme& s, const std::vector<Dart>& hooks) {
   Map g = g0;
   const SchemeEngine e(s);
-  for (Dart d : hooks) EXPECT_TRUE(e.apply(g, {d}).applied);
+  for (Dart d : hooks) EXPECT_TRUE(scheme::apply(e, g, {d}).applied);
   return g;
 }
 
@@ -78,7 +78,8 @@ TEST(ApplyEverywhere, VertexInsertionOncePerEdge) {
   EXPECT_TRUE(same_links(g, replay(cube, vertex_insertion(), all.hooks)));
 
   Map h = cube;
-  const EverywhereApplication lean = apply_everywhere(SchemeEngine(vertex_insertion()), h, false);
+  const EverywhereApplication lean =
+      apply_everywhere(SchemeEngine(vertex_insertion()), h, {.keep_tables = false});
   EXPECT_EQ(lean.hooks, all.hooks);
   EXPECT_TRUE(lean.applications.front().match.empty());
   EXPECT_TRUE(same_links(g, h));

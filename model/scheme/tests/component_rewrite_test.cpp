@@ -1,5 +1,5 @@
 // The whole-component path of apply_everywhere (component_rewrite.hpp) against one
-// SchemeEngine::apply per visited dart: the same map dart for dart, the same applications.
+// scheme::apply per visited dart: the same map dart for dart, the same applications.
 #include "model/scheme/component_rewrite.hpp"
 
 #include <gtest/gtest.h>
@@ -46,12 +46,12 @@ void compare_paths(const Map& g0, const RuleScheme& s, const std::string& where)
   const SchemeEngine e(s);
   ASSERT_TRUE(rewrites_whole_components(e, g0)) << where;
   Map a = g0, b = g0;
-  const EverywhereApplication x = apply_everywhere_by_components(e, a, /*keep_tables=*/true);
-  const EverywhereApplication y = apply_everywhere_at_each_dart(e, b, /*keep_tables=*/true);
+  const EverywhereApplication x = apply_everywhere(e, a, {.path = EverywherePath::ByComponents});
+  const EverywhereApplication y = apply_everywhere(e, b, {.path = EverywherePath::AtEachDart});
   expect_same_map(a, b, where);
   expect_same_applications(x, y, where);
-  Map c = g0;  // the dispatching entry point takes this path
-  const EverywhereApplication z = apply_everywhere(e, c, /*keep_tables=*/false);
+  Map c = g0;  // the automatic choice takes this path
+  const EverywhereApplication z = apply_everywhere(e, c, {.keep_tables = false});
   expect_same_map(c, b, where + " (apply_everywhere)");
   EXPECT_EQ(z.hooks, y.hooks) << where;
 }
@@ -103,7 +103,9 @@ TEST(ComponentRewrite, OtherSchemesAndMapsTakeTheGeneralPath) {
   g3.add_darts(2);
   EXPECT_FALSE(rewrites_whole_components(SchemeEngine(fixtures::quad_subdivision()), g3));  // dimension
   Map sq = square;
-  EXPECT_THROW(apply_everywhere_by_components(SchemeEngine(fixtures::vertex_insertion()), sq, false), Error);
+  EXPECT_THROW(apply_everywhere(SchemeEngine(fixtures::vertex_insertion()), sq,
+                                {.keep_tables = false, .path = EverywherePath::ByComponents}),
+               Error);
 }
 
 }  // namespace

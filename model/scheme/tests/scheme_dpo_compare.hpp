@@ -1,10 +1,11 @@
 // The defining property of the scheme engine: applying a scheme with the engine gives
 // the same G-map, with the corresponding comatch, as instantiating it on the hook orbit and applying
-// the concrete rule by DPO (model/dpo.hpp, categorical construction `derive` through apply_to_map).
+// the concrete rule by DPO (model/dpo.hpp, categorical construction of `rewrite::apply`).
 // The DPO side computes its own match: the hook instances are anchored on the hook orbit (Alg. 5
 // of model/orbit.hpp for the other hooks) and propagated along the instantiated L by
 // anchored_match (model/match.hpp); the gluing condition is checked by dangling_arcs.
 #pragma once
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,7 @@ struct EngineVsDpo {
 
 inline EngineVsDpo compare_engine_dpo(const Map& g, const RuleScheme& s, const std::vector<Dart>& hooks) {
   EngineVsDpo out;
-  auto [h, a] = apply_scheme(g, s, hooks);
+  auto [h, a] = scheme::apply(scheme::SchemeEngine(s), std::as_const(g), hooks);
   out.engine_applied = a.applied;
   // DPO side.
   const OrbitGraph O = hook_orbit_graph(g, s, hooks.empty() ? 0 : hooks[0]);
@@ -76,7 +77,7 @@ inline EngineVsDpo compare_engine_dpo(const Map& g, const RuleScheme& s, const s
   if (!a.applied) return out;
   std::vector<Dart> match;
   for (Node v : m->node) match.push_back(darts[v]);
-  const MapDerivation md = apply_to_map(r, g, match);
+  const MapDerivation md = rewrite::apply(r, g, match, rewrite::Construction::Categorical);
   // phi: engine result -> DPO result.
   std::vector<Dart> phi(h.capacity(), kNoDart);
   auto assign = [&](Dart x, Dart y) {

@@ -1,6 +1,8 @@
 // Rule schemes: structure, instantiation (Defs. 88–89) and the application engine.
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
@@ -77,7 +79,7 @@ TEST(Instantiation, NodeArcAndRule) {
 
 TEST(Engine, QuadSubdivisionOfCube) {
   Map g = make_cube(2);
-  SchemeApplication a = apply_scheme_in_place(g, quad_subdivision(), {0});
+  SchemeApplication a = scheme::apply(SchemeEngine(quad_subdivision()), g, {0});
   ASSERT_TRUE(a.applied) << a.why;
   EXPECT_EQ(g.size(), 192u);
   EXPECT_TRUE(is_valid(g));
@@ -89,12 +91,12 @@ TEST(Engine, QuadSubdivisionOfCube) {
 
 TEST(Engine, VertexInsertionFreeAndSewnEdge) {
   Map e = make_free_edge(2);
-  auto [h, a] = apply_scheme(e, vertex_insertion(), {0});
+  auto [h, a] = scheme::apply(SchemeEngine(vertex_insertion()), std::as_const(e), {0});
   ASSERT_TRUE(a.applied) << a.why;
   EXPECT_EQ(h.size(), 4u);
   EXPECT_TRUE(is_valid(h));
   Map cube = make_cube(2);
-  auto [h2, a2] = apply_scheme(cube, vertex_insertion(), {0});
+  auto [h2, a2] = scheme::apply(SchemeEngine(vertex_insertion()), std::as_const(cube), {0});
   ASSERT_TRUE(a2.applied);
   EXPECT_EQ(h2.size(), 52u);
   EXPECT_EQ(count_all_cells(h2), (std::vector<size_t>{9, 13, 6}));
@@ -109,24 +111,24 @@ TEST(Engine, SewTwoHooksAndNotApplicable) {
   for (Dart d = 0; d < t2.size(); ++d)
     for (int i = 0; i <= 2; ++i) g.set_alpha(i, off + d, off + t2.alpha(i, d));
   ASSERT_TRUE(is_valid(g));
-  auto [h, a] = apply_scheme(g, sew2(), {0, off});
+  auto [h, a] = scheme::apply(SchemeEngine(sew2()), std::as_const(g), {0, off});
   ASSERT_TRUE(a.applied) << a.why;
   EXPECT_TRUE(is_valid(h));
   EXPECT_EQ(h.alpha(2, 0), off);
   EXPECT_EQ(h.alpha(2, g.alpha(0, 0)), g.alpha(0, off));
   // Sewing again: the 2-loops of L are missing.
-  auto [h3, a3] = apply_scheme(h, sew2(), {0, off});
+  auto [h3, a3] = scheme::apply(SchemeEngine(sew2()), std::as_const(h), {0, off});
   EXPECT_FALSE(a3.applied);
   EXPECT_EQ(a3.reason, NotApplicableReason::MissingExplicitArc);
   EXPECT_NE(a3.why.find("not applicable, because"), std::string::npos);
   // Same orbit for both hooks: not injective.
-  auto [h4, a4] = apply_scheme(g, sew2(), {0, g.alpha(0, 0)});
+  auto [h4, a4] = scheme::apply(SchemeEngine(sew2()), std::as_const(g), {0, g.alpha(0, 0)});
   EXPECT_FALSE(a4.applied);
   EXPECT_EQ(a4.reason, NotApplicableReason::NotInjective);
   // Wrong number of hook darts: usage error.
-  EXPECT_THROW(apply_scheme(g, sew2(), {0}), Error);
+  EXPECT_THROW(scheme::apply(SchemeEngine(sew2()), std::as_const(g), {0}), Error);
   // Quad rule on a 3-G-map: usage error.
-  EXPECT_THROW(apply_scheme(make_cube(3), quad_subdivision(), {0}), Error);
+  EXPECT_THROW(scheme::apply(SchemeEngine(quad_subdivision()), make_cube(3), {0}), Error);
 }
 
 TEST(Engine, HookOrbitsNotIsomorphic) {
@@ -140,7 +142,7 @@ TEST(Engine, HookOrbitsNotIsomorphic) {
   const Dart off = g.add_darts(q.size());
   for (Dart d = 0; d < q.size(); ++d)
     for (int i = 0; i <= 2; ++i) g.set_alpha(i, off + d, off + q.alpha(i, d));
-  auto [h, a] = apply_scheme(g, r, {0, off});
+  auto [h, a] = scheme::apply(SchemeEngine(r), std::as_const(g), {0, off});
   EXPECT_FALSE(a.applied);
   EXPECT_EQ(a.reason, NotApplicableReason::HookOrbitsNotIsomorphic);
   EXPECT_EQ(h.size(), g.size());
@@ -150,7 +152,7 @@ TEST(Engine, NotCombinatorialScheme) {
   RuleScheme r = vertex_insertion();
   r.right.nodes[1].label = ot("<_,2>");  // added node without 1-arc
   Map e = make_free_edge(2);
-  auto [h, a] = apply_scheme(e, r, {0});
+  auto [h, a] = scheme::apply(SchemeEngine(r), std::as_const(e), {0});
   EXPECT_FALSE(a.applied);
   EXPECT_EQ(a.reason, NotApplicableReason::NotCombinatorial);
   EXPECT_NE(a.why.find("added node n1"), std::string::npos);

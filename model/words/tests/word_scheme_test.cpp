@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <utility>
 
 #include "checker/rule_check.hpp"
 #include "model/core/builders.hpp"
@@ -305,12 +306,12 @@ TEST(F10, OmapQuadSubdivisionOnCube) {
   const WordRuleScheme S = quad_omap();
   // All arcs of L deleted at scheme level (R has no loop on a).
   EXPECT_EQ(S.preserved_arcs(), (std::vector<std::optional<uint32_t>>{std::nullopt, std::nullopt}));
-  const WordSchemeApplication app = apply_word_scheme(om, S, kOmapWords, 0);
+  const WordSchemeInstance app = instantiate_at(om, S, kOmapWords, 0);
   EXPECT_EQ(app.pattern.size(), 24u);
   EXPECT_EQ(app.rule.left().num_nodes(), 24u);
   EXPECT_EQ(app.rule.right().num_nodes(), 96u);
   EXPECT_EQ(app.rule.right().num_arcs(), 8u * 24);
-  const Map& H = app.result.H;
+  const Map H = apply(app.rule, om, app.match, Construction::Categorical).H;
   EXPECT_EQ(H.kind(), MapKind::OMap);
   EXPECT_EQ(H.size(), 96u);
   EXPECT_TRUE(is_valid(H));
@@ -326,8 +327,9 @@ TEST(F10, OmapQuadSubdivisionOnCube) {
   // A broken variant (c -> d with word 1 instead of ~1) no longer gives quads.
   WordRuleScheme bad = S;
   bad.right.arcs[2].word = w("1");
-  const WordSchemeApplication app2 = apply_word_scheme(om, bad, kOmapWords, 0);
-  EXPECT_NE(max_face_size(app2.result.H, OrbitType::parse("<1>")), 4u);
+  const WordSchemeInstance app2 = instantiate_at(om, bad, kOmapWords, 0);
+  const Map H2 = apply(app2.rule, om, app2.match, Construction::Categorical).H;
+  EXPECT_NE(max_face_size(H2, OrbitType::parse("<1>")), 4u);
 }
 
 TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
@@ -339,11 +341,11 @@ TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
   EXPECT_FALSE(pres[0].has_value());
   EXPECT_EQ(pres[1], std::optional<uint32_t>{0});
   EXPECT_EQ(pres[2], std::optional<uint32_t>{1});
-  const WordSchemeApplication app = apply_word_scheme(cube, S, kGmapWords, 0);
+  const WordSchemeInstance app = instantiate_at(cube, S, kGmapWords, 0);
   EXPECT_EQ(app.rule.left().num_nodes(), 48u);
   EXPECT_EQ(app.rule.left().num_arcs(), 3u * 48);  // L = N nodes / 3N arcs (a loop counts once)
   EXPECT_EQ(app.rule.right().num_nodes(), 4u * 48);
-  const Map& H = app.result.H;
+  const Map H = apply(app.rule, cube, app.match, Construction::Categorical).H;
   EXPECT_EQ(H.size(), 192u);
   EXPECT_TRUE(is_valid(H));
   EXPECT_EQ(count_all_cells(H), (std::vector<size_t>{26, 48, 24}));
@@ -356,11 +358,13 @@ TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
   EXPECT_TRUE(check_cycle(app.rule, 0, 2, diags));
   // Jerboa-scheme engine on tools/data/rules/quad_subdivision.json.
   const RuleScheme js = read_scheme_file(gmr::testing::source_path("tools/data/rules/quad_subdivision.json"));
-  const auto [J, japp] = apply_scheme(cube, js, {0});
+  const auto [J, japp] = scheme::apply(SchemeEngine(js), std::as_const(cube), {0});
   ASSERT_TRUE(japp.applied) << japp.why;
   EXPECT_EQ(J.size(), 192u);
   EXPECT_TRUE(is_isomorphic(H, J));
   // And differs from a subdivision that is not the same operation (sanity of is_isomorphic).
-  const Map tri = apply_word_scheme(make_tetrahedron(2), S, kGmapWords, 0).result.H;
+  const Map tet = make_tetrahedron(2);
+  const WordSchemeInstance at = instantiate_at(tet, S, kGmapWords, 0);
+  const Map tri = apply(at.rule, tet, at.match, Construction::Categorical).H;
   EXPECT_FALSE(is_isomorphic(H, tri));
 }
