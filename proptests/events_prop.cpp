@@ -11,6 +11,7 @@
 #include "checker/events/static_events.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/core/error.hpp"
+#include "proptests/engine_or_discard.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 #include "proptests/library.hpp"
@@ -67,11 +68,7 @@ void log_equals_dynamic(const SchemeEngine& engine, const StaticEvents& st, size
 void random_scheme_property(const SchemeCase& c) {
   const RuleScheme s = c.build();
   std::optional<SchemeEngine> engine;
-  try {
-    engine.emplace(s);
-  } catch (const Error&) {
-    RC_DISCARD("malformed");
-  }
+  emplace_engine_or_discard(engine, s, "malformed");
   RC_PRE(engine->not_combinatorial().empty());
   RC_PRE(checker::check_scheme(s, {.embeddings = false}).ok());  // events are topological
   log_equals_dynamic(*engine, analyse(s), c.n == 3 ? 2 : 4, 8);
@@ -114,11 +111,7 @@ TEST(EventProps, LogEqualsDynamicOnConcreteRules) {
     RC_PRE(r.kind() == MapKind::GMap);
     const RuleScheme s = scheme_of_concrete_rule(r);
     std::optional<SchemeEngine> engine;
-    try {
-      engine.emplace(s);
-    } catch (const Error&) {
-      RC_DISCARD("not a scheme the engine applies");
-    }
+    emplace_engine_or_discard(engine, s, "not a scheme the engine applies");
     RC_PRE(engine->not_combinatorial().empty());
     log_equals_dynamic(*engine, analyse(s), 6, 16);
   }));

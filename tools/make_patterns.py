@@ -81,6 +81,31 @@ def pattern(positions, corners, faces):
 HEX_FACES = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
 
 
+def pattern_json(darts, alpha, positions, corners, edges):
+    """The gmr.gmap document of a 3-G-map pattern whose darts are (cell, face, vertex, other vertex
+    of the edge) flags: a boundary (3-free) dart is flagged when its vertex is a corner and its edge
+    lies on one of the given edges; positions on the vertices (orbit <1,2,3>)."""
+    n = len(darts)
+
+    def on_edge(v, w):
+        return any(on_segment(positions[v], positions[a], positions[b]) and
+                   on_segment(positions[w], positions[a], positions[b]) for a, b in edges)
+
+    flags = [alpha[3][d] == d and darts[d][2] in corners and on_edge(darts[d][2], darts[d][3]) for d in range(n)]
+    first = {}
+    for d in range(n):
+        first.setdefault(darts[d][2], d)
+    return {
+        "format": "gmr.gmap", "version": 1, "kind": "gmap", "dimension": 3, "darts": n,
+        "alpha": {str(i): alpha[i] for i in range(4)},
+        "embeddings": [
+            {"name": "flag", "orbit": "<>", "values": [{"dart": d, "value": flags[d]} for d in range(n)]},
+            {"name": "position", "orbit": "<1,2,3>",
+             "values": [{"dart": d, "value": positions[v]} for v, d in sorted(first.items())]},
+        ],
+    }
+
+
 def volume_pattern(positions, corners, edges, hexes):
     """A 3-G-map from hexahedra (8 vertex ids each, in coordinate-bit order)."""
     darts = []  # (hex, face index, vertex, other vertex of the edge)
@@ -112,24 +137,7 @@ def volume_pattern(positions, corners, edges, hexes):
         if len(by_face[face_verts[(h, f)]]) > 2:
             raise SystemExit("a face shared by more than two hexahedra")
         alpha[3][d] = index[(other[0][0], other[0][1], v, w)] if other else d
-
-    def on_edge(v, w):
-        return any(on_segment(positions[v], positions[a], positions[b]) and
-                   on_segment(positions[w], positions[a], positions[b]) for a, b in edges)
-
-    flags = [alpha[3][d] == d and darts[d][2] in corners and on_edge(darts[d][2], darts[d][3]) for d in range(n)]
-    first = {}
-    for d in range(n):
-        first.setdefault(darts[d][2], d)
-    return {
-        "format": "gmr.gmap", "version": 1, "kind": "gmap", "dimension": 3, "darts": n,
-        "alpha": {str(i): alpha[i] for i in range(4)},
-        "embeddings": [
-            {"name": "flag", "orbit": "<>", "values": [{"dart": d, "value": flags[d]} for d in range(n)]},
-            {"name": "position", "orbit": "<1,2,3>",
-             "values": [{"dart": d, "value": positions[v]} for v, d in sorted(first.items())]},
-        ],
-    }
+    return pattern_json(darts, alpha, positions, corners, edges)
 
 
 def polyhedral_pattern(positions, corners, edges, volumes):
@@ -167,24 +175,7 @@ def polyhedral_pattern(positions, corners, edges, volumes):
         if len(shared) > 1:
             raise SystemExit("a face shared by more than two volumes")
         alpha[3][d] = index[(shared[0][0], shared[0][1], v, w)] if shared else d
-
-    def on_edge(v, w):
-        return any(on_segment(positions[v], positions[a], positions[b]) and
-                   on_segment(positions[w], positions[a], positions[b]) for a, b in edges)
-
-    flags = [alpha[3][d] == d and darts[d][2] in corners and on_edge(darts[d][2], darts[d][3]) for d in range(n)]
-    first = {}
-    for d in range(n):
-        first.setdefault(darts[d][2], d)
-    return {
-        "format": "gmr.gmap", "version": 1, "kind": "gmap", "dimension": 3, "darts": n,
-        "alpha": {str(i): alpha[i] for i in range(4)},
-        "embeddings": [
-            {"name": "flag", "orbit": "<>", "values": [{"dart": d, "value": flags[d]} for d in range(n)]},
-            {"name": "position", "orbit": "<1,2,3>",
-             "values": [{"dart": d, "value": positions[v]} for v, d in sorted(first.items())]},
-        ],
-    }
+    return pattern_json(darts, alpha, positions, corners, edges)
 
 
 CUBE_EDGES = [(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1]

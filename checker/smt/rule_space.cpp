@@ -3,52 +3,19 @@
 #include <functional>
 #include <string>
 
+#include "model/graph/partial_injections.hpp"
+#include "model/rewrite/small_rules.hpp"
+
 namespace gmr::smt {
 using graph::DGraph;
 using graph::Node;
+using graph::PartialInjection;
+using graph::partial_injections;
 
 namespace {
-using PInj = std::vector<std::pair<Node, Node>>;
-
-std::vector<PInj> partial_injections(size_t m) {
-  std::vector<PInj> out;
-  PInj cur;
-  std::vector<bool> used(m, false);
-  std::function<void(size_t)> rec = [&](size_t s) {
-    if (s == m) {
-      out.push_back(cur);
-      return;
-    }
-    rec(s + 1);
-    for (size_t t = 0; t < m; ++t) {
-      if (used[t]) continue;
-      used[t] = true;
-      cur.emplace_back(static_cast<Node>(s), static_cast<Node>(t));
-      rec(s + 1);
-      cur.pop_back();
-      used[t] = false;
-    }
-  };
-  rec(0);
-  return out;
-}
-
 size_t pinj_count(size_t m) {
   // P(m) = P(m-1) + m * ... : computed by enumeration (m is tiny).
   return partial_injections(m).size();
-}
-
-// Status tuples (0 preserved, 1 deleted, 2 added) in nondecreasing order.
-void status_tuples(size_t nodes, const std::function<void(const std::vector<int>&)>& f) {
-  std::vector<int> st(nodes, 0);
-  std::function<void(size_t, int)> rec = [&](size_t k, int min) {
-    if (k == nodes) return f(st);
-    for (int s = min; s < 3; ++s) {
-      st[k] = s;
-      rec(k + 1, s);
-    }
-  };
-  rec(0, 0);
 }
 }  // namespace
 
@@ -68,7 +35,7 @@ rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, 
     std::vector<Node> perm(m);
     for (size_t k = 0; k < m; ++k) perm[k] = static_cast<Node>(k);
     for (size_t k = m; k > 1; --k) std::swap(perm[k - 1], perm[below(k)]);
-    PInj out;
+    PartialInjection out;
     for (size_t k = 0; k < m; ++k)
       if (below(2)) out.emplace_back(static_cast<Node>(k), perm[k]);
     return out;
@@ -100,7 +67,7 @@ std::string rule_text(const rewrite::Rule& r) {
 
 size_t count_rules(int nodes, size_t labels) {
   size_t total = 0;
-  status_tuples(static_cast<size_t>(nodes), [&](const std::vector<int>& st) {
+  rewrite::for_each_status_tuple(static_cast<size_t>(nodes), [&](const std::vector<int>& st) {
     size_t l = 0, r = 0;
     for (int s : st) {
       l += s != 2;
@@ -115,39 +82,7 @@ size_t count_rules(int nodes, size_t labels) {
 
 size_t for_each_rule(int n, MapKind kind, int max_nodes, const std::vector<int>& labels,
                      const std::function<bool(size_t, const rewrite::Rule&)>& f) {
-  size_t index = 0;
-  bool stop = false;
-  std::vector<std::vector<PInj>> pinj(static_cast<size_t>(max_nodes) + 1);
-  for (size_t m = 0; m <= static_cast<size_t>(max_nodes); ++m) pinj[m] = partial_injections(m);
-  for (int nodes = 1; nodes <= max_nodes && !stop; ++nodes) {
-    status_tuples(static_cast<size_t>(nodes), [&](const std::vector<int>& st) {
-      if (stop) return;
-      std::vector<size_t> ln, rn;
-      for (size_t x = 0; x < st.size(); ++x) {
-        if (st[x] != 2) ln.push_back(x);
-        if (st[x] != 1) rn.push_back(x);
-      }
-      const auto& pl = pinj[ln.size()];
-      const auto& pr = pinj[rn.size()];
-      const size_t per = pl.size() * pr.size();
-      std::vector<size_t> choice(labels.size(), 0);
-      while (!stop) {
-        DGraph L, R;
-        for (size_t x : ln) L.add_node(std::string(1, static_cast<char>('a' + x)));
-        for (size_t x : rn) R.add_node(std::string(1, static_cast<char>('a' + x)));
-        for (size_t li = 0; li < labels.size(); ++li) {
-          for (auto [s, t] : pl[choice[li] / pr.size()]) L.add_arc(s, t, labels[li]);
-          for (auto [s, t] : pr[choice[li] % pr.size()]) R.add_arc(s, t, labels[li]);
-        }
-        const rewrite::Rule r(std::move(L), std::move(R), n, kind, "rule" + std::to_string(index));
-        if (!f(index++, r)) stop = true;
-        size_t li = 0;
-        while (li < choice.size() && ++choice[li] == per) choice[li++] = 0;
-        if (li == choice.size()) break;
-      }
-    });
-  }
-  return index;
+  return rewrite::for_each_small_rule(n, kind, max_nodes, labels, f);
 }
 
 }  // namespace gmr::smt

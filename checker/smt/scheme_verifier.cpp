@@ -7,69 +7,21 @@
 #include <set>
 
 #include "model/core/error.hpp"
+#include "model/graph/dart_permutations.hpp"
 
 namespace gmr::smt {
 
 namespace {
-using Perm = std::vector<uint32_t>;
-
-std::vector<Perm> involutions(unsigned k) {
-  std::vector<Perm> out;
-  Perm p(k, UINT32_MAX);
-  std::function<void()> rec = [&] {
-    unsigned x = 0;
-    while (x < k && p[x] != UINT32_MAX) ++x;
-    if (x == k) {
-      out.push_back(p);
-      return;
-    }
-    p[x] = x;
-    rec();
-    for (unsigned y = x + 1; y < k; ++y) {
-      if (p[y] != UINT32_MAX) continue;
-      p[x] = y;
-      p[y] = x;
-      rec();
-      p[y] = UINT32_MAX;
-    }
-    p[x] = UINT32_MAX;
-  };
-  rec();
-  return out;
-}
-
-bool commute(const Perm& a, const Perm& b) {
-  for (uint32_t x = 0; x < a.size(); ++x)
-    if (b[a[b[a[x]]]] != x) return false;
-  return true;
-}
-
-bool connected(const std::vector<const Perm*>& s, unsigned k) {
-  std::vector<bool> seen(k, false);
-  std::vector<uint32_t> stack{0};
-  seen[0] = true;
-  unsigned count = 1;
-  while (!stack.empty()) {
-    const uint32_t x = stack.back();
-    stack.pop_back();
-    for (const Perm* p : s)
-      if (!seen[(*p)[x]]) {
-        seen[(*p)[x]] = true;
-        ++count;
-        stack.push_back((*p)[x]);
-      }
-  }
-  return count == k;
-}
+using graph::DartPermutation;
 
 // Canonical code of a connected orbit graph: the smallest BFS relabeling over all roots.
-std::vector<uint32_t> canonical(const std::vector<const Perm*>& s, unsigned k) {
+std::vector<uint32_t> canonical(const std::vector<const DartPermutation*>& s, unsigned k) {
   std::vector<uint32_t> best;
   for (uint32_t root = 0; root < k; ++root) {
     std::vector<uint32_t> index(k, UINT32_MAX), order{root};
     index[root] = 0;
     for (size_t q = 0; q < order.size(); ++q)
-      for (const Perm* p : s) {
+      for (const DartPermutation* p : s) {
         const uint32_t y = (*p)[order[q]];
         if (index[y] == UINT32_MAX) {
           index[y] = static_cast<uint32_t>(order.size());
@@ -78,7 +30,7 @@ std::vector<uint32_t> canonical(const std::vector<const Perm*>& s, unsigned k) {
       }
     std::vector<uint32_t> code;
     for (uint32_t x : order)
-      for (const Perm* p : s) code.push_back(index[(*p)[x]]);
+      for (const DartPermutation* p : s) code.push_back(index[(*p)[x]]);
     if (best.empty() || code < best) best = std::move(code);
   }
   return best;
@@ -89,12 +41,12 @@ std::vector<OrbitGraph> hook_orbits(const OrbitType& o, unsigned max_darts) {
   const size_t a = o.size();
   std::vector<OrbitGraph> out;
   for (unsigned k = 1; k <= max_darts; ++k) {
-    const auto inv = involutions(k);
+    const auto inv = graph::involutions(k);
     std::set<std::vector<uint32_t>> seen;
-    std::vector<const Perm*> chosen(a, nullptr);
+    std::vector<const DartPermutation*> chosen(a, nullptr);
     std::function<void(size_t)> rec = [&](size_t p) {
       if (p == a) {
-        if (!connected(chosen, k)) return;
+        if (!graph::connected(chosen, k)) return;
         auto code = canonical(chosen, k);
         if (!seen.insert(code).second) return;
         OrbitGraph O;
@@ -105,10 +57,10 @@ std::vector<OrbitGraph> hook_orbits(const OrbitType& o, unsigned max_darts) {
         out.push_back(std::move(O));
         return;
       }
-      for (const Perm& s : inv) {
+      for (const DartPermutation& s : inv) {
         bool ok = true;
         for (size_t q = 0; q < p && ok; ++q)
-          if (std::abs(o[p] - o[q]) >= 2) ok = commute(*chosen[q], s);
+          if (std::abs(o[p] - o[q]) >= 2) ok = graph::commute(*chosen[q], s);
         if (!ok) continue;
         chosen[p] = &s;
         rec(p + 1);

@@ -73,42 +73,35 @@ void report(const Stats& s, const std::string& what) {
   ::testing::Test::RecordProperty(what, s.summary(what));
 }
 
+// Every rule of at most 2 nodes with arcs of `labels` against every map of at most 4 darts of the
+// model (`model` names it in the report): no unsound and no incomplete verdict of the checker.
+void expect_equivalent_up_to_2_nodes(int n, MapKind kind, const std::vector<int>& labels, const std::string& model) {
+  const MapFamily fam = map_family(n, kind, 4);
+  Stats s;
+  for_each_small_rule(n, kind, 2, labels, [&](const Rule& r) {
+    s.add(r, fam);
+    return true;
+  });
+  EXPECT_EQ(s.incomplete, 0u);
+  std::string label_set;
+  for (int i : labels) label_set += (label_set.empty() ? "" : ",") + std::to_string(i);
+  report(s, model + ", all rules <= 2 nodes, labels {" + label_set + "}, maps <= 4 darts (" +
+                std::to_string(fam.maps.size()) + ")");
+  EXPECT_EQ(s.unsound, 0u);
+}
+
 }  // namespace
 
 TEST(Equivalence, AllRulesUpTo2Nodes_1GMaps) {
-  const MapFamily fam = map_family(1, MapKind::GMap, 4);
-  Stats s;
-  for_each_small_rule(1, MapKind::GMap, 2, {0, 1}, [&](const Rule& r) {
-    s.add(r, fam);
-    return true;
-  });
-  EXPECT_EQ(s.incomplete, 0u);
-  report(s, "1-G-maps, all rules <= 2 nodes, labels {0,1}, maps <= 4 darts (" + std::to_string(fam.maps.size()) + ")");
-  EXPECT_EQ(s.unsound, 0u);
+  expect_equivalent_up_to_2_nodes(1, MapKind::GMap, {0, 1}, "1-G-maps");
 }
 
 TEST(Equivalence, AllRulesUpTo2Nodes_2GMaps) {
-  const MapFamily fam = map_family(2, MapKind::GMap, 4);
-  Stats s;
-  for_each_small_rule(2, MapKind::GMap, 2, {0, 1, 2}, [&](const Rule& r) {
-    s.add(r, fam);
-    return true;
-  });
-  EXPECT_EQ(s.incomplete, 0u);
-  report(s, "2-G-maps, all rules <= 2 nodes, labels {0,1,2}, maps <= 4 darts (" + std::to_string(fam.maps.size()) + ")");
-  EXPECT_EQ(s.unsound, 0u);
+  expect_equivalent_up_to_2_nodes(2, MapKind::GMap, {0, 1, 2}, "2-G-maps");
 }
 
 TEST(Equivalence, AllRulesUpTo2Nodes_2OMaps) {
-  const MapFamily fam = map_family(2, MapKind::OMap, 4);
-  Stats s;
-  for_each_small_rule(2, MapKind::OMap, 2, {1, 2}, [&](const Rule& r) {
-    s.add(r, fam);
-    return true;
-  });
-  EXPECT_EQ(s.incomplete, 0u);
-  report(s, "2-O-maps, all rules <= 2 nodes, labels {1,2}, maps <= 4 darts (" + std::to_string(fam.maps.size()) + ")");
-  EXPECT_EQ(s.unsound, 0u);
+  expect_equivalent_up_to_2_nodes(2, MapKind::OMap, {1, 2}, "2-O-maps");
 }
 
 TEST(Equivalence, MapFamilySizes) {

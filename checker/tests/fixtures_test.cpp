@@ -47,12 +47,29 @@ Map apply_both(const Rule& r, const Map& g, const std::function<Dart(const std::
   return a.H;
 }
 
+// The match of fixture rules whose node names end with their dart ("a3" -> dart 3).
+Dart dart_by_index(const std::string& node) { return static_cast<Dart>(std::stoul(node.substr(1))); }
+
 Map isolated_face(size_t k) {  // 2k darts, numbering of the fixture generator
   Map g(2);
   g.add_darts(2 * k);
   for (Dart d = 0; d < 2 * k; d += 2) g.link(0, d, d + 1);
   for (Dart d = 1; d < 2 * k; d += 2) g.link(1, d, static_cast<Dart>((d + 1) % (2 * k)));
   return g;
+}
+
+// The fixture rule `name`, accepted by the checker, applied to the isolated face of k sides
+// (matched by dart index): a valid map of `darts` darts and `cells` i-cells (i = 0..2).
+void expect_on_isolated_face(const std::string& name, size_t k, size_t darts, const std::vector<size_t>& cells) {
+  const Rule r = load(name);
+  const CheckReport rep = check_rule(r);
+  EXPECT_TRUE(rep.ok()) << to_text(rep);
+  const Map face = isolated_face(k);
+  EXPECT_TRUE(is_valid(face));
+  const Map h = apply_both(r, face, dart_by_index);
+  EXPECT_TRUE(is_valid(h));
+  EXPECT_EQ(h.size(), darts);
+  EXPECT_EQ(count_all_cells(h), cells);
 }
 
 }  // namespace
@@ -159,17 +176,7 @@ TEST(Fixtures, F7_Fig424_CoreRule) {
 }
 
 TEST(Fixtures, F9_F13_QuadSubdivisionOnIsolatedQuad) {
-  const Rule r = load("F9_quad_subdivision_isolated_quad");
-  const CheckReport rep = check_rule(r);
-  EXPECT_TRUE(rep.ok()) << to_text(rep);
-  const Map q = isolated_face(4);
-  ASSERT_TRUE(is_valid(q));
-  const Map h = apply_both(r, q, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
-  EXPECT_TRUE(is_valid(h));
-  EXPECT_EQ(h.size(), 32u);
-  EXPECT_EQ(count_cells(h, 0), 9u);
-  EXPECT_EQ(count_cells(h, 1), 12u);
-  EXPECT_EQ(count_cells(h, 2), 4u);
+  expect_on_isolated_face("F9_quad_subdivision_isolated_quad", 4, 32, {9, 12, 4});
 }
 
 // F13 (Fig. 4.5, prose only): the "intermediate" quad-subdivision rule. Reconstruction: the maximal
@@ -202,8 +209,7 @@ TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
   EXPECT_FALSE(d.empty());
   EXPECT_FALSE(check_rule(r).ok());
   // Isolated quad: the outside 2-links are loops, the result is the maximal rule's.
-  const auto by_index = [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); };
-  const Map h = apply_both(r, isolated_face(4), by_index);
+  const Map h = apply_both(r, isolated_face(4), dart_by_index);
   EXPECT_TRUE(is_valid(h));
   EXPECT_EQ(h.size(), 32u);
   // A face of the cube: match a_k along the face of dart 0 (a0 = 0, a1 = alpha0(a0), a2 = alpha1(a1)...).
@@ -233,15 +239,7 @@ TEST(Fixtures, F11_VertexInsertionOnFreeEdge) {
 }
 
 TEST(Fixtures, F12_TriangulationOfIsolatedTriangle) {
-  const Rule r = load("F12_triangulation_isolated_triangle");
-  EXPECT_TRUE(check_rule(r).ok()) << to_text(check_rule(r));
-  const Map t = isolated_face(3);
-  const Map h = apply_both(r, t, [](const std::string& s) { return static_cast<Dart>(std::stoul(s.substr(1))); });
-  EXPECT_TRUE(is_valid(h));
-  EXPECT_EQ(h.size(), 18u);
-  EXPECT_EQ(count_cells(h, 2), 3u);
-  EXPECT_EQ(count_cells(h, 0), 4u);
-  EXPECT_EQ(count_cells(h, 1), 6u);
+  expect_on_isolated_face("F12_triangulation_isolated_triangle", 3, 18, {4, 6, 3});
 }
 
 TEST(Fixtures, Theorem2_VacuousCounterexample) {

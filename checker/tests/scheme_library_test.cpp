@@ -44,6 +44,15 @@ Outcome apply_ok(const std::string& rule, const Map& g, const std::vector<Dart>&
 
 using Cells = std::vector<size_t>;
 
+// apply_ok, with a result of `darts` darts and `cells` i-cells (i = 0..n).
+Outcome expect_outcome(const std::string& rule, const Map& g, const std::vector<Dart>& hooks, size_t darts,
+                       const Cells& cells) {
+  Outcome o = apply_ok(rule, g, hooks);
+  EXPECT_EQ(o.darts, darts) << rule;
+  EXPECT_EQ(o.cells, cells) << rule;
+  return o;
+}
+
 }  // namespace
 
 TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
@@ -71,9 +80,7 @@ TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
 
 TEST(SchemeLibrary, VertexInsertion) {
   const Map cube = make_cube(2);
-  Outcome a = apply_ok("vertex_insertion", cube, {0});
-  EXPECT_EQ(a.darts, 52u);
-  EXPECT_EQ(a.cells, (Cells{9, 13, 6}));
+  const Outcome a = expect_outcome("vertex_insertion", cube, {0}, 52u, Cells{9, 13, 6});
   // Folded on <2>: the same operation (isomorphic results).
   Outcome b = apply_ok("vertex_insertion_folded_2", cube, {0});
   EXPECT_EQ(b.darts, 52u);
@@ -90,44 +97,28 @@ TEST(SchemeLibrary, VertexInsertion) {
 
 TEST(SchemeLibrary, Triangulations) {
   const Map cube = make_cube(2);
-  Outcome f = apply_ok("face_triangulation", cube, {0});
-  EXPECT_EQ(f.darts, 64u);
-  EXPECT_EQ(f.cells, (Cells{9, 16, 9}));
-  Outcome b = apply_ok("edge_triangulation", cube, {0});
-  EXPECT_EQ(b.darts, 288u);
-  EXPECT_EQ(b.cells, (Cells{26, 72, 48}));
+  expect_outcome("face_triangulation", cube, {0}, 64u, Cells{9, 16, 9});
+  expect_outcome("edge_triangulation", cube, {0}, 288u, Cells{26, 72, 48});
   Outcome t = apply_ok("edge_triangulation", make_tetrahedron(2), {0});
   EXPECT_EQ(t.cells, (Cells{14, 36, 24}));
 }
 
 TEST(SchemeLibrary, Subdivisions) {
-  Outcome q = apply_ok("quad_subdivision", make_cube(2), {0});
-  EXPECT_EQ(q.darts, 192u);
-  EXPECT_EQ(q.cells, (Cells{26, 48, 24}));
-  Outcome qt = apply_ok("quad_subdivision", make_torus(4, 3), {0});
-  EXPECT_EQ(qt.darts, 384u);
-  EXPECT_EQ(qt.cells, (Cells{48, 96, 48}));
+  expect_outcome("quad_subdivision", make_cube(2), {0}, 192u, Cells{26, 48, 24});
+  const Outcome qt = expect_outcome("quad_subdivision", make_torus(4, 3), {0}, 384u, Cells{48, 96, 48});
   EXPECT_EQ(euler_characteristic(qt.map), 0);
-  Outcome qg = apply_ok("quad_subdivision", make_grid(2, 2), {0});
-  EXPECT_EQ(qg.darts, 128u);
-  EXPECT_EQ(qg.cells, (Cells{25, 40, 16}));
-  Outcome l = apply_ok("loop_subdivision", make_tetrahedron(2), {0});
-  EXPECT_EQ(l.darts, 96u);
-  EXPECT_EQ(l.cells, (Cells{10, 24, 16}));
+  expect_outcome("quad_subdivision", make_grid(2, 2), {0}, 128u, Cells{25, 40, 16});
+  expect_outcome("loop_subdivision", make_tetrahedron(2), {0}, 96u, Cells{10, 24, 16});
   Outcome lc = apply_ok("loop_subdivision", make_cube(2), {0});
   EXPECT_EQ(lc.cells, (Cells{20, 48, 30}));
 }
 
 TEST(SchemeLibrary, ExtrusionAndDualVertex) {
   const Map cube = make_cube(2);
-  Outcome e = apply_ok("face_extrusion", cube, {0});
-  EXPECT_EQ(e.darts, 80u);
-  EXPECT_EQ(e.cells, (Cells{12, 20, 10}));
+  expect_outcome("face_extrusion", cube, {0}, 80u, Cells{12, 20, 10});
   Outcome et = apply_ok("face_extrusion", make_torus(3, 3), {0});
   EXPECT_EQ(et.cells, (Cells{13, 26, 13}));
-  Outcome d = apply_ok("dual_vertex_insertion", cube, {0});
-  EXPECT_EQ(d.darts, 52u);
-  EXPECT_EQ(d.cells, (Cells{8, 13, 7}));
+  expect_outcome("dual_vertex_insertion", cube, {0}, 52u, Cells{8, 13, 7});
 }
 
 TEST(SchemeLibrary, SewAndUnsew2) {
@@ -158,12 +149,8 @@ TEST(SchemeLibrary, SewAndUnsew3OnStackedCubes) {
 
 TEST(SchemeLibrary, EdgeDeletionAndCollapse) {
   const Map cube = make_cube(2);
-  Outcome del = apply_ok("edge_deletion", cube, {0});
-  EXPECT_EQ(del.darts, 44u);
-  EXPECT_EQ(del.cells, (Cells{8, 11, 5}));
-  Outcome col = apply_ok("edge_collapse", cube, {0});
-  EXPECT_EQ(col.darts, 44u);
-  EXPECT_EQ(col.cells, (Cells{7, 11, 6}));
+  expect_outcome("edge_deletion", cube, {0}, 44u, Cells{8, 11, 5});
+  expect_outcome("edge_collapse", cube, {0}, 44u, Cells{7, 11, 6});
   Outcome t = apply_ok("edge_collapse", make_torus(3, 3), {0});
   EXPECT_EQ(t.cells, (Cells{8, 17, 9}));
 }

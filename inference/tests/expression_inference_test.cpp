@@ -55,6 +55,19 @@ void expect_reproduces(const ExpressionInference& inf, const EmbeddedMap& before
   }
 }
 
+// `s` applied at dart 0 of the cube, and the expressions inferred back from the objects before and
+// after.
+struct CubeInference {
+  EmbeddedMap before, after;
+  ExpressionInference inf;
+};
+CubeInference infer_on_cube(const scheme::RuleScheme& s) {
+  CubeInference c{load("tools/data/cube.off"), {}, {}};
+  c.after = apply(s, c.before, 0);
+  c.inf = infer_expressions(without_expressions(s), c.before, {0}, c.after);
+  return c;
+}
+
 const InferredExpression& node(const ExpressionInference& inf, const std::string& name) {
   for (const auto& n : inf.nodes)
     if (n.node == name) return n;
@@ -65,9 +78,7 @@ const InferredExpression& node(const ExpressionInference& inf, const std::string
 
 TEST(ExpressionInference, VertexInsertionMidpoint) {
   const scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/vertex_insertion.json"));
-  const EmbeddedMap before = load("tools/data/cube.off");
-  const EmbeddedMap after = apply(s, before, 0);
-  const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
+  const auto [before, after, inf] = infer_on_cube(s);
   EXPECT_EQ(node(inf, "n0").status, Status::Kept);
   ASSERT_EQ(node(inf, "n1").status, Status::Solved);
   EXPECT_EQ(node(inf, "n1").code, "middle(<0>_position(n0))");
@@ -80,9 +91,7 @@ TEST(ExpressionInference, QuadSubdivisionEdgeAndFacePoints) {
   scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
   s.right.nodes[0].expressions.clear();
   s.right.nodes[1].expressions[0].code = "middle(<0>_position(n0))";
-  const EmbeddedMap before = load("tools/data/cube.off");
-  const EmbeddedMap after = apply(s, before, 0);
-  const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
+  const auto [before, after, inf] = infer_on_cube(s);
   EXPECT_EQ(node(inf, "n0").status, Status::Kept);
   ASSERT_EQ(node(inf, "n1").status, Status::Solved);
   EXPECT_EQ(node(inf, "n1").code, "middle(<0>_position(n0))");
@@ -99,9 +108,7 @@ TEST(ExpressionInference, CatmullClarkOnTheCubeIsReproducedNotRecovered) {
   // symmetric points it has (thesis §8.4: inferred expressions are not unique and may differ from
   // the ground truth).
   const scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
-  const EmbeddedMap before = load("tools/data/cube.off");
-  const EmbeddedMap after = apply(s, before, 0);
-  const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
+  const auto [before, after, inf] = infer_on_cube(s);
   for (const auto& n : inf.nodes) std::cout << "[ infer    ] " << n.node << ": " << n.code << "\n";
   ASSERT_EQ(node(inf, "n0").status, Status::Solved);
   expect_reproduces(inf, before, after, 0);
@@ -112,9 +119,7 @@ TEST(ExpressionInference, NoSolutionIsReported) {
   // combination of the points of interest gives them on the cube.
   scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
   s.right.nodes[3].expressions[0].code = "middle(<0,1>_position(n0)) + 0.1 * (n0@0.position - n0.position)";
-  const EmbeddedMap before = load("tools/data/cube.off");
-  const EmbeddedMap after = apply(s, before, 0);
-  const ExpressionInference inf = infer_expressions(without_expressions(s), before, {0}, after);
+  const auto [before, after, inf] = infer_on_cube(s);
   EXPECT_EQ(node(inf, "n3").status, Status::NoSolution);
   EXPECT_EQ(node(inf, "n1").status, Status::Solved);
 }

@@ -38,6 +38,25 @@ Map applied(const Map& g, const RuleScheme& s, Dart hook) {
   return h;
 }
 
+// `inferred` and `reference` applied at dart 0 of g give maps of the same signature; returns the
+// one `inferred` gives.
+Map applied_alike(const Map& g, const RuleScheme& inferred, const RuleScheme& reference) {
+  Map mine = applied(g, inferred, 0);
+  EXPECT_EQ(signature(mine), signature(applied(g, reference, 0)));
+  return mine;
+}
+
+// The rules inferred from j, or from the pair (before, after) with the identity on dart ids, on
+// one orbit type.
+InferenceResult infer_on(const JointGraph& j, const OrbitType& orbit) {
+  InferOptions opt;
+  opt.orbit = orbit;
+  return infer_rules(j, opt);
+}
+InferenceResult infer_on(const Map& before, const Map& after, const OrbitType& orbit) {
+  return infer_on(joint_from_pair(before, after, identity_mapping(before, after)), orbit);
+}
+
 // Applies an inferred rule at its own hooks (the before darts of its hook nodes, orbit index 0).
 Map apply_at_own_hooks(const Map& g, const InferredRule& r) {
   std::vector<Dart> hooks;
@@ -102,9 +121,7 @@ TEST(RuleInference, TriangleToHexagonVertexSplitIsRejectedByTheChecker) {
     if (d.severity == Severity::Error && d.side == graph::Side::R)
       for (const auto& n : d.nodes) on_n1 = on_n1 || n == "n1";
   EXPECT_TRUE(on_n1) << to_text(r.check);
-  InferOptions opt;
-  opt.orbit = ot("<0,1,2>");
-  const InferenceResult res = infer_rules(j, opt);
+  const InferenceResult res = infer_on(j, ot("<0,1,2>"));
   EXPECT_TRUE(res.rules.empty());
   ASSERT_EQ(res.attempts.size(), 1u);
   EXPECT_EQ(res.attempts[0].outcome, AttemptOutcome::Inconsistent);
@@ -121,9 +138,7 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   ASSERT_EQ(sub.size(), 192u);
   const JointGraph j = joint_from_pair(cube, sub, identity_mapping(cube, sub));
   EXPECT_EQ(j.size(), 240u);
-  InferOptions opt;
-  opt.orbit = ot("<0,1,2>");
-  const InferenceResult res = infer_rules(j, opt);
+  const InferenceResult res = infer_on(j, ot("<0,1,2>"));
   ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
   const InferredRule& r = res.rules[0];
   EXPECT_EQ(r.scheme.left.size(), 1u);
@@ -134,12 +149,9 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   EXPECT_TRUE(is_isomorphic(apply_at_own_hooks(cube, r), sub));
   const EmbeddedMap box = read_off_file(data("open_box.off"));
   for (const Map& g : {make_torus(5, 4), box.map, make_prism(7)}) {
-    auto [mine, a1] = scheme::apply(SchemeEngine(r.scheme), std::as_const(g), {0});
-    auto [theirs, a2] = scheme::apply(SchemeEngine(lib), std::as_const(g), {0});
-    ASSERT_TRUE(a1.applied && a2.applied);
+    const Map mine = applied_alike(g, r.scheme, lib);
     EXPECT_EQ(mine.size(), 4 * g.size());
     EXPECT_TRUE(check_validity(mine).ok());
-    EXPECT_EQ(signature(mine), signature(theirs));
   }
 }
 
@@ -187,10 +199,7 @@ TEST(RuleInference, MarkingSkipsEquivalentStartsAndDuplicatesAreMerged) {
     auto app = scheme::apply(SchemeEngine(vi), h, {e});
     ASSERT_TRUE(app.applied) << app.why;
   }
-  const JointGraph j = joint_from_pair(g, h, identity_mapping(g, h));
-  InferOptions opt;
-  opt.orbit = ot("<0,2>");
-  const InferenceResult res = infer_rules(j, opt);
+  const InferenceResult res = infer_on(g, h, ot("<0,2>"));
   ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
   const RuleScheme& s = res.rules[0].scheme;
   EXPECT_EQ(s.left.size(), 4u);
@@ -314,21 +323,14 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
     ASSERT_TRUE(scheme::apply(SchemeEngine(vi), after, {e}).applied);
   ASSERT_TRUE(scheme::apply(SchemeEngine(ft), after, {0}).applied);
   ASSERT_EQ(after.size(), 36u);
-  const JointGraph j = joint_from_pair(tri, after, identity_mapping(tri, after));
-  InferOptions opt;
-  opt.orbit = ot("<0,1,2>");
-  const InferenceResult res = infer_rules(j, opt);
+  const InferenceResult res = infer_on(tri, after, ot("<0,1,2>"));
   ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
   const RuleScheme& ps = res.rules[0].scheme;
   EXPECT_EQ(ps.left.size(), 1u);
   EXPECT_EQ(ps.right.size(), 6u);
   EXPECT_TRUE(schemes_isomorphic(ps, et)) << scheme_to_json_text(ps);
   for (const Map& g : {make_grid(1, 1), make_grid(3, 2), make_tetrahedron()}) {
-    auto [mine, a1] = scheme::apply(SchemeEngine(ps), std::as_const(g), {0});
-    auto [theirs, a2] = scheme::apply(SchemeEngine(et), std::as_const(g), {0});
-    ASSERT_TRUE(a1.applied && a2.applied);
-    EXPECT_EQ(mine.size(), 6 * g.size());
-    EXPECT_EQ(signature(mine), signature(theirs));
+    EXPECT_EQ(applied_alike(g, ps, et).size(), 6 * g.size());
   }
 }
 
@@ -367,15 +369,13 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
   const Map sq = make_polygon(4);
   const Map after = applied(sq, vi, 0);
   ASSERT_EQ(after.size(), 10u);
-  InferOptions opt;
-  opt.orbit = ot("<0,2>");
-  const InferenceResult whole = infer_rules(joint_from_pair(sq, after, identity_mapping(sq, after)), opt);
+  const InferenceResult whole = infer_on(sq, after, ot("<0,2>"));
   ASSERT_EQ(whole.rules.size(), 1u);
   EXPECT_EQ(whole.rules[0].scheme.left.size(), 4u);
   const DartMapping m = read_mapping_file(data("square_one_edge_selection.json"));
   const JointGraph j = joint_from_pair(sq, after, m);
   EXPECT_EQ(j.size(), 6u);
-  const InferenceResult local = infer_rules(j, opt);
+  const InferenceResult local = infer_on(j, ot("<0,2>"));
   ASSERT_EQ(local.rules.size(), 1u) << summary_text(local);
   EXPECT_TRUE(schemes_isomorphic(local.rules[0].scheme, vi)) << scheme_to_json_text(local.rules[0].scheme);
   // A mapped dart outside the selection is refused.
@@ -400,10 +400,7 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
     ASSERT_TRUE(scheme::apply(SchemeEngine(ds), after, {0}).applied);
     ASSERT_TRUE(scheme::apply(SchemeEngine(ds), tetra_k, {0}).applied);
     nodes *= 4;
-    const JointGraph j = joint_from_pair(cube, after, identity_mapping(cube, after));
-    InferOptions opt;
-    opt.orbit = ot("<0,1,2>");
-    const InferenceResult res = infer_rules(j, opt);
+    const InferenceResult res = infer_on(cube, after, ot("<0,1,2>"));
     ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
     const RuleScheme& r = res.rules[0].scheme;
     EXPECT_EQ(r.left.size(), 1u);
@@ -426,10 +423,7 @@ TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   const Map tet = make_tetrahedron();
   const Map after = applied(tet, s3, 0);
   ASSERT_EQ(after.size(), 72u);
-  const JointGraph j = joint_from_pair(tet, after, identity_mapping(tet, after));
-  InferOptions opt;
-  opt.orbit = ot("<0,1,2>");
-  const InferenceResult res = infer_rules(j, opt);
+  const InferenceResult res = infer_on(tet, after, ot("<0,1,2>"));
   ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
   const RuleScheme& r = res.rules[0].scheme;
   EXPECT_EQ(r.right.size(), 3u);
@@ -439,12 +433,9 @@ TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   for (Dart f : orbit_representatives(mesh, ot("<0,1>")))
     ASSERT_TRUE(scheme::apply(SchemeEngine(ft), mesh, {f}).applied);
   ASSERT_EQ(count_cells(mesh, 2), 24u);
-  auto [mine, a1] = scheme::apply(SchemeEngine(r), std::as_const(mesh), {0});
-  auto [theirs, a2] = scheme::apply(SchemeEngine(s3), std::as_const(mesh), {0});
-  ASSERT_TRUE(a1.applied && a2.applied);
+  const Map mine = applied_alike(mesh, r, s3);
   EXPECT_TRUE(check_validity(mine).ok());
   EXPECT_EQ(count_cells(mine, 2), 72u);
-  EXPECT_EQ(signature(mine), signature(theirs));
 }
 
 namespace {
@@ -570,10 +561,7 @@ TEST(RuleInference, LocalLibrarySchemesAreRecoveredThroughSelections) {
         EXPECT_EQ(res.attempts[k].outcome, AttemptOutcome::FoldFailed);
         EXPECT_NE(res.attempts[k].reason.find("partial hook orbit"), std::string::npos);
       }
-      auto [mine, a1] = scheme::apply(SchemeEngine(s), make_prism(5), {0});
-      auto [theirs, a2] = scheme::apply(SchemeEngine(lib), make_prism(5), {0});
-      ASSERT_TRUE(a1.applied && a2.applied) << a1.why << a2.why;
-      EXPECT_EQ(signature(mine), signature(theirs));
+      applied_alike(make_prism(5), s, lib);
     }
   }
 }

@@ -88,40 +88,28 @@ class Parser {
     return e;
   }
 
+  // operand ((c1|c2) operand)*, left-associative: c1 makes op1, c2 makes op2.
+  std::unique_ptr<Expr> left_associative(std::unique_ptr<Expr> (Parser::*operand)(), char c1, Expr::Op op1, char c2,
+                                         Expr::Op op2) {
+    auto e = (this->*operand)();
+    for (;;) {
+      skip();
+      const size_t at = pos_;
+      Expr::Op op;
+      if (accept(c1)) op = op1;
+      else if (accept(c2)) op = op2;
+      else return e;
+      auto n = make(op, at);
+      n->column = e->column;
+      n->args.push_back(std::move(e));
+      n->args.push_back((this->*operand)());
+      e = std::move(n);
+    }
+  }
   // sum := product (('+'|'-') product)*
-  std::unique_ptr<Expr> sum() {
-    auto e = product();
-    for (;;) {
-      skip();
-      const size_t at = pos_;
-      Expr::Op op;
-      if (accept('+')) op = Expr::Op::Add;
-      else if (accept('-')) op = Expr::Op::Sub;
-      else return e;
-      auto n = make(op, at);
-      n->column = e->column;
-      n->args.push_back(std::move(e));
-      n->args.push_back(product());
-      e = std::move(n);
-    }
-  }
+  std::unique_ptr<Expr> sum() { return left_associative(&Parser::product, '+', Expr::Op::Add, '-', Expr::Op::Sub); }
   // product := unary (('*'|'/') unary)*
-  std::unique_ptr<Expr> product() {
-    auto e = unary();
-    for (;;) {
-      skip();
-      const size_t at = pos_;
-      Expr::Op op;
-      if (accept('*')) op = Expr::Op::Mul;
-      else if (accept('/')) op = Expr::Op::Div;
-      else return e;
-      auto n = make(op, at);
-      n->column = e->column;
-      n->args.push_back(std::move(e));
-      n->args.push_back(unary());
-      e = std::move(n);
-    }
-  }
+  std::unique_ptr<Expr> product() { return left_associative(&Parser::unary, '*', Expr::Op::Mul, '/', Expr::Op::Div); }
   std::unique_ptr<Expr> unary() {
     const NestingGuard guard(*this);
     skip();

@@ -6,74 +6,9 @@
 
 #include "model/core/error.hpp"
 #include "model/core/signature.hpp"
+#include "model/graph/dart_permutations.hpp"
 
 namespace gmr::graph {
-
-namespace {
-
-using Perm = std::vector<Dart>;
-
-std::vector<Perm> involutions(size_t k) {
-  std::vector<Perm> out;
-  Perm p(k, kNoDart);
-  std::function<void()> rec = [&] {
-    size_t x = 0;
-    while (x < k && p[x] != kNoDart) ++x;
-    if (x == k) {
-      out.push_back(p);
-      return;
-    }
-    p[x] = static_cast<Dart>(x);
-    rec();
-    for (size_t y = x + 1; y < k; ++y) {
-      if (p[y] != kNoDart) continue;
-      p[x] = static_cast<Dart>(y);
-      p[y] = static_cast<Dart>(x);
-      rec();
-      p[y] = kNoDart;
-    }
-    p[x] = kNoDart;
-  };
-  rec();
-  return out;
-}
-
-std::vector<Perm> permutations(size_t k) {
-  std::vector<Perm> out;
-  Perm p(k);
-  for (size_t x = 0; x < k; ++x) p[x] = static_cast<Dart>(x);
-  do out.push_back(p);
-  while (std::next_permutation(p.begin(), p.end()));
-  return out;
-}
-
-bool cycle_ok(const Perm& si, const Perm& sj) {
-  for (size_t x = 0; x < si.size(); ++x)
-    if (sj[si[sj[si[x]]]] != x) return false;
-  return true;
-}
-
-bool connected(const std::vector<const Perm*>& s, size_t k) {
-  std::vector<bool> seen(k, false);
-  std::vector<Dart> stack{0};
-  seen[0] = true;
-  size_t count = 1;
-  while (!stack.empty()) {
-    const Dart d = stack.back();
-    stack.pop_back();
-    for (const Perm* p : s) {
-      const Dart e = (*p)[d];
-      if (!seen[e]) {
-        seen[e] = true;
-        ++count;
-        stack.push_back(e);
-      }
-    }
-  }
-  return count == k;
-}
-
-}  // namespace
 
 std::vector<Map> connected_maps(int n, MapKind kind, size_t k) {
   if (k == 0) return {};
@@ -81,13 +16,13 @@ std::vector<Map> connected_maps(int n, MapKind kind, size_t k) {
   const int lo = spec.lowest_dim();
   if (n < lo || n >= kMaxDim) throw Error(ErrorCode::Range, "dimension out of range", "n=" + std::to_string(n));
   const auto inv = involutions(k);
-  const auto perm = kind == MapKind::OMap ? permutations(k) : std::vector<Perm>{};
-  std::vector<const Perm*> chosen(static_cast<size_t>(n + 1), nullptr);
+  const auto perm = kind == MapKind::OMap ? permutations(k) : std::vector<DartPermutation>{};
+  std::vector<const DartPermutation*> chosen(static_cast<size_t>(n + 1), nullptr);
   std::set<Word> seen;
   std::vector<Map> out;
   std::function<void(int)> rec = [&](int d) {
     if (d > n) {
-      std::vector<const Perm*> s(chosen.begin() + lo, chosen.end());
+      std::vector<const DartPermutation*> s(chosen.begin() + lo, chosen.end());
       if (!connected(s, k)) return;
       Map g(n, kind);
       g.add_darts(k);
@@ -97,10 +32,10 @@ std::vector<Map> connected_maps(int n, MapKind kind, size_t k) {
       return;
     }
     const auto& pool = spec.is_involutive_dim(d) ? inv : perm;
-    for (const Perm& p : pool) {
+    for (const DartPermutation& p : pool) {
       bool ok = true;
       for (auto [i, j] : spec.cycle_pairs())
-        if (j == d && ok) ok = cycle_ok(*chosen[static_cast<size_t>(i)], p);
+        if (j == d && ok) ok = commute(*chosen[static_cast<size_t>(i)], p);
       if (!ok) continue;
       chosen[static_cast<size_t>(d)] = &p;
       rec(d + 1);

@@ -94,14 +94,7 @@ EmbeddedMap read_obj(std::string_view text, const std::string& source) {
 std::string write_obj(const FaceList& fl) {
   std::string out = "# written by gmr: " + std::to_string(fl.vertices.size()) + " vertices, " +
                     std::to_string(fl.faces.size()) + " faces\n";
-  for (const Vec3& p : fl.vertices)
-    out += "v " + format_coordinate(p[0]) + " " + format_coordinate(p[1]) + " " + format_coordinate(p[2]) + "\n";
-  for (const auto& face : fl.faces) {
-    out += "f";
-    for (uint32_t v : face) out += " " + std::to_string(v + 1);
-    out += "\n";
-  }
-  return out;
+  return out + face_list_lines(fl, "v ", "f", 1);
 }
 
 std::string write_obj(const Map& g, const PositionEmbedding& pos) { return write_obj(face_list_from_map(g, pos)); }

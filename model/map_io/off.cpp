@@ -204,17 +204,23 @@ std::string format_coordinate(double x) {
   return std::string(buf, p);
 }
 
-std::string write_off(const FaceList& fl) {
-  std::string out = "OFF\n" + std::to_string(fl.vertices.size()) + " " + std::to_string(fl.faces.size()) + " " +
-                    std::to_string(fl.num_edges) + "\n";
+std::string face_list_lines(const FaceList& fl, const std::string& vertex_tag, const std::string& face_tag,
+                            uint32_t index_base) {
+  std::string out;
   for (const Vec3& p : fl.vertices)
-    out += format_coordinate(p[0]) + " " + format_coordinate(p[1]) + " " + format_coordinate(p[2]) + "\n";
+    out += vertex_tag + format_coordinate(p[0]) + " " + format_coordinate(p[1]) + " " + format_coordinate(p[2]) + "\n";
   for (const auto& face : fl.faces) {
-    out += std::to_string(face.size());
-    for (uint32_t v : face) out += " " + std::to_string(v);
+    out += face_tag.empty() ? std::to_string(face.size()) : face_tag;
+    for (uint32_t v : face) out += " " + std::to_string(v + index_base);
     out += "\n";
   }
   return out;
+}
+
+std::string write_off(const FaceList& fl) {
+  std::string out = "OFF\n" + std::to_string(fl.vertices.size()) + " " + std::to_string(fl.faces.size()) + " " +
+                    std::to_string(fl.num_edges) + "\n";
+  return out + face_list_lines(fl, "", "", 0);
 }
 
 std::string write_off(const Map& g, const PositionEmbedding& pos) { return write_off(face_list_from_map(g, pos)); }

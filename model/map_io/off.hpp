@@ -45,4 +45,10 @@ void write_off_file(const std::filesystem::path& path, const Map& g, const Posit
 // Shortest decimal text that reads back as the same double (std::to_chars).
 std::string format_coordinate(double x);
 
+// The vertex and face lines of a face list, as OFF and OBJ write them: per vertex, `vertex_tag`
+// then its coordinates; per face, `face_tag` (or, when empty, its number of vertices) then its
+// vertex indices counted from `index_base`.
+std::string face_list_lines(const FaceList& fl, const std::string& vertex_tag, const std::string& face_tag,
+                            uint32_t index_base);
+
 }  // namespace gmr::io

@@ -6,86 +6,16 @@
 
 #include "model/core/error.hpp"
 #include "model/rewrite/match.hpp"
+#include "model/rewrite/small_rules.hpp"
 #include "model/testing/random_maps.hpp"
 
 namespace gmr::testing {
 using namespace gmr::graph;
 using namespace gmr::rewrite;
 
-namespace {
-
-using PInj = std::vector<std::pair<Node, Node>>;
-
-std::vector<PInj> partial_injections(size_t m) {
-  std::vector<PInj> out;
-  PInj cur;
-  std::vector<bool> used_t(m, false);
-  std::function<void(size_t)> rec = [&](size_t s) {
-    if (s == m) {
-      out.push_back(cur);
-      return;
-    }
-    rec(s + 1);  // s has no arc
-    for (size_t t = 0; t < m; ++t) {
-      if (used_t[t]) continue;
-      used_t[t] = true;
-      cur.emplace_back(static_cast<Node>(s), static_cast<Node>(t));
-      rec(s + 1);
-      cur.pop_back();
-      used_t[t] = false;
-    }
-  };
-  rec(0);
-  return out;
-}
-
-}  // namespace
-
 size_t for_each_small_rule(int n, MapKind kind, int max_nodes, const std::vector<int>& arc_labels,
                            const std::function<bool(const Rule&)>& f) {
-  size_t count = 0;
-  bool stop = false;
-  const std::string names = "abcdefgh";
-  std::vector<std::vector<PInj>> pinj(static_cast<size_t>(max_nodes) + 1);
-  for (size_t m = 0; m <= static_cast<size_t>(max_nodes); ++m) pinj[m] = partial_injections(m);
-  for (int count_nodes = 1; count_nodes <= max_nodes && !stop; ++count_nodes) {
-    std::vector<int> st(static_cast<size_t>(count_nodes), 0);  // 0 preserved, 1 deleted, 2 added
-    std::function<void(size_t, int)> statuses = [&](size_t k, int min) {
-      if (stop) return;
-      if (k < st.size()) {
-        for (int s = min; s < 3; ++s) {
-          st[k] = s;
-          statuses(k + 1, s);
-        }
-        return;
-      }
-      std::vector<size_t> lnodes, rnodes;  // indices into st
-      for (size_t x = 0; x < st.size(); ++x) {
-        if (st[x] != 2) lnodes.push_back(x);
-        if (st[x] != 1) rnodes.push_back(x);
-      }
-      const auto& pl = pinj[lnodes.size()];
-      const auto& pr = pinj[rnodes.size()];
-      const size_t per_label = pl.size() * pr.size();
-      std::vector<size_t> choice(arc_labels.size(), 0);
-      while (!stop) {
-        DGraph L, R;
-        for (size_t x : lnodes) L.add_node(std::string(1, names[x]));
-        for (size_t x : rnodes) R.add_node(std::string(1, names[x]));
-        for (size_t li = 0; li < arc_labels.size(); ++li) {
-          for (auto [s, t] : pl[choice[li] / pr.size()]) L.add_arc(s, t, arc_labels[li]);
-          for (auto [s, t] : pr[choice[li] % pr.size()]) R.add_arc(s, t, arc_labels[li]);
-        }
-        ++count;
-        if (!f(Rule(std::move(L), std::move(R), n, kind))) stop = true;
-        size_t li = 0;
-        while (li < choice.size() && ++choice[li] == per_label) choice[li++] = 0;
-        if (li == choice.size()) break;
-      }
-    };
-    statuses(0, 0);
-  }
-  return count;
+  return rewrite::for_each_small_rule(n, kind, max_nodes, arc_labels, [&](size_t, const Rule& r) { return f(r); });
 }
 
 Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t max_left_nodes) {

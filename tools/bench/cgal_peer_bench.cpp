@@ -37,6 +37,8 @@
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
 
+#include "tools/bench/bench_scale.hpp"
+
 using namespace gmr;
 
 using gmr::Dart;
@@ -44,10 +46,7 @@ using gmr::Map;
 
 namespace {
 
-double scale() {
-  const char* s = std::getenv("GMR_BENCH_SCALE");
-  return s ? std::atof(s) : 1.0;
-}
+using bench::scale;
 
 size_t heap_bytes() {
   const struct mallinfo2 mi = mallinfo2();
@@ -200,9 +199,10 @@ void gmr_orbits(benchmark::State& state, Fixture<N>& f, gmr::DimMask mask) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * g.size()));
 }
 
-// CGAL: every <Alpha...>-orbit once.
-template <unsigned N, unsigned... Alpha>
-void cgal_orbits(benchmark::State& state, Fixture<N>& f) {
+// CGAL: every orbit once, a marker over the darts and `darts_of(m, it)` the range of the orbit of
+// an unmarked dart.
+template <unsigned N, class DartsOf>
+void cgal_marked_orbits(benchmark::State& state, Fixture<N>& f, DartsOf darts_of) {
   const CMap<N>& m = f.c;
   size_t orbits = 0, darts = 0;
   for (auto _ : state) {
@@ -211,7 +211,7 @@ void cgal_orbits(benchmark::State& state, Fixture<N>& f) {
     for (auto it = m.darts().begin(), end = m.darts().end(); it != end; ++it) {
       if (m.is_marked(it, mark)) continue;
       ++orbits;
-      for (auto o = m.template darts_of_orbit<Alpha...>(it).begin(); o.cont(); ++o) {
+      for (auto o = darts_of(m, it).begin(); o.cont(); ++o) {
         m.mark(o, mark);
         ++darts;
       }
@@ -224,28 +224,16 @@ void cgal_orbits(benchmark::State& state, Fixture<N>& f) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * m.number_of_darts()));
 }
 
+// CGAL: every <Alpha...>-orbit once.
+template <unsigned N, unsigned... Alpha>
+void cgal_orbits(benchmark::State& state, Fixture<N>& f) {
+  cgal_marked_orbits(state, f, [](const CMap<N>& m, auto it) { return m.template darts_of_orbit<Alpha...>(it); });
+}
+
 // CGAL: every I-cell once (darts_of_cell<I>; I = N+1: connected components).
 template <unsigned N, unsigned I>
 void cgal_cell_orbits(benchmark::State& state, Fixture<N>& f) {
-  const CMap<N>& m = f.c;
-  size_t orbits = 0, darts = 0;
-  for (auto _ : state) {
-    const auto mark = m.get_new_mark();
-    orbits = darts = 0;
-    for (auto it = m.darts().begin(), end = m.darts().end(); it != end; ++it) {
-      if (m.is_marked(it, mark)) continue;
-      ++orbits;
-      for (auto o = m.template darts_of_cell<I>(it).begin(); o.cont(); ++o) {
-        m.mark(o, mark);
-        ++darts;
-      }
-    }
-    m.free_mark(mark);
-    benchmark::DoNotOptimize(darts);
-  }
-  state.counters["orbits"] = static_cast<double>(orbits);
-  if (darts != m.number_of_darts()) state.SkipWithError("not every dart visited");
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * m.number_of_darts()));
+  cgal_marked_orbits(state, f, [](const CMap<N>& m, auto it) { return m.template darts_of_cell<I>(it); });
 }
 
 template <unsigned N>

@@ -17,18 +17,15 @@
 #   GMR_BENCH_STAT=median tools/bench/events.sh             # statistic over the repetitions (default min:
 #                                                           # the cost without interference on a shared machine)
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-build=${GMR_BENCH_BUILD:-$root/build-bench}
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 reps=${GMR_BENCH_REPS:-11}
-jobs=$(nproc 2>/dev/null || echo 2)
 plot=${GMR_BENCH_PLOT:-$root/docs/events_bench.svg}
 
 if [[ -n "${GMR_BENCH_RESULTS:-}" ]]; then
   results=$GMR_BENCH_RESULTS
 else
   if [[ "${GMR_BENCH_REBUILD:-1}" == 1 || ! -x "$build/tools/bench/gmr_bench_events" ]]; then
-    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
-    cmake --build "$build" --target gmr_bench_events -j"$jobs"
+    bench_build gmr_bench_events
   fi
   results="$build/bench-results-events.json"
   "$build/tools/bench/gmr_bench_events" --benchmark_repetitions="$reps" \

@@ -43,6 +43,8 @@
 #include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/scheme_engine.hpp"
 
+#include "tools/bench/bench_scale.hpp"
+
 using namespace gmr;
 using namespace gmr::events;
 using scheme::RuleScheme;
@@ -50,10 +52,7 @@ using scheme::SchemeEngine;
 
 namespace {
 
-double scale() {
-  const char* s = std::getenv("GMR_BENCH_SCALE");
-  return s ? std::atof(s) : 1.0;
-}
+using bench::scale;
 
 RuleScheme library_rule(const std::string& name) {
   return io::read_scheme_file(std::string(GMR_SOURCE_DIR) + "/tools/data/rules/" + name + ".json");

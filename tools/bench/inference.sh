@@ -12,13 +12,10 @@
 #   GMR_BENCH_REPS=5 tools/bench/inference.sh    # repetitions, medians reported (default 3)
 #   GMR_BENCH_BUILD=/tmp/b tools/bench/inference.sh
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-build=${GMR_BENCH_BUILD:-$root/build-bench}
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 reps=${GMR_BENCH_REPS:-3}
-jobs=$(nproc 2>/dev/null || echo 2)
 
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
-cmake --build "$build" --target gmr_bench_inference -j"$jobs"
+bench_build gmr_bench_inference
 bin="$build/tools/bench/gmr_bench_inference"
 common=(--benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true --benchmark_out_format=json)
 

@@ -28,14 +28,11 @@
 #   GMR_BENCH_BUILD=/tmp/b tools/bench/replace.sh   # build directory (default: build-bench)
 #   GMR_BENCH_REGIMES="warm" tools/bench/replace.sh # a subset of: fresh cold warm paired
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-build=${GMR_BENCH_BUILD:-$root/build-bench}
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 reps=${GMR_BENCH_REPS:-7}
 regimes=${GMR_BENCH_REGIMES:-fresh cold warm paired}
-jobs=$(nproc 2>/dev/null || echo 2)
 if [[ "${GMR_BENCH_REBUILD:-1}" == 1 || ! -x "$build/tools/bench/gmr_bench_replace" ]]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
-  cmake --build "$build" --target gmr_bench_replace -j"$jobs"
+  bench_build gmr_bench_replace
 fi
 bench=$build/tools/bench/gmr_bench_replace
 data=$(mktemp -d)

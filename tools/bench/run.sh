@@ -13,13 +13,10 @@
 #   GMR_BENCH_BUILD=/tmp/b tools/bench/run.sh           # build directory (default: build-bench)
 #   GMR_BENCH_REPS=5 tools/bench/run.sh                 # repetitions, medians reported (default 3)
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-build=${GMR_BENCH_BUILD:-$root/build-bench}
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 reps=${GMR_BENCH_REPS:-3}
-jobs=$(nproc 2>/dev/null || echo 2)
 
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
-cmake --build "$build" --target gmr_bench_cgal gmr_bench_scheme gmr_bench_subdivision -j"$jobs"
+bench_build gmr_bench_cgal gmr_bench_scheme gmr_bench_subdivision
 
 out="$build/bench-results.json"
 mem="$build/bench-memory.txt"

@@ -10,10 +10,8 @@
 #   GMR_BENCH_BUILD=/tmp/b tools/bench/run_smt.sh
 #   GMR_BENCH_REPLOT=1 tools/bench/run_smt.sh  # tables and plot from the last run's saved output
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-build=${GMR_BENCH_BUILD:-$root/build-bench}
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGMR_BENCH=ON -DGMR_TESTS=OFF >/dev/null
-cmake --build "$build" --target gmr_bench_smt -j"$(nproc 2>/dev/null || echo 2)"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+bench_build gmr_bench_smt
 if [ -n "${GMR_BENCH_REPLOT:-}" ]; then  # tables and plot again from the last run's output
   out=$(cat "$build/smt_bench.txt")
 else

@@ -33,6 +33,8 @@
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 
+#include "tools/bench/bench_scale.hpp"
+
 using namespace gmr;
 
 using gmr::Dart;
@@ -40,10 +42,7 @@ using gmr::Map;
 
 namespace {
 
-double scale() {
-  const char* s = std::getenv("GMR_BENCH_SCALE");
-  return s ? std::atof(s) : 1.0;
-}
+using bench::scale;
 
 struct Items {
   template <class Refs>

@@ -81,6 +81,13 @@ Format output_format(const std::string& path, const std::string& override) {
   return detect(path, override, "--to", kOutputFormats);
 }
 
+Format drawing_format(const std::string& path, const std::string& override) {
+  const Format out = path == "-" && override.empty() ? Format::Dot : output_format(path, override);
+  if (out != Format::Dot && out != Format::Svg && out != Format::Png)
+    throw Error(ErrorCode::Usage, std::string("gmr dot writes dot, svg or png, not ") + to_string(out), path);
+  return out;
+}
+
 EmbeddedMap load_map(const std::string& path, const std::string& from) {
   const Format f = input_format(path, from);
   if (f == Format::Off) return path == "-" ? read_off(read_text_file(path), "<stdin>") : read_off_file(path);

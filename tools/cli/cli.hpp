@@ -38,6 +38,9 @@ std::optional<Format> parse_format(const std::string& name);
 // neither tells, or when the format cannot be read (input) / written (output).
 Format input_format(const std::string& path, const std::string& override);
 Format output_format(const std::string& path, const std::string& override);
+// The format of a drawing (`gmr dot`): dot on standard output without --to, else output_format;
+// Error(Usage) for a format other than dot, svg or png.
+Format drawing_format(const std::string& path, const std::string& override);
 // Help text for --from / --to.
 inline constexpr const char* kInputFormats = "json|off|obj";
 inline constexpr const char* kOutputFormats = "json|off|obj|dot|svg|png";

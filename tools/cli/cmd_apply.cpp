@@ -24,6 +24,7 @@
 #include "model/rule_io/rule_json.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/match_syntax.hpp"
 #include "tools/cli/orbit_list.hpp"
 #include "tools/cli/rule_gate.hpp"
@@ -167,16 +168,14 @@ int run_apply(const ApplyArgs& a) {
 }  // namespace
 
 void register_apply(CLI::App& app) {
-  auto args = std::make_shared<ApplyArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "apply", "Apply a concrete rule once (DPO) at a match, or a rule scheme at hook darts; exit 1 if it does not apply or breaks the map");
+  auto [sub, args] = add_subcommand<ApplyArgs>(app,
+      "apply", "Apply a concrete rule once (DPO) at a match, or a rule scheme at hook darts; exit 1 if it does not apply or breaks the map", run_apply);
   sub->add_option("rule", args->rule, "Rule file (gmr.rule JSON, concrete or scheme; Jerboa .jme with --rule)")->required();
-  sub->add_option("map", args->input, "Map file (.json, .off, .obj)")->required();
-  sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
+  add_map_input(sub, args->input, args->from, "map", "Map file (.json, .off, .obj)");
   sub->add_option("--match", args->match, "L-node=dart pairs, e.g. a=3,b=5 (default: the first applicable match)");
   sub->add_option("-o,--output", args->output, "Write the result map here");
   sub->add_option("--to", args->to, std::string("Output format (") + kOutputFormats + ")");
-  sub->add_flag("--json", args->json, "Print JSON (schemes: with the match and comatch tables)");
+  add_json_flag(sub, args->json, "Print JSON (schemes: with the match and comatch tables)");
   sub->add_option("--hook", args->hooks, "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
   sub->add_flag("--all", args->all, "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
@@ -191,7 +190,6 @@ void register_apply(CLI::App& app) {
   sub->add_option("--events", args->events,
                   "Write the event log here (gmr.events JSON: every orbit type's events, named by lowest dart, certain/confirmed/refuted; with --all one log per application; a concrete rule is logged as its scheme on <>)");
   sub->add_option("--orbits", args->orbits, "With --events: the orbit types logged, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
-  set_action(sub, [args] { return run_apply(*args); });
 }
 
 }  // namespace gmr::cli

@@ -9,6 +9,7 @@
 #include "checker/rule_check.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/scheme_check.hpp"
 #include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files
 
@@ -46,11 +47,10 @@ int run_check(const CheckArgs& a) {
 }  // namespace
 
 void register_check(CLI::App& app) {
-  auto args = std::make_shared<CheckArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "check", "Check the consistency conditions of a concrete rule or rule scheme (incident arcs, non-orientation, cycles); exit 1 if one fails");
+  auto [sub, args] = add_subcommand<CheckArgs>(app,
+      "check", "Check the consistency conditions of a concrete rule or rule scheme (incident arcs, non-orientation, cycles); exit 1 if one fails", run_check);
   sub->add_option("rule", args->input, "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")->required();
-  sub->add_flag("--json", args->json, "Print JSON (format gmr.check)");
+  add_json_flag(sub, args->json, "Print JSON (format gmr.check)");
   sub->add_flag("--per-constraint", args->per_constraint,
                 "Check C_r on the ij-completion only (the thesis' per-constraint reading), without the model completion");
   // Rule schemes: a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
@@ -58,7 +58,6 @@ void register_check(CLI::App& app) {
                 "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones)");
   sub->add_flag("--no-embeddings", args->no_embeddings,
                 "Rule schemes: the topological conditions only, without the embedding checks");
-  set_action(sub, [args] { return run_check(*args); });
 }
 
 }  // namespace gmr::cli

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 using namespace gmr::draw;
@@ -27,15 +28,13 @@ int run_convert(const ConvertArgs& a) {
 }  // namespace
 
 void register_convert(CLI::App& app) {
-  auto args = std::make_shared<ConvertArgs>();
-  CLI::App* sub = app.add_subcommand("convert", "Convert a map file (json, off -> json, off, obj, dot, svg, png)");
+  auto [sub, args] = add_subcommand<ConvertArgs>(app, "convert", "Convert a map file (json, off -> json, off, obj, dot, svg, png)", run_convert);
   sub->add_option("input", args->input, "Input file (- for standard input with --from)")->required();
   sub->add_option("output", args->output, "Output file, written atomically (- for standard output with --to)")
       ->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--to", args->to, std::string("Output format (") + kOutputFormats + ")");
   sub->add_flag("--loops", args->loops, "Draw i-loops of free darts (dot, svg, png)");
-  set_action(sub, [args] { return run_convert(*args); });
 }
 
 }  // namespace gmr::cli

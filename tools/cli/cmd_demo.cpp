@@ -22,6 +22,7 @@
 #include "model/map_io/voxels.hpp"
 #include "model/core/signature.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/summary.hpp"
 #include "model/draw/render.hpp"
 
@@ -150,15 +151,13 @@ int run_demo(const DemoArgs& a) {
 }  // namespace
 
 void register_demo(CLI::App& app) {
-  auto args = std::make_shared<DemoArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "demo", "Build the standard objects, validate them, print their cells, write drawings and meshes");
+  auto [sub, args] = add_subcommand<DemoArgs>(app,
+      "demo", "Build the standard objects, validate them, print their cells, write drawings and meshes", run_demo);
   sub->add_option("--out", args->out, "Output directory")->capture_default_str();
   sub->add_option("--data", args->data,
                   "Directory of the example data files (default: tools/data of the current directory when present, "
                   "else of the source tree gmr was built from)");
-  sub->add_flag("--json", args->json, "Print JSON");
-  set_action(sub, [args] { return run_demo(*args); });
+  add_json_flag(sub, args->json);
 }
 
 }  // namespace gmr::cli

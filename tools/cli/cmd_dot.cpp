@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/rule_dot.hpp"
 
 namespace gmr::cli {
@@ -26,9 +27,7 @@ struct DotArgs {
 int run_dot(const DotArgs& a) {
   if (auto rc = dot_rule_input({a.input, a.output, a.to, a.rule, a.name == "gmap" ? "" : a.name, a.kappa, a.check, a.events}))
     return *rc;
-  const Format out = a.output == "-" && a.to.empty() ? Format::Dot : output_format(a.output, a.to);
-  if (out != Format::Dot && out != Format::Svg && out != Format::Png)
-    throw Error(ErrorCode::Usage, std::string("gmr dot writes dot, svg or png, not ") + to_string(out), a.output);
+  const Format out = drawing_format(a.output, a.to);
   const EmbeddedMap f = load_map(a.input, a.from);
   DotOptions opt;
   opt.loops = a.loops;
@@ -40,10 +39,9 @@ int run_dot(const DotArgs& a) {
 }  // namespace
 
 void register_dot(CLI::App& app) {
-  auto args = std::make_shared<DotArgs>();
-  CLI::App* sub = app.add_subcommand(
+  auto [sub, args] = add_subcommand<DotArgs>(app,
       "dot", "Draw a map: darts as nodes, links coloured per dimension (0 black, 1 red, 2 blue, 3 green, "
-             "4 orange, 5 purple, 6 brown, 7 cyan)");
+             "4 orange, 5 purple, 6 brown, 7 cyan)", run_dot);
   sub->add_option("file", args->input,
                   "Map file (.json, .off, .obj; - for standard input with --from), or rule file (gmr.rule JSON, concrete or "
                   "scheme; Jerboa .jme)")->required();
@@ -61,7 +59,6 @@ void register_dot(CLI::App& app) {
   sub->add_option("--events", args->events,
                   "Rule schemes: highlight the pattern orbits of the static events of this orbit type, e.g. \"<0,1>\" "
                   "(possible events orange, certain ones red)");
-  set_action(sub, [args] { return run_dot(*args); });
 }
 
 }  // namespace gmr::cli

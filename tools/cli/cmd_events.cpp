@@ -15,6 +15,7 @@
 #include "model/rule_io/jme_import.hpp"
 #include "model/map_io/json_writer.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/orbit_list.hpp"
 #include "tools/cli/rule_input.hpp"
 
@@ -79,14 +80,12 @@ int run_events(const EventsArgs& a) {
 }  // namespace
 
 void register_events(CLI::App& app) {
-  auto args = std::make_shared<EventsArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "events", "Static topological events of a rule scheme per orbit type: creation, deletion, split, merge, modification, certain or to confirm");
+  auto [sub, args] = add_subcommand<EventsArgs>(app,
+      "events", "Static topological events of a rule scheme per orbit type: creation, deletion, split, merge, modification, certain or to confirm", run_events);
   sub->add_option("rule", args->rule, "Rule (gmr.rule JSON, scheme or concrete: a scheme on <>) or Jerboa .jme file (every rule)")->required();
   sub->add_option("--orbits", args->orbits, "Orbit types to analyse, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file (default: every rule)");
-  sub->add_flag("--json", args->json, "Print JSON (format gmr.events, kind static)");
-  set_action(sub, [args] { return run_events(*args); });
+  add_json_flag(sub, args->json, "Print JSON (format gmr.events, kind static)");
 }
 
 }  // namespace gmr::cli

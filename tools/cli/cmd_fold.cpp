@@ -10,6 +10,7 @@
 #include "inference/fold.hpp"
 #include "model/core/error.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/inference_args.hpp"
 
 namespace gmr::cli {
@@ -48,17 +49,14 @@ int run_fold(const FoldArgs& a) {
 }  // namespace
 
 void register_fold(CLI::App& app) {
-  auto args = std::make_shared<FoldArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "fold", "Fold a connected G-map into a graph scheme on an orbit type from a start dart (thesis Alg. 6); exit 1 with the named failure");
-  sub->add_option("map", args->input, "Map file (.json, .off, .obj)")->required();
-  sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
+  auto [sub, args] = add_subcommand<FoldArgs>(app,
+      "fold", "Fold a connected G-map into a graph scheme on an orbit type from a start dart (thesis Alg. 6); exit 1 with the named failure", run_fold);
+  add_map_input(sub, args->input, args->from, "map", "Map file (.json, .off, .obj)");
   sub->add_option("--orbit", args->orbit, "Orbit type, e.g. \"<1,2>\" or \"<>\"")->required();
   sub->add_option("--dart", args->dart, "Start dart")->required();
   sub->add_option("--explicit-loops", args->explicit_loops,
                   "Dimensions whose loops are always explicit arcs (conservative), e.g. 2 or 0,2 (default: implicit first)");
-  sub->add_flag("--json", args->json, "Print JSON");
-  set_action(sub, [args] { return run_fold(*args); });
+  add_json_flag(sub, args->json);
 }
 
 }  // namespace gmr::cli

@@ -26,6 +26,7 @@
 #include "model/map_io/atomic_write.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/inference_args.hpp"
 
 namespace gmr::cli {
@@ -139,9 +140,8 @@ int run_infer(const InferArgs& a) {
 }  // namespace
 
 void register_infer(CLI::App& app) {
-  auto args = std::make_shared<InferArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "infer", "Infer rule schemes from a before and an after map by topological folding (thesis Ch. 7); exit 1 if none is found");
+  auto [sub, args] = add_subcommand<InferArgs>(app,
+      "infer", "Infer rule schemes from a before and an after map by topological folding (thesis Ch. 7); exit 1 if none is found", run_infer);
   sub->add_option("before", args->before, "Before map (.json, .off, .obj)")->required();
   sub->add_option("after", args->after, "After map (.json, .off, .obj)")->required();
   sub->add_option("--from", args->from, std::string("Input format of both maps (") + kInputFormats + ")");
@@ -157,8 +157,7 @@ void register_infer(CLI::App& app) {
   sub->add_option("--cut-loops", args->cut_loops,
                   "Posterior-cut loops: remove explicit loops of these dimensions present on both copies of a preserved node, e.g. 2");
   sub->add_option("-o,--output", args->output, "Directory for rule_k.json/.dot/.svg, rejected_k.json/.dot/.svg and summary.txt");
-  sub->add_flag("--json", args->json, "Print JSON (attempts and inferred schemes)");
-  set_action(sub, [args] { return run_infer(*args); });
+  add_json_flag(sub, args->json, "Print JSON (attempts and inferred schemes)");
 }
 
 }  // namespace gmr::cli

@@ -5,6 +5,7 @@
 
 #include "model/core/orbit.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
@@ -61,12 +62,9 @@ int run_info(const InfoArgs& a) {
 }  // namespace
 
 void register_info(CLI::App& app) {
-  auto args = std::make_shared<InfoArgs>();
-  CLI::App* sub = app.add_subcommand("info", "Describe a map: darts, links, cells, Euler characteristic, validity");
-  sub->add_option("file", args->input, "Map file (.json, .off, .obj; - for standard input with --from)")->required();
-  sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
-  sub->add_flag("--json", args->json, "Print JSON");
-  set_action(sub, [args] { return run_info(*args); });
+  auto [sub, args] = add_subcommand<InfoArgs>(app, "info", "Describe a map: darts, links, cells, Euler characteristic, validity", run_info);
+  add_map_input(sub, args->input, args->from);
+  add_json_flag(sub, args->json);
 }
 
 }  // namespace gmr::cli

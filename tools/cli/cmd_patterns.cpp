@@ -15,6 +15,7 @@
 #include "model/replace/coverage.hpp"
 #include "model/replace/pattern_folder.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 
@@ -129,21 +130,18 @@ int run_check(const PatternsArgs& a) {
 }  // namespace
 
 void register_patterns(CLI::App& app) {
-  auto args = std::make_shared<PatternsArgs>();
   CLI::App* sub = app.add_subcommand("patterns", "Pattern sets of query-replace");
   sub->require_subcommand(1);
-  CLI::App* check = sub->add_subcommand("check", "Duplicates and missing configurations of a pattern set");
+  auto [check, args] = add_subcommand<PatternsArgs>(*sub, "check", "Duplicates and missing configurations of a pattern set", run_check);
   check->add_option("folder", args->folder, "Folder of pattern files")->required();
   check->add_option("--configurations", args->generator, "Configuration generator (square-edges, triangle-edges, hex-edges, hex-conformal, marching-cubes)");
   check->add_flag("--oriented", args->oriented, "Verdict in oriented mode (default: unoriented)");
-  check->add_flag("--json", args->json, "Print JSON");
-  set_action(check, [args] { return run_check(*args); });
-  auto gen = std::make_shared<GenerateArgs>();
-  CLI::App* generate = sub->add_subcommand("generate", "Write a generated pattern set (hex-conformal: the conformal volume patterns)");
+  add_json_flag(check, args->json);
+  auto [generate, gen] =
+      add_subcommand<GenerateArgs>(*sub, "generate", "Write a generated pattern set (hex-conformal: the conformal volume patterns)", run_generate);
   generate->add_option("set", gen->set, "Pattern set (hex-conformal)")->required();
   generate->add_option("folder", gen->folder, "Output folder (new or empty)")->required();
   generate->add_flag("--oriented", gen->oriented, "One pattern per oriented class (325; default: unoriented, 226)");
-  set_action(generate, [gen] { return run_generate(*gen); });
 }
 
 }  // namespace gmr::cli

@@ -13,6 +13,7 @@
 #include "model/replace/pattern_folder.hpp"
 #include "model/replace/query_replace.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 
@@ -104,8 +105,7 @@ int run_query_replace(const QueryReplaceArgs& a) {
 }  // namespace
 
 void register_query_replace(CLI::App& app) {
-  auto args = std::make_shared<QueryReplaceArgs>();
-  CLI::App* sub = app.add_subcommand("query-replace", "Replace the cells whose boundary matches a pattern (signatures)");
+  auto [sub, args] = add_subcommand<QueryReplaceArgs>(app, "query-replace", "Replace the cells whose boundary matches a pattern (signatures)", run_query_replace);
   sub->add_option("patterns", args->patterns, "Folder of pattern files (gmr.gmap JSON, flags as the embedding \"flag\")")
       ->required();
   sub->add_option("map", args->input, "Map file (.json, .off, .obj)")->required();
@@ -117,8 +117,7 @@ void register_query_replace(CLI::App& app) {
   sub->add_option("--split-edges", args->split_edges, "Split every edge in K first (e-pattern)")
       ->check(CLI::Range(1u, 1000u));
   sub->add_flag("--flag-all", args->flag_all, "Flag every dart of the input (its corners)");
-  sub->add_flag("--json", args->json, "Print the summary as JSON");
-  set_action(sub, [args] { return run_query_replace(*args); });
+  add_json_flag(sub, args->json, "Print the summary as JSON");
 }
 
 }  // namespace gmr::cli

@@ -9,6 +9,7 @@
 
 #include "model/core/signature.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
@@ -63,13 +64,10 @@ int run_signature(const SignatureArgs& a) {
 }  // namespace
 
 void register_signature(CLI::App& app) {
-  auto args = std::make_shared<SignatureArgs>();
-  CLI::App* sub = app.add_subcommand("signature", "Print the minimal signature of a map (equal iff isomorphic)");
-  sub->add_option("file", args->input, "Map file (.json, .off, .obj; - for standard input with --from)")->required();
-  sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
+  auto [sub, args] = add_subcommand<SignatureArgs>(app, "signature", "Print the minimal signature of a map (equal iff isomorphic)", run_signature);
+  add_map_input(sub, args->input, args->from);
   sub->add_option("--flags", args->flags, "Embedding whose values flag the darts (e.g. position)");
-  sub->add_flag("--json", args->json, "Print JSON");
-  set_action(sub, [args] { return run_signature(*args); });
+  add_json_flag(sub, args->json);
 }
 
 }  // namespace gmr::cli

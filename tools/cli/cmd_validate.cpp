@@ -7,6 +7,7 @@
 #include "model/core/position.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
@@ -84,16 +85,13 @@ int run_validate(const ValidateArgs& a) {
 }  // namespace
 
 void register_validate(CLI::App& app) {
-  auto args = std::make_shared<ValidateArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "validate", "Check the G-map/O-map constraints and the embeddings; list every violation (exit 1 if any)");
-  sub->add_option("file", args->input, "Map file (.json, .off, .obj; - for standard input with --from)")->required();
-  sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
+  auto [sub, args] = add_subcommand<ValidateArgs>(app,
+      "validate", "Check the G-map/O-map constraints and the embeddings; list every violation (exit 1 if any)", run_validate);
+  add_map_input(sub, args->input, args->from);
   sub->add_option("--limit", args->limit, "Maximum number of violations listed")
       ->check(non_negative_integer())
       ->capture_default_str();
-  sub->add_flag("--json", args->json, "Print JSON");
-  set_action(sub, [args] { return run_validate(*args); });
+  add_json_flag(sub, args->json);
 }
 
 }  // namespace gmr::cli

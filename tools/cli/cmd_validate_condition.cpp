@@ -23,6 +23,7 @@
 #include "model/core/error.hpp"
 #include "model/map_io/read_file.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 using namespace gmr::smt;
@@ -203,10 +204,9 @@ int run_validate_condition(const ValidateConditionArgs& a) {
 }  // namespace
 
 void register_validate_condition(CLI::App& app) {
-  auto args = std::make_shared<ValidateConditionArgs>();
-  CLI::App* sub = app.add_subcommand(
+  auto [sub, args] = add_subcommand<ValidateConditionArgs>(app,
       "validate-condition",
-      "Is a condition on concrete rules sound and complete against the DPO semantics (bounded)? Exit 1 with the smallest counterexamples");
+      "Is a condition on concrete rules sound and complete against the DPO semantics (bounded)? Exit 1 with the smallest counterexamples", run_validate_condition);
   sub->add_option("--condition", args->condition, "A built-in condition (--list)");
   sub->add_option("--plugin", args->plugin, "A condition plug-in (shared library exporting gmr_condition_v1)");
   sub->add_flag("--list", args->list, "List the built-in conditions");
@@ -224,10 +224,9 @@ void register_validate_condition(CLI::App& app) {
                   "A plug-in's predicate must return within this many seconds per rule (default 10; 0: no limit)");
   sub->add_option("--schemes", args->schemes,
                   "The rule schemes (gmr.rule JSON files) a scheme condition is validated on, through instantiation");
-  sub->add_flag("--json", args->json, "Print JSON (format gmr.condition-validation)");
+  add_json_flag(sub, args->json, "Print JSON (format gmr.condition-validation)");
   sub->add_option("-o,--output", args->output, "Also write the JSON report to this file");
   sub->add_option("--merge", args->merge, "Merge the JSON reports of the shards of one sweep (prints JSON)");
-  set_action(sub, [args] { return run_validate_condition(*args); });
 }
 
 }  // namespace gmr::cli

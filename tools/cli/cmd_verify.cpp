@@ -11,6 +11,7 @@
 #include "checker/smt/counterexample.hpp"
 #include "model/core/error.hpp"
 #include "tools/cli/cli.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/rule_input.hpp"
 
 namespace gmr::cli {
@@ -138,19 +139,17 @@ int run_verify(const VerifyArgs& a) {
 }  // namespace
 
 void register_verify(CLI::App& app) {
-  auto args = std::make_shared<VerifyArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "verify", "Bounded verification of a rule: does any application on a map of at most k darts break a constraint? Exit 1 with a counterexample");
+  auto [sub, args] = add_subcommand<VerifyArgs>(app,
+      "verify", "Bounded verification of a rule: does any application on a map of at most k darts break a constraint? Exit 1 with a counterexample", run_verify);
   sub->add_option("rule", args->input, "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")->required();
   sub->add_option("--rule", args->rule_name, "Rule of a .jme file");
   sub->add_option("--bound,-k", args->bound, "Maps of at most this many darts (default 6)");
   sub->add_option("--orbit-bound", args->orbit_bound,
                   "Rule schemes: instantiate on hook orbits of at most this many darts only (default: the bound)");
   sub->add_option("--engine", args->engine, "smt (Z3, default), enum (exhaustive enumeration) or both");
-  sub->add_flag("--json", args->json, "Print JSON (format gmr.verify)");
+  add_json_flag(sub, args->json, "Print JSON (format gmr.verify)");
   sub->add_option("-o,--output", args->output, "Write the counterexample (gmr.counterexample JSON)");
   sub->add_option("--dot", args->dot, "Write the counterexample's G as DOT, offending darts highlighted");
-  set_action(sub, [args] { return run_verify(*args); });
 }
 
 }  // namespace gmr::cli

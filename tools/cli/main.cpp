@@ -1,6 +1,6 @@
 // The `gmr` command line: one binary, one subcommand per file
 // tools/cli/cmd_<name>.cpp, each exposing `void register_<name>(CLI::App&)` that adds the
-// subcommand, its options and its action (cli.hpp: set_action).
+// subcommand, its options and its action (subcommand.hpp: add_subcommand).
 //
 // Exit codes: 0 success, 1 negative verdict, 2 bad input or usage. Errors are printed as
 // "gmr: error: <location>: <message>" on standard error.

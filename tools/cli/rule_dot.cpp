@@ -20,9 +20,7 @@ std::optional<int> dot_rule_input(const RuleDotArgs& a) {
       throw Error(ErrorCode::Usage, "--rule, --kappa, --check and --events apply to rule files (gmr.rule JSON, .jme)", a.input);
     return std::nullopt;
   }
-  const Format out = a.output == "-" && a.to.empty() ? Format::Dot : output_format(a.output, a.to);
-  if (out != Format::Dot && out != Format::Svg && out != Format::Png)
-    throw Error(ErrorCode::Usage, std::string("gmr dot writes dot, svg or png, not ") + to_string(out), a.output);
+  const Format out = drawing_format(a.output, a.to);
   const RuleInput in = load_rule_input(a.input, a.rule);
   RuleDotOptions opt;
   opt.kappa = a.kappa;

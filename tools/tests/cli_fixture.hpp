@@ -32,7 +32,7 @@ class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = gmr::testing::scratch_path("gmr_cli_test_" + std::string(test->test_suite_name()) + "_" + test->name());
+    dir = gmr::testing::scratch_path("gmr_" + std::string(test->test_suite_name()) + "_" + test->name());
     fs::remove_all(dir);
     fs::create_directories(dir / "out");
   }

@@ -212,25 +212,23 @@ TEST_F(Cli, OffVariantsOfCgalDataAreRead) {
 }
 
 TEST_F(Cli, InputSizeAndDartLimitsFailFast) {
-  auto run_with = [&](const std::string& env, const std::string& args) {
+  // `gmr ARGS` with the environment settings ENV: exit code 2 and `message` on standard error.
+  auto expect_refused = [&](const std::string& env, const std::string& args, const std::string& message) {
     const int status = std::system((env + " " + q(gmr_bin()) + " " + args + " >/dev/null 2>" + q(dir / "stderr")).c_str());
-    return std::make_pair(WEXITSTATUS(status), gmr::io::read_text_file(dir / "stderr"));
+    const std::string err = gmr::io::read_text_file(dir / "stderr");
+    EXPECT_EQ(WEXITSTATUS(status), 2) << env << " " << args;
+    EXPECT_NE(err.find(message), std::string::npos) << err;
   };
-  auto [code, err] = run_with("GMR_MAX_DARTS=40", "info " + q(tools_data("cube.off")));
-  EXPECT_EQ(code, 2);
-  EXPECT_NE(err.find("the input needs 48 darts, above the limit of 40 (set GMR_MAX_DARTS to raise it)"), std::string::npos) << err;
-  std::tie(code, err) = run_with("GMR_MAX_DARTS=7", "info " + q(test_data("square.json")));
-  EXPECT_EQ(code, 2);
-  EXPECT_NE(err.find("square.json:$.darts: the input needs 8 darts"), std::string::npos) << err;
-  std::tie(code, err) = run_with("GMR_MAX_INPUT_BYTES=100", "info " + q(tools_data("cube.off")));
-  EXPECT_EQ(code, 2);
-  EXPECT_NE(err.find("above the limit of 100 bytes (set GMR_MAX_INPUT_BYTES to raise it)"), std::string::npos) << err;
-  std::tie(code, err) = run_with("GMR_MAX_INPUT_BYTES=100", "info --from off - <" + q(tools_data("cube.off")));
-  EXPECT_EQ(code, 2);
-  EXPECT_NE(err.find("-: input of more than 100 bytes"), std::string::npos) << err;
-  std::tie(code, err) = run_with("GMR_MAX_DARTS=lots", "info " + q(tools_data("cube.off")));
-  EXPECT_EQ(code, 2);
-  EXPECT_NE(err.find("GMR_MAX_DARTS: expected a non-negative integer, found \"lots\""), std::string::npos) << err;
+  expect_refused("GMR_MAX_DARTS=40", "info " + q(tools_data("cube.off")),
+                 "the input needs 48 darts, above the limit of 40 (set GMR_MAX_DARTS to raise it)");
+  expect_refused("GMR_MAX_DARTS=7", "info " + q(test_data("square.json")),
+                 "square.json:$.darts: the input needs 8 darts");
+  expect_refused("GMR_MAX_INPUT_BYTES=100", "info " + q(tools_data("cube.off")),
+                 "above the limit of 100 bytes (set GMR_MAX_INPUT_BYTES to raise it)");
+  expect_refused("GMR_MAX_INPUT_BYTES=100", "info --from off - <" + q(tools_data("cube.off")),
+                 "-: input of more than 100 bytes");
+  expect_refused("GMR_MAX_DARTS=lots", "info " + q(tools_data("cube.off")),
+                 "GMR_MAX_DARTS: expected a non-negative integer, found \"lots\"");
 }
 
 TEST_F(Cli, StructuralProblemsOfJerboaRulesAreLocated) {

@@ -61,6 +61,19 @@ Map one_edge_cylinder() {
   return g;
 }
 
+// The events of 2-unsewing (kind Split) or 2-sewing back (kind Merge) the edge (1,1)-(1,2) between
+// the top faces of the 2x2 grid of quads (Figs. 7a, 7b): certain on the edge (<0,2>) and two
+// <2>-orbits, confirmed on the vertex (1,2); a modification of the vertex (1,1) and of the surface
+// refuted.
+void expect_top_edge_events(const Checked& c, OrbitEventKind kind) {
+  EXPECT_EQ(count(c.log("<0,2>"), kind, EventStatus::Certain), 1u);
+  EXPECT_EQ(count(c.log("<2>"), kind, EventStatus::Certain), 2u);
+  EXPECT_EQ(count(c.log("<1,2>"), kind, EventStatus::Confirmed), 1u);                       // (1,2)
+  EXPECT_EQ(count(c.log("<1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);  // (1,1)
+  EXPECT_EQ(count(c.log("<0,1,2>"), kind), 0u);
+  EXPECT_EQ(count(c.log("<0,1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);
+}
+
 }  // namespace
 
 // Table 1: face triangulation of the square of the house at a0, all 8 orbit types, as corrected
@@ -154,12 +167,7 @@ TEST(Fixtures, F2UnsewTwice) {
   // First: the edge (1,1)-(1,2) between the top faces; the surface stays connected.
   const Checked c1 = apply_checked(rule, g, {edge_dart(m, {1, 1, 0}, {1, 2, 0})});
   expect_oracle_agrees(c1);
-  EXPECT_EQ(count(c1.log("<0,2>"), OrbitEventKind::Split, EventStatus::Certain), 1u);
-  EXPECT_EQ(count(c1.log("<2>"), OrbitEventKind::Split, EventStatus::Certain), 2u);
-  EXPECT_EQ(count(c1.log("<1,2>"), OrbitEventKind::Split, EventStatus::Confirmed), 1u);  // (1,2)
-  EXPECT_EQ(count(c1.log("<1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);  // (1,1)
-  EXPECT_EQ(count(c1.log("<0,1,2>"), OrbitEventKind::Split), 0u);
-  EXPECT_EQ(count(c1.log("<0,1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);
+  expect_top_edge_events(c1, OrbitEventKind::Split);
   EXPECT_EQ(cells(g), (std::vector<size_t>{10, 13, 4, 1}));
   // Second: the edge (0,1)-(1,1) between the left faces; the top-left face falls off.
   const Checked c2 = apply_checked(rule, g, {edge_dart(m, {0, 1, 0}, {1, 1, 0})});
@@ -179,12 +187,7 @@ TEST(Fixtures, F3SewTwoHooks) {
   ASSERT_TRUE(apply_checked(library_rule("unsew2"), g, {a0}).logged.application);
   const Checked c = apply_checked(library_rule("sew2"), g, {a0, a1});
   expect_oracle_agrees(c);
-  EXPECT_EQ(count(c.log("<0,2>"), OrbitEventKind::Merge, EventStatus::Certain), 1u);
-  EXPECT_EQ(count(c.log("<2>"), OrbitEventKind::Merge, EventStatus::Certain), 2u);
-  EXPECT_EQ(count(c.log("<1,2>"), OrbitEventKind::Merge, EventStatus::Confirmed), 1u);  // (1,2)
-  EXPECT_EQ(count(c.log("<1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);  // (1,1)
-  EXPECT_EQ(count(c.log("<0,1,2>"), OrbitEventKind::Merge), 0u);
-  EXPECT_EQ(count(c.log("<0,1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);
+  expect_top_edge_events(c, OrbitEventKind::Merge);
   for (int i = 0; i <= 2; ++i) EXPECT_EQ(g.links(i), grid.links(i)) << i;  // dart for dart
 }
 

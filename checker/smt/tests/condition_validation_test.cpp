@@ -103,11 +103,7 @@ TEST(ConditionValidation, WrongCycleRefutedMinimally) {
 
 TEST(ConditionValidation, ShardsPartitionTheSweep) {
   const BuiltinCondition* c = find_builtin_condition("wrong-incident-without-dangling");
-  ValidationOptions o;
-  o.n = 1;
-  o.labels = {0, 1};
-  o.max_nodes = 2;
-  o.bound = 3;
+  ValidationOptions o{.n = 1, .labels = {0, 1}, .max_nodes = 2, .bound = 3};
   size_t rules = 0, unsound = 0, holds = 0;
   for (unsigned k = 0; k < 3; ++k) {
     o.shard = k;
@@ -129,12 +125,7 @@ TEST(ConditionValidation, ShardsPartitionTheSweep) {
 
 TEST(ConditionValidation, TimeLimitReportsCoverage) {
   const BuiltinCondition* c = find_builtin_condition("thesis");
-  ValidationOptions o;
-  o.n = 1;
-  o.labels = {0};
-  o.max_nodes = 3;
-  o.bound = 4;
-  o.time_limit = 0.3;
+  ValidationOptions o{.n = 1, .labels = {0}, .max_nodes = 3, .bound = 4, .time_limit = 0.3};
   const auto r = validate_condition(c->name, [&](const std::vector<Rule>& rs) {
     std::vector<bool> out;
     for (const auto& x : rs) out.push_back(c->holds(x));
@@ -148,11 +139,7 @@ TEST(ConditionValidation, TimeLimitReportsCoverage) {
 TEST(ConditionPlugins, WorkedExampleSoundButIncomplete) {
   ConditionPlugin p(plugin("closed_components_condition"));
   EXPECT_EQ(p.name(), "closed-components");
-  ValidationOptions o;
-  o.n = 1;
-  o.labels = {0, 1};
-  o.max_nodes = 2;
-  o.bound = 4;
+  ValidationOptions o{.n = 1, .labels = {0, 1}, .max_nodes = 2, .bound = 4};
   auto eval = [&](const std::vector<Rule>& rs) { return p.evaluate(rs); };
   const auto one = validate_condition(p.name(), eval, o);
   std::printf("%s", to_text(one).c_str());
@@ -212,13 +199,7 @@ TEST(ConditionPlugins, BadPluginsFailNamingPluginAndRule) {
 
 TEST(ConditionValidation, RandomLargerRules) {
   const BuiltinCondition* c = find_builtin_condition("thesis");
-  ValidationOptions o;
-  o.n = 1;
-  o.labels = {0, 1};
-  o.max_nodes = 1;
-  o.bound = 6;
-  o.random = 300;
-  o.seed = 7;
+  ValidationOptions o{.n = 1, .labels = {0, 1}, .max_nodes = 1, .bound = 6, .random = 300, .seed = 7};
   auto eval = [&](const std::vector<Rule>& rs) {
     std::vector<bool> out;
     for (const auto& x : rs) out.push_back(c->holds(x));

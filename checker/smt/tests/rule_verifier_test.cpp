@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "checker/smt/rule_verifier.hpp"
+#include "checker/smt/tests/both_engines.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "model/testing/rule_family.hpp"
 #include "model/testing/source_tree.hpp"
@@ -22,15 +23,7 @@ TEST(RuleVerifier, FixturesSmtAgreesWithEnumerator) {
     if (e.path().extension() != ".json") continue;
     const Rule r = io::read_rule_file(e.path());
     const unsigned bound = r.dimension() <= 1 ? 6 : 4;
-    const VerifyResult s = verify_smt(r, bound);
-    const VerifyResult m = verify_enum(r, bound);
-    EXPECT_EQ(s.preserves, m.preserves) << e.path();
-    EXPECT_EQ(s.applicable, m.applicable) << e.path();
-    if (!s.preserves) {
-      ASSERT_TRUE(s.counterexample && m.counterexample);
-      // Both engines search by increasing size: the counterexamples have the same number of darts.
-      EXPECT_EQ(s.counterexample->G.size(), m.counterexample->G.size()) << e.path();
-    }
+    const auto [s, m] = verify_both(r, bound, e.path().string());
     std::printf("%-40s smt %s%s %.3fs  enum %s%s %.3fs\n", e.path().stem().c_str(), s.preserves ? "ok" : "BREAKS",
                 s.applicable ? "" : " (vacuous)", s.seconds, m.preserves ? "ok" : "BREAKS",
                 m.applicable ? "" : " (vacuous)", m.seconds);
@@ -40,8 +33,7 @@ TEST(RuleVerifier, FixturesSmtAgreesWithEnumerator) {
 }
 
 namespace {
-// Every rule of the family: the two engines give the same verdict and applicability, and
-// counterexamples of the same size (both search the smallest maps first).
+// Every rule of the family: the two engines agree (both_engines.hpp).
 // Every `stride`-th rule of the family (the whole family takes about a minute per case).
 void compare_family(int n, MapKind kind, int max_nodes, const std::vector<int>& labels, unsigned bound,
                     size_t stride, const EncodingOptions& opt = {}) {
@@ -49,13 +41,7 @@ void compare_family(int n, MapKind kind, int max_nodes, const std::vector<int>& 
   gmr::testing::for_each_small_rule(n, kind, max_nodes, labels, [&](const Rule& r) {
     if (seen++ % stride) return true;
     ++rules;
-    const VerifyResult s = verify_smt(r, bound, opt);
-    const VerifyResult m = verify_enum(r, bound);
-    EXPECT_EQ(s.preserves, m.preserves) << io::rule_to_json(r).dump();
-    EXPECT_EQ(s.applicable, m.applicable) << io::rule_to_json(r).dump();
-    if (!s.preserves && !m.preserves) {
-      EXPECT_EQ(s.counterexample->G.size(), m.counterexample->G.size()) << io::rule_to_json(r).dump();
-    }
+    const VerifyResult m = verify_both(r, bound, io::rule_to_json(r).dump(), opt).enumeration;
     breaks += !m.preserves;
     vacuous += !m.applicable;
     return !::testing::Test::HasFailure();

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/testing/cgal_generalized_map.hpp"
@@ -204,21 +205,27 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
     EXPECT_EQ(gmr::signature(g) == gmr::signature(h), ci);
     ++st.iso_pairs;
   }
+  // A random relabeling of the mutated map m: valid with the same cells in both libraries, the
+  // signatures equal iff CGAL finds it isomorphic to g; returns gmr's and CGAL's verdicts.
+  auto relabeled_verdicts = [&](const Map& m) {
+    Map h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
+    to_cgal<N>(h, ch);
+    EXPECT_TRUE(gmr::is_valid(h));
+    EXPECT_TRUE(cgal_is_valid(ch));
+    EXPECT_EQ(gmr_cells(h), cgal_cells<N>(ch));
+    const bool gi = gmr::is_isomorphic(g, h), ci = cgal_isomorphic<N>(cg, ch);
+    EXPECT_EQ(gmr::signature(g) == gmr::signature(h), ci);
+    return std::pair{gi, ci};
+  };
   // Non-isomorphic pair: one orbit unsewn (or sewn), then relabeled.
   {
     Map m = g;
     const Mutation mu = gmr::testing::mutate_one_link(m, rng);
     if (mu.kind != Mutation::Kind::None) {
       SCOPED_TRACE(mu.str());
-      Map h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
-      to_cgal<N>(h, ch);
-      EXPECT_TRUE(gmr::is_valid(h));
-      EXPECT_TRUE(cgal_is_valid(ch));
-      EXPECT_EQ(gmr_cells(h), cgal_cells<N>(ch));
-      const bool gi = gmr::is_isomorphic(g, h), ci = cgal_isomorphic<N>(cg, ch);
+      const auto [gi, ci] = relabeled_verdicts(m);
       EXPECT_FALSE(gi) << "gmr: mutated copy isomorphic";
       EXPECT_FALSE(ci) << "CGAL: mutated copy isomorphic";
-      EXPECT_EQ(gmr::signature(g) == gmr::signature(h), ci);
       ++st.mutated_pairs;
     }
   }
@@ -230,25 +237,23 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
       ++st.resew_none;
     } else {
       SCOPED_TRACE(mu.str());
-      Map h = gmr::testing::permute_darts(m, gmr::testing::random_permutation(rng, m.capacity()));
-      to_cgal<N>(h, ch);
-      EXPECT_TRUE(gmr::is_valid(h));
-      EXPECT_TRUE(cgal_is_valid(ch));
-      EXPECT_EQ(gmr_cells(h), cgal_cells<N>(ch));
-      const bool gi = gmr::is_isomorphic(g, h), ci = cgal_isomorphic<N>(cg, ch);
+      const auto [gi, ci] = relabeled_verdicts(m);
       EXPECT_EQ(gi, ci) << "gmr and CGAL disagree on a resewn pair";
-      EXPECT_EQ(gmr::signature(g) == gmr::signature(h), ci);
       ++(ci ? st.resew_iso : st.resew_non_iso);
     }
   }
   // Invalid maps: both must report them.
+  auto rejected_by_both = [&](const Map& b) {
+    to_cgal<N>(b, ch);
+    const auto rep = gmr::check_validity(b);
+    EXPECT_FALSE(rep.ok());
+    EXPECT_FALSE(cgal_is_valid(ch));
+    return rep;
+  };
   {
     Map b = g;
     if (break_involution(b, rng)) {
-      to_cgal<N>(b, ch);
-      const auto rep = gmr::check_validity(b);
-      EXPECT_FALSE(rep.ok());
-      EXPECT_FALSE(cgal_is_valid(ch));
+      const auto rep = rejected_by_both(b);
       bool has_invol = false;
       for (const auto& v : rep.violations) has_invol |= v.kind == gmr::ViolationKind::NotInvolution;
       EXPECT_TRUE(has_invol);
@@ -258,10 +263,7 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
   {
     Map b = g;
     if (break_cycle(b, rng)) {
-      to_cgal<N>(b, ch);
-      const auto rep = gmr::check_validity(b);
-      EXPECT_FALSE(rep.ok());
-      EXPECT_FALSE(cgal_is_valid(ch));
+      const auto rep = rejected_by_both(b);
       for (const auto& v : rep.violations)
         EXPECT_EQ(v.kind, gmr::ViolationKind::Cycle) << v.describe();
       ++st.broken_cycle;

@@ -23,8 +23,13 @@ using gmr::testing::Rng;
 
 namespace {
 
+void report(const char* what, const Stats& st) {
+  std::cout << "[cgal-diff] " << what << ": " << st.str() << "\n";
+}
+
+// compare_one on `seeds` random maps of the generator, the statistics reported as `what`.
 template <unsigned N>
-Stats sweep(Generator gen, uint64_t seeds) {
+Stats sweep(Generator gen, uint64_t seeds, const char* what) {
   Stats st;
   for (uint64_t s = 0; s < seeds; ++s) {
     Rng rng(s * 7919 + N * 101 + static_cast<uint64_t>(gen));
@@ -34,47 +39,38 @@ Stats sweep(Generator gen, uint64_t seeds) {
     compare_one<N>(g, rng, st);
     if (::testing::Test::HasFatalFailure()) break;
   }
+  report(what, st);
   return st;
-}
-
-void report(const char* what, const Stats& st) {
-  std::cout << "[cgal-diff] " << what << ": " << st.str() << "\n";
 }
 
 }  // namespace
 
 TEST(CgalDiff, GluedPolygons2D) {
-  const Stats st = sweep<2>(Generator::GluedPolygons, 80);
-  report("glued polygons n=2", st);
+  const Stats st = sweep<2>(Generator::GluedPolygons, 80, "glued polygons n=2");
   EXPECT_GT(st.resew_iso + st.resew_non_iso, 40u);
   EXPECT_GT(st.broken_cycle, 40u);
 }
 
 TEST(CgalDiff, GluedPolygons3D) {
-  const Stats st = sweep<3>(Generator::GluedPolygons, 40);
-  report("glued polygons n=3", st);
+  sweep<3>(Generator::GluedPolygons, 40, "glued polygons n=3");
 }
 
 TEST(CgalDiff, SewSequence2D) {
-  const Stats st = sweep<2>(Generator::SewSequence, 80);
-  report("sew sequences n=2", st);
+  const Stats st = sweep<2>(Generator::SewSequence, 80, "sew sequences n=2");
   EXPECT_GT(st.multi_component, 10u);
 }
 
 TEST(CgalDiff, SewSequence3D) {
-  const Stats st = sweep<3>(Generator::SewSequence, 80);
-  report("sew sequences n=3", st);
+  sweep<3>(Generator::SewSequence, 80, "sew sequences n=3");
 }
 
 TEST(CgalDiff, Polycube3D) {
-  const Stats st = sweep<3>(Generator::Polycube, 50);
-  report("polycubes n=3", st);
+  const Stats st = sweep<3>(Generator::Polycube, 50, "polycubes n=3");
   EXPECT_GT(st.broken_cycle, 40u);
 }
 
 TEST(CgalDiff, SewSequence4D) {
-  const Stats st = sweep<4>(Generator::SewSequence, 30);
-  report("sew sequences n=4", st);
+  sweep<4>(Generator::SewSequence, 30, "sew sequences n=4");
 }
 
 TEST(CgalDiff, ResewnRandomMaps) {

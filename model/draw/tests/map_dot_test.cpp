@@ -4,19 +4,12 @@
 
 #include "model/core/builders.hpp"
 #include "model/draw/map_dot.hpp"
+#include "model/testing/count_occurrences.hpp"
 
 using namespace gmr;
 using namespace gmr::draw;
 
-namespace {
-
-size_t count(const std::string& text, const std::string& what) {
-  size_t k = 0;
-  for (size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++k;
-  return k;
-}
-
-}  // namespace
+using gmr::testing::count_occurrences;
 
 TEST(IoDot, ColoursPerDimension) {
   EXPECT_EQ(dimension_colour(0), "black");
@@ -32,16 +25,16 @@ TEST(IoDot, StackedCubesOneEdgePerLink) {
   const std::string dot = to_dot(g);
   EXPECT_EQ(dot.rfind("graph \"gmap\" {", 0), 0u);
   // 48 0-links, 48 1-links, 48 2-links; 88 3-links of which 80 are loops (not drawn by default).
-  EXPECT_EQ(count(dot, "[color=black]"), 48u);
-  EXPECT_EQ(count(dot, "[color=red]"), 48u);
-  EXPECT_EQ(count(dot, "[color=blue]"), 48u);
-  EXPECT_EQ(count(dot, "[color=green]"), 8u);
-  EXPECT_EQ(count(dot, " -- "), 152u);
-  EXPECT_EQ(count(dot, " -> "), 0u);
+  EXPECT_EQ(count_occurrences(dot, "[color=black]"), 48u);
+  EXPECT_EQ(count_occurrences(dot, "[color=red]"), 48u);
+  EXPECT_EQ(count_occurrences(dot, "[color=blue]"), 48u);
+  EXPECT_EQ(count_occurrences(dot, "[color=green]"), 8u);
+  EXPECT_EQ(count_occurrences(dot, " -- "), 152u);
+  EXPECT_EQ(count_occurrences(dot, " -> "), 0u);
   DotOptions opt;
   opt.loops = true;
   const std::string with_loops = to_dot(g, opt);
-  EXPECT_EQ(count(with_loops, "[color=green]"), 88u);
+  EXPECT_EQ(count_occurrences(with_loops, "[color=green]"), 88u);
   EXPECT_NE(with_loops.find("  0 -- 0 [color=green];"), std::string::npos);
 }
 
@@ -49,8 +42,8 @@ TEST(IoDot, OMapBetaOneIsDirected) {
   const Map o = orient(make_cube());  // 24 darts, beta_1 a permutation, beta_2 an involution
   const std::string dot = to_dot(o);
   EXPECT_EQ(dot.rfind("digraph", 0), 0u);
-  EXPECT_EQ(count(dot, "[color=red]"), 24u);
-  EXPECT_EQ(count(dot, "[color=blue, dir=none]"), 12u);
+  EXPECT_EQ(count_occurrences(dot, "[color=red]"), 24u);
+  EXPECT_EQ(count_occurrences(dot, "[color=blue, dir=none]"), 12u);
 }
 
 TEST(IoDot, NonReciprocatedLinksAreDashedArrows) {
@@ -62,7 +55,7 @@ TEST(IoDot, NonReciprocatedLinksAreDashedArrows) {
   const std::string dot = to_dot(g);
   EXPECT_NE(dot.find("  0 -- 1 [color=black, style=dashed, dir=forward];"), std::string::npos) << dot;
   EXPECT_NE(dot.find("  1 -- 2 [color=black];"), std::string::npos) << dot;
-  EXPECT_EQ(count(dot, " -- "), 2u);
+  EXPECT_EQ(count_occurrences(dot, " -- "), 2u);
 }
 
 TEST(IoDot, GraphNameIsQuoted) {

@@ -6,6 +6,7 @@
 #include "model/rule_io/rule_json.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
+#include "model/testing/count_occurrences.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -16,11 +17,7 @@ using namespace gmr::draw;
 
 namespace {
 
-size_t count(const std::string& text, const std::string& what) {
-  size_t k = 0;
-  for (size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++k;
-  return k;
-}
+using gmr::testing::count_occurrences;
 
 std::string source(const std::string& rel) { return gmr::testing::source_path(rel); }
 
@@ -48,19 +45,19 @@ TEST(IoRuleDot, ConcreteRuleSideBySide) {
   const Rule r = sew_rule();
   const std::string dot = to_dot(r);
   EXPECT_EQ(dot.rfind("digraph \"sew\" {", 0), 0u) << dot;
-  EXPECT_EQ(count(dot, "subgraph cluster_L {"), 1u);
-  EXPECT_EQ(count(dot, "subgraph cluster_R {"), 1u);
+  EXPECT_EQ(count_occurrences(dot, "subgraph cluster_L {"), 1u);
+  EXPECT_EQ(count_occurrences(dot, "subgraph cluster_R {"), 1u);
   EXPECT_NE(dot.find("L0 [label=\"a\"]"), std::string::npos) << dot;
   EXPECT_NE(dot.find("R3 [label=\"d\"]"), std::string::npos) << dot;
   // Two 0-links per side, one undirected edge each; four deleted 2-loops in L, two added 2-links in R.
-  EXPECT_EQ(count(dot, "[color=black, dir=none]"), 4u) << dot;
-  EXPECT_EQ(count(dot, "[color=blue, penwidth=2.5, dir=none]"), 6u) << dot;
+  EXPECT_EQ(count_occurrences(dot, "[color=black, dir=none]"), 4u) << dot;
+  EXPECT_EQ(count_occurrences(dot, "[color=blue, penwidth=2.5, dir=none]"), 6u) << dot;
   EXPECT_NE(dot.find("L0 -> L0 [color=blue"), std::string::npos);
-  EXPECT_EQ(count(dot, "color=pink"), 0u);
+  EXPECT_EQ(count_occurrences(dot, "color=pink"), 0u);
   RuleDotOptions opt;
   opt.kappa = true;
   const std::string k = to_dot(r, opt);
-  EXPECT_EQ(count(k, "color=pink, style=dashed"), 4u) << k;
+  EXPECT_EQ(count_occurrences(k, "color=pink, style=dashed"), 4u) << k;
   EXPECT_NE(k.find("L2 -> R2 [color=pink"), std::string::npos);
 }
 
@@ -87,7 +84,7 @@ TEST(IoRuleDot, SchemeLabelsHooksLoops) {
   EXPECT_NE(dot.find("L0 [label=\"n0 <0>\", peripheries=2]"), std::string::npos) << dot;
   EXPECT_NE(dot.find("L1 [label=\"n1 <0>\", peripheries=2]"), std::string::npos) << dot;
   EXPECT_NE(dot.find("R0 [label=\"n0 <0>\"]"), std::string::npos) << dot;
-  EXPECT_EQ(count(dot, "peripheries=2"), 2u);  // hooks only, on L
+  EXPECT_EQ(count_occurrences(dot, "peripheries=2"), 2u);  // hooks only, on L
   EXPECT_NE(dot.find("L0 -> L0 [color=blue, penwidth=2.5]"), std::string::npos) << dot;  // deleted loop
   EXPECT_NE(dot.find("R0 -> R1 [color=blue, penwidth=2.5]"), std::string::npos) << dot;  // added arc
 
@@ -111,5 +108,5 @@ TEST(IoRuleDot, Highlights) {
   EXPECT_NE(dot.find("R1_note [shape=note, fontsize=8, fontcolor=darkred, color=gray, label=\"X-code\"]"), std::string::npos);
   EXPECT_NE(dot.find("R1 -> R1_note [style=dotted"), std::string::npos);
   EXPECT_EQ(dot.find("L1 [label=\"n1 <0>\", peripheries=2, fill"), std::string::npos) << dot;  // R only
-  EXPECT_EQ(count(dot, "fillcolor=\"#ffd58a\""), 2u) << dot;                                  // n0 on both sides
+  EXPECT_EQ(count_occurrences(dot, "fillcolor=\"#ffd58a\""), 2u) << dot;                                  // n0 on both sides
 }

@@ -1,6 +1,8 @@
 // Oracle: the subdivision rule schemes of tools/data/rules with their position expressions give
 // CGAL::Subdivision_method_3's meshes (isomorphic, positions within 1e-9 relative) on the small
 // closed meshes of tools/data, after 1 and 3 iterations.
+#include <initializer_list>
+
 #include "model/expr/tests/subdivision_oracle.hpp"
 
 using namespace gmr::expr::oracle;
@@ -9,37 +11,26 @@ namespace {
 
 std::string data(const char* name) { return source_dir() + "/tools/data/" + name; }
 
-}  // namespace
-
-TEST(SubdivisionOracle, CatmullClarkCube) {
-  for (int it : {1, 3}) check(data("cube.off"), Method::CatmullClark, it);
+// check after 1 and after 3 iterations on each mesh of tools/data.
+void check_meshes(Method m, std::initializer_list<const char*> meshes) {
+  for (int it : {1, 3})
+    for (const char* mesh : meshes) check(data(mesh), m, it);
 }
 
+}  // namespace
+
+TEST(SubdivisionOracle, CatmullClarkCube) { check_meshes(Method::CatmullClark, {"cube.off"}); }
+
 TEST(SubdivisionOracle, CatmullClarkTriangles) {
-  for (int it : {1, 3}) {
-    check(data("tetrahedron.off"), Method::CatmullClark, it);
-    check(data("octahedron.off"), Method::CatmullClark, it);
-  }
+  check_meshes(Method::CatmullClark, {"tetrahedron.off", "octahedron.off"});
 }
 
 TEST(SubdivisionOracle, LoopTetrahedronAndOctahedron) {
-  for (int it : {1, 3}) {
-    check(data("tetrahedron.off"), Method::Loop, it);
-    check(data("octahedron.off"), Method::Loop, it);
-  }
+  check_meshes(Method::Loop, {"tetrahedron.off", "octahedron.off"});
 }
 
 TEST(SubdivisionOracle, Sqrt3TetrahedronAndOctahedron) {
-  for (int it : {1, 3}) {
-    check(data("tetrahedron.off"), Method::Sqrt3, it);
-    check(data("octahedron.off"), Method::Sqrt3, it);
-  }
+  check_meshes(Method::Sqrt3, {"tetrahedron.off", "octahedron.off"});
 }
 
-TEST(SubdivisionOracle, DooSabin) {
-  for (int it : {1, 3}) {
-    check(data("cube.off"), Method::DooSabin, it);
-    check(data("tetrahedron.off"), Method::DooSabin, it);
-    check(data("octahedron.off"), Method::DooSabin, it);
-  }
-}
+TEST(SubdivisionOracle, DooSabin) { check_meshes(Method::DooSabin, {"cube.off", "tetrahedron.off", "octahedron.off"}); }

@@ -134,9 +134,10 @@ TEST(IoJson, ValuesAreTypedOnReadingAndWrittenBackAsRead) {
     EXPECT_EQ(m.fields[0].arity, c.arity) << c.values;
     const nlohmann::json back = nlohmann::json::parse(write_map_json(m));
     EXPECT_EQ(back["embeddings"][0]["values"], given["embeddings"][0]["values"]) << c.values;
-    if (c.same_text) EXPECT_EQ(back["embeddings"][0]["values"].dump(), given["embeddings"][0]["values"].dump()) << c.values;
+    if (c.same_text) {
+      EXPECT_EQ(back["embeddings"][0]["values"].dump(), given["embeddings"][0]["values"].dump()) << c.values;
+    }
   }
-}
 }
 
 TEST(IoJson, InvalidMapIsReturnedNotRejected) {

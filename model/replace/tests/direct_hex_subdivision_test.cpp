@@ -18,16 +18,7 @@
 namespace gmr::replace {
 namespace {
 
-// The per-dart positions, rounded and sorted (a multiset invariant under dart renumbering).
-std::vector<std::array<long long, 3>> position_multiset(const FlaggedMap& m) {
-  std::vector<std::array<long long, 3>> out;
-  m.map.for_each_dart([&](Dart d) {
-    const Vec3& p = m.position[d];
-    out.push_back({std::llround(p[0] * 1e6), std::llround(p[1] * 1e6), std::llround(p[2] * 1e6)});
-  });
-  std::sort(out.begin(), out.end());
-  return out;
-}
+using testing::position_multiset;
 
 TEST(DirectHexSubdivision, UnitPositionsOfAPolycube) {
   const FlaggedMap m = testing::positioned_polycube({{0, 0, 0}, {1, 0, 0}});

@@ -70,16 +70,7 @@ TEST(EdgeSplit, SplitAllEdgesEqualsSplittingEveryEdge) {
     EXPECT_EQ(b.flagged(), a.flagged());
     EXPECT_TRUE(is_isomorphic(a.map, b.map, &a.flag, &b.flag)) << k;
     // The new vertices are interpolated from either end of their edge: equal up to rounding.
-    auto points = [](const FlaggedMap& m) {
-      std::vector<std::array<long long, 3>> p;
-      m.map.for_each_dart([&](Dart d) {
-        const Vec3& x = m.position[d];
-        p.push_back({std::llround(x[0] * 1e9), std::llround(x[1] * 1e9), std::llround(x[2] * 1e9)});
-      });
-      std::sort(p.begin(), p.end());
-      return p;
-    };
-    EXPECT_EQ(points(a), points(b));
+    EXPECT_EQ(testing::position_multiset(a, 1e9), testing::position_multiset(b, 1e9));
   }
   FlaggedMap holes = all_flagged(make_stacked_cubes());
   holes.map.remove_dart(holes.map.add_dart());  // a deleted dart in the index range

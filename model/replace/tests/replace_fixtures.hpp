@@ -1,9 +1,13 @@
 // Shared helpers of the query-replace tests: pattern files from tools/data/patterns and flagged
 // builders.
 #pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
@@ -41,6 +45,18 @@ inline FlaggedMap positioned_polycube(const std::vector<Voxel>& voxels) {
 // Splits every edge of m in k, one edge after the other (split_all_edges does it at once).
 inline void split_each_edge(FlaggedMap& m, unsigned k) {
   for (Dart e : orbit_representatives(m.map, cell_type(m.map, 1))) split_edge(m, e, k);
+}
+
+// The per-dart positions, rounded to multiples of 1/scale and sorted (a multiset invariant under
+// dart renumbering).
+inline std::vector<std::array<long long, 3>> position_multiset(const FlaggedMap& m, double scale = 1e6) {
+  std::vector<std::array<long long, 3>> out;
+  m.map.for_each_dart([&](Dart d) {
+    const Vec3& p = m.position[d];
+    out.push_back({std::llround(p[0] * scale), std::llround(p[1] * scale), std::llround(p[2] * scale)});
+  });
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 }  // namespace gmr::replace::testing

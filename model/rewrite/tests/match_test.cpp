@@ -20,14 +20,20 @@ const char* kSew = R"({"format":"gmr.rule","version":1,"kind":"concrete","map":"
      {"nodes":["a","a"],"label":2},{"nodes":["b","b"],"label":2},{"nodes":["c","c"],"label":2},{"nodes":["d","d"],"label":2}]},
   "right":{"nodes":["a","b","c","d"],"links":[{"nodes":["a","b"],"label":0},{"nodes":["c","d"],"label":0},
      {"nodes":["a","c"],"label":2},{"nodes":["b","d"],"label":2}]}})";
+
+// Two free edges 0-1 and 2-3 (1-loops): the map kSew applies to.
+Map free_edges() {
+  Map g(2);
+  g.add_darts(4);
+  g.link(0, 0, 1);
+  g.link(0, 2, 3);
+  return g;
+}
 }  // namespace
 
 TEST(Match, EnumeratesAllInjectiveMatches) {
   const Rule r = parse_rule(kSew);
-  Map g(2);
-  g.add_darts(4);  // two free edges 0-1 and 2-3 (1-loops)
-  g.link(0, 0, 1);
-  g.link(0, 2, 3);
+  const Map g = free_edges();
   const auto ms = find_map_matches(r, g);
   // (a,b) on one edge in 2 orientations, (c,d) on the other in 2, and the edges swapped: 8.
   EXPECT_EQ(ms.size(), 8u);
@@ -40,10 +46,7 @@ TEST(Match, EnumeratesAllInjectiveMatches) {
 
 TEST(Match, AnchoredMatchingPropagates) {
   const Rule r = parse_rule(kSew);
-  Map g(2);
-  g.add_darts(4);
-  g.link(0, 0, 1);
-  g.link(0, 2, 3);
+  const Map g = free_edges();
   const DGraph dg = to_dgraph(g);
   auto m = anchored_match(r.left(), dg, {{0, 1}, {2, 3}});
   ASSERT_TRUE(m);
@@ -60,10 +63,7 @@ TEST(Match, AnchoredMatchingPropagates) {
 
 TEST(Dpo, SewOnMapsBothWays) {
   const Rule r = parse_rule(kSew);
-  Map g(2);
-  g.add_darts(4);
-  g.link(0, 0, 1);
-  g.link(0, 2, 3);
+  const Map g = free_edges();
   const std::vector<Dart> m{0, 1, 2, 3};
   const MapDerivation a = apply(r, g, m, Construction::Rewriting),
                       b = apply(r, g, m, Construction::Categorical);
