@@ -7,7 +7,8 @@ namespace gmr::checker {
 using namespace gmr::graph;
 using namespace gmr::rewrite;
 
-std::string SemanticWitness::describe(const Rule& r, const MapFamily& f) const {
+std::string to_text(const SemanticWitness& w, const Rule& r, const MapFamily& f) {
+  const auto& [map_index, match, H, violations] = w;
   const Map& g = f.maps[map_index];
   std::string s = "map #" + std::to_string(map_index) + " (" + std::to_string(g.size()) + " darts;";
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
@@ -18,7 +19,7 @@ std::string SemanticWitness::describe(const Rule& r, const MapFamily& f) const {
   s += "), match";
   for (Node v = 0; v < r.left().num_nodes(); ++v) s += " " + r.left().name(v) + "->" + std::to_string(match.node[v]);
   s += "; H breaks:";
-  for (size_t k = 0; k < violations.size() && k < 3; ++k) s += " " + violations[k].describe(H) + ";";
+  for (size_t k = 0; k < violations.size() && k < 3; ++k) s += " " + to_text(violations[k], H) + ";";
   return s;
 }
 

@@ -22,7 +22,6 @@
 #include "model/rewrite/rule.hpp"
 
 namespace gmr::checker {
-using graph::ConstraintViolation;
 using graph::DGraph;
 using graph::MapFamily;
 using rewrite::Match;
@@ -33,8 +32,10 @@ struct SemanticWitness {
   Match match;
   DGraph H;
   std::vector<ConstraintViolation> violations;
-  std::string describe(const Rule& r, const MapFamily& f) const;
 };
+
+// "map #k (n darts; alpha0=[...] ...), match a->0 ...; H breaks: <the first three violations>".
+std::string to_text(const SemanticWitness& w, const Rule& r, const MapFamily& f);
 
 struct SemanticVerdict {
   size_t matches = 0;       // matches found (gluing or not)

@@ -105,7 +105,7 @@ std::string unsound_witness_text(const ValidationWitness& w) {
   if (c.gluing_fails)
     s << ": the gluing (dangling) condition fails";
   else
-    s << ": H breaks " << c.violations.front().describe(c.H);
+    s << ": H breaks " << graph::to_text(c.violations.front(), c.H);
   return s.str();
 }
 

@@ -121,7 +121,7 @@ std::string to_text(const SchemeValidationReport& r) {
     s << "\n    smallest: " << w.scheme.name << " on a hook orbit of "
       << w.result.orbit->darts.size() << " darts, a map of " << c.G.size() << " darts: "
       << (c.gluing_fails ? std::string("the gluing (dangling) condition fails")
-                         : c.violations.front().describe(c.H));
+                         : graph::to_text(c.violations.front(), c.H));
   }
   s << "\n  complete: " << (r.complete() ? "yes" : "NO") << " (" << r.incomplete << " incomplete)";
   if (r.first_incomplete) s << "\n    first: " << r.first_incomplete->name;

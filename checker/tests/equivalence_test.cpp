@@ -50,7 +50,7 @@ struct Stats {
     std::string ex = rule_to_json(r).dump() + "\n  checker: " + to_text(rep);
     if (rep.ok()) {
       ++unsound;
-      ex = "UNSOUND " + ex + "  semantics: " + v.witness->describe(r, fam);
+      ex = "UNSOUND " + ex + "  semantics: " + to_text(*v.witness, r, fam);
     } else {
       ++incomplete;
       ex = "INCOMPLETE " + ex + "  semantics: preserves on " + std::to_string(v.applications) + " applications";

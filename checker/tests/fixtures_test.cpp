@@ -214,7 +214,7 @@ TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
   const auto rep = check_validity(hc);
   EXPECT_FALSE(rep.ok());
   bool c02 = false;
-  for (const auto& v : rep.violations) c02 = c02 || (v.kind == ViolationKind::Cycle && v.i == 0 && v.j == 2);
+  for (const auto& v : rep.violations) c02 = c02 || (v.constraint == Constraint::Cycle && v.i == 0 && v.j == 2);
   EXPECT_TRUE(c02);
 }
 

@@ -166,7 +166,7 @@ std::string abbreviate(const std::string& text, size_t max_chars) {
 }
 
 void print_violations(const ValidityReport& r) {
-  for (const Violation& v : r.violations) std::cout << "  " << v.describe() << "\n";
+  for (const ConstraintViolation& v : r.violations) std::cout << "  " << to_text(v) << "\n";
   if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
 }
 

@@ -149,7 +149,7 @@ int run_apply(const ApplyArgs& a) {
     for (Node v = 0; v < r.right().num_nodes(); ++v) co[r.right().name(v)] = d.comatch[v];
     j["comatch"] = co;
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
-    for (const auto& v : rep.violations) vs.push_back(v.describe());
+    for (const auto& v : rep.violations) vs.push_back(to_text(v));
     j["violations"] = vs;
     j["violations_not_listed"] = rep.truncated;
     print_json(j);

@@ -48,14 +48,14 @@ int run_validate(const ValidateArgs& a) {
     j["map"] = map_name(f.map);
     j["valid"] = valid;
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
-    for (const Violation& v : r.violations) {
+    for (const ConstraintViolation& v : r.violations) {
       nlohmann::ordered_json x;
-      x["constraint"] = to_string(v.kind);
-      x["dart"] = v.dart;
+      x["constraint"] = to_text(v.constraint);
+      x["dart"] = v.at;
       x["i"] = v.i;
       if (v.j >= 0) x["j"] = v.j;
       x["path"] = v.path;
-      x["message"] = v.describe();
+      x["message"] = to_text(v);
       vs.push_back(x);
     }
     j["violations"] = vs;

@@ -201,7 +201,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     }
     j["tables"] = list;
     nlohmann::ordered_json vs = nlohmann::ordered_json::array();
-    for (const auto& v : rep.violations) vs.push_back(v.describe());
+    for (const auto& v : rep.violations) vs.push_back(to_text(v));
     j["violations"] = vs;
     j["violations_not_listed"] = rep.truncated;
     nlohmann::ordered_json em = nlohmann::ordered_json::array();

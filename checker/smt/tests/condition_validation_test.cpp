@@ -89,7 +89,7 @@ TEST(ConditionValidation, WrongOrientationRefutedMinimally) {
   const auto& w = *r.smallest_unsound;
   EXPECT_EQ(nodes(w.rule), 3u);
   EXPECT_EQ(w.counterexample->G.size(), 3u);
-  EXPECT_EQ(w.counterexample->violations.front().kind, graph::ConstraintKind::NonOrientation);
+  EXPECT_EQ(w.counterexample->violations.front().constraint, Constraint::NonOrientation);
 }
 
 TEST(ConditionValidation, WrongCycleRefutedMinimally) {

@@ -250,7 +250,7 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
       EXPECT_FALSE(rep.ok());
       EXPECT_FALSE(cgal_is_valid(ch));
       bool has_invol = false;
-      for (const auto& v : rep.violations) has_invol |= v.kind == gmr::ViolationKind::NotInvolution;
+      for (const auto& v : rep.violations) has_invol |= v.constraint == gmr::Constraint::NonOrientation;
       EXPECT_TRUE(has_invol);
       ++st.broken_involution;
     }
@@ -263,7 +263,7 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
       EXPECT_FALSE(rep.ok());
       EXPECT_FALSE(cgal_is_valid(ch));
       for (const auto& v : rep.violations)
-        EXPECT_EQ(v.kind, gmr::ViolationKind::Cycle) << v.describe();
+        EXPECT_EQ(v.constraint, gmr::Constraint::Cycle) << gmr::to_text(v);
       ++st.broken_cycle;
     }
   }
