@@ -10,6 +10,7 @@
 #include "model/io/voxels.hpp"
 #include "model/io/obj.hpp"
 #include "model/io/off.hpp"
+#include "model/io/validity_report.hpp"
 #include "model/io/json_writer.hpp"
 #include "model/core/position.hpp"
 #include "model/io/read_file.hpp"
@@ -166,8 +167,7 @@ std::string abbreviate(const std::string& text, size_t max_chars) {
 }
 
 void print_violations(const ValidityReport& r) {
-  for (const ConstraintViolation& v : r.violations) std::cout << "  " << to_text(v) << "\n";
-  if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
+  std::cout << io::to_text(r);
 }
 
 void print_json(const nlohmann::ordered_json& j) { std::cout << dump_json(j) << std::flush; }

@@ -8,6 +8,7 @@
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/io/json_writer.hpp"
+#include "model/io/validity_report.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/embedded_map.hpp"
 #include "model/expr/propagation.hpp"
@@ -200,9 +201,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
       list.push_back(e);
     }
     j["tables"] = list;
-    nlohmann::ordered_json vs = nlohmann::ordered_json::array();
-    for (const auto& v : rep.violations) vs.push_back(to_text(v));
-    j["violations"] = vs;
+    j["violations"] = io::violation_texts(rep);
     j["violations_not_listed"] = rep.truncated;
     nlohmann::ordered_json em = nlohmann::ordered_json::array();
     for (const auto& f : m.fields) em.push_back(f.name());
