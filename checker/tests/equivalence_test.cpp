@@ -17,6 +17,7 @@
 #include <random>
 #include <tuple>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "model/testing/rule_family.hpp"
 #include "checker/semantic.hpp"

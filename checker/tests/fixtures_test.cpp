@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "checker/semantic.hpp"
 #include "model/core/builders.hpp"

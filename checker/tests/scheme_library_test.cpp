@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"

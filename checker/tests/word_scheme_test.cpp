@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"

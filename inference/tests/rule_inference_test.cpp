@@ -2,6 +2,7 @@
 // hooks, the scheme checker; the thesis' triangle -> hexagon cases and the quad subdivision.
 #include <gtest/gtest.h>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"

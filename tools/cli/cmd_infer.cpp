@@ -16,6 +16,7 @@
 #include <iostream>
 #include <memory>
 
+#include "checker/check_format.hpp"
 #include "checker/dot_overlay.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"

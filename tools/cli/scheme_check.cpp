@@ -4,6 +4,7 @@
 #include <iostream>
 #include <map>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/io/jme_import.hpp"
 #include "model/io/json_reader.hpp"
