@@ -11,6 +11,7 @@
 #include "checker/smt/condition_plugin.hpp"
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
+#include "checker/smt/validation_format.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/scheme_conditions.hpp"
 #include "model/io/scheme_json.hpp"
