@@ -6,6 +6,7 @@
 #include "checker/scheme_checker.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/prior_cut.hpp"
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
@@ -123,7 +124,7 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   InferOptions opt;
   opt.orbit = ot("<0,1,2>");
   const InferenceResult res = infer_rules(j, opt);
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const InferredRule& r = res.rules[0];
   EXPECT_EQ(r.scheme.left.size(), 1u);
   EXPECT_EQ(r.scheme.right.size(), 4u);
@@ -170,7 +171,7 @@ TEST(RuleInference, AllOrbitTypesOnQuadSubdivision) {
       EXPECT_EQ(a.right_nodes, 192u);
     }
   EXPECT_TRUE(empty_orbit);
-  EXPECT_NE(summary_text(res).find("rule(s) inferred"), std::string::npos);
+  EXPECT_NE(to_text(res).find("rule(s) inferred"), std::string::npos);
 }
 
 // Marking (thesis §7.3.2) and de-duplication: vertex insertion on every edge of an open square,
@@ -190,12 +191,12 @@ TEST(RuleInference, MarkingSkipsEquivalentStartsAndDuplicatesAreMerged) {
   InferOptions opt;
   opt.orbit = ot("<0,2>");
   const InferenceResult res = infer_rules(j, opt);
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& s = res.rules[0].scheme;
   EXPECT_EQ(s.left.size(), 4u);
   EXPECT_EQ(s.right.size(), 8u);
   EXPECT_FALSE(schemes_isomorphic(s, vi));
-  ASSERT_EQ(res.attempts.size(), 2u) << summary_text(res);
+  ASSERT_EQ(res.attempts.size(), 2u) << to_text(res);
   EXPECT_EQ(res.attempts[1].outcome, AttemptOutcome::Duplicate);
   EXPECT_EQ(res.attempts[1].rule, 0);
   EXPECT_EQ(res.duplicates[0], 1u);
@@ -274,7 +275,7 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
     opt.rule.cut_loops = c.cut;
     opt.fold.loops.explicit_loops = c.explicit_loops;
     const InferenceResult res = infer_rules(j, opt);
-    ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+    ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
     const RuleScheme& s = res.rules[0].scheme;
     EXPECT_TRUE(schemes_isomorphic(s, lib)) << scheme_to_json_text(s);
     auto [mine, a1] = apply_scheme(c.other, s, {0});
@@ -289,7 +290,7 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       EXPECT_GT(cut_prior_loops(cut, c.cut), 0u);
       opt.rule.cut_loops = 0;
       const InferenceResult prior = infer_rules(cut, opt);
-      ASSERT_EQ(prior.rules.size(), 1u) << summary_text(prior);
+      ASSERT_EQ(prior.rules.size(), 1u) << to_text(prior);
       EXPECT_TRUE(schemes_isomorphic(prior.rules[0].scheme, lib)) << scheme_to_json_text(prior.rules[0].scheme);
       const InferenceResult raw = infer_rules(j, opt);
       ASSERT_EQ(raw.rules.size(), 1u);
@@ -316,7 +317,7 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
   InferOptions opt;
   opt.orbit = ot("<0,1,2>");
   const InferenceResult res = infer_rules(j, opt);
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& ps = res.rules[0].scheme;
   EXPECT_EQ(ps.left.size(), 1u);
   EXPECT_EQ(ps.right.size(), 6u);
@@ -352,7 +353,7 @@ TEST(RuleInference, EnumeratingRelabelingsFindsMixedLoopReadings) {
   const InferenceResult res = infer_rules(j, opt);
   size_t found = 0;
   for (const auto& r : res.rules) found += schemes_isomorphic(r.scheme, lib);
-  EXPECT_EQ(found, 1u) << summary_text(res);
+  EXPECT_EQ(found, 1u) << to_text(res);
   EXPECT_GE(res.rules.size(), 2u);
 }
 
@@ -374,7 +375,7 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
   const JointGraph j = joint_from_pair(sq, after, m);
   EXPECT_EQ(j.size(), 6u);
   const InferenceResult local = infer_rules(j, opt);
-  ASSERT_EQ(local.rules.size(), 1u) << summary_text(local);
+  ASSERT_EQ(local.rules.size(), 1u) << to_text(local);
   EXPECT_TRUE(schemes_isomorphic(local.rules[0].scheme, vi)) << scheme_to_json_text(local.rules[0].scheme);
   // A mapped dart outside the selection is refused.
   DartMapping bad = m;
@@ -402,7 +403,7 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
     InferOptions opt;
     opt.orbit = ot("<0,1,2>");
     const InferenceResult res = infer_rules(j, opt);
-    ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+    ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
     const RuleScheme& r = res.rules[0].scheme;
     EXPECT_EQ(r.left.size(), 1u);
     EXPECT_EQ(r.right.size(), nodes);
@@ -428,7 +429,7 @@ TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   InferOptions opt;
   opt.orbit = ot("<0,1,2>");
   const InferenceResult res = infer_rules(j, opt);
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& r = res.rules[0].scheme;
   EXPECT_EQ(r.right.size(), 3u);
   EXPECT_TRUE(schemes_isomorphic(r, s3)) << scheme_to_json_text(r);
@@ -506,7 +507,7 @@ TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
     ASSERT_TRUE(app.applied) << app.why;
     const HookedExample e{c.before, after, identity_mapping(c.before, after)};
     const InferenceResult res = infer_on(lib, e, c.cut);
-    ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+    ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
     const InferredRule& r = res.rules[0];
     EXPECT_EQ(r.scheme.hooks.size(), c.hooks_inferred);
     EXPECT_TRUE(schemes_isomorphic(r.scheme, lib)) << scheme_to_json_text(r.scheme);
@@ -559,10 +560,10 @@ TEST(RuleInference, LocalLibrarySchemesAreRecoveredThroughSelections) {
       const HookedExample e = local_example(g, lib, 0, ot("<0,2>"), neighbours);
       EXPECT_EQ(e.mapping.before_selection->size(), 8u - (neighbours ? 0 : 4));
       const InferenceResult res = infer_on(lib, e, 0);
-      ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+      ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
       const RuleScheme& s = res.rules[0].scheme;
       EXPECT_TRUE(schemes_isomorphic(s, lib)) << scheme_to_json_text(s);
-      EXPECT_EQ(res.attempts.size(), neighbours ? 5u : 1u) << summary_text(res);
+      EXPECT_EQ(res.attempts.size(), neighbours ? 5u : 1u) << to_text(res);
       for (size_t k = 1; k < res.attempts.size(); ++k) {
         EXPECT_EQ(res.attempts[k].outcome, AttemptOutcome::FoldFailed);
         EXPECT_NE(res.attempts[k].reason.find("partial hook orbit"), std::string::npos);
