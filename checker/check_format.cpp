@@ -101,4 +101,22 @@ nlohmann::ordered_json to_json(const CheckReport& r) {
   return j;
 }
 
+std::string to_text(const SemanticWitness& w, const Rule& r, const MapFamily& f) {
+  const Map& g = f.maps[w.map_index];
+  std::string s =
+      "map #" + std::to_string(w.map_index) + " (" + std::to_string(g.size()) + " darts;";
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
+    s += std::string(" ") + (g.is_omap() ? "beta" : "alpha") + std::to_string(i) + "=[";
+    for (Dart d = 0; d < g.capacity(); ++d) s += (d ? "," : "") + std::to_string(g.alpha(i, d));
+    s += "]";
+  }
+  s += "), match";
+  for (graph::Node v = 0; v < r.left().num_nodes(); ++v)
+    s += " " + r.left().name(v) + "->" + std::to_string(w.match.node[v]);
+  s += "; H breaks:";
+  for (size_t k = 0; k < w.violations.size() && k < 3; ++k)
+    s += " " + to_text(w.violations[k], w.H) + ";";
+  return s;
+}
+
 }  // namespace gmr::checker

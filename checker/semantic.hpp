@@ -31,11 +31,8 @@ struct SemanticWitness {
   size_t map_index = 0;
   Match match;
   DGraph H;
-  std::vector<ConstraintViolation> violations;
+  std::vector<ConstraintViolation> violations;  // of H (check_gmap_constraints)
 };
-
-// "map #k (n darts; alpha0=[...] ...), match a->0 ...; H breaks: <the first three violations>".
-std::string to_text(const SemanticWitness& w, const Rule& r, const MapFamily& f);
 
 struct SemanticVerdict {
   size_t matches = 0;       // matches found (gluing or not)
