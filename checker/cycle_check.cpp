@@ -44,7 +44,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
   std::set<std::string> seen;
   auto note = [&](const std::string& code, const std::string& msg, std::vector<std::string> path, std::optional<Side> side) {
     if (!notes || !seen.insert(code + msg).second) return;
-    notes->push_back(Diagnostic{.code = code, .severity = Severity::Note, .condition = "C", .i = i, .j = j, .side = side,
+    notes->push_back(Diagnostic{.code = code, .severity = Severity::Note, .condition = symbol(Constraint::Cycle), .i = i, .j = j, .side = side,
                                 .path = std::move(path), .message = msg});
   };
   auto name_of_r = [&](Node l) { return R.find(L.name(l)); };
@@ -121,7 +121,7 @@ Rule complete_for_model(const Rule& r0, std::vector<Diagnostic>* notes) {
         R.add_arc(*rv, *ru, i);
         note({.code = "C-O-completed",
               .severity = Severity::Note,
-              .condition = "C",
+              .condition = symbol(Constraint::Cycle),
               .i = i,
               .side = Side::L,
               .nodes = {L.name(u), L.name(v)},
@@ -236,7 +236,7 @@ bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, 
       if (partners == 1) continue;
       ok = false;
       Diagnostic d{.code = partners == 0 ? "C-incoherent" : "C-ambiguous",
-                   .condition = "C",
+                   .condition = symbol(Constraint::Cycle),
                    .i = i,
                    .j = j,
                    .side = side,
@@ -273,7 +273,7 @@ bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& 
         if (L.arc(a).label == d && r.left_arc_status(a) == ElemStatus::Deleted) rewired = true;
       if (!rewired || covered(w, d)) continue;
       ok = false;
-      Diagnostic dg{.code = "C-preserved-node", .condition = "C", .i = i, .j = j, .side = Side::R, .nodes = {L.name(v)}};
+      Diagnostic dg{.code = "C-preserved-node", .condition = symbol(Constraint::Cycle), .i = i, .j = j, .side = Side::R, .nodes = {L.name(v)}};
       dg.message = "preserved node " + L.name(v) + " loses its " + lbl(d) + "-arc but its " + lbl(d) +
                    "-arc in R is neither on an " + lbl(i) + lbl(j) + lbl(i) + lbl(j) + "-cycle nor on an (" + lbl(i) + "," +
                    lbl(j) + ")-optimal path (Def. 40.2)";
@@ -286,7 +286,7 @@ bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& 
     for (int d : {i, j}) {
       if (covered(w, d)) continue;
       ok = false;
-      Diagnostic dg{.code = "C-added-node", .condition = "C", .i = i, .j = j, .side = Side::R, .nodes = {R.name(w)}};
+      Diagnostic dg{.code = "C-added-node", .condition = symbol(Constraint::Cycle), .i = i, .j = j, .side = Side::R, .nodes = {R.name(w)}};
       dg.message = "added node " + R.name(w) + " is not the source of a " + lbl(d) + "-arc on an " + lbl(i) + lbl(j) + lbl(i) +
                    lbl(j) + "-cycle or on an (" + lbl(i) + "," + lbl(j) + ")-optimal path of R (Def. 40.3)";
       for (ArcId a : R.out_arcs(w))
@@ -310,7 +310,7 @@ bool check_cycle_as_written(const Rule& r, int i, int j, std::vector<Diagnostic>
   if (!combinatorial_on(r.left(), i, j) || !combinatorial_on(r.right(), i, j)) {
     out.push_back({.code = "C-skipped",
                    .severity = Severity::Note,
-                   .condition = "C",
+                   .condition = symbol(Constraint::Cycle),
                    .i = i,
                    .j = j,
                    .message = "not evaluated: a node has two " + lbl(i) + "- or " + lbl(j) +

@@ -1,5 +1,6 @@
 // Diagnostics of the static consistency checker for concrete rules (thesis §3.3) and, with the
-// same Diagnostic and Severity, of the scheme checker (scheme_checker.hpp). JSON: docs/check-format.md.
+// same Diagnostic and Severity, of the scheme checker (scheme_checker.hpp). Their text and JSON
+// (docs/check-format.md) are written by check_format.hpp.
 //
 // Every violation is a Diagnostic with a STABLE code, the condition and dimension(s) it belongs to,
 // and its witnesses (nodes, arcs, path). Codes (severity error unless marked note):
@@ -40,8 +41,7 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "model/core/constraint_violation.hpp"
 #include "model/core/map.hpp"
 #include "model/graph/elem_status.hpp"
 
@@ -56,8 +56,15 @@ const char* to_string(Severity s);
 // A word of dimensions in the thesis' notation: the letters side by side ("021"), ε when empty.
 std::string word_text(const std::vector<int>& w);
 
-// One diagnostic of either checker. Build it with designated initializers:
-//   Diagnostic{.code = "I-added-node", .condition = "I", .i = 2, .side = Side::R, .message = ...}.
+// One diagnostic of either checker: the rule-level reading of a constraint violation
+// (model/core/constraint_violation.hpp). Its condition is a constraint of the model named by its
+// symbol ("I", "O", "C": the rule conditions I_r, O_r, C_r that preserve I_G, O_G, C_G,
+// Thms. 2–3) or a condition of rules only ("combinatorial", "w-I", "embeddings", ...); on top of
+// the violation's dimensions, witnesses and message, it adds a stable code, a severity and the
+// rule side the witnesses live on, named by the rule's node names. Build it with designated
+// initializers:
+//   Diagnostic{.code = "I-added-node", .condition = symbol(Constraint::IncidentArcs), .i = 2,
+//              .side = Side::R, .message = ...}.
 struct Diagnostic {
   std::string code{};               // stable, listed above and in scheme_checker.hpp
   Severity severity = Severity::Error;
@@ -70,13 +77,12 @@ struct Diagnostic {
   std::vector<std::string> arcs{}; // concrete "a -0-> b (L)", scheme "n0 -1- n2"
   std::vector<std::string> path{}; // node names along a path or cycle, on `side`
   std::string message{};
-  std::string condition_str() const;  // "I(2)", "C(0,2)", "combinatorial"
   std::string side_str() const;       // "L", "R" or ""
 };
 
 // What a report is about: a concrete rule (check_rule, rule_check.hpp) or a rule scheme
-// (check_scheme, scheme_checker.hpp). Both checkers fill the same report; its text and JSON follow
-// the subject (docs/check-format.md).
+// (check_scheme, scheme_checker.hpp). Both checkers fill the same report; its text and JSON
+// (check_format.hpp) follow the subject.
 enum class CheckSubject : uint8_t { Rule, Scheme };
 
 struct CheckReport {
@@ -94,15 +100,5 @@ struct CheckReport {
   bool holds(const std::string& condition) const;  // false if absent
   size_t count(const std::string& code) const;
 };
-
-std::string to_text(const Diagnostic& d);
-std::string to_text(const CheckReport& r);
-nlohmann::ordered_json to_json(const Diagnostic& d);
-nlohmann::ordered_json to_json(const CheckReport& r);
-
-// The header every gmr.check document starts with (docs/check-format.md):
-// {"format": "gmr.check", "version": 1, "subject": subject, "ok": ok}; subject is "rule" (a
-// concrete rule), "scheme" (a rule scheme) or "modeler" (a batch of .jme rule schemes).
-nlohmann::ordered_json check_document(const char* subject, bool ok);
 
 }  // namespace gmr::checker

@@ -90,13 +90,13 @@ bool check_combinatorial(const Rule& r, std::vector<Diagnostic>& out) {
 bool check_weak_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) { return weak(r, i, out, "w-I"); }
 
 bool check_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) {
-  bool ok = weak(r, i, out, "I");
+  bool ok = weak(r, i, out, symbol(Constraint::IncidentArcs));
   const DGraph& L = r.left();
   for (Node v : r.deleted_nodes()) {
     const auto o = arcs_with(L, L.out_arcs(v), i), in = arcs_with(L, L.in_arcs(v), i);
     if (o.size() == 1 && in.size() == 1) continue;
     ok = false;
-    Diagnostic d{.code = "I-deleted-node", .condition = "I", .i = i, .side = Side::L};
+    Diagnostic d{.code = "I-deleted-node", .condition = symbol(Constraint::IncidentArcs), .i = i, .side = Side::L};
     d.message = "deleted node " + L.name(v) + " is the source of " + count_str(o.size(), "outgoing", i) + " and the target of " +
                 count_str(in.size(), "incoming", i) +
                 " in L; exactly one each is required, else a match leaves dangling arcs (Def. 34, Fact 1)";

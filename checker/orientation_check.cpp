@@ -17,7 +17,7 @@ bool check_non_orientation(const Rule& r, int i, std::vector<Diagnostic>& out) {
       std::vector<ArcId> rev;
       for (ArcId b : g.out_arcs(e.tgt))
         if (g.arc(b).label == i && g.arc(b).tgt == e.src) rev.push_back(b);
-      Diagnostic d{.condition = "O",
+      Diagnostic d{.condition = symbol(Constraint::NonOrientation),
                    .i = i,
                    .side = side,
                    .nodes = {g.name(e.src), g.name(e.tgt)},

@@ -43,11 +43,11 @@ class Checker {
     rep_.conditions.emplace_back("structure", structure_ok);
     rep_.conditions.emplace_back("hooks", hooks());
     if (!structure_ok) return std::move(rep_);
-    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back("I(" + std::to_string(d) + ")", incident(d));
-    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back("O(" + std::to_string(d) + ")", true);
+    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back(condition_text(symbol(Constraint::IncidentArcs), d), incident(d));
+    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back(condition_text(symbol(Constraint::NonOrientation), d), true);
     for (int i = 0; i <= s_.dimension; ++i)
       for (int j = i + 2; j <= s_.dimension; ++j)
-        rep_.conditions.emplace_back("C(" + std::to_string(i) + "," + std::to_string(j) + ")", cycle(i, j));
+        rep_.conditions.emplace_back(condition_text(symbol(Constraint::Cycle), i, j), cycle(i, j));
     bool has_expressions = !s_.embeddings.empty();
     for (const auto& n : s_.right.nodes) has_expressions |= !n.expressions.empty();
     if (has_expressions && opt_.embeddings) rep_.conditions.emplace_back("embeddings", check_embeddings(s_, rep_.diagnostics));
@@ -241,7 +241,7 @@ class Checker {
   // ---------------------------------------------------------------------------------------------
   bool incident(int d) {
     bool ok = true;
-    const std::string cond = "I(" + std::to_string(d) + ")";
+    const std::string cond = condition_text(symbol(Constraint::IncidentArcs), d);
     const std::string ds = std::to_string(d);
     for (uint32_t v = 0; v < s_.left.size(); ++v) {
       const size_t cl = count_arcs(Side::L, v, d);
@@ -557,7 +557,7 @@ class Checker {
 
   // C_S(i,j), i+2 <= j (Def. 40 with Def. 55, Alg. 3), in its phases.
   bool cycle(int i, int j) {
-    const std::string cond = "C(" + std::to_string(i) + "," + std::to_string(j) + ")";
+    const std::string cond = condition_text(symbol(Constraint::Cycle), i, j);
     if (has_branching(i, j, cond)) return false;
     SideData sd[2];
     cores_and_changed_arcs(sd, i, j);

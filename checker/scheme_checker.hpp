@@ -59,8 +59,6 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "checker/diagnostic.hpp"
 #include "model/scheme/rule_scheme.hpp"
 

@@ -22,7 +22,6 @@
 #include "model/rewrite/rule.hpp"
 
 namespace gmr::checker {
-using graph::ConstraintViolation;
 using graph::DGraph;
 using graph::MapFamily;
 using rewrite::Match;
@@ -32,8 +31,7 @@ struct SemanticWitness {
   size_t map_index = 0;
   Match match;
   DGraph H;
-  std::vector<ConstraintViolation> violations;
-  std::string describe(const Rule& r, const MapFamily& f) const;
+  std::vector<ConstraintViolation> violations;  // of H (check_gmap_constraints)
 };
 
 struct SemanticVerdict {

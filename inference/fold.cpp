@@ -2,7 +2,6 @@
 
 #include <deque>
 #include <optional>
-#include <sstream>
 
 #include "model/core/error.hpp"
 
@@ -409,22 +408,6 @@ GraphScheme to_graph_scheme(const FoldResult& f) {
     s.arcs.push_back({e.a, e.b, e.dim});
   }
   return s;
-}
-
-std::string to_text(const FoldResult& f, const JointGraph& j) {
-  std::ostringstream os;
-  os << "fold on " << f.orbit.str() << " from dart " << j.describe(f.start) << ": ";
-  if (!f.ok()) {
-    os << to_string(f.failure.kind) << "\n  " << f.failure.message << "\n";
-    return os.str();
-  }
-  os << f.nodes.size() << " nodes, hook orbit of " << f.hook_orbit.size() << " darts\n";
-  for (uint32_t k = 0; k < f.nodes.size(); ++k)
-    os << "  " << node_name(k) << " " << f.nodes[k].label.str() << (j.has_after() ? std::string(" ") + to_string(f.nodes[k].side) : "")
-       << (k == 0 ? "  (hook)" : "") << "\n";
-  for (const auto& e : f.arcs)
-    os << "  " << node_name(e.a) << " -" << dimension_text(e.dim) << "- " << node_name(e.b) << "\n";
-  return os.str();
 }
 
 }  // namespace gmr::inference

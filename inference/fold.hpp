@@ -132,8 +132,4 @@ std::string node_name(uint32_t k);
 // ... in creation order, labels and explicit arcs as folded. Throws Error(Usage) otherwise.
 GraphScheme to_graph_scheme(const FoldResult& f);
 
-// Text of a fold: the orbit type and start, then one line per node ("n3 <2,1> L") and per arc, or
-// the failure.
-std::string to_text(const FoldResult& f, const JointGraph& j);
-
 }  // namespace gmr::inference

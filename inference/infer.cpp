@@ -1,8 +1,6 @@
 #include "inference/infer.hpp"
 
 #include <algorithm>
-#include <iomanip>
-#include <sstream>
 
 #include "inference/scheme_isomorphism.hpp"
 
@@ -108,28 +106,6 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
     if (opt.progress) opt.progress(t + 1, types.size(), o);
   }
   return res;
-}
-
-std::string summary_text(const InferenceResult& r) {
-  std::ostringstream os;
-  os << std::left << std::setw(12) << "orbit" << std::setw(14) << "start" << std::setw(5) << "L" << std::setw(5)
-     << "R" << "outcome\n";
-  for (const auto& a : r.attempts) {
-    os << std::setw(12) << a.orbit.str() << std::setw(14) << a.start_text << std::setw(5) << a.left_nodes
-       << std::setw(5) << a.right_nodes << to_string(a.outcome);
-    if (a.outcome == AttemptOutcome::FoldFailed) os << ": " << to_string(a.failure.kind);
-    if (a.outcome == AttemptOutcome::Accepted) os << " as rule " << a.rule;
-    if (a.outcome == AttemptOutcome::Duplicate) os << " of rule " << a.rule;
-    if (a.outcome == AttemptOutcome::Inconsistent || a.outcome == AttemptOutcome::NoHook) os << ": " << a.reason;
-    os << "\n";
-  }
-  os << r.rules.size() << " rule(s) inferred";
-  size_t dups = 0;
-  for (size_t d : r.duplicates) dups += d;
-  os << ", " << dups << " duplicate(s) merged";
-  if (r.truncated) os << " (relabeling enumeration truncated at its limit)";
-  os << "\n";
-  return os.str();
 }
 
 }  // namespace gmr::inference

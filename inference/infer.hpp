@@ -76,7 +76,4 @@ std::vector<OrbitType> all_orbit_types(int n);
 
 InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt = {});
 
-// The summary table (one line per attempt) as text.
-std::string summary_text(const InferenceResult& r);
-
 }  // namespace gmr::inference

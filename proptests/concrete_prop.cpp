@@ -12,6 +12,7 @@
 //    and on maps.
 #include <gtest/gtest.h>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "checker/semantic.hpp"
 #include "model/graph/constraints.hpp"

@@ -65,23 +65,23 @@ TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
     const auto report = check_validity(g, SIZE_MAX);
     std::set<std::tuple<int, Dart, int, int>> mine, theirs;
     for (const auto& v : report.violations) {
-      const int kind = v.kind == ViolationKind::Cycle ? 2 : 1;
-      mine.insert({kind, v.dart, v.i, v.j});
+      const int kind = v.constraint == Constraint::Cycle ? 2 : 1;
+      mine.insert({kind, v.at, v.i, v.j});
     }
     const DGraph dg = to_dgraph(g);
     for (const auto& v : check_gmap_constraints(dg, g.dimension(), g.kind())) {
-      if (v.kind == ConstraintKind::Cycle) theirs.insert({2, v.node, v.i, v.j});
+      if (v.constraint == Constraint::Cycle) theirs.insert({2, v.at, v.i, v.j});
       // Non-orientation at the arc's source is the involution failure at that dart; incident-arc
       // failures (two incoming arcs) come with it and are folded into the same violation.
-      if (v.kind == ConstraintKind::NonOrientation && v.path.size() == 2 && v.path[0] == v.node)
-        theirs.insert({1, v.node, v.i, -1});
+      if (v.constraint == Constraint::NonOrientation && v.path.size() == 2 && v.path[0] == v.at)
+        theirs.insert({1, v.at, v.i, -1});
     }
     RC_ASSERT(mine == theirs);
     if (!symmetric && e != old && (e != d || old != d)) {
       // The written dart (or its abandoned partner) is named.
       bool named = false;
       for (const auto& v : report.violations)
-        if (v.kind == ViolationKind::NotInvolution && v.i == i && (v.dart == d || v.dart == old)) named = true;
+        if (v.constraint == Constraint::NonOrientation && v.i == i && (v.at == d || v.at == old)) named = true;
       RC_ASSERT(named);
     }
   }));

@@ -7,6 +7,7 @@
 //    valid G-map.
 #include <gtest/gtest.h>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/core/error.hpp"
 #include "model/scheme/scheme_engine.hpp"

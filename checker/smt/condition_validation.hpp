@@ -21,8 +21,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "checker/smt/rule_verifier.hpp"
 
 namespace gmr::smt {
@@ -71,34 +69,5 @@ struct ValidationReport {
 using ConditionEvaluator = std::function<std::vector<bool>(const std::vector<Rule>&)>;
 ValidationReport validate_condition(const std::string& name, const ConditionEvaluator& evaluate,
                                     const ValidationOptions& opt);
-
-inline constexpr const char* kValidationFormat = "gmr.condition-validation";
-nlohmann::ordered_json to_json(const ValidationReport& r);
-// The text lines of an unsoundness witness: the rule, the map size, the match and the broken
-// constraint (or the failing gluing condition).
-std::string unsound_witness_text(const ValidationWitness& w);
-// The first members of every gmr.condition-validation document: format, version, condition,
-// engine (omitted when empty), model, n, labels.
-nlohmann::ordered_json validation_header(const std::string& condition, const std::string& engine,
-                                         const ValidationOptions& o);
-// The verdict counts of a report over a list (rules or schemes): holds, fails, vacuous, unsound,
-// incomplete, sound, complete.
-template <class Report>
-void put_verdict_counts(nlohmann::ordered_json& j, const Report& r) {
-  j["holds"] = r.holds;
-  j["fails"] = r.fails;
-  j["vacuous"] = r.vacuous;
-  j["unsound"] = r.unsound;
-  j["incomplete"] = r.incomplete;
-  j["sound"] = r.sound();
-  j["complete"] = r.complete();
-}
-std::string to_text(const ValidationReport& r);
-
-// Merges the JSON reports of the shards of one sweep (same condition, engine, model, labels,
-// bounds and shard count M; distinct K): counts added, `nodes_covered` the least, the smallest
-// witnesses the least of the shards' (nodes, then darts, then family index); "shard" lists the
-// shards merged. Error(Usage), located by file index, when the reports do not belong together.
-nlohmann::ordered_json merge_reports(const std::vector<nlohmann::json>& shards);
 
 }  // namespace gmr::smt

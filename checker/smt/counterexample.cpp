@@ -19,20 +19,12 @@ std::optional<Dart> dart_of(const DGraph& H, Node x) {
   if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
   return d;
 }
-const char* short_name(graph::ConstraintKind k) {
-  switch (k) {
-    case graph::ConstraintKind::IncidentArcs: return "I";
-    case graph::ConstraintKind::NonOrientation: return "O";
-    case graph::ConstraintKind::Cycle: return "C";
-  }
-  return "?";
-}
 }  // namespace
 
 std::vector<Dart> offending_darts(const Counterexample& c) {
   std::set<Dart> out;
   for (const auto& v : c.violations)
-    if (auto d = dart_of(c.H, v.node)) out.insert(*d);
+    if (auto d = dart_of(c.H, v.at)) out.insert(*d);
   return {out.begin(), out.end()};
 }
 
@@ -61,11 +53,11 @@ nlohmann::ordered_json to_json(const Rule& r, unsigned bound, const Counterexamp
   j["violations"] = nlohmann::ordered_json::array();
   for (const auto& v : c.violations) {
     nlohmann::ordered_json e;
-    e["constraint"] = short_name(v.kind);
-    e["node"] = c.H.node_str(v.node);
+    e["constraint"] = symbol(v.constraint);
+    e["node"] = c.H.node_str(v.at);
     e["i"] = v.i;
     if (v.j >= 0) e["j"] = v.j;
-    e["text"] = v.describe(c.H);
+    e["text"] = graph::to_text(v, c.H);
     j["violations"].push_back(e);
   }
   j["offending_darts"] = offending_darts(c);

@@ -154,14 +154,14 @@ z3::expr_vector DerivationEncoding::h_definitions() const {
   return out;
 }
 
-z3::expr DerivationEncoding::violates(ConstraintKind kind, unsigned x, int i, int j) const {
+z3::expr DerivationEncoding::violates(Constraint kind, unsigned x, int i, int j) const {
   const z3::expr X = map_.dart(x);
   switch (kind) {
-    case ConstraintKind::IncidentArcs:
+    case Constraint::IncidentArcs:
       return alive(x) && !(exactly_one(out_arcs(x, i)) && exactly_one(in_arcs(x, i)));
-    case ConstraintKind::NonOrientation:
+    case Constraint::NonOrientation:
       return alive(x) && h(i, h(i, X)) != X;
-    case ConstraintKind::Cycle:
+    case Constraint::Cycle:
       return alive(x) && h(j, h(i, h(j, h(i, X)))) != X;
   }
   return map_.ctx().bool_val(false);
@@ -192,10 +192,10 @@ z3::expr DerivationEncoding::breaks_model() const {
   const MapSpec& s = map_.spec();
   for (unsigned x = 0; x < num_h_nodes(); ++x) {
     for (int i : s.labels()) {
-      any.push_back(violates(ConstraintKind::IncidentArcs, x, i));
-      if (s.is_involutive_dim(i)) any.push_back(violates(ConstraintKind::NonOrientation, x, i));
+      any.push_back(violates(Constraint::IncidentArcs, x, i));
+      if (s.is_involutive_dim(i)) any.push_back(violates(Constraint::NonOrientation, x, i));
     }
-    for (auto [i, j] : s.cycle_pairs()) any.push_back(violates(ConstraintKind::Cycle, x, i, j));
+    for (auto [i, j] : s.cycle_pairs()) any.push_back(violates(Constraint::Cycle, x, i, j));
   }
   return z3::mk_or(any);
 }

@@ -27,7 +27,6 @@
 #include "model/rewrite/rule.hpp"
 
 namespace gmr::smt {
-using graph::ConstraintKind;
 using rewrite::Rule;
 
 class DerivationEncoding {
@@ -50,7 +49,7 @@ class DerivationEncoding {
   // H node x exists (live dart or added node).
   z3::expr alive(unsigned x) const;
   // "H violates the constraint at node x" (j only for Cycle).
-  z3::expr violates(ConstraintKind kind, unsigned x, int i, int j = -1) const;
+  z3::expr violates(Constraint kind, unsigned x, int i, int j = -1) const;
   // Definitions of the functions h_i (needed by violates(NonOrientation|Cycle)).
   z3::expr_vector h_definitions() const;
   // Some node of H violates some constraint of the model.

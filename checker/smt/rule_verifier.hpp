@@ -28,7 +28,6 @@
 #include "model/rewrite/rule.hpp"
 
 namespace gmr::smt {
-using graph::ConstraintViolation;
 using graph::DGraph;
 using rewrite::Match;
 using rewrite::Rule;

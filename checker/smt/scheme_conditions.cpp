@@ -1,8 +1,6 @@
 #include "checker/smt/scheme_conditions.hpp"
 
 #include <chrono>
-#include <cstdio>
-#include <sstream>
 
 #include "checker/scheme_checker.hpp"
 #include "checker/smt/condition_validation.hpp"
@@ -107,49 +105,6 @@ SchemeValidationReport classify_scheme_condition(const std::string& name, const 
   }
   rep.seconds = verdicts.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return rep;
-}
-
-std::string to_text(const SchemeValidationReport& r) {
-  std::ostringstream s;
-  s << "scheme condition " << r.condition << " on " << r.schemes << " schemes, G-maps of at most "
-    << r.bound << " darts (every hook orbit of at most " << r.bound << " darts)\n  holds on "
-    << r.holds << ", fails on " << r.fails << "; vacuous " << r.vacuous
-    << "\n  sound: " << (r.sound() ? "yes" : "NO") << " (" << r.unsound << " unsound)";
-  if (r.smallest_unsound) {
-    const auto& w = *r.smallest_unsound;
-    const auto& c = *w.result.result->counterexample;
-    s << "\n    smallest: " << w.scheme.name << " on a hook orbit of "
-      << w.result.orbit->darts.size() << " darts, a map of " << c.G.size() << " darts: "
-      << (c.gluing_fails ? std::string("the gluing (dangling) condition fails")
-                         : c.violations.front().describe(c.H));
-  }
-  s << "\n  complete: " << (r.complete() ? "yes" : "NO") << " (" << r.incomplete << " incomplete)";
-  if (r.first_incomplete) s << "\n    first: " << r.first_incomplete->name;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "\n  time %.3f s\n", r.seconds);
-  s << buf;
-  return s.str();
-}
-
-nlohmann::ordered_json to_json(const SchemeValidationReport& r, bool sufficient_only) {
-  nlohmann::ordered_json j;
-  j["format"] = "gmr.scheme-condition-validation";
-  j["version"] = 1;
-  j["condition"] = r.condition;
-  j["bound"] = r.bound;
-  j["schemes"] = r.schemes;
-  put_verdict_counts(j, r);
-  j["sufficient_only"] = sufficient_only;
-  if (r.smallest_unsound) {
-    const auto& w = *r.smallest_unsound;
-    nlohmann::ordered_json e;
-    e["scheme"] = w.scheme.name;
-    e["counterexample"] = to_json(*w.result.instance, r.bound, *w.result.result->counterexample);
-    j["smallest_unsound"] = e;
-  }
-  if (r.first_incomplete) j["first_incomplete"] = r.first_incomplete->name;
-  j["seconds"] = r.seconds;
-  return j;
 }
 
 }  // namespace gmr::smt

@@ -20,8 +20,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "checker/smt/scheme_verifier.hpp"
 
 namespace gmr::smt {
@@ -75,9 +73,5 @@ SchemeValidationReport validate_scheme_condition(const std::string& name,
                                                  const std::vector<bool>& holds,
                                                  const std::vector<RuleScheme>& schemes,
                                                  unsigned bound);
-std::string to_text(const SchemeValidationReport& r);
-// The "gmr.scheme-condition-validation" document (docs/verify.md); `sufficient_only` as the
-// condition declares it.
-nlohmann::ordered_json to_json(const SchemeValidationReport& r, bool sufficient_only);
 
 }  // namespace gmr::smt

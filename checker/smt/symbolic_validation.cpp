@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -17,7 +15,6 @@
 #include "checker/smt/symbolic_cycle.hpp"
 #include "checker/smt/symbolic_derivation.hpp"
 #include "model/core/error.hpp"
-#include "model/rule_io/rule_json.hpp"
 
 namespace gmr::smt {
 using graph::Node;
@@ -453,83 +450,6 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   }
   decide_complete(*ctx, rep, parts, extra, cs, table, cubes, holding_cubes, start);
   return rep;
-}
-
-nlohmann::ordered_json to_json(const SymbolicReport& r) {
-  const ValidationOptions& o = r.options;
-  nlohmann::ordered_json j = validation_header(r.condition, "symbolic", o);
-  j["max_nodes"] = o.max_nodes;
-  j["bound"] = o.bound;
-  j["rules"] = r.rules;
-  j["time_limit_hit"] = !(r.sound_decided && r.complete_decided);
-  j["sound"] =
-      r.sound_decided ? nlohmann::ordered_json(r.sound()) : nlohmann::ordered_json(nullptr);
-  j["complete"] =
-      r.complete_decided ? nlohmann::ordered_json(r.complete()) : nlohmann::ordered_json(nullptr);
-  if (r.smallest_unsound) {
-    const auto& w = *r.smallest_unsound;
-    nlohmann::ordered_json e;
-    e["rule"] = io::rule_to_json(w.rule);
-    e["counterexample"] = to_json(w.rule, o.bound, *w.counterexample);
-    j["smallest_unsound"] = e;
-  }
-  if (r.smallest_incomplete)
-    j["smallest_incomplete"] = {{"rule", io::rule_to_json(r.smallest_incomplete->rule)}};
-  j["refinements"] = r.refinements;
-  j["cycle_lemmas"] = r.cycle_lemmas;
-  j["cycle_patterns"] = r.cycle_patterns;
-  j["cycle_cubes"] = r.cycle_cubes;
-  j["cycle_table_seconds"] = r.cycle_table_seconds;
-  j["sound_seconds"] = r.sound_seconds;
-  j["complete_seconds"] = r.complete_seconds;
-  j["seconds"] = r.cycle_table_seconds + r.sound_seconds + r.complete_seconds;
-  return j;
-}
-
-std::string to_text(const SymbolicReport& r) {
-  const ValidationOptions& o = r.options;
-  std::ostringstream s;
-  s << "condition " << r.condition << " on " << o.n << "-"
-    << (o.kind == MapKind::OMap ? "O-map" : "G-map") << " rules of at most " << o.max_nodes
-    << " nodes (arcs on labels";
-  for (int i : o.labels) s << " " << i;
-  s << "), maps of at most " << o.bound
-    << " darts, engine symbolic\n  every rule of the family at once (" << r.rules << " rules)\n";
-  char buf[200];
-  s << "  sound: ";
-  if (!r.sound_decided) {
-    s << "undecided (time limit hit)";
-  } else {
-    s << (r.sound() ? "yes" : "NO");
-    std::snprintf(buf, sizeof buf, " (%.3f s)", r.sound_seconds);
-    s << buf;
-  }
-  if (r.smallest_unsound) s << unsound_witness_text(*r.smallest_unsound);
-  s << "\n  complete: ";
-  if (!r.complete_decided) {
-    s << "undecided (time limit hit)";
-  } else {
-    s << (r.complete() ? "yes" : "NO");
-  }
-  std::snprintf(buf, sizeof buf, " (%.3f s, %zu refinements)", r.complete_seconds, r.refinements);
-  s << buf;
-  if (!MapSpec{o.n, o.kind}.cycle_pairs().empty()) {
-    std::snprintf(buf, sizeof buf,
-                  "\n  cycle condition: %zu component patterns tabulated by the concrete checker "
-                  "(%zu cubes, %.3f s), %zu lemmas from it",
-                  r.cycle_patterns, r.cycle_cubes, r.cycle_table_seconds, r.cycle_lemmas);
-  } else {
-    buf[0] = 0;
-  }
-  s << buf;
-  if (r.smallest_incomplete)
-    s << "\n    smallest: " << rule_text(r.smallest_incomplete->rule)
-      << "\n    fails the condition, yet every match on every map of at most " << o.bound
-      << " darts glues and preserves";
-  std::snprintf(buf, sizeof buf, "\n  time %.3f s\n",
-                r.cycle_table_seconds + r.sound_seconds + r.complete_seconds);
-  s << buf;
-  return s.str();
 }
 
 }  // namespace gmr::smt

@@ -32,7 +32,6 @@
 // (cycle_table.hpp, symbolic_cycle.hpp): lemmas are then learnt for larger components only.
 #pragma once
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -76,8 +75,5 @@ SymbolicReport validate_symbolic(const std::string& condition, const ValidationO
 using ExtraCondition = std::function<z3::expr(const SymbolicRule&)>;
 SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts& parts,
                                  const ExtraCondition& extra, const ValidationOptions& opt);
-
-nlohmann::ordered_json to_json(const SymbolicReport& r);
-std::string to_text(const SymbolicReport& r);
 
 }  // namespace gmr::smt

@@ -17,6 +17,7 @@
 #include <random>
 #include <tuple>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "model/testing/rule_family.hpp"
 #include "checker/semantic.hpp"
@@ -50,7 +51,7 @@ struct Stats {
     std::string ex = rule_to_json(r).dump() + "\n  checker: " + to_text(rep);
     if (rep.ok()) {
       ++unsound;
-      ex = "UNSOUND " + ex + "  semantics: " + v.witness->describe(r, fam);
+      ex = "UNSOUND " + ex + "  semantics: " + to_text(*v.witness, r, fam);
     } else {
       ++incomplete;
       ex = "INCOMPLETE " + ex + "  semantics: preserves on " + std::to_string(v.applications) + " applications";

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "checker/semantic.hpp"
 #include "model/core/builders.hpp"
@@ -221,7 +222,7 @@ TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
   const auto rep = check_validity(hc);
   EXPECT_FALSE(rep.ok());
   bool c02 = false;
-  for (const auto& v : rep.violations) c02 = c02 || (v.kind == ViolationKind::Cycle && v.i == 0 && v.j == 2);
+  for (const auto& v : rep.violations) c02 = c02 || (v.constraint == Constraint::Cycle && v.i == 0 && v.j == 2);
   EXPECT_TRUE(c02);
 }
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/rule_io/jme_import.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"

@@ -9,6 +9,7 @@
 #include <set>
 #include <utility>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"

@@ -43,7 +43,7 @@ std::optional<Witness> find_witness(const RuleScheme& s) {
       SchemeApplication a = scheme::apply(e, h, {d});
       if (!a.applied) continue;
       ValidityReport v = check_validity(h, 1);
-      if (!v.ok()) return Witness{name, d, v.violations.front().describe()};
+      if (!v.ok()) return Witness{name, d, to_text(v.violations.front())};
     }
   }
   return std::nullopt;

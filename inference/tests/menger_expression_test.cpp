@@ -18,6 +18,7 @@
 #include "inference/dart_mapping.hpp"
 #include "inference/expression_inference.hpp"
 #include "inference/infer.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/tests/inference_support.hpp"
 #include "inference/tests/polycube_support.hpp"
 #include "model/core/builders.hpp"
@@ -89,7 +90,7 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   InferOptions opt;
   opt.orbit = OrbitType::range(0, 3);
   const InferenceResult res = infer_rules(joint_from_pair(make_polycube(cubes), make_polycube(sub), m), opt);
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& menger = res.rules[0].scheme;
   ASSERT_EQ(menger.right.size(), 20u);
 

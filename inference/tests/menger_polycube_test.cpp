@@ -13,6 +13,7 @@
 
 #include "inference/expression_inference.hpp"
 #include "inference/infer.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/tests/inference_support.hpp"
 #include "inference/tests/polycube_support.hpp"
 #include "model/core/signature.hpp"
@@ -39,7 +40,7 @@ RuleScheme infer_menger222() {
   InferOptions opt;
   opt.orbit = OrbitType::range(0, 3);
   const InferenceResult res = infer_rules(joint_from_pair(ex.before, ex.after, ex.mapping), opt);
-  if (res.rules.size() != 1) ADD_FAILURE() << summary_text(res);
+  if (res.rules.size() != 1) ADD_FAILURE() << to_text(res);
   return res.rules.at(0).scheme;
 }
 

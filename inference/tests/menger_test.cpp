@@ -11,6 +11,7 @@
 
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/tests/inference_support.hpp"
 #include "inference/tests/polycube_support.hpp"
 #include "model/core/builders.hpp"
@@ -50,7 +51,7 @@ TEST(RuleInference, MengerLevelOneFromTwoGluedCubes) {
   InferOptions opt;
   opt.orbit = OrbitType::range(0, 3);
   const InferenceResult res = infer_rules(j, opt);
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& menger = res.rules[0].scheme;
   EXPECT_EQ(menger.left.size(), 1u);
   EXPECT_EQ(menger.right.size(), 20u);

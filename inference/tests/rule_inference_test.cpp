@@ -4,7 +4,9 @@
 
 #include <utility>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
 #include "inference/prior_cut.hpp"
@@ -139,7 +141,7 @@ TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   const JointGraph j = joint_from_pair(cube, sub, identity_mapping(cube, sub));
   EXPECT_EQ(j.size(), 240u);
   const InferenceResult res = infer_on(j, ot("<0,1,2>"));
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const InferredRule& r = res.rules[0];
   EXPECT_EQ(r.scheme.left.size(), 1u);
   EXPECT_EQ(r.scheme.right.size(), 4u);
@@ -183,7 +185,7 @@ TEST(RuleInference, AllOrbitTypesOnQuadSubdivision) {
       EXPECT_EQ(a.right_nodes, 192u);
     }
   EXPECT_TRUE(empty_orbit);
-  EXPECT_NE(summary_text(res).find("rule(s) inferred"), std::string::npos);
+  EXPECT_NE(to_text(res).find("rule(s) inferred"), std::string::npos);
 }
 
 // Marking (thesis §7.3.2) and de-duplication: vertex insertion on every edge of an open square,
@@ -200,12 +202,12 @@ TEST(RuleInference, MarkingSkipsEquivalentStartsAndDuplicatesAreMerged) {
     ASSERT_TRUE(app.applied) << app.why;
   }
   const InferenceResult res = infer_on(g, h, ot("<0,2>"));
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& s = res.rules[0].scheme;
   EXPECT_EQ(s.left.size(), 4u);
   EXPECT_EQ(s.right.size(), 8u);
   EXPECT_FALSE(schemes_isomorphic(s, vi));
-  ASSERT_EQ(res.attempts.size(), 2u) << summary_text(res);
+  ASSERT_EQ(res.attempts.size(), 2u) << to_text(res);
   EXPECT_EQ(res.attempts[1].outcome, AttemptOutcome::Duplicate);
   EXPECT_EQ(res.attempts[1].rule, 0);
   EXPECT_EQ(res.duplicates[0], 1u);
@@ -284,7 +286,7 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
     opt.rule.cut_loops = c.cut;
     opt.fold.loops.explicit_loops = c.explicit_loops;
     const InferenceResult res = infer_rules(j, opt);
-    ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+    ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
     const RuleScheme& s = res.rules[0].scheme;
     EXPECT_TRUE(schemes_isomorphic(s, lib)) << scheme_to_json_text(s);
     auto [mine, a1] = scheme::apply(SchemeEngine(s), std::as_const(c.other), {0});
@@ -299,7 +301,7 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       EXPECT_GT(cut_prior_loops(cut, c.cut), 0u);
       opt.rule.cut_loops = 0;
       const InferenceResult prior = infer_rules(cut, opt);
-      ASSERT_EQ(prior.rules.size(), 1u) << summary_text(prior);
+      ASSERT_EQ(prior.rules.size(), 1u) << to_text(prior);
       EXPECT_TRUE(schemes_isomorphic(prior.rules[0].scheme, lib)) << scheme_to_json_text(prior.rules[0].scheme);
       const InferenceResult raw = infer_rules(j, opt);
       ASSERT_EQ(raw.rules.size(), 1u);
@@ -324,7 +326,7 @@ TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
   ASSERT_TRUE(scheme::apply(SchemeEngine(ft), after, {0}).applied);
   ASSERT_EQ(after.size(), 36u);
   const InferenceResult res = infer_on(tri, after, ot("<0,1,2>"));
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& ps = res.rules[0].scheme;
   EXPECT_EQ(ps.left.size(), 1u);
   EXPECT_EQ(ps.right.size(), 6u);
@@ -356,7 +358,7 @@ TEST(RuleInference, EnumeratingRelabelingsFindsMixedLoopReadings) {
   const InferenceResult res = infer_rules(j, opt);
   size_t found = 0;
   for (const auto& r : res.rules) found += schemes_isomorphic(r.scheme, lib);
-  EXPECT_EQ(found, 1u) << summary_text(res);
+  EXPECT_EQ(found, 1u) << to_text(res);
   EXPECT_GE(res.rules.size(), 2u);
 }
 
@@ -376,7 +378,7 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
   const JointGraph j = joint_from_pair(sq, after, m);
   EXPECT_EQ(j.size(), 6u);
   const InferenceResult local = infer_on(j, ot("<0,2>"));
-  ASSERT_EQ(local.rules.size(), 1u) << summary_text(local);
+  ASSERT_EQ(local.rules.size(), 1u) << to_text(local);
   EXPECT_TRUE(schemes_isomorphic(local.rules[0].scheme, vi)) << scheme_to_json_text(local.rules[0].scheme);
   // A mapped dart outside the selection is refused.
   DartMapping bad = m;
@@ -401,7 +403,7 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
     ASSERT_TRUE(scheme::apply(SchemeEngine(ds), tetra_k, {0}).applied);
     nodes *= 4;
     const InferenceResult res = infer_on(cube, after, ot("<0,1,2>"));
-    ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+    ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
     const RuleScheme& r = res.rules[0].scheme;
     EXPECT_EQ(r.left.size(), 1u);
     EXPECT_EQ(r.right.size(), nodes);
@@ -424,7 +426,7 @@ TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   const Map after = applied(tet, s3, 0);
   ASSERT_EQ(after.size(), 72u);
   const InferenceResult res = infer_on(tet, after, ot("<0,1,2>"));
-  ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+  ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& r = res.rules[0].scheme;
   EXPECT_EQ(r.right.size(), 3u);
   EXPECT_TRUE(schemes_isomorphic(r, s3)) << scheme_to_json_text(r);
@@ -500,7 +502,7 @@ TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
     ASSERT_TRUE(app.applied) << app.why;
     const HookedExample e{c.before, after, identity_mapping(c.before, after)};
     const InferenceResult res = infer_on(lib, e, c.cut);
-    ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+    ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
     const InferredRule& r = res.rules[0];
     EXPECT_EQ(r.scheme.hooks.size(), c.hooks_inferred);
     EXPECT_TRUE(schemes_isomorphic(r.scheme, lib)) << scheme_to_json_text(r.scheme);
@@ -553,10 +555,10 @@ TEST(RuleInference, LocalLibrarySchemesAreRecoveredThroughSelections) {
       const HookedExample e = local_example(g, lib, 0, ot("<0,2>"), neighbours);
       EXPECT_EQ(e.mapping.before_selection->size(), 8u - (neighbours ? 0 : 4));
       const InferenceResult res = infer_on(lib, e, 0);
-      ASSERT_EQ(res.rules.size(), 1u) << summary_text(res);
+      ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
       const RuleScheme& s = res.rules[0].scheme;
       EXPECT_TRUE(schemes_isomorphic(s, lib)) << scheme_to_json_text(s);
-      EXPECT_EQ(res.attempts.size(), neighbours ? 5u : 1u) << summary_text(res);
+      EXPECT_EQ(res.attempts.size(), neighbours ? 5u : 1u) << to_text(res);
       for (size_t k = 1; k < res.attempts.size(); ++k) {
         EXPECT_EQ(res.attempts[k].outcome, AttemptOutcome::FoldFailed);
         EXPECT_NE(res.attempts[k].reason.find("partial hook orbit"), std::string::npos);

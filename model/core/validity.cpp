@@ -2,42 +2,48 @@
 
 namespace gmr {
 
-const char* to_string(ViolationKind k) {
-  switch (k) {
-    case ViolationKind::DanglingLink: return "incident-arcs";
-    case ViolationKind::NotInvolution: return "non-orientation";
-    case ViolationKind::NotPermutation: return "incident-arcs";
-    case ViolationKind::Cycle: return "cycle";
-  }
-  return "?";
-}
-
-std::string Violation::describe() const {
-  std::string s = std::string(to_string(kind)) + " at dart " + std::to_string(dart) + ": ";
-  switch (kind) {
-    case ViolationKind::DanglingLink:
-      s += "its " + std::to_string(i) + "-link targets " + std::to_string(path.back()) +
-           ", which is not a dart";
-      break;
-    case ViolationKind::NotInvolution:
-      s += "alpha_" + std::to_string(i) + " is not an involution: " + std::to_string(path[0]) +
-           " -> " + std::to_string(path[1]) + " -> " + std::to_string(path[2]);
-      break;
-    case ViolationKind::NotPermutation:
-      s += "dart is the target of several 1-arcs (beta_1 not a permutation), from " +
-           std::to_string(path[0]) + " and " + std::to_string(path[1]);
-      break;
-    case ViolationKind::Cycle: {
-      s += "the " + std::to_string(i) + std::to_string(j) + std::to_string(i) + std::to_string(j) +
-           "-path does not close:";
-      for (Dart d : path) s += " " + std::to_string(d);
-      break;
-    }
-  }
-  return s;
-}
-
 namespace {
+
+// The violations at a dart, built only when the report stores them (the limit not reached).
+ConstraintViolation dangling_link(Dart d, int i, Dart e) {
+  return {.constraint = Constraint::IncidentArcs,
+          .at = d,
+          .i = i,
+          .path = {d, e},
+          .message = "its " + std::to_string(i) + "-link targets " + std::to_string(e) +
+                     ", which is not a dart"};
+}
+
+ConstraintViolation not_involution(Dart d, int i, Dart e, Dart f) {
+  return {.constraint = Constraint::NonOrientation,
+          .at = d,
+          .i = i,
+          .path = {d, e, f},
+          .message = "alpha_" + std::to_string(i) + " is not an involution: " + std::to_string(d) +
+                     " -> " + std::to_string(e) + " -> " + std::to_string(f)};
+}
+
+ConstraintViolation not_permutation(Dart e, int i, Dart from, Dart d) {
+  return {.constraint = Constraint::IncidentArcs,
+          .at = e,
+          .i = i,
+          .path = {from, d},
+          .message = "dart is the target of several 1-arcs (beta_1 not a permutation), from " +
+                     std::to_string(from) + " and " + std::to_string(d)};
+}
+
+ConstraintViolation open_cycle(int i, int j, std::vector<Dart> path) {
+  std::string m = "the " + std::to_string(i) + std::to_string(j) + std::to_string(i) +
+                  std::to_string(j) + "-path does not close:";
+  for (Dart x : path) m += " " + std::to_string(x);
+  const Dart d = path.front();
+  return {.constraint = Constraint::Cycle,
+          .at = d,
+          .i = i,
+          .j = j,
+          .path = std::move(path),
+          .message = std::move(m)};
+}
 
 // One pass over the darts of a map without deleted darts whose every dimension is an involution
 // (a G-map, Def. 32): true when no dart breaks a condition as the passes of check_validity read
@@ -85,8 +91,9 @@ bool valid_in_one_pass(const Map& g) {
 ValidityReport check_validity(const Map& g, size_t limit) {
   ValidityReport r;
   if (valid_in_one_pass(g)) return r;
-  auto add = [&](Violation v) {
-    if (r.violations.size() < limit) r.violations.push_back(std::move(v));
+  // `make` builds the violation (its path and message) only when it is stored.
+  auto add = [&](auto make) {
+    if (r.violations.size() < limit) r.violations.push_back(make());
     else ++r.truncated;
   };
   const int lo = g.lowest_dim(), n = g.dimension();
@@ -109,12 +116,12 @@ ValidityReport check_validity(const Map& g, size_t limit) {
       if (!is_dart(e)) {
         dim_ok[i] = false;
         invol_ok[i] = false;
-        add({ViolationKind::DanglingLink, d, i, -1, {d, e}});
+        add([&] { return dangling_link(d, i, e); });
         return;
       }
       if (invol && l[e] != d) {
         invol_ok[i] = false;
-        add({ViolationKind::NotInvolution, d, i, -1, {d, e, l[e]}});
+        add([&] { return not_involution(d, i, e, l[e]); });
       }
     };
     if (dense && invol) {
@@ -133,7 +140,7 @@ ValidityReport check_validity(const Map& g, size_t limit) {
       std::vector<Dart> from(g.capacity(), kNoDart);
       g.for_each_dart([&](Dart d) {
         const Dart e = l[d];
-        if (from[e] != kNoDart) add({ViolationKind::NotPermutation, e, i, -1, {from[e], d}});
+        if (from[e] != kNoDart) add([&] { return not_permutation(e, i, from[e], d); });
         else from[e] = d;
       });
     }
@@ -146,7 +153,7 @@ ValidityReport check_validity(const Map& g, size_t limit) {
       const Dart* const lj = g.links(j).data();
       auto report = [&](Dart d) {
         const Dart a = li[d], b = lj[a], c = li[b], e = lj[c];
-        if (e != d) add({ViolationKind::Cycle, d, i, j, {d, a, b, c, e}});
+        if (e != d) add([&] { return open_cycle(i, j, {d, a, b, c, e}); });
       };
       if (invol_ok[i] && invol_ok[j]) {
         // With alpha_i and alpha_j involutions, alpha_j alpha_i alpha_j alpha_i (d) == d iff

@@ -1,4 +1,5 @@
-// Validity of an n-G-map / n-O-map (thesis Def. 32) with a report of every violation.
+// Validity of an n-G-map / n-O-map (thesis Def. 32) with a report of every violation, each a
+// ConstraintViolation located at a dart (constraint_violation.hpp).
 //
 //  * incidence:   every link targets an existing dart (the stored form always has exactly one
 //                 outgoing i-arc per dart; a dangling target breaks I_G(i));
@@ -8,26 +9,15 @@
 //  * cycle:       alpha_j(alpha_i(alpha_j(alpha_i(d)))) == d for i+2 <= j (C_G(i,j)); for O-maps
 //                 over (1..n)_{+2} only (Def. 32, not the combinatorial Def. 1).
 #pragma once
-#include <string>
 #include <vector>
 
+#include "model/core/constraint_violation.hpp"
 #include "model/core/map.hpp"
 
 namespace gmr {
 
-enum class ViolationKind { DanglingLink, NotInvolution, NotPermutation, Cycle };
-const char* to_string(ViolationKind k);
-
-struct Violation {
-  ViolationKind kind;
-  Dart dart;               // the node where the local constraint fails
-  int i = -1, j = -1;      // dimension(s)
-  std::vector<Dart> path;  // the offending path, starting at `dart`
-  std::string describe() const;
-};
-
 struct ValidityReport {
-  std::vector<Violation> violations;
+  std::vector<ConstraintViolation> violations;
   size_t truncated = 0;  // violations not stored (beyond the limit)
   bool ok() const { return violations.empty() && truncated == 0; }
   size_t total() const { return violations.size() + truncated; }

@@ -4,23 +4,13 @@
 
 namespace gmr::graph {
 
-const char* to_string(ConstraintKind k) {
-  switch (k) {
-    case ConstraintKind::IncidentArcs: return "incident-arcs";
-    case ConstraintKind::NonOrientation: return "non-orientation";
-    case ConstraintKind::Cycle: return "cycle";
-  }
-  return "?";
-}
-
-std::string ConstraintViolation::describe(const DGraph& g) const {
-  std::string s = std::string(to_string(kind)) + " ";
-  s += kind == ConstraintKind::Cycle ? "C(" + std::to_string(i) + "," + std::to_string(j) + ")"
-                                     : (kind == ConstraintKind::IncidentArcs ? "I(" : "O(") + std::to_string(i) + ")";
-  s += " at node " + g.node_str(node) + ": " + what;
-  if (!path.empty()) {
+std::string to_text(const ConstraintViolation& v, const DGraph& g) {
+  std::string s = std::string(to_text(v.constraint)) + " " +
+                  condition_text(symbol(v.constraint), v.i, v.j) + " at node " + g.node_str(v.at) +
+                  ": " + v.message;
+  if (!v.path.empty()) {
     s += " [path";
-    for (Node v : path) s += " " + g.node_str(v);
+    for (Node x : v.path) s += " " + g.node_str(x);
     s += "]";
   }
   return s;
@@ -30,19 +20,24 @@ std::vector<ConstraintViolation> check_incident_arcs(const DGraph& g, Node v, in
   std::vector<ConstraintViolation> out;
   const auto succ = g.successors(v, i), pred = g.predecessors(v, i);
   const std::string li = std::to_string(i);
-  if (succ.empty()) out.push_back({ConstraintKind::IncidentArcs, v, i, -1, "no outgoing " + li + "-arc", {}});
+  auto add = [&](std::string message, std::vector<Node> path) {
+    out.push_back({.constraint = Constraint::IncidentArcs,
+                   .at = v,
+                   .i = i,
+                   .path = std::move(path),
+                   .message = std::move(message)});
+  };
+  if (succ.empty()) add("no outgoing " + li + "-arc", {});
   if (succ.size() > 1) {
-    ConstraintViolation c{ConstraintKind::IncidentArcs, v, i, -1, std::to_string(succ.size()) + " outgoing " + li + "-arcs", {}};
-    c.path = {v};
-    c.path.insert(c.path.end(), succ.begin(), succ.end());
-    out.push_back(std::move(c));
+    std::vector<Node> path{v};
+    path.insert(path.end(), succ.begin(), succ.end());
+    add(std::to_string(succ.size()) + " outgoing " + li + "-arcs", std::move(path));
   }
-  if (pred.empty()) out.push_back({ConstraintKind::IncidentArcs, v, i, -1, "no incoming " + li + "-arc", {}});
+  if (pred.empty()) add("no incoming " + li + "-arc", {});
   if (pred.size() > 1) {
-    ConstraintViolation c{ConstraintKind::IncidentArcs, v, i, -1, std::to_string(pred.size()) + " incoming " + li + "-arcs", {}};
-    c.path = pred;
-    c.path.push_back(v);
-    out.push_back(std::move(c));
+    std::vector<Node> path = pred;
+    path.push_back(v);
+    add(std::to_string(pred.size()) + " incoming " + li + "-arcs", std::move(path));
   }
   return out;
 }
@@ -54,14 +49,19 @@ std::vector<ConstraintViolation> check_non_orientation(const DGraph& g, Node v, 
       if (g.arc(e).label == i && g.arc(e).tgt == b) return true;
     return false;
   };
+  // The i-arc a -> b has no reverse.
+  auto add = [&](Node a, Node b) {
+    out.push_back({.constraint = Constraint::NonOrientation,
+                   .at = v,
+                   .i = i,
+                   .path = {a, b},
+                   .message = "the " + std::to_string(i) + "-arc " + g.node_str(a) + "->" +
+                              g.node_str(b) + " has no reverse"});
+  };
   for (Node w : g.successors(v, i))
-    if (!has_arc(w, v))
-      out.push_back({ConstraintKind::NonOrientation, v, i, -1,
-                     "the " + std::to_string(i) + "-arc " + g.node_str(v) + "->" + g.node_str(w) + " has no reverse", {v, w}});
+    if (!has_arc(w, v)) add(v, w);
   for (Node w : g.predecessors(v, i))
-    if (!has_arc(v, w))
-      out.push_back({ConstraintKind::NonOrientation, v, i, -1,
-                     "the " + std::to_string(i) + "-arc " + g.node_str(w) + "->" + g.node_str(v) + " has no reverse", {w, v}});
+    if (!has_arc(v, w)) add(w, v);
   return out;
 }
 
@@ -83,7 +83,12 @@ std::vector<ConstraintViolation> check_cycle(const DGraph& g, Node v, int i, int
   std::string l = std::to_string(i) + std::to_string(j);
   std::string what = longest.size() == 5 ? "no " + l + l + "-path from this node returns to it"
                                          : "the " + l + l + "-path stops after " + std::to_string(longest.size() - 1) + " arcs";
-  return {{ConstraintKind::Cycle, v, i, j, what, longest}};
+  return {{.constraint = Constraint::Cycle,
+           .at = v,
+           .i = i,
+           .j = j,
+           .path = std::move(longest),
+           .message = std::move(what)}};
 }
 
 std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, MapKind kind) {
@@ -97,9 +102,12 @@ std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, 
     if (!g.arc_alive(a)) continue;
     const Arc& e = g.arc(a);
     if (e.label < lo || e.label > n)
-      out.push_back({ConstraintKind::IncidentArcs, e.src, e.label, -1,
-                     "label " + std::to_string(e.label) + " outside " + std::to_string(lo) + ".." + std::to_string(n),
-                     {e.src, e.tgt}});
+      out.push_back({.constraint = Constraint::IncidentArcs,
+                     .at = e.src,
+                     .i = e.label,
+                     .path = {e.src, e.tgt},
+                     .message = "label " + std::to_string(e.label) + " outside " +
+                                std::to_string(lo) + ".." + std::to_string(n)});
   }
   for (Node v = 0; v < g.num_nodes(); ++v) {
     for (int i : spec.labels()) append(check_incident_arcs(g, v, i));

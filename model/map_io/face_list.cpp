@@ -16,8 +16,8 @@ FaceList face_list_from_map(const Map& g, const PositionEmbedding& pos) {
                                       "-" + (g.is_omap() ? "O-map" : "G-map"));
   const ValidityReport report = check_validity(g, 1);
   if (!report.ok())
-    throw Error(ErrorCode::InvalidMap, "the map is not a valid 2-G-map: " + report.violations.front().describe(),
-                "dart " + std::to_string(report.violations.front().dart));
+    throw Error(ErrorCode::InvalidMap, "the map is not a valid 2-G-map: " + to_text(report.violations.front()),
+                "dart " + std::to_string(report.violations.front().at));
   FaceList fl;
   const Dart cap = g.capacity();
   // Vertices: <1,2>-orbits.

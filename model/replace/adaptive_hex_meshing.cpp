@@ -191,7 +191,7 @@ std::vector<MeshingLevel> refine_adaptively(FlaggedMap& m, const PatternStore& s
   const ValidityReport valid = check_validity(g, 1);
   if (!valid.ok())
     throw Error(ErrorCode::InvalidMap,
-                "the map is not valid: " + valid.violations.front().describe());
+                "the map is not valid: " + to_text(valid.violations.front()));
   m.resize_flags();
   double root = 0;
   {

@@ -16,7 +16,7 @@ FlaggedMap cone_of_surface(const FlaggedMap& surface) {
   if (s.is_omap() || s.dimension() != 2) throw Error(ErrorCode::InvalidMap, "a cone is built on a 2-G-map surface");
   if (s.has_holes()) throw Error(ErrorCode::InvalidMap, "the surface has deleted darts");
   const ValidityReport v = check_validity(s, 1);
-  if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the surface is not valid: " + v.violations.front().describe());
+  if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the surface is not valid: " + to_text(v.violations.front()));
   s.for_each_dart([&](Dart d) {
     for (int i = 0; i <= 2; ++i)
       if (s.is_free(i, d))

@@ -16,7 +16,7 @@ Pattern make_pattern(std::string name, FlaggedMap m) {
   if (n != 2 && n != 3) reject("an f-pattern is a 2-G-map and a v-pattern a 3-G-map (dimension " + std::to_string(n) + ")");
   if (g.size() == 0) reject("no dart");
   const ValidityReport v = check_validity(g, 1);
-  if (!v.ok()) reject("invalid G-map: " + v.violations.front().describe());
+  if (!v.ok()) reject("invalid G-map: " + to_text(v.violations.front()));
   if (count_components(g) != 1) reject("not connected");
   size_t boundary = 0;
   g.for_each_dart([&](Dart d) {

@@ -31,7 +31,7 @@ QueryReplaceReport begin_replacement(FlaggedMap& target, const PatternStore& sto
                                            std::to_string(n) + "-G-map");
   if (precondition == Precondition::CheckValidity) {
     const ValidityReport v = check_validity(g, 1);
-    if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + v.violations.front().describe());
+    if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + to_text(v.violations.front()));
   }
   target.resize_flags();
   QueryReplaceReport r;

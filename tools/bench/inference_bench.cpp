@@ -19,6 +19,7 @@
 
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/tests/polycube_support.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/signature.hpp"
@@ -98,7 +99,7 @@ Example quad_torus(size_t w, size_t h) {
 
 void expect_one_rule(const InferenceResult& r, const Example& ex, benchmark::State& st) {
   if (r.rules.size() != 1 || r.rules[0].scheme.right.size() != ex.right_nodes)
-    st.SkipWithError(("unexpected inference result:\n" + summary_text(r)).c_str());
+    st.SkipWithError(("unexpected inference result:\n" + to_text(r)).c_str());
 }
 
 InferenceResult driver(const Example& ex) {

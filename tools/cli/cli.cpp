@@ -10,6 +10,7 @@
 #include "model/map_io/voxels.hpp"
 #include "model/map_io/obj.hpp"
 #include "model/map_io/off.hpp"
+#include "model/map_io/validity_report.hpp"
 #include "model/map_io/json_writer.hpp"
 #include "model/core/position.hpp"
 #include "model/map_io/read_file.hpp"
@@ -171,8 +172,7 @@ std::string abbreviate(const std::string& text, size_t max_chars) {
 }
 
 void print_violations(const ValidityReport& r) {
-  for (const Violation& v : r.violations) std::cout << "  " << v.describe() << "\n";
-  if (r.truncated) std::cout << "  ... and " << r.truncated << " more (--limit)\n";
+  std::cout << io::to_text(r);
 }
 
 void print_json(const nlohmann::ordered_json& j) { std::cout << dump_json(j) << std::flush; }

@@ -22,6 +22,7 @@
 #include "model/scheme/scheme_engine.hpp"
 #include "model/core/error.hpp"
 #include "model/rule_io/rule_json.hpp"
+#include "model/map_io/validity_report.hpp"
 #include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/subcommand.hpp"
@@ -150,9 +151,7 @@ int run_apply(const ApplyArgs& a) {
     nlohmann::ordered_json co = nlohmann::ordered_json::object();
     for (Node v = 0; v < r.right().num_nodes(); ++v) co[r.right().name(v)] = d.comatch[v];
     j["comatch"] = co;
-    nlohmann::ordered_json vs = nlohmann::ordered_json::array();
-    for (const auto& v : rep.violations) vs.push_back(v.describe());
-    j["violations"] = vs;
+    j["violations"] = io::violation_texts(rep);
     j["violations_not_listed"] = rep.truncated;
     print_json(j);
   } else {

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "tools/cli/cli.hpp"

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "inference/fold.hpp"
+#include "inference/inference_format.hpp"
 #include "model/core/error.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/subcommand.hpp"
@@ -37,7 +38,7 @@ int run_fold(const FoldArgs& a) {
   const FoldResult r = fold(j, o, index.before[static_cast<Dart>(a.dart)], opt);
   if (a.json) {
     nlohmann::ordered_json out{{"map", a.input}};
-    const nlohmann::ordered_json body = fold_to_json(r, j);
+    const nlohmann::ordered_json body = to_json(r, j);
     for (const auto& [k, v] : body.items()) out[k] = v;
     print_json(out);
   } else {

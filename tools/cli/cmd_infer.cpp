@@ -16,9 +16,11 @@
 #include <iostream>
 #include <memory>
 
+#include "checker/check_format.hpp"
 #include "checker/dot_overlay.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/prior_cut.hpp"
 #include "model/core/error.hpp"
 #include "model/draw/render.hpp"
@@ -72,7 +74,7 @@ int run_infer(const InferArgs& a) {
       if (k == n) std::cerr << "\n";
     };
   const InferenceResult res = infer_rules(j, opt);
-  const std::string summary = summary_text(res);
+  const std::string summary = to_text(res);
   if (a.json) {
     nlohmann::ordered_json out;
     out["before"] = a.before;
@@ -82,7 +84,7 @@ int run_infer(const InferArgs& a) {
     for (const auto& at : res.attempts) {
       nlohmann::ordered_json x{{"orbit", at.orbit.str()}, {"start", at.start_text}, {"outcome", to_string(at.outcome)},
                                {"left_nodes", at.left_nodes}, {"right_nodes", at.right_nodes}};
-      if (at.outcome == AttemptOutcome::FoldFailed) x["failure"] = failure_to_json(at.failure, j);
+      if (at.outcome == AttemptOutcome::FoldFailed) x["failure"] = to_json(at.failure, j);
       if (at.rule >= 0) x["rule"] = at.rule;
       if (at.rejected) {
         x["reason"] = at.reason;

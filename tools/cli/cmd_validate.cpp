@@ -6,6 +6,7 @@
 
 #include "model/core/position.hpp"
 #include "model/core/validity.hpp"
+#include "model/map_io/validity_report.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/subcommand.hpp"
 #include "tools/cli/summary.hpp"
@@ -48,18 +49,7 @@ int run_validate(const ValidateArgs& a) {
     j["file"] = a.input;
     j["map"] = map_name(f.map);
     j["valid"] = valid;
-    nlohmann::ordered_json vs = nlohmann::ordered_json::array();
-    for (const Violation& v : r.violations) {
-      nlohmann::ordered_json x;
-      x["constraint"] = to_string(v.kind);
-      x["dart"] = v.dart;
-      x["i"] = v.i;
-      if (v.j >= 0) x["j"] = v.j;
-      x["path"] = v.path;
-      x["message"] = v.describe();
-      vs.push_back(x);
-    }
-    j["violations"] = vs;
+    j["violations"] = io::violations_json(r);
     j["truncated"] = r.truncated;
     nlohmann::ordered_json es = nlohmann::ordered_json::array();
     for (const Issue& i : issues) es.push_back({{"embedding", i.embedding}, {"dart", i.issue.dart}, {"problem", i.issue.problem}});

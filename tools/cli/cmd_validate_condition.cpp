@@ -19,6 +19,7 @@
 #include "checker/smt/counterexample.hpp"
 #include "checker/smt/scheme_conditions.hpp"
 #include "checker/smt/symbolic_validation.hpp"
+#include "checker/smt/validation_format.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/core/error.hpp"
 #include "model/map_io/read_file.hpp"

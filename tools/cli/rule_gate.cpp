@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "checker/scheme_checker.hpp"
 

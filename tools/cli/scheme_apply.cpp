@@ -8,6 +8,7 @@
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/map_io/json_writer.hpp"
+#include "model/map_io/validity_report.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/core/embedded_map.hpp"
 #include "model/expr/propagation.hpp"
@@ -202,9 +203,7 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
       list.push_back(e);
     }
     j["tables"] = list;
-    nlohmann::ordered_json vs = nlohmann::ordered_json::array();
-    for (const auto& v : rep.violations) vs.push_back(v.describe());
-    j["violations"] = vs;
+    j["violations"] = io::violation_texts(rep);
     j["violations_not_listed"] = rep.truncated;
     nlohmann::ordered_json em = nlohmann::ordered_json::array();
     for (const auto& f : m.fields) em.push_back(f.name());

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <map>
 
+#include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/rule_io/jme_import.hpp"
 #include "model/map_io/json_reader.hpp"

@@ -11,6 +11,7 @@
 #include "checker/smt/condition_plugin.hpp"
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
+#include "checker/smt/validation_format.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/scheme_conditions.hpp"
 #include "model/rule_io/scheme_json.hpp"
@@ -89,7 +90,7 @@ TEST(ConditionValidation, WrongOrientationRefutedMinimally) {
   const auto& w = *r.smallest_unsound;
   EXPECT_EQ(nodes(w.rule), 3u);
   EXPECT_EQ(w.counterexample->G.size(), 3u);
-  EXPECT_EQ(w.counterexample->violations.front().kind, graph::ConstraintKind::NonOrientation);
+  EXPECT_EQ(w.counterexample->violations.front().constraint, Constraint::NonOrientation);
 }
 
 TEST(ConditionValidation, WrongCycleRefutedMinimally) {

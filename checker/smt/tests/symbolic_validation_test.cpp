@@ -10,6 +10,7 @@
 
 #include "checker/rule_check.hpp"
 #include "checker/smt/condition_registry.hpp"
+#include "checker/smt/validation_format.hpp"
 #include "checker/smt/condition_validation.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/symbolic_rule.hpp"

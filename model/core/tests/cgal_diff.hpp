@@ -255,7 +255,7 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
     if (break_involution(b, rng)) {
       const auto rep = rejected_by_both(b);
       bool has_invol = false;
-      for (const auto& v : rep.violations) has_invol |= v.kind == gmr::ViolationKind::NotInvolution;
+      for (const auto& v : rep.violations) has_invol |= v.constraint == gmr::Constraint::NonOrientation;
       EXPECT_TRUE(has_invol);
       ++st.broken_involution;
     }
@@ -265,7 +265,7 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
     if (break_cycle(b, rng)) {
       const auto rep = rejected_by_both(b);
       for (const auto& v : rep.violations)
-        EXPECT_EQ(v.kind, gmr::ViolationKind::Cycle) << v.describe();
+        EXPECT_EQ(v.constraint, gmr::Constraint::Cycle) << gmr::to_text(v);
       ++st.broken_cycle;
     }
   }

@@ -37,7 +37,7 @@ std::vector<Dart> ref_visit(const Map& g, DimMask mask, Dart d, std::vector<bool
 // The validity check as first written (before the fast paths).
 ValidityReport ref_validity(const Map& g, size_t limit) {
   ValidityReport r;
-  auto add = [&](Violation v) {
+  auto add = [&](ConstraintViolation v) {
     if (r.violations.size() < limit)
       r.violations.push_back(std::move(v));
     else
@@ -52,17 +52,17 @@ ValidityReport ref_validity(const Map& g, size_t limit) {
       const Dart e = l[d];
       if (!g.alive(e)) {
         dim_ok[i] = false;
-        add({ViolationKind::DanglingLink, d, i, -1, {d, e}});
+        add({Constraint::IncidentArcs, d, i, -1, {d, e}});
         return;
       }
-      if (invol && l[e] != d) add({ViolationKind::NotInvolution, d, i, -1, {d, e, l[e]}});
+      if (invol && l[e] != d) add({Constraint::NonOrientation, d, i, -1, {d, e, l[e]}});
     });
     if (!invol && dim_ok[i]) {
       std::vector<Dart> from(g.capacity(), kNoDart);
       g.for_each_dart([&](Dart d) {
         const Dart e = l[d];
         if (from[e] != kNoDart)
-          add({ViolationKind::NotPermutation, e, i, -1, {from[e], d}});
+          add({Constraint::IncidentArcs, e, i, -1, {from[e], d}});
         else
           from[e] = d;
       });
@@ -75,7 +75,7 @@ ValidityReport ref_validity(const Map& g, size_t limit) {
       const auto& lj = g.links(j);
       g.for_each_dart([&](Dart d) {
         const Dart a = li[d], b = lj[a], c = li[b], e = lj[c];
-        if (e != d) add({ViolationKind::Cycle, d, i, j, {d, a, b, c, e}});
+        if (e != d) add({Constraint::Cycle, d, i, j, {d, a, b, c, e}});
       });
     }
   return r;
@@ -85,7 +85,7 @@ bool same(const ValidityReport& a, const ValidityReport& b) {
   if (a.truncated != b.truncated || a.violations.size() != b.violations.size()) return false;
   for (size_t k = 0; k < a.violations.size(); ++k) {
     const auto &x = a.violations[k], &y = b.violations[k];
-    if (x.kind != y.kind || x.dart != y.dart || x.i != y.i || x.j != y.j || x.path != y.path)
+    if (x.constraint != y.constraint || x.at != y.at || x.i != y.i || x.j != y.j || x.path != y.path)
       return false;
   }
   return true;

@@ -16,7 +16,7 @@ TEST(Validity, BrokenInvolutionReported) {
   ASSERT_FALSE(r.ok());
   bool at_d = false;
   for (const auto& v : r.violations) {
-    if (v.kind == ViolationKind::NotInvolution && v.dart == d && v.i == 2) at_d = true;
+    if (v.constraint == Constraint::NonOrientation && v.at == d && v.i == 2) at_d = true;
   }
   EXPECT_TRUE(at_d);
   (void)e;
@@ -33,12 +33,12 @@ TEST(Validity, CycleConstraintReportsPath) {
   auto r = check_validity(g);
   ASSERT_FALSE(r.ok());
   for (const auto& v : r.violations) {
-    EXPECT_EQ(v.kind, ViolationKind::Cycle);
+    EXPECT_EQ(v.constraint, Constraint::Cycle);
     EXPECT_EQ(v.i, 0);
     EXPECT_EQ(v.j, 2);
     EXPECT_EQ(v.path.size(), 5u);
-    EXPECT_EQ(v.path.front(), v.dart);
-    EXPECT_NE(v.path.back(), v.dart);
+    EXPECT_EQ(v.path.front(), v.at);
+    EXPECT_NE(v.path.back(), v.at);
   }
   EXPECT_EQ(r.violations.size(), 4u);  // 0, base and their 0-neighbours
 }
@@ -48,8 +48,10 @@ TEST(Validity, DanglingLinkAndLimit) {
   g.set_alpha(3, 5, 1000);
   auto r = check_validity(g);
   ASSERT_EQ(r.violations.size(), 1u);
-  EXPECT_EQ(r.violations[0].kind, ViolationKind::DanglingLink);
-  EXPECT_EQ(r.violations[0].dart, 5u);
+  EXPECT_EQ(r.violations[0].constraint, Constraint::IncidentArcs);
+  EXPECT_EQ(r.violations[0].at, 5u);
+  EXPECT_EQ(to_text(r.violations[0]),
+            "incident-arcs at dart 5: its 3-link targets 1000, which is not a dart");
   Map big = make_grid(10, 10, 2);
   // Loops on the even darts while their 1-partners still point back: many non-involutions.
   big.for_each_dart([&](Dart d) {
@@ -67,7 +69,9 @@ TEST(Validity, OMapPermutation) {
   o.set_alpha(1, 0, o.alpha(1, 1));  // two darts share a beta_1 image
   auto r = check_validity(o);
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.violations[0].kind, ViolationKind::NotPermutation);
+  EXPECT_EQ(r.violations[0].constraint, Constraint::IncidentArcs);
+  EXPECT_EQ(r.violations[0].i, 1);
+  EXPECT_NE(r.violations[0].message.find("beta_1 not a permutation"), std::string::npos);
 }
 
 TEST(Validity, HighDimensions) {

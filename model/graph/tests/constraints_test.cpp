@@ -9,9 +9,9 @@
 using namespace gmr;
 using namespace gmr::graph;
 
-static bool has(const std::vector<ConstraintViolation>& vs, ConstraintKind k, Node v, int i, int j = -1) {
+static bool has(const std::vector<ConstraintViolation>& vs, Constraint k, Node v, int i, int j = -1) {
   for (const auto& c : vs)
-    if (c.kind == k && c.node == v && c.i == i && c.j == j) return true;
+    if (c.constraint == k && c.at == v && c.i == i && c.j == j) return true;
   return false;
 }
 
@@ -30,14 +30,14 @@ TEST(Constraints, IncidentArcsMissingAndDuplicate) {
   g.add_arc(a, c, 0);  // a now has two outgoing 0-arcs, c two incoming
   auto va = check_incident_arcs(g, a, 0);
   ASSERT_EQ(va.size(), 1u);
-  EXPECT_EQ(va[0].what, "2 outgoing 0-arcs");
+  EXPECT_EQ(va[0].message, "2 outgoing 0-arcs");
   EXPECT_EQ(va[0].path, (std::vector<Node>{a, b, c}));
   auto vc = check_incident_arcs(g, c, 0);
   ASSERT_EQ(vc.size(), 1u);
-  EXPECT_EQ(vc[0].what, "2 incoming 0-arcs");
+  EXPECT_EQ(vc[0].message, "2 incoming 0-arcs");
   auto vb1 = check_incident_arcs(g, b, 1);
   EXPECT_EQ(vb1.size(), 2u);  // no outgoing and no incoming 1-arc
-  EXPECT_NE(vb1[0].describe(g).find("at node b"), std::string::npos);
+  EXPECT_NE(to_text(vb1[0], g).find("at node b"), std::string::npos);
 }
 
 TEST(Constraints, NonOrientationNamesTheArc) {
@@ -48,7 +48,7 @@ TEST(Constraints, NonOrientationNamesTheArc) {
   auto v = check_non_orientation(g, a, 2);
   ASSERT_EQ(v.size(), 1u);
   EXPECT_EQ(v[0].path, (std::vector<Node>{a, b}));
-  EXPECT_NE(v[0].what.find("a->b"), std::string::npos);
+  EXPECT_NE(v[0].message.find("a->b"), std::string::npos);
   EXPECT_EQ(check_non_orientation(g, b, 2).size(), 1u);  // incoming arc without reverse
   EXPECT_TRUE(check_non_orientation(g, a, 0).empty());
 }
@@ -69,9 +69,9 @@ TEST(Constraints, CycleBrokenOnOneNode) {
   EXPECT_EQ(va[0].path.front(), a);
   EXPECT_NE(va[0].path.back(), a);
   auto all = check_gmap_constraints(g, 2, MapKind::GMap);
-  EXPECT_TRUE(has(all, ConstraintKind::Cycle, a, 0, 2));
-  EXPECT_TRUE(has(all, ConstraintKind::Cycle, d, 0, 2));
-  for (const auto& cv : all) EXPECT_EQ(cv.kind, ConstraintKind::Cycle);
+  EXPECT_TRUE(has(all, Constraint::Cycle, a, 0, 2));
+  EXPECT_TRUE(has(all, Constraint::Cycle, d, 0, 2));
+  for (const auto& cv : all) EXPECT_EQ(cv.constraint, Constraint::Cycle);
 }
 
 TEST(Constraints, LabelOutsideDimensionSet) {
@@ -79,7 +79,7 @@ TEST(Constraints, LabelOutsideDimensionSet) {
   g.add_arc(0, 0, 5);
   auto all = check_gmap_constraints(g, 2, MapKind::GMap);
   ASSERT_FALSE(all.empty());
-  EXPECT_NE(all[0].what.find("label 5"), std::string::npos);
+  EXPECT_NE(all[0].message.find("label 5"), std::string::npos);
 }
 
 TEST(Constraints, OMapDimensionOneMayBeOriented) {
@@ -89,7 +89,7 @@ TEST(Constraints, OMapDimensionOneMayBeOriented) {
   // As a G-map over 1..2 the oriented 1-arcs break non-orientation.
   bool found = false;
   for (const auto& c : check_gmap_constraints(dg, 2, MapKind::GMap))
-    if (c.kind == ConstraintKind::NonOrientation && c.i == 1) found = true;
+    if (c.constraint == Constraint::NonOrientation && c.i == 1) found = true;
   EXPECT_TRUE(found);
 }
 

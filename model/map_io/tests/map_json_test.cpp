@@ -144,7 +144,7 @@ TEST(IoJson, InvalidMapIsReturnedNotRejected) {
   const EmbeddedMap f = read_map_json_file(data("invalid_gmap.json"));
   const ValidityReport r = check_validity(f.map);
   EXPECT_FALSE(r.ok());
-  EXPECT_EQ(r.violations.front().kind, ViolationKind::Cycle);
+  EXPECT_EQ(r.violations.front().constraint, Constraint::Cycle);
   // A non-involutive link is a violation too, not a parse error.
   const EmbeddedMap g = read_map_json(tiny("[1, 1, 3, 3]"));
   EXPECT_FALSE(is_valid(g.map));

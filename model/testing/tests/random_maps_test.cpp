@@ -72,7 +72,7 @@ TEST(RandomMaps, GeneratorsGiveValidDeterministicMaps) {
         EXPECT_EQ(g.dimension(), n);
         EXPECT_FALSE(g.has_holes());
         const auto rep = check_validity(g, 3);
-        ASSERT_TRUE(rep.ok()) << rep.violations.front().describe();
+        ASSERT_TRUE(rep.ok()) << to_text(rep.violations.front());
         EXPECT_EQ(links_of(g), links_of(h));
       }
     }

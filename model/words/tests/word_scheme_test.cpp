@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
