@@ -49,7 +49,7 @@ static nlohmann::ordered_json dim_json(int d) {
 nlohmann::ordered_json failure_to_json(const FoldFailure& f, const JointGraph& j) {
   nlohmann::ordered_json out;
   out["kind"] = to_string(f.kind);
-  out["node"] = f.node == inference::kNoNode ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(node_name(f.node));
+  out["node"] = f.node == inference::kNoFoldNode ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(node_name(f.node));
   out["dimension"] = dim_json(f.dim);
   if (f.position >= 0) out["position"] = f.position;
   nlohmann::ordered_json darts = nlohmann::ordered_json::array();
