@@ -16,7 +16,7 @@ std::string SemanticWitness::describe(const Rule& r, const MapFamily& f) const {
     s += "]";
   }
   s += "), match";
-  for (Node v = 0; v < r.left().num_nodes(); ++v) s += " " + r.left().name(v) + "->" + std::to_string(match.node[v]);
+  for (Node v : r.left().nodes()) s += " " + r.left().name(v) + "->" + std::to_string(graph::dart_of(match.node[v]));
   s += "; H breaks:";
   for (size_t k = 0; k < violations.size() && k < 3; ++k) s += " " + violations[k].describe(H) + ";";
   return s;

@@ -59,11 +59,11 @@ TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
     }
     const DGraph dg = to_dgraph(g);
     for (const auto& v : check_gmap_constraints(dg, g.dimension(), g.kind())) {
-      if (v.kind == ConstraintKind::Cycle) theirs.insert({2, v.node, v.i, v.j});
+      if (v.kind == ConstraintKind::Cycle) theirs.insert({2, graph::dart_of(v.node), v.i, v.j});
       // Non-orientation at the arc's source is the involution failure at that dart; incident-arc
       // failures (two incoming arcs) come with it and are folded into the same violation.
       if (v.kind == ConstraintKind::NonOrientation && v.path.size() == 2 && v.path[0] == v.node)
-        theirs.insert({1, v.node, v.i, -1});
+        theirs.insert({1, graph::dart_of(v.node), v.i, -1});
     }
     RC_ASSERT(mine == theirs);
     if (!symmetric && e != old && (e != d || old != d)) {
