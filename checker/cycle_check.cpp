@@ -25,7 +25,7 @@ bool has_in(const DGraph& g, Node t, int l) { return !g.predecessors(t, l).empty
 std::string lbl(int l) { return std::to_string(l); }
 
 bool combinatorial_on(const DGraph& g, int i, int j) {
-  for (Node v = 0; v < g.num_nodes(); ++v)
+  for (Node v : g.nodes())
     for (int l : {i, j})
       if (g.successors(v, l).size() > 1 || g.predecessors(v, l).size() > 1) return false;
   return true;
@@ -52,7 +52,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
   while (changed) {
     changed = false;
     for (auto [a, b] : {std::pair{i, j}, std::pair{j, i}}) {
-      for (ArcId e1 = 0; e1 < L.num_arc_slots() && !changed; ++e1) {
+      for (ArcId e1(0); e1.index() < L.num_arc_slots() && !changed; ++e1) {
         if (!L.arc_alive(e1) || L.arc(e1).label != a) continue;
         const Node u0 = L.arc(e1).src, u1 = L.arc(e1).tgt;
         for (Node u2 : L.successors(u1, b)) {
@@ -86,7 +86,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
     }
   }
   for (auto [a, b] : {std::pair{i, j}, std::pair{j, i}})
-    for (ArcId e1 = 0; e1 < R.num_arc_slots(); ++e1) {
+    for (ArcId e1 : R.arc_slots()) {
       if (!R.arc_alive(e1) || R.arc(e1).label != a) continue;
       const Node u0 = R.arc(e1).src, u1 = R.arc(e1).tgt;
       for (Node u2 : R.successors(u1, b))
@@ -111,7 +111,7 @@ Rule complete_for_model(const Rule& r0, std::vector<Diagnostic>* notes) {
     bool changed = false;
     for (int i : r.labels()) {
       if (r.kind() == MapKind::OMap && i == 1) continue;
-      for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+      for (ArcId a : L.arc_slots()) {
         if (!L.arc_alive(a) || L.arc(a).label != i) continue;
         const Node u = L.arc(a).src, v = L.arc(a).tgt;
         if (has_arc(L, v, u, i)) continue;
@@ -163,8 +163,8 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, Side side, int i, int j) {
     throw Error(ErrorCode::Usage, "optimal paths need a side with at most one i- and j-arc per node",
                 side == Side::R ? "right" : "left");
   const ElemStatus changed = side == Side::R ? ElemStatus::Added : ElemStatus::Deleted;
-  std::vector<bool> in(g.num_arc_slots(), false);
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+  HandleVector<ArcId, bool> in(g.num_arc_slots(), false);
+  for (ArcId a : g.arc_slots())
     in[a] = g.arc_alive(a) && (g.arc(a).label == i || g.arc(a).label == j) && r.arc_status(side, a) == changed;
   auto other = [&](int l) { return l == i ? j : i; };
   auto succ = [&](ArcId a) -> ArcId {
@@ -178,7 +178,7 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, Side side, int i, int j) {
     return kNoArc;
   };
   std::vector<OptimalPath> cand;
-  std::vector<bool> done(g.num_arc_slots(), false);
+  HandleVector<ArcId, bool> done(g.num_arc_slots(), false);
   auto make = [&](const std::vector<ArcId>& arcs) {
     OptimalPath p;
     p.arcs = arcs;
@@ -187,7 +187,7 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, Side side, int i, int j) {
     for (ArcId a : arcs) p.word.push_back(g.arc(a).label);
     cand.push_back(std::move(p));
   };
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {  // open chains
+  for (ArcId a : g.arc_slots()) {  // open chains
     if (!in[a] || pred(a) != kNoArc) continue;
     std::vector<ArcId> chain;
     for (ArcId b = a; b != kNoArc; b = succ(b)) {
@@ -196,7 +196,7 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, Side side, int i, int j) {
     }
     make(chain);
   }
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {  // closed chains: every rotation (Def. 38.4)
+  for (ArcId a : g.arc_slots()) {  // closed chains: every rotation (Def. 38.4)
     if (!in[a] || done[a]) continue;
     std::vector<ArcId> cyc;
     for (ArcId b = a; !done[b]; b = succ(b)) {

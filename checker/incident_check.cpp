@@ -68,7 +68,7 @@ bool weak(const Rule& r, int i, std::vector<Diagnostic>& out, const char* cond) 
 bool check_combinatorial(const Rule& r, std::vector<Diagnostic>& out) {
   bool ok = true;
   const DGraph& L = r.left();
-  for (Node v = 0; v < L.num_nodes(); ++v) {
+  for (Node v : L.nodes()) {
     for (int dir = 0; dir < 2; ++dir) {
       std::map<int, std::vector<ArcId>> by;
       for (ArcId a : dir ? L.in_arcs(v) : L.out_arcs(v)) by[L.arc(a).label].push_back(a);

@@ -11,7 +11,7 @@ bool check_non_orientation(const Rule& r, int i, std::vector<Diagnostic>& out) {
   for (Side side : {Side::L, Side::R}) {
     const DGraph& g = r.side(side);
     const ElemStatus changed = side == Side::R ? ElemStatus::Added : ElemStatus::Deleted;
-    for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+    for (ArcId a : g.arc_slots()) {
       if (!g.arc_alive(a) || g.arc(a).label != i || r.arc_status(side, a) != changed) continue;
       const Arc& e = g.arc(a);
       std::vector<ArcId> rev;

@@ -69,7 +69,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes = n
 
 struct OptimalPath {
   std::vector<ArcId> arcs;  // on the side's graph
-  Node source = 0, target = 0;
+  Node source, target;
   std::vector<int> word;    // labels along the path
 };
 // (i,j)-optimal paths of L (right = false) or R of r, which must be combinatorial on i and j on

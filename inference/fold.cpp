@@ -39,7 +39,7 @@ class Folder {
   // Leaves the workspace clean for the next fold.
   ~Folder() {
     for (uint32_t x : touched_) {
-      node_of_[x] = kNoNode;
+      node_of_[x] = kNoFoldNode;
       index_of_[x] = kUndefined;
     }
     touched_.clear();
@@ -56,7 +56,7 @@ class Folder {
         if (dim != kKappa && r_.nodes[m].label.contains(dim)) continue;
         const auto v = extend(m, dim);
         if (!r_.ok()) return;
-        if (v != kNoNode) queue.push_back(v);
+        if (v != kNoFoldNode) queue.push_back(v);
       }
     }
     if (!check_connected()) return;
@@ -98,7 +98,7 @@ class Folder {
   }
 
   uint32_t new_node(Side side) {
-    arc_to_.resize(arc_to_.size() + static_cast<size_t>(n_) + 2, kNoNode);
+    arc_to_.resize(arc_to_.size() + static_cast<size_t>(n_) + 2, kNoFoldNode);
     r_.nodes.push_back({OrbitType(std::vector<int>(o_.size(), OrbitType::kHole)), side,
                         std::vector<uint32_t>(s_, kUndefined)});
     return static_cast<uint32_t>(r_.nodes.size() - 1);
@@ -116,7 +116,7 @@ class Folder {
         const uint32_t y = j_.nbr(x, o_[p]);
         if (y == kUndefined) {
           for (uint32_t z : order) index_of_[z] = kUndefined;
-          fail(FoldFailureKind::PartialHookOrbit, kNoNode, o_[p], {x},
+          fail(FoldFailureKind::PartialHookOrbit, kNoFoldNode, o_[p], {x},
                "partial hook orbit: dart " + d(x) + " of the " + o_.str() + "-orbit of the start dart has no " +
                    std::to_string(o_[p]) + "-neighbour (cut by the selection); the hook orbit must be complete",
                static_cast<int>(p));
@@ -152,7 +152,7 @@ class Folder {
     arc_to_[m2 * (n_ + 2) + slot(dim)] = m;
   }
 
-  // Step 2.1 for node m and dimension dim; returns a new node to enqueue, or kNoNode.
+  // Step 2.1 for node m and dimension dim; returns a new node to enqueue, or kNoFoldNode.
   uint32_t extend(uint32_t m, int dim) {
     const uint32_t x = j_.nbr(dart(m, 0), dim);
     // All or none (App. C).
@@ -164,12 +164,12 @@ class Folder {
              "partial neighbourhood at node " + node_name(m) + ", dimension " + dimension_text(dim) + ": " +
                  at(m, with) + " has a " + dimension_text(dim) + "-neighbour but " + at(m, without) +
                  " has none (all or none, thesis App. C)");
-        return kNoNode;
+        return kNoFoldNode;
       }
     }
-    if (x == kUndefined) return kNoNode;
+    if (x == kUndefined) return kNoFoldNode;
     const uint32_t m2 = node_of_[x];
-    if (m2 != kNoNode && index_of_[x] == 0) {  // arc addition
+    if (m2 != kNoFoldNode && index_of_[x] == 0) {  // arc addition
       if (!has_arc(m, dim, m2)) add_arc(m, dim, m2);
       for (uint32_t b = 1; b < s_; ++b) {
         const uint32_t y = j_.nbr(dart(m, b), dim);
@@ -178,35 +178,35 @@ class Folder {
                "instantiation failure at arc " + node_name(m) + " -" + dimension_text(dim) + "- " + node_name(m2) +
                    ": " + at(m, b) + " is " + dimension_text(dim) + "-linked to dart " + d(y) + ", not to " +
                    at(m2, b) + " (thesis Alg. 6 step 2.1)");
-          return kNoNode;
+          return kNoFoldNode;
         }
       }
-      return kNoNode;
+      return kNoFoldNode;
     }
-    if (m2 != kNoNode) {  // arc failure
+    if (m2 != kNoFoldNode) {  // arc failure
       fail(FoldFailureKind::ArcFailure, m, dim, {dart(m, 0), x},
            "arc failure at node " + node_name(m) + ", dimension " + dimension_text(dim) + ": " + at(m, 0) + " is " +
                dimension_text(dim) + "-linked to (" + std::to_string(index_of_[x]) + "," + node_name(m2) +
                ") = dart " + d(x) + "; neither an explicit arc nor an implicit arc produces a link between " +
                "different orbit indices (thesis Alg. 6 step 2.1)");
-      return kNoNode;
+      return kNoFoldNode;
     }
     // Arc extension.
     const uint32_t v = new_node(j_.side(x));
     add_arc(m, dim, v);
     for (uint32_t b = 0; b < s_; ++b) {
       const uint32_t y = j_.nbr(dart(m, b), dim);
-      if (node_of_[y] != kNoNode) {
+      if (node_of_[y] != kNoFoldNode) {
         fail(FoldFailureKind::InstantiationFailure, m, dim, {dart(m, b), y},
              "instantiation failure at arc " + node_name(m) + " -" + dimension_text(dim) + "- " + node_name(v) +
                  ": " + at(m, b) + " is " + dimension_text(dim) + "-linked to dart " + d(y) + ", which already " +
                  "stands for (" + std::to_string(index_of_[y]) + "," + node_name(node_of_[y]) +
                  ") (thesis Alg. 6 step 2.1)");
-        return kNoNode;
+        return kNoFoldNode;
       }
       bind(y, v, b);
     }
-    if (!build_label(v)) return kNoNode;
+    if (!build_label(v)) return kNoFoldNode;
     return v;
   }
 
@@ -273,8 +273,8 @@ class Folder {
   bool check_connected() {
     if (bound_ == j_.size()) return true;  // every dart is bound exactly once
     for (uint32_t x = 0; x < j_.size(); ++x)
-      if (node_of_[x] == kNoNode) {
-        fail(FoldFailureKind::NotConnected, kNoNode, kNoDimension, {x},
+      if (node_of_[x] == kNoFoldNode) {
+        fail(FoldFailureKind::NotConnected, kNoFoldNode, kNoDimension, {x},
              "not connected: dart " + d(x) + " is not reachable from the start dart " + d(r_.start) +
                  " (folding needs a connected map or joint representation)");
         return false;
@@ -285,13 +285,13 @@ class Folder {
   // App. C: every link of J is produced by ι(P, O), and ι(P, O) produces no other link.
   void check_spanning() {
     const size_t k = static_cast<size_t>(n_) + 2;  // slot n+1 = κ
-    std::vector<uint32_t> arc_at(r_.nodes.size() * k, kNoNode);
+    std::vector<uint32_t> arc_at(r_.nodes.size() * k, kNoFoldNode);
     for (const auto& e : r_.arcs) {
       const size_t slot = e.dim == kKappa ? k - 1 : static_cast<size_t>(e.dim);
       for (auto [u, w] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
         // ι(P, O) must give each dart one link per dimension: no second arc, no arc on a dimension
         // of the node's relabeling.
-        const bool twice = arc_at[u * k + slot] != kNoNode && arc_at[u * k + slot] != w;
+        const bool twice = arc_at[u * k + slot] != kNoFoldNode && arc_at[u * k + slot] != w;
         if (twice || (e.dim != kKappa && r_.nodes[u].label.contains(e.dim))) {
           fail(FoldFailureKind::NotSpanning, u, e.dim, {dart(u, 0)},
                "instantiation not spanning all links at node " + node_name(u) + ", dimension " + dimension_text(e.dim) +
@@ -312,7 +312,7 @@ class Folder {
         for (uint32_t b = 0; b < s_; ++b) {
           uint32_t expected = kUndefined;
           if (pos >= 0) expected = dart(m, nb(b, static_cast<size_t>(pos)));
-          else if (arc_at[m * k + slot] != kNoNode) expected = dart(arc_at[m * k + slot], b);
+          else if (arc_at[m * k + slot] != kNoFoldNode) expected = dart(arc_at[m * k + slot], b);
           const uint32_t got = j_.nbr(dart(m, b), dim);
           // ι(P, O) is undirected: a link seen from one side only is never spanned.
           if (got == expected && (got == kUndefined || j_.nbr(got, dim) == dart(m, b))) continue;

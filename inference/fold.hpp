@@ -52,12 +52,13 @@ enum class FoldFailureKind {
 };
 const char* to_string(FoldFailureKind k);  // "arc failure", ...
 
-inline constexpr uint32_t kNoNode = UINT32_MAX;
+// No node of the fold (its nodes are those of the graph scheme it builds: n0, n1, ...).
+inline constexpr uint32_t kNoFoldNode = UINT32_MAX;
 inline constexpr int kNoDimension = -2;
 
 struct FoldFailure {
   FoldFailureKind kind = FoldFailureKind::None;
-  uint32_t node = kNoNode;      // node at which it was found (name "n<node>")
+  uint32_t node = kNoFoldNode;  // node at which it was found (name "n<node>")
   int dim = kNoDimension;       // the dimension (0..n, or kKappa)
   int position = -1;            // relabeling failure / partial hook orbit: the position p of <o>
   std::vector<uint32_t> darts;  // joint-graph darts involved

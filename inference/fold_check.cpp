@@ -14,7 +14,7 @@ std::string instantiation_mismatch(const FoldResult& f, const JointGraph& j) {
   for (uint32_t k = 0; k < f.nodes.size(); ++k) s.add_node(node_name(k), f.nodes[k].label);
   for (const auto& e : f.arcs) s.arcs.push_back({e.a, e.b, e.dim == kKappa ? n + 1 : e.dim});
   const InstantiatedGraph inst = instantiate_graph(s, f.hook_orbit);
-  std::vector<uint32_t> node_to_dart(inst.graph.num_nodes(), kUndefined);
+  HandleVector<Node, uint32_t> node_to_dart(inst.graph.num_nodes(), kUndefined);
   size_t bound = 0;
   for (uint32_t v = 0; v < f.nodes.size(); ++v)
     for (uint32_t b = 0; b < f.hook_orbit.size(); ++b) {
@@ -23,7 +23,7 @@ std::string instantiation_mismatch(const FoldResult& f, const JointGraph& j) {
     }
   if (bound != j.size())
     return std::to_string(bound) + " instantiated darts for " + std::to_string(j.size()) + " darts";
-  for (Node u = 0; u < inst.graph.num_nodes(); ++u) {
+  for (Node u : inst.graph.nodes()) {
     const uint32_t x = node_to_dart[u];
     for (int d = 0; d <= n + 1; ++d) {
       const auto succ = inst.graph.successors(u, d);

@@ -19,7 +19,7 @@ nlohmann::ordered_json dim_json(int d) {
 nlohmann::ordered_json to_json(const FoldFailure& f, const JointGraph& j) {
   nlohmann::ordered_json out;
   out["kind"] = to_string(f.kind);
-  out["node"] = f.node == kNoNode ? nlohmann::ordered_json(nullptr)
+  out["node"] = f.node == kNoFoldNode ? nlohmann::ordered_json(nullptr)
                                   : nlohmann::ordered_json(node_name(f.node));
   out["dimension"] = dim_json(f.dim);
   if (f.position >= 0) out["position"] = f.position;

@@ -55,13 +55,13 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
   s.description = "Inferred by topological folding (thesis Alg. 6) on " + f.orbit.str() + " from before dart " +
                   std::to_string(out.start) + ".";
   const size_t k = f.nodes.size();
-  std::vector<uint32_t> kappa(k, kNoNode);
+  std::vector<uint32_t> kappa(k, kNoFoldNode);
   for (const auto& e : f.arcs)
     if (e.dim == kKappa) {
       kappa[e.a] = e.b;
       kappa[e.b] = e.a;
     }
-  std::vector<uint32_t> local(k, kNoNode);  // index on its side
+  std::vector<uint32_t> local(k, kNoFoldNode);  // index on its side
   auto darts_of = [&](uint32_t m) {
     std::vector<Dart> d;
     for (uint32_t x : f.nodes[m].darts) d.push_back(j.origin(x));
@@ -77,7 +77,7 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
     }
   for (uint32_t m = 0; m < k; ++m)
     if (f.nodes[m].side == Side::R) {
-      names[m] = kappa[m] != kNoNode ? names[kappa[m]] : node_name(next++);
+      names[m] = kappa[m] != kNoFoldNode ? names[kappa[m]] : node_name(next++);
       local[m] = s.right.add_node(names[m], f.nodes[m].label);
       out.right_darts.push_back(darts_of(m));
     }
@@ -90,20 +90,20 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
   // Hooks: one per L component.
   std::vector<uint32_t> comp;
   const size_t nc = s.left.components(comp);
-  std::vector<uint32_t> hook(nc, kNoNode);
+  std::vector<uint32_t> hook(nc, kNoFoldNode);
   const uint32_t h = local[0];
   hook[comp[h]] = h;
   for (uint32_t v = 0; v < s.left.size(); ++v) {
     const OrbitType& label = s.left.nodes[v].label;
     if (label.has_hole()) continue;
     uint32_t& cur = hook[comp[v]];
-    if (cur == kNoNode || (cur != h && label == f.orbit && s.left.nodes[cur].label != f.orbit)) cur = v;
+    if (cur == kNoFoldNode || (cur != h && label == f.orbit && s.left.nodes[cur].label != f.orbit)) cur = v;
   }
   s.hooks.push_back(s.left.nodes[h].name);
   for (uint32_t v = 0; v < s.left.size(); ++v) {  // components in order of their first node
     const uint32_t c = comp[v];
     if (c == comp[h] || hook[c] == UINT32_MAX - 1) continue;
-    if (hook[c] == kNoNode) {
+    if (hook[c] == kNoFoldNode) {
       out.verdict = RuleVerdict::NoHook;
       out.reason = "the L component of node " + s.left.nodes[v].name +
                    " has no node with a full decoration (no `_`) to serve as its hook (thesis §7.3.1)";

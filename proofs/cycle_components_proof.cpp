@@ -35,14 +35,13 @@ namespace {
 Rule renamed(const Rule& r, const std::string& perm) {
   auto rename = [&](const std::string& name) { return std::string(1, perm[name[0] - 'a']); };
   auto side = [&](const DGraph& g) {
-    std::vector<Node> order(g.num_nodes());
-    for (Node v = 0; v < g.num_nodes(); ++v) order[v] = v;
+    std::vector<Node> order(g.nodes().begin(), g.nodes().end());
     std::sort(order.begin(), order.end(), [&](Node x, Node y) { return rename(g.name(x)) < rename(g.name(y)); });
     DGraph out;
-    std::vector<Node> to(g.num_nodes());
+    HandleVector<Node, Node> to(g.num_nodes());
     for (Node v : order) to[v] = out.add_node(rename(g.name(v)));
-    for (auto a = static_cast<ArcId>(g.num_arc_slots()); a-- > 0;)
-      if (g.arc_alive(a)) out.add_arc(to[g.arc(a).src], to[g.arc(a).tgt], g.arc(a).label);
+    for (auto k = static_cast<uint32_t>(g.num_arc_slots()); k-- > 0;)
+      if (const ArcId a(k); g.arc_alive(a)) out.add_arc(to[g.arc(a).src], to[g.arc(a).tgt], g.arc(a).label);
     return out;
   };
   return Rule(side(r.left()), side(r.right()), r.dimension(), r.kind(), r.name());
@@ -52,8 +51,8 @@ Rule renamed(const Rule& r, const std::string& perm) {
 Rule swapped_02(const Rule& r) {
   auto side = [&](const DGraph& g) {
     DGraph out;
-    for (Node v = 0; v < g.num_nodes(); ++v) out.add_node(g.name(v));
-    for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+    for (Node v : g.nodes()) out.add_node(g.name(v));
+    for (ArcId a : g.arc_slots())
       if (g.arc_alive(a)) out.add_arc(g.arc(a).src, g.arc(a).tgt, g.arc(a).label == 1 ? 1 : 2 - g.arc(a).label);
     return out;
   };

@@ -121,7 +121,7 @@ TEST(ConcreteProps, TwoDpoConstructionsAgree) {
       // On maps, when H is combinatorial (else both refuse).
       std::vector<Dart> dm;
       const auto darts = g.darts();
-      for (Node v : m.node) dm.push_back(darts[v]);
+      for (Node v : m.node) dm.push_back(darts[v.index()]);
       bool ok1 = true, ok2 = true;
       MapDerivation h1, h2;
       try {

@@ -12,8 +12,8 @@ namespace {
 // a <= b, or when the D-graph lacks its reverse b -i-> a.
 GraphScheme side_of(const DGraph& d) {
   GraphScheme g;
-  for (graph::Node v = 0; v < d.num_nodes(); ++v) g.add_node(d.name(v), OrbitType{});
-  for (graph::ArcId a = 0; a < d.num_arc_slots(); ++a) {
+  for (graph::Node v : d.nodes()) g.add_node(d.name(v), OrbitType{});
+  for (graph::ArcId a : d.arc_slots()) {
     if (!d.arc_alive(a)) continue;
     const graph::Arc& e = d.arc(a);
     if (e.src > e.tgt) {
@@ -21,7 +21,7 @@ GraphScheme side_of(const DGraph& d) {
       for (graph::Node w : d.successors(e.tgt, e.label)) reverse = reverse || w == e.src;
       if (reverse) continue;
     }
-    g.arcs.push_back({e.src, e.tgt, e.label});
+    g.arcs.push_back({e.src.index(), e.tgt.index(), e.label});  // scheme node k is node k of d
   }
   return g;
 }

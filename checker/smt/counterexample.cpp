@@ -38,13 +38,13 @@ nlohmann::ordered_json to_json(const Rule& r, unsigned bound, const Counterexamp
   j["G"] = io::map_to_json(c.G);
   j["gluing_fails"] = c.gluing_fails;  // the match fails the gluing condition (consistency semantics; no H)
   nlohmann::ordered_json m = nlohmann::ordered_json::object();
-  for (Node v = 0; v < r.left().num_nodes(); ++v) m[r.left().name(v)] = c.match.node[v];
+  for (Node v : r.left().nodes()) m[r.left().name(v)] = graph::dart_of(c.match.node[v]);
   j["match"] = m;
   nlohmann::ordered_json h;
   h["nodes"] = nlohmann::ordered_json::array();
-  for (Node x = 0; x < c.H.num_nodes(); ++x) h["nodes"].push_back(c.H.node_str(x));
+  for (Node x : c.H.nodes()) h["nodes"].push_back(c.H.node_str(x));
   h["arcs"] = nlohmann::ordered_json::array();
-  for (ArcId a = 0; a < c.H.num_arc_slots(); ++a) {
+  for (ArcId a : c.H.arc_slots()) {
     if (!c.H.arc_alive(a)) continue;
     const auto& arc = c.H.arc(a);
     h["arcs"].push_back({{"source", c.H.node_str(arc.src)}, {"target", c.H.node_str(arc.tgt)}, {"label", arc.label}});
@@ -72,8 +72,8 @@ std::string to_dot(const Rule& r, const Counterexample& c) {
   const auto bad = offending_darts(c);
   std::string extra = "  // matched darts light blue (xlabel: L node), darts where H breaks a constraint red\n";
   std::set<Dart> matched;
-  for (Node v = 0; v < r.left().num_nodes(); ++v) {
-    const Dart d = c.match.node[v];
+  for (Node v : r.left().nodes()) {
+    const Dart d = graph::dart_of(c.match.node[v]);
     matched.insert(d);
     const bool b = std::find(bad.begin(), bad.end(), d) != bad.end();
     extra += "  " + std::to_string(d) + " [style=filled, fillcolor=\"" + (b ? "#ff6b6b" : "#a6cee3") +

@@ -25,8 +25,8 @@ std::vector<std::vector<std::string>> rule_components(const Rule& r, const std::
     if (fresh) names.push_back(name);
     return it->second;
   };
-  for (Node v = 0; v < r.left().num_nodes(); ++v) node(r.left().name(v));
-  for (Node w = 0; w < r.right().num_nodes(); ++w) node(r.right().name(w));
+  for (Node v : r.left().nodes()) node(r.left().name(v));
+  for (Node w : r.right().nodes()) node(r.right().name(w));
   // Union-find over the arcs of the listed labels on both sides.
   std::vector<size_t> parent(names.size());
   std::iota(parent.begin(), parent.end(), size_t{0});
@@ -35,7 +35,7 @@ std::vector<std::vector<std::string>> rule_components(const Rule& r, const std::
     return x;
   };
   for (const DGraph* g : {&r.left(), &r.right()})
-    for (ArcId a = 0; a < g->num_arc_slots(); ++a) {
+    for (ArcId a : g->arc_slots()) {
       if (!g->arc_alive(a) || !listed(labels, g->arc(a).label)) continue;
       const size_t x = root(index.at(g->name(g->arc(a).src)));
       const size_t y = root(index.at(g->name(g->arc(a).tgt)));
@@ -53,13 +53,13 @@ std::vector<std::vector<std::string>> rule_components(const Rule& r, const std::
 
 Rule restrict_rule(const Rule& r, const std::vector<std::string>& nodes, const std::vector<int>& labels) {
   DGraph L, R;
-  std::vector<std::optional<Node>> left(r.left().num_nodes()), right(r.right().num_nodes());
+  HandleVector<Node, std::optional<Node>> left(r.left().num_nodes()), right(r.right().num_nodes());
   for (const std::string& name : nodes) {
     if (auto v = r.left().find(name)) left[*v] = L.add_node(name);
     if (auto w = r.right().find(name)) right[*w] = R.add_node(name);
   }
-  auto copy_arcs = [&](const DGraph& from, const std::vector<std::optional<Node>>& to, DGraph& into) {
-    for (ArcId a = 0; a < from.num_arc_slots(); ++a) {
+  auto copy_arcs = [&](const DGraph& from, const HandleVector<Node, std::optional<Node>>& to, DGraph& into) {
+    for (ArcId a : from.arc_slots()) {
       if (!from.arc_alive(a) || !listed(labels, from.arc(a).label)) continue;
       const auto s = to[from.arc(a).src], t = to[from.arc(a).tgt];
       if (s && t) into.add_arc(*s, *t, from.arc(a).label);

@@ -41,19 +41,18 @@ Rule pattern_rule(const MapSpec& spec, const std::vector<int>& status, const std
                   const std::vector<uint64_t>& arcs) {
   const size_t k = status.size();
   DGraph L, R;
-  std::vector<int> left(k, -1), right(k, -1);
+  std::vector<Node> left(k, graph::kNoNode), right(k, graph::kNoNode);
   for (size_t x = 0; x < k; ++x) {
     const std::string name(1, static_cast<char>('a' + x));
-    if (status[x] != 2) left[x] = static_cast<int>(L.add_node(name));
-    if (status[x] != 1) right[x] = static_cast<int>(R.add_node(name));
+    if (status[x] != 2) left[x] = L.add_node(name);
+    if (status[x] != 1) right[x] = R.add_node(name);
   }
   for (size_t l = 0; l < labels.size(); ++l)
     for (size_t x = 0; x < k; ++x)
       for (size_t y = 0; y < k; ++y) {
         const uint64_t bit = uint64_t{1} << (x * k + y);
-        if (arcs[l] & bit) L.add_arc(static_cast<Node>(left[x]), static_cast<Node>(left[y]), labels[l]);
-        if (arcs[labels.size() + l] & bit)
-          R.add_arc(static_cast<Node>(right[x]), static_cast<Node>(right[y]), labels[l]);
+        if (arcs[l] & bit) L.add_arc(left[x], left[y], labels[l]);
+        if (arcs[labels.size() + l] & bit) R.add_arc(right[x], right[y], labels[l]);
       }
   return Rule(std::move(L), std::move(R), spec.n, spec.kind, "pattern");
 }
@@ -147,7 +146,7 @@ ComponentPattern component_pattern(const Rule& r, std::vector<std::string> nodes
   p.arcs.assign(2 * nl, 0);
   for (bool right : {false, true}) {
     const DGraph& g = right ? r.right() : r.left();
-    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a) {
+    for (graph::ArcId a : g.arc_slots()) {
       if (!g.arc_alive(a)) continue;
       const auto l = std::find(labels.begin(), labels.end(), g.arc(a).label);
       const auto x = std::find(nodes.begin(), nodes.end(), g.name(g.arc(a).src));

@@ -13,8 +13,8 @@ using graph::ElemStatus;
 DerivationEncoding::DerivationEncoding(const MapEncoding& map, const Rule& rule, bool fixed_match)
     : map_(map), rule_(rule), added_index_(rule.right().num_nodes(), -1) {
   z3::context& c = map_.ctx();
-  for (Node v = 0; v < rule_.left().num_nodes(); ++v)
-    m_.push_back(fixed_match ? map_.dart(v) : c.constant(("m_" + rule_.left().name(v)).c_str(), map_.sort()));
+  for (Node v : rule_.left().nodes())
+    m_.push_back(fixed_match ? map_.dart(v.index()) : c.constant(("m_" + rule_.left().name(v)).c_str(), map_.sort()));
   for (Node r : rule_.added_nodes()) {
     added_index_[r] = static_cast<int>(added_.size());
     added_.push_back(r);
@@ -23,7 +23,7 @@ DerivationEncoding::DerivationEncoding(const MapEncoding& map, const Rule& rule,
     h_.push_back(c.function(("h" + std::to_string(i)).c_str(), map_.sort(), map_.sort()));
 }
 
-z3::expr DerivationEncoding::h_node(unsigned r) const {
+z3::expr DerivationEncoding::h_node(Node r) const {
   if (auto l = rule_.left_of(r)) return m_[*l];
   return map_.dart(map_.capacity() + static_cast<unsigned>(added_index_[r]));
 }
@@ -41,7 +41,7 @@ z3::expr_vector DerivationEncoding::match_constraints() const {
     if (m_.size() > 1) out.push_back(z3::distinct(all));
   }
   std::set<std::tuple<Node, Node, int>> seen;
-  for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+  for (ArcId a : L.arc_slots()) {
     if (!L.arc_alive(a)) continue;
     const auto& arc = L.arc(a);
     // Parallel arcs need distinct images, and a map has one i-arc per dart and label.
@@ -58,7 +58,7 @@ z3::expr DerivationEncoding::dangling_condition() const {
   for (Node v : rule_.deleted_nodes()) {
     for (int i : map_.spec().labels()) {
       z3::expr_vector out_covered(c), in_covered(c);
-      for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+      for (ArcId a : L.arc_slots()) {
         if (!L.arc_alive(a) || L.arc(a).label != i) continue;
         const auto& arc = L.arc(a);
         if (arc.src == v) out_covered.push_back(map_.alpha(i, m_[v]) == m_[arc.tgt]);
@@ -93,13 +93,13 @@ std::vector<DerivationEncoding::Candidate> DerivationEncoding::out_arcs(const z3
     // G's i-arc leaving x survives unless a deleted L-arc is matched onto it.
     z3::expr_vector removed(c);
     const DGraph& L = rule_.left();
-    for (ArcId a = 0; a < L.num_arc_slots(); ++a)
+    for (ArcId a : L.arc_slots())
       if (L.arc_alive(a) && L.arc(a).label == i && rule_.left_arc_status(a) == ElemStatus::Deleted)
         removed.push_back(m_[L.arc(a).src] == X);
     out.push_back({alive_term(X) && !z3::mk_or(removed), map_.alpha(i, X)});
   }
   const DGraph& R = rule_.right();
-  for (ArcId a = 0; a < R.num_arc_slots(); ++a)
+  for (ArcId a : R.arc_slots())
     if (R.arc_alive(a) && R.arc(a).label == i && rule_.right_arc_status(a) == ElemStatus::Added)
       out.push_back({h_node(R.arc(a).src) == X, h_node(R.arc(a).tgt)});
   return out;
@@ -116,13 +116,13 @@ std::vector<DerivationEncoding::Candidate> DerivationEncoding::in_arcs(const z3:
     // G's i-arc entering x (from alpha_i^-1(x)); a deleted L-arc u -i-> w is matched onto it iff m(w) = x.
     z3::expr_vector removed(c);
     const DGraph& L = rule_.left();
-    for (ArcId a = 0; a < L.num_arc_slots(); ++a)
+    for (ArcId a : L.arc_slots())
       if (L.arc_alive(a) && L.arc(a).label == i && rule_.left_arc_status(a) == ElemStatus::Deleted)
         removed.push_back(m_[L.arc(a).tgt] == X);
     in.push_back({alive_term(X) && !z3::mk_or(removed), map_.alpha_inverse(i, X)});
   }
   const DGraph& R = rule_.right();
-  for (ArcId a = 0; a < R.num_arc_slots(); ++a)
+  for (ArcId a : R.arc_slots())
     if (R.arc_alive(a) && R.arc(a).label == i && rule_.right_arc_status(a) == ElemStatus::Added)
       in.push_back({h_node(R.arc(a).tgt) == X, h_node(R.arc(a).src)});
   return in;

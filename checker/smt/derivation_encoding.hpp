@@ -35,12 +35,12 @@ class DerivationEncoding {
 
   const MapEncoding& map() const { return map_; }
   // The image of L node v.
-  const z3::expr& match(unsigned v) const { return m_[v]; }
+  const z3::expr& match(graph::Node v) const { return m_[v]; }
   // The H node of R node r: m(left_of(r)) when preserved, the numeral capacity + index when added.
-  z3::expr h_node(unsigned r) const;
+  z3::expr h_node(graph::Node r) const;
   // Index of an added R node among the added nodes (the numeral capacity + index in H).
   unsigned num_h_nodes() const { return map_.capacity() + static_cast<unsigned>(added_.size()); }
-  const std::vector<unsigned>& added_nodes() const { return added_; }
+  const std::vector<graph::Node>& added_nodes() const { return added_; }
 
   // m is an injective label-preserving morphism into the active darts.
   z3::expr_vector match_constraints() const;
@@ -76,9 +76,9 @@ class DerivationEncoding {
 
   const MapEncoding& map_;
   const Rule& rule_;
-  std::vector<z3::expr> m_;
-  std::vector<unsigned> added_;         // R node ids of the added nodes
-  std::vector<int> added_index_;        // R node -> index among added (or -1)
+  HandleVector<graph::Node, z3::expr> m_;        // L node -> its image
+  std::vector<graph::Node> added_;                // the added R nodes
+  HandleVector<graph::Node, int> added_index_;  // R node -> index among added (or -1)
   std::vector<z3::func_decl> h_;        // per label
 };
 

@@ -33,11 +33,11 @@ rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, 
   // A random partial injection on m nodes: a random permutation, each pair kept with probability 1/2.
   auto pinj = [&](size_t m) {
     std::vector<Node> perm(m);
-    for (size_t k = 0; k < m; ++k) perm[k] = static_cast<Node>(k);
+    for (size_t k = 0; k < m; ++k) perm[k] = Node(static_cast<uint32_t>(k));
     for (size_t k = m; k > 1; --k) std::swap(perm[k - 1], perm[below(k)]);
     PartialInjection out;
     for (size_t k = 0; k < m; ++k)
-      if (below(2)) out.emplace_back(static_cast<Node>(k), perm[k]);
+      if (below(2)) out.emplace_back(Node(static_cast<uint32_t>(k)), perm[k]);
     return out;
   };
   DGraph L, R;
@@ -55,9 +55,9 @@ std::string rule_text(const rewrite::Rule& r) {
   for (graph::Side side : graph::kSides) {
     const DGraph& g = r.side(side);
     s += side == graph::Side::R ? " => R {" : "L {";
-    for (Node v = 0; v < g.num_nodes(); ++v) s += (v ? " " : "") + g.name(v);
+    for (Node v : g.nodes()) s += (v != Node(0) ? " " : "") + g.name(v);
     s += ";";
-    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a)
+    for (graph::ArcId a : g.arc_slots())
       if (g.arc_alive(a))
         s += " " + g.name(g.arc(a).src) + "-" + std::to_string(g.arc(a).label) + "->" + g.name(g.arc(a).tgt);
     s += "}";

@@ -25,11 +25,11 @@ unsigned numeral(const z3::expr& e) {
 }
 }  // namespace
 
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<Node>& nodes, Engine e) {
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e) {
   return replay(r, G, nodes, e, Semantics::Preservation);
 }
 
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<Node>& nodes, Engine e,
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e,
                                      Semantics sem) {
   const DGraph Gd = graph::to_dgraph(G);
   auto m = rewrite::match_from_nodes(r.left(), Gd, nodes);
@@ -117,8 +117,8 @@ VerifyResult verify_on(z3::context& ctx, const MapEncoding& map, z3::solver* sha
     G.add_darts(size);
     for (int i : r.spec().labels())
       for (unsigned d = 0; d < size; ++d) G.set_alpha(i, d, numeral(model->eval(map.alpha(i, map.dart(d)), true)));
-    std::vector<Node> nodes;
-    for (unsigned v = 0; v < nl; ++v) nodes.push_back(numeral(model->eval(der.match(v), true)));
+    rewrite::NodeMap nodes;  // the model matches L node v on a dart of G: its node in to_dgraph(G)
+    for (Node v : r.left().nodes()) nodes.push_back(graph::node_of(numeral(model->eval(der.match(v), true))));
     auto c = replay(r, G, nodes, Engine::Smt, opt.semantics);
     if (!c) throw std::logic_error("SMT counterexample of rule " + r.name() + " does not replay (encoding error)");
     res.preserves = false;
@@ -186,8 +186,7 @@ VerifyResult verify_enum(const Rule& r, const graph::MapFamily& fam, Semantics s
     for (size_t k = 0; k < fam.graphs.size() && res.preserves; ++k) {
       rewrite::for_each_match(r.left(), fam.graphs[k], [&](const Match& m) {
         res.applicable = true;
-        std::vector<Node> nodes = m.node;
-        if (auto c = replay(r, fam.maps[k], nodes, Engine::Enum, sem)) {
+        if (auto c = replay(r, fam.maps[k], m.node, Engine::Enum, sem)) {
           res.preserves = false;
           res.counterexample = std::move(c);
           return false;

@@ -98,8 +98,8 @@ inline VerifyResult verify(const Rule& r, unsigned bound, Engine e, const Encodi
 
 // Replays (G, node map) through the concrete derivation; nullopt when the node map is not a match
 // satisfying the gluing condition or when H is a map of the model.
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<graph::Node>& nodes, Engine e);
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const std::vector<graph::Node>& nodes, Engine e,
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e);
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e,
                                      Semantics sem);
 
 }  // namespace gmr::smt

@@ -20,14 +20,14 @@ condition::Graph side(const rewrite::Rule& r, Side which) {
   const DGraph& g = r.side(which);
   condition::Graph out;
   std::vector<unsigned> index(g.num_nodes());
-  for (Node v = 0; v < g.num_nodes(); ++v) {
+  for (Node v : g.nodes()) {
     condition::Node n{g.name(v), status(r.node_status(which, v)), std::nullopt};
-    if (auto o = which == Side::R ? r.left_of(v) : r.right_of(v)) n.other = *o;
+    if (auto o = which == Side::R ? r.left_of(v) : r.right_of(v)) n.other = o->index();
     out.nodes.push_back(std::move(n));
   }
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+  for (ArcId a : g.arc_slots())
     if (g.arc_alive(a))
-      out.arcs.push_back({g.arc(a).src, g.arc(a).tgt, g.arc(a).label, status(r.arc_status(which, a))});
+      out.arcs.push_back({g.arc(a).src.index(), g.arc(a).tgt.index(), g.arc(a).label, status(r.arc_status(which, a))});
   return out;
 }
 }  // namespace

@@ -111,18 +111,18 @@ z3::expr SymbolicRule::condition(const ThesisParts& parts) const {
 rewrite::Rule SymbolicRule::extract(const z3::model& m, const std::string& name) const {
   auto val = [&](const z3::expr& e) { return m.eval(e, true).is_true(); };
   DGraph L, R;
-  std::vector<int> left(slots_, -1), right(slots_, -1);
+  std::vector<graph::Node> left(slots_, graph::kNoNode), right(slots_, graph::kNoNode);
   const std::string node = "abcdefgh";
   for (int x = 0; x < slots_; ++x) {
-    if (val(in_left_[x])) left[x] = static_cast<int>(L.add_node(node.substr(x, 1)));
-    if (val(in_right_[x])) right[x] = static_cast<int>(R.add_node(node.substr(x, 1)));
+    if (val(in_left_[x])) left[x] = L.add_node(node.substr(x, 1));
+    if (val(in_right_[x])) right[x] = R.add_node(node.substr(x, 1));
   }
   for (int i : labels_)
     for (int x = 0; x < slots_; ++x)
       for (int y = 0; y < slots_; ++y) {
-        if (left[x] >= 0 && left[y] >= 0 && val(arc(false, i, x, y)))
+        if (left[x] != graph::kNoNode && left[y] != graph::kNoNode && val(arc(false, i, x, y)))
           L.add_arc(left[x], left[y], i);
-        if (right[x] >= 0 && right[y] >= 0 && val(arc(true, i, x, y)))
+        if (right[x] != graph::kNoNode && right[y] != graph::kNoNode && val(arc(true, i, x, y)))
           R.add_arc(right[x], right[y], i);
       }
   return rewrite::Rule(std::move(L), std::move(R), spec_.n, spec_.kind, name);
@@ -160,12 +160,12 @@ z3::expr SymbolicRule::equals_on(const z3::model& m, const std::vector<int>& lab
 z3::expr SymbolicRule::describes(const rewrite::Rule& r) const {
   z3::expr_vector all(ctx_);
   const std::string node = "abcdefgh";
-  std::vector<std::vector<int>> slot_of(2);  // per side: node -> slot
+  std::vector<HandleVector<graph::Node, int>> slot_of(2);  // per side: node -> slot
   for (graph::Side side : graph::kSides) {
     const unsigned right = graph::index_of(side);
     const DGraph& g = r.side(side);
     std::vector<bool> present(slots_, false);
-    for (Node v = 0; v < g.num_nodes(); ++v) {
+    for (Node v : g.nodes()) {
       const auto x = node.find(g.name(v));
       if (g.name(v).size() != 1 || x == std::string::npos || static_cast<int>(x) >= slots_)
         throw Error(ErrorCode::Usage, "node " + g.name(v) + " is not a slot of the symbolic rule",
@@ -177,7 +177,7 @@ z3::expr SymbolicRule::describes(const rewrite::Rule& r) const {
       all.push_back(right ? in_right_[x] == ctx_.bool_val(present[x])
                           : in_left_[x] == ctx_.bool_val(present[x]));
     std::vector<bool> arcs(labels_.size() * slots_ * slots_, false);
-    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a) {
+    for (graph::ArcId a : g.arc_slots()) {
       if (!g.arc_alive(a)) continue;
       const int k = label_index(g.arc(a).label);
       if (k < 0)

@@ -234,8 +234,8 @@ void decide_sound(z3::context& ctx, SymbolicReport& rep, const ThesisParts& part
         if (res != z3::sat) continue;
         const z3::model model = q.solver.get_model();
         const Rule r = q.rule.extract(model, "unsound");
-        std::vector<Node> nodes;
-        for (Node v = 0; v < r.left().num_nodes(); ++v) nodes.push_back(v);  // slot x on dart x
+        rewrite::NodeMap nodes;
+        for (Node v : r.left().nodes()) nodes.push_back(graph::node_of(v.index()));  // slot x on dart x
         auto c = replay(r, q.map_of(model), nodes, Engine::Smt, Semantics::Consistency);
         if (!c)
           throw std::logic_error("symbolic counterexample does not replay (encoding error): " +
@@ -255,7 +255,7 @@ Map relabel(const Map& G, const std::vector<Node>& match) {
   const Dart none = static_cast<Dart>(-1);
   std::vector<Dart> to(size, none);
   Dart next = 0;
-  for (Node d : match) to[d] = next++;
+  for (Node v : match) to[graph::dart_of(v)] = next++;
   for (Dart d = 0; d < size; ++d)
     if (to[d] == none) to[d] = next++;
   Map out(G.dimension(), G.kind());

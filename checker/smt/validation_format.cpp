@@ -41,7 +41,7 @@ std::string unsound_witness_text(const ValidationWitness& w) {
   const auto& c = *w.counterexample;
   s << "\n    smallest: " << rule_text(w.rule) << "\n    on a map of " << c.G.size()
     << " darts, match";
-  for (graph::Node v = 0; v < w.rule.left().num_nodes(); ++v)
+  for (graph::Node v : w.rule.left().nodes())
     s << " " << w.rule.left().name(v) << "->" << c.match.node[v];
   if (c.gluing_fails)
     s << ": the gluing (dangling) condition fails";

@@ -41,7 +41,7 @@ bool C(const Rule& r, int i, int j) { return check_cycle(r, i, j, diags); }
 // Applies r on g through the match "node name -> dart" given by name_to_dart, both ways.
 Map apply_both(const Rule& r, const Map& g, const std::function<Dart(const std::string&)>& name_to_dart) {
   std::vector<Dart> m;
-  for (Node v = 0; v < r.left().num_nodes(); ++v) m.push_back(name_to_dart(r.left().name(v)));
+  for (Node v : r.left().nodes()) m.push_back(name_to_dart(r.left().name(v)));
   MapDerivation a = apply(r, g, m, Construction::Rewriting),
                 b = apply(r, g, m, Construction::Categorical);
   EXPECT_TRUE(is_isomorphic(a.H, b.H));
@@ -89,7 +89,7 @@ TEST(Fixtures, F1_Ex34_WeakIncidentArcs) {
 TEST(Fixtures, F2_Ex35_ArcDeductionAndJointRepresentation) {
   const Rule r = load("F2_ex35_arc_deduction");
   size_t preserved = 0;
-  for (ArcId a = 0; a < r.left().num_arc_slots(); ++a)
+  for (ArcId a : r.left().arc_slots())
     if (r.left_arc_status(a) == ElemStatus::Preserved) ++preserved;
   EXPECT_EQ(preserved, 3u);  // c-1->b, 2-loop on c, b-3->c
   EXPECT_EQ(r.deleted_nodes().size(), 1u);
@@ -97,7 +97,7 @@ TEST(Fixtures, F2_Ex35_ArcDeductionAndJointRepresentation) {
   const JointRepresentation j = to_joint(r);
   EXPECT_EQ(j.graph.num_nodes(), 8u);  // a,b,c,d + κ(a),κ(b),κ(c),e
   size_t kappa = 0;
-  for (ArcId a = 0; a < j.graph.num_arc_slots(); ++a) kappa += j.graph.arc(a).label == kKappaLabel;
+  for (ArcId a : j.graph.arc_slots()) kappa += j.graph.arc(a).label == kKappaLabel;
   EXPECT_EQ(kappa, 3u);
   const Rule back = from_joint(j);
   EXPECT_EQ(rule_to_json(back), rule_to_json(r));
@@ -190,8 +190,8 @@ TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
   const Rule full = load("F9_quad_subdivision_isolated_quad");
   auto strip = [&](const DGraph& g) {
     DGraph out;
-    for (Node v = 0; v < g.num_nodes(); ++v) out.add_node(g.name(v));
-    for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+    for (Node v : g.nodes()) out.add_node(g.name(v));
+    for (ArcId a : g.arc_slots()) {
       if (!g.arc_alive(a)) continue;
       const Arc& e = g.arc(a);
       const bool face_dart_loop = e.label == 2 && e.src == e.tgt && g.name(e.src)[0] == 'a';

@@ -16,6 +16,7 @@ namespace {
 std::string quote(const std::string& s) { return nlohmann::json(s).dump(); }
 
 std::string node_id(Side side, size_t v) { return to_string(side) + std::to_string(v); }
+std::string node_id(Side side, Node v) { return node_id(side, v.index()); }
 
 std::string graph_header(const std::string& kind, const std::string& name, const RuleDotOptions& opt, int n) {
   std::string out = "digraph " + quote(opt.name.empty() ? (name.empty() ? std::string("rule") : name) : opt.name) + " {\n";
@@ -85,11 +86,11 @@ std::string to_dot(const Rule& r, const RuleDotOptions& opt) {
   for (Side side : kSides) {
     const DGraph& g = r.side(side);
     out += cluster_open(side);
-    for (Node v = 0; v < g.num_nodes(); ++v)
+    for (Node v : g.nodes())
       out += node_stmt(node_id(side, v), g.node_str(v), side, g.name(v), r.node_status(side, v), false, opt.highlights);
     // Opposite arcs of one label are drawn as one undirected edge; the others are directed.
-    std::vector<bool> drawn(g.num_arc_slots(), false);
-    for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+    HandleVector<ArcId, bool> drawn(g.num_arc_slots(), false);
+    for (ArcId a : g.arc_slots()) {
       if (!g.arc_alive(a) || drawn[a]) continue;
       drawn[a] = true;
       const Arc& arc = g.arc(a);
@@ -113,7 +114,7 @@ std::string to_dot(const Rule& r, const RuleDotOptions& opt) {
     out += "  }\n";
   }
   if (opt.kappa)
-    for (Node v = 0; v < r.left().num_nodes(); ++v)
+    for (Node v : r.left().nodes())
       if (auto w = r.right_of(v))
         out += "  " + node_id(Side::L, v) + " -> " + node_id(Side::R, *w) + " [color=" + kDotKappaColour +
                ", style=dashed, constraint=false, label=<&kappa;>, fontcolor=" + kDotKappaColour + "];\n";

@@ -98,7 +98,7 @@ std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, 
   auto append = [&](std::vector<ConstraintViolation> v) {
     for (auto& c : v) out.push_back(std::move(c));
   };
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+  for (ArcId a : g.arc_slots()) {
     if (!g.arc_alive(a)) continue;
     const Arc& e = g.arc(a);
     if (e.label < lo || e.label > n)
@@ -109,7 +109,7 @@ std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, 
                      .message = "label " + std::to_string(e.label) + " outside " +
                                 std::to_string(lo) + ".." + std::to_string(n)});
   }
-  for (Node v = 0; v < g.num_nodes(); ++v) {
+  for (Node v : g.nodes()) {
     for (int i : spec.labels()) append(check_incident_arcs(g, v, i));
     for (int i : spec.labels())
       if (spec.is_involutive_dim(i)) append(check_non_orientation(g, v, i));

@@ -8,13 +8,14 @@ Node DGraph::add_node(std::string name) {
   names_.push_back(std::move(name));
   out_.emplace_back();
   in_.emplace_back();
-  return static_cast<Node>(names_.size() - 1);
+  return Node(static_cast<uint32_t>(names_.size() - 1));
 }
 
 ArcId DGraph::add_arc(Node src, Node tgt, int label) {
-  if (src >= num_nodes() || tgt >= num_nodes())
-    throw Error(ErrorCode::Range, "arc between unknown nodes " + std::to_string(src) + " and " + std::to_string(tgt));
-  const auto id = static_cast<ArcId>(arcs_.size());
+  if (src.index() >= num_nodes() || tgt.index() >= num_nodes())
+    throw Error(ErrorCode::Range, "arc between unknown nodes " + std::to_string(src.index()) + " and " +
+                                      std::to_string(tgt.index()));
+  const ArcId id(static_cast<uint32_t>(arcs_.size()));
   arcs_.push_back({src, tgt, label});
   arc_alive_.push_back(true);
   out_[src].push_back(id);
@@ -48,13 +49,13 @@ size_t DGraph::num_arcs() const {
 }
 
 std::optional<Node> DGraph::find(const std::string& name) const {
-  for (size_t v = 0; v < names_.size(); ++v)
-    if (names_[v] == name) return static_cast<Node>(v);
+  for (Node v : nodes())
+    if (names_[v] == name) return v;
   return std::nullopt;
 }
 
 std::string DGraph::node_str(Node v) const {
-  return names_[v].empty() ? "#" + std::to_string(v) : names_[v];
+  return names_[v].empty() ? "#" + std::to_string(v.index()) : names_[v];
 }
 
 std::vector<Node> DGraph::successors(Node v, int label) const {
@@ -73,7 +74,7 @@ std::vector<Node> DGraph::predecessors(Node v, int label) const {
 
 DGraph to_dgraph(const Map& g) {
   DGraph dg;
-  std::vector<Node> node_of(g.capacity(), 0);
+  std::vector<Node> node_of(g.capacity());
   g.for_each_dart([&](Dart d) { node_of[d] = dg.add_node(std::to_string(d)); });
   for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
     g.for_each_dart([&](Dart d) {
@@ -87,7 +88,7 @@ DGraph to_dgraph(const Map& g) {
 Map to_gmap(const DGraph& dg, int n, MapKind kind) {
   Map g(n, kind);
   g.add_darts(dg.num_nodes());
-  for (Node v = 0; v < dg.num_nodes(); ++v) {
+  for (Node v : dg.nodes()) {
     for (int i = g.lowest_dim(); i <= n; ++i) {
       const auto succ = dg.successors(v, i);
       if (succ.size() != 1)
@@ -95,10 +96,10 @@ Map to_gmap(const DGraph& dg, int n, MapKind kind) {
                     "incident arcs I(" + std::to_string(i) + ") fails: node has " +
                         std::to_string(succ.size()) + " outgoing " + std::to_string(i) + "-arcs",
                     "node " + dg.node_str(v));
-      g.set_alpha(i, v, succ[0]);
+      g.set_alpha(i, dart_of(v), dart_of(succ[0]));
     }
   }
-  for (ArcId a = 0; a < dg.num_arc_slots(); ++a)
+  for (ArcId a : dg.arc_slots())
     if (dg.arc_alive(a) && !g.has_dim(dg.arc(a).label))
       throw Error(ErrorCode::Range, "label " + std::to_string(dg.arc(a).label) + " outside the map's dimensions",
                   "arc " + dg.node_str(dg.arc(a).src) + " -> " + dg.node_str(dg.arc(a).tgt));

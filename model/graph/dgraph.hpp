@@ -8,12 +8,17 @@
 #include <string>
 #include <vector>
 
+#include "model/core/handle.hpp"
 #include "model/core/map.hpp"
 
 namespace gmr::graph {
 
-using Node = uint32_t;
-using ArcId = uint32_t;
+// Nodes and arcs are named by distinct handles (model/core/handle.hpp): a node, an arc and a dart
+// (Map's uint32_t) cannot be passed for one another.
+using Node = Handle<struct NodeTag>;
+using ArcId = Handle<struct ArcTag>;
+inline constexpr Node kNoNode = Node::none();
+inline constexpr ArcId kNoArc = ArcId::none();
 
 struct Arc {
   Node src;
@@ -32,6 +37,9 @@ class DGraph {
   void add_link(Node a, Node b, int label);
   void remove_arc(ArcId a);  // arcs are tombstoned; ids of other arcs stay valid
   bool arc_alive(ArcId a) const { return arc_alive_[a]; }
+  // Every node; every arc slot (dead ones included).
+  HandleRange<Node> nodes() const { return names_.handles(); }
+  HandleRange<ArcId> arc_slots() const { return arcs_.handles(); }
 
   size_t num_nodes() const { return names_.size(); }
   size_t num_arc_slots() const { return arcs_.size(); }
@@ -48,15 +56,19 @@ class DGraph {
   std::vector<Node> predecessors(Node v, int label) const;
 
  private:
-  std::vector<std::string> names_;
-  std::vector<Arc> arcs_;
-  std::vector<bool> arc_alive_;
-  std::vector<std::vector<ArcId>> out_, in_;
+  HandleVector<Node, std::string> names_;
+  HandleVector<ArcId, Arc> arcs_;
+  HandleVector<ArcId, bool> arc_alive_;
+  HandleVector<Node, std::vector<ArcId>> out_, in_;
 };
 
 // G-map <-> D-graph. Each dart becomes a node named by its index; an i-link between distinct darts
 // becomes two opposite i-arcs, an i-loop one loop arc.
 DGraph to_dgraph(const Map& g);
+// The correspondence of to_dgraph and to_gmap on a map whose darts are 0..size-1 (no free slot):
+// node v of the D-graph is dart v of the map.
+inline Node node_of(Dart d) { return Node(d); }
+inline Dart dart_of(Node v) { return v.index(); }
 // Requires incident arcs on every label of the map (one outgoing i-arc per node); throws
 // Error(InvalidMap) naming the node and label otherwise. Other constraints are not required.
 Map to_gmap(const DGraph& dg, int n, MapKind kind = MapKind::GMap);

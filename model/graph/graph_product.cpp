@@ -17,7 +17,7 @@ size_t index_of(const Alphabet& sigma, int i, const char* where) {
 
 void check_labels(const DGraph& g, const Alphabet& sigma, const char* where) {
   if (sigma.empty()) return;
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+  for (ArcId a : g.arc_slots())
     if (g.arc_alive(a)) index_of(sigma, g.arc(a).label, where);
 }
 
@@ -27,12 +27,12 @@ DGraph product(const DGraph& P, const DGraph& Pi, const Alphabet& sigma) {
   check_labels(P, sigma, "product: left factor");
   check_labels(Pi, sigma, "product: right factor");
   DGraph out;
-  for (Node p = 0; p < P.num_nodes(); ++p)
-    for (Node q = 0; q < Pi.num_nodes(); ++q) out.add_node(P.node_str(p) + "," + Pi.node_str(q));
-  for (ArcId e = 0; e < P.num_arc_slots(); ++e) {
+  for (Node p : P.nodes())
+    for (Node q : Pi.nodes()) out.add_node(P.node_str(p) + "," + Pi.node_str(q));
+  for (ArcId e : P.arc_slots()) {
     if (!P.arc_alive(e)) continue;
     const Arc& ae = P.arc(e);
-    for (ArcId f = 0; f < Pi.num_arc_slots(); ++f) {
+    for (ArcId f : Pi.arc_slots()) {
       if (!Pi.arc_alive(f)) continue;
       const Arc& af = Pi.arc(f);
       if (ae.label != af.label) continue;
@@ -74,8 +74,8 @@ std::pair<int, int> label_pair(const Alphabet& sigma, int code) {
 template <class Emit>
 DGraph map_arcs(const DGraph& G, Emit emit) {
   DGraph out;
-  for (Node p = 0; p < G.num_nodes(); ++p) out.add_node(G.name(p));
-  for (ArcId e = 0; e < G.num_arc_slots(); ++e)
+  for (Node p : G.nodes()) out.add_node(G.name(p));
+  for (ArcId e : G.arc_slots())
     if (G.arc_alive(e)) emit(out, G.arc(e));
   return out;
 }

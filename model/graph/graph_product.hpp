@@ -25,7 +25,9 @@ using Relabeling = std::vector<std::pair<int, int>>;  // ℜ ⊆ Σ²
 // P ×_Σ Π. Throws Error(Schema) when an arc label of P or Π is not in Σ (an empty Σ accepts every
 // label: the product over all labels).
 DGraph product(const DGraph& P, const DGraph& Pi, const Alphabet& sigma = {});
-inline Node product_node(const DGraph& Pi, Node p, Node q) { return static_cast<Node>(p * Pi.num_nodes() + q); }
+inline Node product_node(const DGraph& Pi, Node p, Node q) {
+  return Node(static_cast<uint32_t>(p.index() * Pi.num_nodes() + q.index()));
+}
 
 // The terminal graph 1_Σ: one node, one loop per letter.
 DGraph terminal(const Alphabet& sigma);

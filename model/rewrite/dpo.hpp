@@ -44,12 +44,12 @@ inline bool satisfies_gluing(const Rule& r, const DGraph& G, const Match& m) { r
 void check_match(const Rule& r, const DGraph& G, const Match& m);
 
 struct Derivation {
-  DGraph D;                       // pushout complement (categorical construction only)
-  std::vector<Node> d_to_g;       // D node -> G node (categorical construction only)
+  DGraph D;                                // pushout complement (categorical construction only)
+  HandleVector<Node, Node> d_to_g;         // D node -> G node (categorical construction only)
   DGraph H;
-  std::vector<Node> g_to_h;       // G node -> H node; kNoNode for deleted nodes
-  std::vector<Node> comatch;      // R node -> H node
-  std::vector<ArcId> comatch_arc; // R arc slot -> H arc (kNoArc for dead slots)
+  HandleVector<Node, Node> g_to_h;         // G node -> H node; kNoNode for deleted nodes
+  HandleVector<Node, Node> comatch;        // R node -> H node
+  HandleVector<ArcId, ArcId> comatch_arc;  // R arc slot -> H arc (kNoArc for dead slots)
 };
 
 // The two constructions of a direct derivation (see above). Neither changes its input.

@@ -33,8 +33,8 @@ struct Step {
 
 std::vector<Step> bfs_order(const DGraph& L) {
   std::vector<Step> order;
-  std::vector<bool> seen(L.num_nodes(), false);
-  for (Node r = 0; r < L.num_nodes(); ++r) {
+  HandleVector<Node, bool> seen(L.num_nodes(), false);
+  for (Node r : L.nodes()) {
     if (seen[r]) continue;
     seen[r] = true;
     std::deque<Node> q{r};
@@ -64,7 +64,7 @@ std::vector<Step> bfs_order(const DGraph& L) {
 }
 
 // Checks the arcs of L between v (just mapped) and mapped nodes against G (multiplicities).
-bool arcs_ok(const DGraph& L, const DGraph& G, const std::vector<Node>& m, Node v) {
+bool arcs_ok(const DGraph& L, const DGraph& G, const NodeMap& m, Node v) {
   auto check = [&](ArcId a) {
     const Arc& e = L.arc(a);
     if (m[e.src] == kNoNode || m[e.tgt] == kNoNode) return true;
@@ -79,18 +79,18 @@ bool arcs_ok(const DGraph& L, const DGraph& G, const std::vector<Node>& m, Node 
 
 }  // namespace
 
-std::optional<Match> match_from_nodes(const DGraph& L, const DGraph& G, const std::vector<Node>& nodes) {
+std::optional<Match> match_from_nodes(const DGraph& L, const DGraph& G, const NodeMap& nodes) {
   if (nodes.size() != L.num_nodes()) return std::nullopt;
-  std::vector<bool> used(G.num_nodes(), false);
+  HandleVector<Node, bool> used(G.num_nodes(), false);
   for (Node v : nodes) {
-    if (v >= G.num_nodes() || used[v]) return std::nullopt;
+    if (v.index() >= G.num_nodes() || used[v]) return std::nullopt;
     used[v] = true;
   }
   Match m;
   m.node = nodes;
   m.arc.assign(L.num_arc_slots(), kNoArc);
   std::map<Key, size_t> next;  // first-fit over the parallel G arcs
-  for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+  for (ArcId a : L.arc_slots()) {
     if (!L.arc_alive(a)) continue;
     const Arc& e = L.arc(a);
     const Key k{nodes[e.src], nodes[e.tgt], e.label};
@@ -111,8 +111,8 @@ std::optional<Match> match_from_nodes(const DGraph& L, const DGraph& G, const st
 
 size_t for_each_match(const DGraph& L, const DGraph& G, const std::function<bool(const Match&)>& f) {
   const auto order = bfs_order(L);
-  std::vector<Node> m(L.num_nodes(), kNoNode);
-  std::vector<bool> used(G.num_nodes(), false);
+  NodeMap m(L.num_nodes(), kNoNode);
+  HandleVector<Node, bool> used(G.num_nodes(), false);
   size_t count = 0;
   bool stop = false;
   std::function<void(size_t)> rec = [&](size_t k) {
@@ -128,7 +128,7 @@ size_t for_each_match(const DGraph& L, const DGraph& G, const std::function<bool
     const Step& st = order[k];
     std::vector<Node> cand;
     if (st.via == kNoArc) {
-      for (Node g = 0; g < G.num_nodes(); ++g) cand.push_back(g);
+      for (Node g : G.nodes()) cand.push_back(g);
     } else {
       const Arc& e = L.arc(st.via);
       cand = st.via_out ? G.successors(m[e.src], e.label) : G.predecessors(m[e.tgt], e.label);
@@ -160,7 +160,7 @@ std::vector<Match> find_matches(const DGraph& L, const DGraph& G, size_t limit) 
 }
 
 bool at_most_one_arc_per_label(const DGraph& g, std::string* where) {
-  for (Node v = 0; v < g.num_nodes(); ++v) {
+  for (Node v : g.nodes()) {
     std::map<int, int> out, in;
     for (ArcId a : g.out_arcs(v)) ++out[g.arc(a).label];
     for (ArcId a : g.in_arcs(v)) ++in[g.arc(a).label];
@@ -183,8 +183,8 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
   std::string where;
   if (!at_most_one_arc_per_label(L, &where))
     throw Error(ErrorCode::Usage, "anchored matching needs a combinatorial left-hand side (Def. 35)", "left " + where);
-  std::vector<Node> m(L.num_nodes(), kNoNode);
-  std::vector<Node> back(G.num_nodes(), kNoNode);
+  NodeMap m(L.num_nodes(), kNoNode);
+  HandleVector<Node, Node> back(G.num_nodes(), kNoNode);
   std::deque<Node> q;
   auto assign = [&](Node l, Node g) -> bool {
     if (m[l] != kNoNode) return m[l] == g;
@@ -195,8 +195,10 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
     return true;
   };
   for (auto [l, g] : anchors) {
-    if (l >= L.num_nodes()) throw Error(ErrorCode::Usage, "anchor on an unknown node of L", "L node " + std::to_string(l));
-    if (g >= G.num_nodes()) throw Error(ErrorCode::Usage, "anchor on an unknown node of G", "G node " + std::to_string(g));
+    if (l.index() >= L.num_nodes())
+      throw Error(ErrorCode::Usage, "anchor on an unknown node of L", "L node " + std::to_string(l.index()));
+    if (g.index() >= G.num_nodes())
+      throw Error(ErrorCode::Usage, "anchor on an unknown node of G", "G node " + std::to_string(g.index()));
     if (!assign(l, g)) return std::nullopt;
   }
   auto unique = [&](const std::vector<Node>& c, Node at, int label, const char* dir) -> std::optional<Node> {
@@ -220,7 +222,7 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
       if (!s || !assign(L.arc(a).src, *s)) return std::nullopt;
     }
   }
-  for (Node v = 0; v < L.num_nodes(); ++v)
+  for (Node v : L.nodes())
     if (m[v] == kNoNode)
       throw Error(ErrorCode::Usage, "node not connected to any anchor: give an anchor in each component of L",
                   "L node " + L.node_str(v));

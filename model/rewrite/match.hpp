@@ -21,19 +21,21 @@
 namespace gmr::rewrite {
 using graph::ArcId;
 using graph::DGraph;
+using graph::kNoArc;
+using graph::kNoNode;
 using graph::Node;
 
-inline constexpr ArcId kNoArc = UINT32_MAX;
-inline constexpr Node kNoNode = UINT32_MAX;
+// A node map L -> G: the image of each L node (kNoNode: none yet).
+using NodeMap = HandleVector<Node, Node>;
 
 struct Match {
-  std::vector<Node> node;  // L node -> G node
-  std::vector<ArcId> arc;  // L arc slot -> G arc (kNoArc for dead slots of L)
+  NodeMap node;                    // L node -> G node
+  HandleVector<ArcId, ArcId> arc;  // L arc slot -> G arc (kNoArc for dead slots of L)
 };
 
 // Completes a node map into a match (first-fit arcs). nullopt when the node map is not injective
 // or an arc of L has no (free) image.
-std::optional<Match> match_from_nodes(const DGraph& L, const DGraph& G, const std::vector<Node>& nodes);
+std::optional<Match> match_from_nodes(const DGraph& L, const DGraph& G, const NodeMap& nodes);
 
 // Calls f on every match; f returns false to stop. Returns the number of matches visited.
 size_t for_each_match(const DGraph& L, const DGraph& G, const std::function<bool(const Match&)>& f);

@@ -13,20 +13,20 @@ namespace {
 
 void validate_side(const DGraph& g, const char* side, int lo, int n) {
   std::set<std::string> seen;
-  for (Node v = 0; v < g.num_nodes(); ++v) {
-    const std::string loc = std::string(side) + ".nodes[" + std::to_string(v) + "]";
+  for (Node v : g.nodes()) {
+    const std::string loc = std::string(side) + ".nodes[" + std::to_string(v.index()) + "]";
     if (g.name(v).empty()) throw Error(ErrorCode::Schema, "rule nodes must be named", loc);
     if (!seen.insert(g.name(v)).second)
       throw Error(ErrorCode::Schema, "duplicate node name \"" + g.name(v) + "\"", loc);
   }
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+  for (ArcId a : g.arc_slots()) {
     if (!g.arc_alive(a)) continue;
     const int l = g.arc(a).label;
     if (l < lo || l > n)
       throw Error(ErrorCode::Schema,
                   "label " + std::to_string(l) + " outside the dimension set " + std::to_string(lo) + ".." +
                       std::to_string(n),
-                  std::string(side) + ".arcs[" + std::to_string(a) + "]");
+                  std::string(side) + ".arcs[" + std::to_string(a.index()) + "]");
   }
 }
 
@@ -44,7 +44,7 @@ Rule::Rule(DGraph left, DGraph right, int n, MapKind kind, std::string name)
 void Rule::deduce() {
   l_to_r_.assign(L_.num_nodes(), std::nullopt);
   r_to_l_.assign(R_.num_nodes(), std::nullopt);
-  for (Node v = 0; v < L_.num_nodes(); ++v)
+  for (Node v : L_.nodes())
     if (auto w = R_.find(L_.name(v))) {
       l_to_r_[v] = *w;
       r_to_l_[*w] = v;
@@ -54,10 +54,10 @@ void Rule::deduce() {
   la_to_ra_.assign(L_.num_arc_slots(), std::nullopt);
   ra_to_la_.assign(R_.num_arc_slots(), std::nullopt);
   std::map<std::tuple<Node, Node, int>, std::vector<ArcId>> pool;  // keyed by R ids
-  for (ArcId a = 0; a < R_.num_arc_slots(); ++a)
+  for (ArcId a : R_.arc_slots())
     if (R_.arc_alive(a)) pool[{R_.arc(a).src, R_.arc(a).tgt, R_.arc(a).label}].push_back(a);
   std::map<std::tuple<Node, Node, int>, size_t> used;
-  for (ArcId a = 0; a < L_.num_arc_slots(); ++a) {
+  for (ArcId a : L_.arc_slots()) {
     if (!L_.arc_alive(a)) continue;
     const Arc& e = L_.arc(a);
     if (!l_to_r_[e.src] || !l_to_r_[e.tgt]) continue;
@@ -86,19 +86,19 @@ std::optional<ArcId> Rule::left_arc_of(ArcId r) const { return ra_to_la_.at(r); 
 
 std::vector<Node> Rule::preserved_nodes() const {
   std::vector<Node> out;
-  for (Node v = 0; v < L_.num_nodes(); ++v)
+  for (Node v : L_.nodes())
     if (l_to_r_[v]) out.push_back(v);
   return out;
 }
 std::vector<Node> Rule::deleted_nodes() const {
   std::vector<Node> out;
-  for (Node v = 0; v < L_.num_nodes(); ++v)
+  for (Node v : L_.nodes())
     if (!l_to_r_[v]) out.push_back(v);
   return out;
 }
 std::vector<Node> Rule::added_nodes() const {
   std::vector<Node> out;
-  for (Node v = 0; v < R_.num_nodes(); ++v)
+  for (Node v : R_.nodes())
     if (!r_to_l_[v]) out.push_back(v);
   return out;
 }
@@ -115,21 +115,21 @@ JointRepresentation to_joint(const Rule& r) {
   j.kind = r.kind();
   j.name = r.name();
   const DGraph &L = r.left(), &R = r.right();
-  for (Node v = 0; v < L.num_nodes(); ++v) {
+  for (Node v : L.nodes()) {
     j.graph.add_node(L.name(v));
     j.right_side.push_back(false);
   }
-  const auto off = static_cast<Node>(L.num_nodes());
-  for (Node v = 0; v < R.num_nodes(); ++v) {
+  auto right_node = [&](Node v) { return Node(static_cast<uint32_t>(L.num_nodes()) + v.index()); };
+  for (Node v : R.nodes()) {
     j.graph.add_node(R.name(v));
     j.right_side.push_back(true);
   }
-  for (ArcId a = 0; a < L.num_arc_slots(); ++a)
+  for (ArcId a : L.arc_slots())
     if (L.arc_alive(a)) j.graph.add_arc(L.arc(a).src, L.arc(a).tgt, L.arc(a).label);
-  for (ArcId a = 0; a < R.num_arc_slots(); ++a)
-    if (R.arc_alive(a)) j.graph.add_arc(off + R.arc(a).src, off + R.arc(a).tgt, R.arc(a).label);
-  for (Node v = 0; v < L.num_nodes(); ++v)
-    if (auto w = r.right_of(v)) j.graph.add_arc(v, off + *w, kKappaLabel);
+  for (ArcId a : R.arc_slots())
+    if (R.arc_alive(a)) j.graph.add_arc(right_node(R.arc(a).src), right_node(R.arc(a).tgt), R.arc(a).label);
+  for (Node v : L.nodes())
+    if (auto w = r.right_of(v)) j.graph.add_arc(v, right_node(*w), kKappaLabel);
   return j;
 }
 
@@ -137,12 +137,12 @@ Rule from_joint(const JointRepresentation& j) {
   const DGraph& g = j.graph;
   if (j.right_side.size() != g.num_nodes())
     throw Error(ErrorCode::Schema, "side flags do not cover the nodes", "joint");
-  std::vector<Node> local(g.num_nodes());
+  HandleVector<Node, Node> local(g.num_nodes());
   DGraph L, R;
-  std::vector<std::string> rname(g.num_nodes());
-  for (Node v = 0; v < g.num_nodes(); ++v) rname[v] = g.name(v);
-  std::vector<int> kappa_in(g.num_nodes(), 0), kappa_out(g.num_nodes(), 0);
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+  HandleVector<Node, std::string> rname(g.num_nodes());
+  for (Node v : g.nodes()) rname[v] = g.name(v);
+  HandleVector<Node, int> kappa_in(g.num_nodes(), 0), kappa_out(g.num_nodes(), 0);
+  for (ArcId a : g.arc_slots()) {
     if (!g.arc_alive(a) || g.arc(a).label != kKappaLabel) continue;
     const Arc& e = g.arc(a);
     if (j.right_side[e.src] || !j.right_side[e.tgt])
@@ -152,11 +152,11 @@ Rule from_joint(const JointRepresentation& j) {
       throw Error(ErrorCode::Schema, "node with two κ-arcs", "joint arc " + g.node_str(e.src) + " -> " + g.node_str(e.tgt));
     rname[e.tgt] = g.name(e.src);
   }
-  for (Node v = 0; v < g.num_nodes(); ++v) {
+  for (Node v : g.nodes()) {
     if (j.right_side[v]) {
       // An R node without κ-arc must not take the name of an L node (it would become preserved).
       if (!kappa_in[v])
-        for (Node u = 0; u < g.num_nodes(); ++u)
+        for (Node u : g.nodes())
           if (!j.right_side[u] && g.name(u) == rname[v])
             throw Error(ErrorCode::Schema, "added R node shares its name with an L node", "joint node " + rname[v]);
       local[v] = R.add_node(rname[v]);
@@ -164,7 +164,7 @@ Rule from_joint(const JointRepresentation& j) {
       local[v] = L.add_node(g.name(v));
     }
   }
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a) {
+  for (ArcId a : g.arc_slots()) {
     if (!g.arc_alive(a) || g.arc(a).label == kKappaLabel) continue;
     const Arc& e = g.arc(a);
     if (j.right_side[e.src] != j.right_side[e.tgt])

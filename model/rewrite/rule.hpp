@@ -75,15 +75,15 @@ class Rule {
   int n_;
   MapKind kind_;
   DGraph L_, R_;
-  std::vector<std::optional<Node>> l_to_r_, r_to_l_;
-  std::vector<std::optional<ArcId>> la_to_ra_, ra_to_la_;
+  HandleVector<Node, std::optional<Node>> l_to_r_, r_to_l_;
+  HandleVector<ArcId, std::optional<ArcId>> la_to_ra_, ra_to_la_;
 };
 
 // Joint representation κ(L,R), Def. 36.
 inline constexpr int kKappaLabel = -1;
 struct JointRepresentation {
   DGraph graph;                 // L nodes first (same ids as in L), then R nodes
-  std::vector<bool> right_side;  // per node
+  HandleVector<Node, bool> right_side;  // per node
   int n = 0;
   MapKind kind = MapKind::GMap;
   std::string name;

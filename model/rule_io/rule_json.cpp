@@ -67,9 +67,9 @@ DGraph read_side(const JsonAt& side, int lo, int n) {
 nlohmann::ordered_json side_to_json(const DGraph& g) {
   nlohmann::ordered_json j;
   j["nodes"] = nlohmann::ordered_json::array();
-  for (Node v = 0; v < g.num_nodes(); ++v) j["nodes"].push_back(g.name(v));
+  for (Node v : g.nodes()) j["nodes"].push_back(g.name(v));
   j["arcs"] = nlohmann::ordered_json::array();
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+  for (ArcId a : g.arc_slots())
     if (g.arc_alive(a))
       j["arcs"].push_back({{"from", g.name(g.arc(a).src)}, {"to", g.name(g.arc(a).tgt)}, {"label", g.arc(a).label}});
   return j;

@@ -23,16 +23,15 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
   auto pick = [&](size_t k) { return std::uniform_int_distribution<size_t>(0, k - 1)(rng); };
   auto coin = [&](double p) { return std::uniform_real_distribution<double>(0, 1)(rng) < p; };
   const DGraph& G = fam.graphs[pick(fam.graphs.size())];
-  std::vector<Node> nodes(G.num_nodes());
-  for (Node v = 0; v < nodes.size(); ++v) nodes[v] = v;
+  std::vector<Node> nodes(G.nodes().begin(), G.nodes().end());
   std::shuffle(nodes.begin(), nodes.end(), rng);
   nodes.resize(1 + pick(std::min(max_left_nodes, nodes.size())));
   const std::string lnames = "abcdefgh", anames = "uvwxyz";
-  std::vector<Node> lpos(G.num_nodes(), kNoNode);
+  HandleVector<Node, Node> lpos(G.num_nodes(), kNoNode);
   DGraph L;
   for (size_t k = 0; k < nodes.size(); ++k) lpos[nodes[k]] = L.add_node(std::string(1, lnames[k]));
   const double drop = coin(0.5) ? 0.0 : 0.15;
-  for (ArcId a = 0; a < G.num_arc_slots(); ++a) {
+  for (ArcId a : G.arc_slots()) {
     const Arc& e = G.arc(a);
     if (lpos[e.src] != kNoNode && lpos[e.tgt] != kNoNode && !coin(drop)) L.add_arc(lpos[e.src], lpos[e.tgt], e.label);
   }
@@ -49,9 +48,9 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
   DGraph R;
   if (big.empty() || coin(0.2)) {
     // Fallback: R = the preserved part of L with a few toggled arcs, plus added nodes with loops.
-    std::vector<Node> rpos(L.num_nodes(), kNoNode);
-    for (size_t k : kept) rpos[k] = R.add_node(L.name(static_cast<Node>(k)));
-    for (ArcId a = 0; a < L.num_arc_slots(); ++a) {
+    HandleVector<Node, Node> rpos(L.num_nodes(), kNoNode);
+    for (size_t k : kept) rpos[Node(static_cast<uint32_t>(k))] = R.add_node(L.name(Node(static_cast<uint32_t>(k))));
+    for (ArcId a : L.arc_slots()) {
       const Arc& e = L.arc(a);
       if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(0.2)) R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
     }
@@ -62,14 +61,13 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
     }
   } else {
     const DGraph& G2 = fam.graphs[big[pick(big.size())]];
-    std::vector<Node> pool(G2.num_nodes());
-    for (Node v = 0; v < pool.size(); ++v) pool[v] = v;
+    std::vector<Node> pool(G2.nodes().begin(), G2.nodes().end());
     std::shuffle(pool.begin(), pool.end(), rng);
-    std::vector<Node> rpos(G2.num_nodes(), kNoNode);
+    HandleVector<Node, Node> rpos(G2.num_nodes(), kNoNode);
     size_t next = 0;
-    for (size_t k : kept) rpos[pool[next++]] = R.add_node(L.name(static_cast<Node>(k)));
+    for (size_t k : kept) rpos[pool[next++]] = R.add_node(L.name(Node(static_cast<uint32_t>(k))));
     for (size_t k = 0; k < added; ++k) rpos[pool[next++]] = R.add_node(std::string(1, anames[k]));
-    for (ArcId a = 0; a < G2.num_arc_slots(); ++a) {
+    for (ArcId a : G2.arc_slots()) {
       const Arc& e = G2.arc(a);
       if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(drop)) R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
     }
@@ -92,10 +90,10 @@ Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes)
   // A random partial injection on the nodes of one side, as i-arcs.
   auto arcs = [&](DGraph& side, int i) {
     const size_t m = side.num_nodes();
-    std::vector<bool> used(m, false);
-    for (Node s = 0; s < m; ++s) {
+    HandleVector<Node, bool> used(m, false);
+    for (Node s : side.nodes()) {
       if (chance(rng, 30)) continue;
-      const Node t = static_cast<Node>(uniform(rng, 0, m - 1));
+      const Node t(static_cast<uint32_t>(uniform(rng, 0, m - 1)));
       if (used[t]) continue;
       used[t] = true;
       side.add_arc(s, t, i);
@@ -115,13 +113,13 @@ Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& fam) {
   const size_t p = uniform(rng, 0, std::min(GL.num_nodes(), GR.num_nodes()));
   auto copy = [](const DGraph& G, const std::function<std::string(Node)>& name) {
     DGraph out;
-    for (Node v = 0; v < G.num_nodes(); ++v) out.add_node(name(v));
-    for (ArcId a = 0; a < G.num_arc_slots(); ++a)
+    for (Node v : G.nodes()) out.add_node(name(v));
+    for (ArcId a : G.arc_slots())
       if (G.arc_alive(a)) out.add_arc(G.arc(a).src, G.arc(a).tgt, G.arc(a).label);
     return out;
   };
-  DGraph L = copy(GL, [](Node v) { return "l" + std::to_string(v); });
-  DGraph R = copy(GR, [p](Node v) { return (v < p ? "l" : "r") + std::to_string(v); });
+  DGraph L = copy(GL, [](Node v) { return "l" + std::to_string(v.index()); });
+  DGraph R = copy(GR, [p](Node v) { return (v.index() < p ? "l" : "r") + std::to_string(v.index()); });
   return Rule(std::move(L), std::move(R), fam.n, fam.kind, "component-replacement");
 }
 

@@ -38,11 +38,11 @@ PatternGraph pattern_graph(const DGraph& G, const std::vector<PathWord>& W) {
   PatternGraph P;
   for (const PathWord& w : W)
     if (std::find(P.words.begin(), P.words.end(), w) == P.words.end()) P.words.push_back(w);
-  for (Node v = 0; v < G.num_nodes(); ++v) {
+  for (Node v : G.nodes()) {
     P.graph.add_node(G.name(v));
     P.origin.push_back(v);
   }
-  for (Node v = 0; v < G.num_nodes(); ++v)
+  for (Node v : G.nodes())
     for (size_t k = 0; k < P.words.size(); ++k) P.graph.add_arc(v, follow_word(G, v, P.words[k]), static_cast<int>(k));
   return P;
 }
@@ -50,7 +50,7 @@ PatternGraph pattern_graph(const DGraph& G, const std::vector<PathWord>& W) {
 PatternGraph pattern_graph(const Map& g, const std::vector<PathWord>& W) { return pattern_graph(to_dgraph(g), W); }
 
 namespace {
-std::vector<Node> bfs(const DGraph& g, Node v, std::vector<bool>& seen) {
+std::vector<Node> bfs(const DGraph& g, Node v, HandleVector<Node, bool>& seen) {
   std::vector<Node> order{v};
   seen[v] = true;
   for (size_t k = 0; k < order.size(); ++k) {
@@ -71,14 +71,15 @@ std::vector<Node> bfs(const DGraph& g, Node v, std::vector<bool>& seen) {
 }  // namespace
 
 PatternGraph component(const PatternGraph& P, Node v) {
-  if (v >= P.size()) throw Error(ErrorCode::Range, "no node " + std::to_string(v) + " in the pattern graph", "P_v");
-  std::vector<bool> seen(P.size(), false);
+  if (v.index() >= P.size())
+    throw Error(ErrorCode::Range, "no node " + std::to_string(v.index()) + " in the pattern graph", "P_v");
+  HandleVector<Node, bool> seen(P.size(), false);
   const std::vector<Node> order = bfs(P.graph, v, seen);
-  std::vector<Node> index(P.size(), 0);
+  HandleVector<Node, Node> index(P.size());
   PatternGraph out;
   out.words = P.words;
   for (size_t k = 0; k < order.size(); ++k) {
-    index[order[k]] = static_cast<Node>(k);
+    index[order[k]] = Node(static_cast<uint32_t>(k));
     out.graph.add_node(P.graph.name(order[k]));
     out.origin.push_back(P.origin[order[k]]);
   }
@@ -89,9 +90,9 @@ PatternGraph component(const PatternGraph& P, Node v) {
 }
 
 std::vector<std::vector<Node>> components(const PatternGraph& P) {
-  std::vector<bool> seen(P.size(), false);
+  HandleVector<Node, bool> seen(P.size(), false);
   std::vector<std::vector<Node>> out;
-  for (Node v = 0; v < P.size(); ++v) {
+  for (Node v : P.graph.nodes()) {
     if (seen[v]) continue;
     auto c = bfs(P.graph, v, seen);
     std::sort(c.begin(), c.end());

@@ -28,7 +28,7 @@ using graph::Node;
 struct PatternGraph {
   DGraph graph;              // label k = words[k]
   std::vector<PathWord> words;   // W, without duplicates
-  std::vector<Node> origin;  // node of P -> node of the graph it was built from
+  HandleVector<Node, Node> origin;  // node of P -> node of the graph it was built from
 
   size_t size() const { return graph.num_nodes(); }
   // Label index of w, or -1 when w ∉ W.

@@ -39,21 +39,21 @@ void WordGraphScheme::add_link(const std::string& a, const std::string& b, const
 DGraph WordGraphScheme::core() const {
   DGraph g;
   for (const auto& n : nodes) g.add_node(n);
-  for (const auto& a : arcs) g.add_arc(a.src, a.tgt, a.dim);
+  for (const auto& a : arcs) g.add_arc(Node(a.src), Node(a.tgt), a.dim);  // node k is scheme node k
   return g;
 }
 
 DGraph instantiate_word_graph(const WordGraphScheme& S, const PatternGraph& P) {
   DGraph out;
   for (uint32_t n = 0; n < S.size(); ++n)
-    for (Node u = 0; u < P.size(); ++u) out.add_node(P.graph.name(u) + ":" + S.nodes[n]);
+    for (Node u : P.graph.nodes()) out.add_node(P.graph.name(u) + ":" + S.nodes[n]);
   for (const WordArc& a : S.arcs) {
     const int l = P.label_of(a.word);
     if (l < 0)
       throw Error(ErrorCode::Schema, "the word " + to_string(a.word) + " of a scheme arc is not in W",
                   "arc " + S.nodes[a.src] + " -> " + S.nodes[a.tgt]);
     // Every w-arc u -> u' of P gives the d-arc (u,src) -> (u',tgt).
-    for (ArcId e = 0; e < P.graph.num_arc_slots(); ++e) {
+    for (ArcId e : P.graph.arc_slots()) {
       if (!P.graph.arc_alive(e) || P.graph.arc(e).label != l) continue;
       out.add_arc(instance_node(P, a.src, P.graph.arc(e).src), instance_node(P, a.tgt, P.graph.arc(e).tgt), a.dim);
     }
@@ -84,14 +84,14 @@ Rule instantiate_word_rule(const WordRuleScheme& S, const PatternGraph& P) {
   return Rule(instantiate_word_graph(S.left, P), instantiate_word_graph(S.right, P), S.n, S.kind, S.name);
 }
 
-std::optional<std::vector<Node>> propagate_match(const WordRuleScheme& S, const PatternGraph& P, const Rule& inst,
-                                                 const DGraph& G) {
+std::optional<rewrite::NodeMap> propagate_match(const WordRuleScheme& S, const PatternGraph& P, const Rule& inst,
+                                                const DGraph& G) {
   const auto hook = S.left.find(S.hook);
   if (!hook) throw Error(ErrorCode::Schema, "the hook \"" + S.hook + "\" is not a node of L", "hook");
   const DGraph& L = inst.left();
-  std::vector<Node> m(L.num_nodes(), kNoNode);
+  HandleVector<Node, Node> m(L.num_nodes(), kNoNode);
   std::deque<Node> todo;
-  for (Node u = 0; u < P.size(); ++u) {
+  for (Node u : P.graph.nodes()) {
     m[instance_node(P, *hook, u)] = P.origin[u];
     todo.push_back(instance_node(P, *hook, u));
   }
@@ -129,13 +129,13 @@ WordSchemeInstance instantiate_at(const Map& g, const WordRuleScheme& S, const s
   if (!g.alive(d)) throw Error(ErrorCode::Usage, "no dart " + std::to_string(d), "hook dart");
   const DGraph G = to_dgraph(g);
   const std::vector<Dart> darts = g.darts();  // node k of G is darts[k]
-  const Node v = static_cast<Node>(std::lower_bound(darts.begin(), darts.end(), d) - darts.begin());
+  const Node v(static_cast<uint32_t>(std::lower_bound(darts.begin(), darts.end(), d) - darts.begin()));
   PatternGraph Pv = component(pattern_graph(G, W), v);
   Rule rule = instantiate_word_rule(S, Pv);
   const auto m = propagate_match(S, Pv, rule, G);
   if (!m) throw Error(ErrorCode::Usage, "the instantiated left-hand side does not match at the hook", "dart " + std::to_string(d));
   std::vector<Dart> match;
-  for (Node x : *m) match.push_back(darts[x]);
+  for (Node x : *m) match.push_back(darts[x.index()]);
   return WordSchemeInstance{std::move(Pv), std::move(rule), std::move(match)};
 }
 

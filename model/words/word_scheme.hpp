@@ -59,7 +59,9 @@ class WordGraphScheme {
 
 // ι(Π,P). Throws Error(Schema) when a word of Π is not in P.words.
 DGraph instantiate_word_graph(const WordGraphScheme& S, const PatternGraph& P);
-inline Node instance_node(const PatternGraph& P, uint32_t n, Node u) { return static_cast<Node>(n * P.size() + u); }
+inline Node instance_node(const PatternGraph& P, uint32_t n, Node u) {
+  return Node(static_cast<uint32_t>(n * P.size() + u.index()));
+}
 
 struct WordRuleScheme {
   std::string name;
@@ -81,8 +83,8 @@ Rule instantiate_word_rule(const WordRuleScheme& S, const PatternGraph& P);
 // The match of ι(L,P) in G with (u, hook) ↦ P.origin[u], propagated along the arcs of ι(L,P).
 // nullopt when propagation fails (a missing arc, conflicting images, non-injective, or an L node
 // unreachable from the hook copies).
-std::optional<std::vector<Node>> propagate_match(const WordRuleScheme& S, const PatternGraph& P, const Rule& inst,
-                                                 const DGraph& G);
+std::optional<rewrite::NodeMap> propagate_match(const WordRuleScheme& S, const PatternGraph& P, const Rule& inst,
+                                                const DGraph& G);
 
 // S instantiated at dart d of g with the word set W: a concrete rule and its match in g, applied
 // by rewrite::apply (model/rewrite/dpo.hpp; docs/architecture.md, "Applying rules").

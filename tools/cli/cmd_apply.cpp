@@ -93,8 +93,8 @@ int run_apply(const ApplyArgs& a) {
   const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_match_pairs(r, g, a.match);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
-  std::vector<Node> node_of(g.capacity(), kNoNode);
-  for (size_t k = 0; k < darts.size(); ++k) node_of[darts[k]] = static_cast<Node>(k);
+  std::vector<Node> node_of(g.capacity(), kNoNode);  // to_dgraph numbers the live darts in order
+  for (size_t k = 0; k < darts.size(); ++k) node_of[darts[k]] = Node(static_cast<uint32_t>(k));
   std::optional<Match> chosen;
   bool anchored = false;
   if (!pairs.empty()) {
@@ -126,7 +126,7 @@ int run_apply(const ApplyArgs& a) {
     return kExitNegative;
   }
   std::vector<Dart> md;
-  for (Node v : chosen->node) md.push_back(darts[v]);
+  for (Node v : chosen->node) md.push_back(darts[v.index()]);
   MapDerivation d;
   try {
     d = apply(r, g, md);
@@ -138,8 +138,8 @@ int run_apply(const ApplyArgs& a) {
   if (!a.events.empty() && !log_concrete_application(r, g, md, orbit_types, a.events, d)) return kExitNegative;
   const ValidityReport rep = check_validity(d.H, a.limit);
   std::string match_text;
-  for (Node v = 0; v < r.left().num_nodes(); ++v)
-    match_text += (v ? "," : "") + r.left().name(v) + "=" + std::to_string(md[v]);
+  for (Node v : r.left().nodes())
+    match_text += (v != Node(0) ? "," : "") + r.left().name(v) + "=" + std::to_string(md[v.index()]);
   if (a.json) {
     nlohmann::ordered_json j;
     j["rule"] = a.rule;
@@ -149,7 +149,7 @@ int run_apply(const ApplyArgs& a) {
     j["darts"] = d.H.size();
     j["change"] = change_to_json(summarize(g), summarize(d.H));
     nlohmann::ordered_json co = nlohmann::ordered_json::object();
-    for (Node v = 0; v < r.right().num_nodes(); ++v) co[r.right().name(v)] = d.comatch[v];
+    for (Node v : r.right().nodes()) co[r.right().name(v)] = d.comatch[v.index()];
     j["comatch"] = co;
     j["violations"] = io::violation_texts(rep);
     j["violations_not_listed"] = rep.truncated;

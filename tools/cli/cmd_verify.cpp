@@ -45,7 +45,7 @@ std::string model_name(const Rule& r) {
 std::string describe(const Rule& r, const Counterexample& c) {
   std::ostringstream s;
   s << "counterexample on a " << model_name(r) << " of " << c.G.size() << " darts; match";
-  for (graph::Node v = 0; v < r.left().num_nodes(); ++v) s << " " << r.left().name(v) << "->" << c.match.node[v];
+  for (graph::Node v : r.left().nodes()) s << " " << r.left().name(v) << "->" << c.match.node[v];
   s << "; H breaks";
   for (size_t k = 0; k < c.violations.size() && k < 4; ++k) s << (k ? "; " : " ") << graph::to_text(c.violations[k], c.H);
   if (c.violations.size() > 4) s << "; ... (" << c.violations.size() << " in all)";

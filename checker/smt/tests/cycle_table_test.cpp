@@ -138,37 +138,36 @@ TEST(CycleTable, LemmasFixOkOnEveryComponent) {
       char next = 'a';
       for (size_t k : sizes) {
         const ComponentPattern& p = *by_size[k][rng() % by_size[k].size()];
-        std::vector<int> lv(k, -1), rv(k, -1);
+        std::vector<graph::Node> lv(k, graph::kNoNode), rv(k, graph::kNoNode);
         for (size_t x = 0; x < k; ++x) {
           const std::string name(1, next++);
-          if (p.status[x] != 2) lv[x] = static_cast<int>(L.add_node(name));
-          if (p.status[x] != 1) rv[x] = static_cast<int>(R.add_node(name));
+          if (p.status[x] != 2) lv[x] = L.add_node(name);
+          if (p.status[x] != 1) rv[x] = R.add_node(name);
         }
         for (size_t l = 0; l < table.labels.size(); ++l)
           for (size_t x = 0; x < k; ++x)
             for (size_t y = 0; y < k; ++y) {
               if (p.arc(false, l, table.labels.size(), x, y))
-                L.add_arc(static_cast<graph::Node>(lv[x]), static_cast<graph::Node>(lv[y]), table.labels[l]);
+                L.add_arc(lv[x], lv[y], table.labels[l]);
               if (p.arc(true, l, table.labels.size(), x, y))
-                R.add_arc(static_cast<graph::Node>(rv[x]), static_cast<graph::Node>(rv[y]), table.labels[l]);
+                R.add_arc(rv[x], rv[y], table.labels[l]);
             }
       }
       Rule u(std::move(L), std::move(R), 2, MapKind::GMap, "union");
       // Status order along a, b, c, d: sort the names by status.
       std::vector<std::pair<int, std::string>> nodes;
-      for (graph::Node v = 0; v < u.left().num_nodes(); ++v) nodes.emplace_back(u.right_of(v) ? 0 : 1, u.left().name(v));
+      for (graph::Node v : u.left().nodes()) nodes.emplace_back(u.right_of(v) ? 0 : 1, u.left().name(v));
       for (graph::Node w : u.added_nodes()) nodes.emplace_back(2, u.right().name(w));
       std::stable_sort(nodes.begin(), nodes.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
       std::map<std::string, std::string> to;
       for (size_t k = 0; k < nodes.size(); ++k) to[nodes[k].second] = std::string(1, static_cast<char>('a' + k));
       auto side = [&](const graph::DGraph& g) {
-        std::vector<graph::Node> order(g.num_nodes());
-        for (graph::Node v = 0; v < g.num_nodes(); ++v) order[v] = v;
+        std::vector<graph::Node> order(g.nodes().begin(), g.nodes().end());
         std::sort(order.begin(), order.end(), [&](auto x, auto y) { return to[g.name(x)] < to[g.name(y)]; });
         graph::DGraph out;
-        std::vector<graph::Node> at(g.num_nodes());
+        HandleVector<graph::Node, graph::Node> at(g.num_nodes());
         for (graph::Node v : order) at[v] = out.add_node(to[g.name(v)]);
-        for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a)
+        for (graph::ArcId a : g.arc_slots())
           if (g.arc_alive(a)) out.add_arc(at[g.arc(a).src], at[g.arc(a).tgt], g.arc(a).label);
         return out;
       };

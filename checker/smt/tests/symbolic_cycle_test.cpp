@@ -24,9 +24,9 @@ const MapSpec kSpec{2, MapKind::GMap};
 Rule renamed(const Rule& r, const std::string& perm) {
   auto side = [&](const graph::DGraph& g) {
     graph::DGraph out;
-    std::vector<graph::Node> to(g.num_nodes());
-    for (graph::Node v = 0; v < g.num_nodes(); ++v) to[v] = out.add_node(std::string(1, perm[g.name(v)[0] - 'a']));
-    for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a)
+    HandleVector<graph::Node, graph::Node> to(g.num_nodes());
+    for (graph::Node v : g.nodes()) to[v] = out.add_node(std::string(1, perm[g.name(v)[0] - 'a']));
+    for (graph::ArcId a : g.arc_slots())
       if (g.arc_alive(a)) out.add_arc(to[g.arc(a).src], to[g.arc(a).tgt], g.arc(a).label);
     return out;
   };
@@ -37,7 +37,7 @@ Rule renamed(const Rule& r, const std::string& perm) {
 // (preserved, deleted, added), as the symbolic rule's symmetry breaking wants them.
 Rule in_family_order(const Rule& r) {
   std::vector<std::pair<int, std::string>> nodes;  // (status, name)
-  for (graph::Node v = 0; v < r.left().num_nodes(); ++v) nodes.emplace_back(r.right_of(v) ? 0 : 1, r.left().name(v));
+  for (graph::Node v : r.left().nodes()) nodes.emplace_back(r.right_of(v) ? 0 : 1, r.left().name(v));
   for (graph::Node w : r.added_nodes()) nodes.emplace_back(2, r.right().name(w));
   std::stable_sort(nodes.begin(), nodes.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::string perm(8, '?');
@@ -137,7 +137,7 @@ TEST(SymbolicCycle, LemmaCoversEveryPlacementAndNoOtherPattern) {
     const auto v = L.find(big->front());
     if (!v) continue;
     bool removed = false;
-    for (graph::ArcId a = 0; a < L.num_arc_slots() && !removed; ++a)
+    for (graph::ArcId a(0); a.index() < L.num_arc_slots() && !removed; ++a)
       if (L.arc_alive(a) && L.arc(a).src == *v) {
         L.remove_arc(a);
         removed = true;

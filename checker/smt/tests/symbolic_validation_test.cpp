@@ -153,7 +153,7 @@ TEST(SymbolicValidation, CycleOracleReadsOnlyCycleLabels) {
     if (k % 4 != 0) return true;  // a quarter of the family keeps the test fast
     graph::DGraph L = r.left(), R = r.right();
     for (graph::DGraph* g : {&L, &R})
-      for (graph::ArcId a = 0; a < g->num_arc_slots(); ++a)
+      for (graph::ArcId a : g->arc_slots())
         if (g->arc_alive(a) && g->arc(a).label == 1) g->remove_arc(a);
     const Rule without1(std::move(L), std::move(R), 2, MapKind::GMap, "without 1-arcs");
     std::vector<bool> verdicts;
@@ -167,7 +167,7 @@ TEST(SymbolicValidation, CycleOracleReadsOnlyCycleLabels) {
     bool untouched = r.added_nodes().empty();
     for (graph::Side side : graph::kSides) {
       const graph::DGraph& g = r.side(side);
-      for (graph::ArcId a = 0; a < g.num_arc_slots(); ++a)
+      for (graph::ArcId a : g.arc_slots())
         if (g.arc_alive(a) && g.arc(a).label != 1 && r.arc_status(side, a) != graph::ElemStatus::Preserved)
           untouched = false;
     }
@@ -261,7 +261,7 @@ TEST(SymbolicValidation, TooStrongConditionIncompleteWitnessConfirmedByEnumerato
         std::vector<bool> out;
         for (const auto& r : rules) {
           bool loop = false;
-          for (graph::ArcId a = 0; a < r.left().num_arc_slots(); ++a)
+          for (graph::ArcId a : r.left().arc_slots())
             loop = loop || (r.left().arc_alive(a) && r.left().arc(a).label == 1 &&
                             r.left().arc(a).src == r.left().arc(a).tgt);
           out.push_back(thesis_conditions(r) && !loop);

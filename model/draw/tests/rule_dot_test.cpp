@@ -27,15 +27,15 @@ Rule sew_rule() {
   for (DGraph* g : {&L, &R})
     for (const char* n : {"a", "b", "c", "d"}) g->add_node(n);
   for (DGraph* g : {&L, &R}) {
-    g->add_link(0, 1, 0);
-    g->add_link(2, 3, 0);
+    g->add_link(Node(0), Node(1), 0);
+    g->add_link(Node(2), Node(3), 0);
   }
-  L.add_arc(0, 0, 2);
-  L.add_arc(1, 1, 2);
-  L.add_arc(2, 2, 2);
-  L.add_arc(3, 3, 2);
-  R.add_link(0, 2, 2);
-  R.add_link(1, 3, 2);
+  L.add_arc(Node(0), Node(0), 2);
+  L.add_arc(Node(1), Node(1), 2);
+  L.add_arc(Node(2), Node(2), 2);
+  L.add_arc(Node(3), Node(3), 2);
+  R.add_link(Node(0), Node(2), 2);
+  R.add_link(Node(1), Node(3), 2);
   return Rule(L, R, 2, MapKind::GMap, "sew");
 }
 
@@ -65,11 +65,11 @@ TEST(IoRuleDot, NodeRolesAndDirectedArcs) {
   DGraph L, R;
   L.add_node("a");
   L.add_node("gone");
-  L.add_link(0, 1, 1);
+  L.add_link(Node(0), Node(1), 1);
   R.add_node("a");
   R.add_node("new");
-  R.add_arc(0, 1, 1);  // unpaired: drawn directed
-  R.add_arc(1, 0, 3);
+  R.add_arc(Node(0), Node(1), 1);  // unpaired: drawn directed
+  R.add_arc(Node(1), Node(0), 3);
   const Rule r(L, R, 3);
   const std::string dot = to_dot(r);
   EXPECT_NE(dot.find("L1 [label=\"gone\", style=\"dashed\"]"), std::string::npos) << dot;

@@ -76,7 +76,7 @@ TEST(Constraints, CycleBrokenOnOneNode) {
 
 TEST(Constraints, LabelOutsideDimensionSet) {
   DGraph g = to_dgraph(make_polygon(2, 2));
-  g.add_arc(0, 0, 5);
+  g.add_arc(Node(0), Node(0), 5);
   auto all = check_gmap_constraints(g, 2, MapKind::GMap);
   ASSERT_FALSE(all.empty());
   EXPECT_NE(all[0].message.find("label 5"), std::string::npos);

@@ -16,7 +16,7 @@ namespace {
 using ArcSet = std::multiset<std::tuple<Node, Node, int>>;
 ArcSet arcs(const DGraph& g) {
   ArcSet s;
-  for (ArcId a = 0; a < g.num_arc_slots(); ++a)
+  for (ArcId a : g.arc_slots())
     if (g.arc_alive(a)) s.insert({g.arc(a).src, g.arc(a).tgt, g.arc(a).label});
   return s;
 }
@@ -53,23 +53,23 @@ TEST(Product, NodesArcsAndNames) {
   Pi.add_arc(x, x, d_);
   const DGraph G = product(P, Pi, kSigma);
   EXPECT_EQ(G.num_nodes(), 8u);  // all pairs, isolated ones included
-  EXPECT_EQ(G.name(product_node(Pi, 2, 1)), "c,y");
+  EXPECT_EQ(G.name(product_node(Pi, Node(2), Node(1))), "c,y");
   // |E| = Σ_l |E_P(l)|·|E_Π(l)| = 2·2 (i) + 2·1 (d).
   EXPECT_EQ(G.num_arcs(), 6u);
   ArcSet expected;
   // each of the two parallel i-arcs a->b of P with x->y and with y->y
-  expected.insert({product_node(Pi, 0, x), product_node(Pi, 1, y), i_});
-  expected.insert({product_node(Pi, 0, x), product_node(Pi, 1, y), i_});
-  expected.insert({product_node(Pi, 0, y), product_node(Pi, 1, y), i_});
-  expected.insert({product_node(Pi, 0, y), product_node(Pi, 1, y), i_});
-  expected.insert({product_node(Pi, 1, x), product_node(Pi, 1, x), d_});
-  expected.insert({product_node(Pi, 2, x), product_node(Pi, 1, x), d_});
+  expected.insert({product_node(Pi, Node(0), x), product_node(Pi, Node(1), y), i_});
+  expected.insert({product_node(Pi, Node(0), x), product_node(Pi, Node(1), y), i_});
+  expected.insert({product_node(Pi, Node(0), y), product_node(Pi, Node(1), y), i_});
+  expected.insert({product_node(Pi, Node(0), y), product_node(Pi, Node(1), y), i_});
+  expected.insert({product_node(Pi, Node(1), x), product_node(Pi, Node(1), x), d_});
+  expected.insert({product_node(Pi, Node(2), x), product_node(Pi, Node(1), x), d_});
   EXPECT_EQ(arcs(G), expected);
   // With 1_Σ the product is P itself (terminal object).
   EXPECT_EQ(arcs(product(P, terminal(kSigma), kSigma)), arcs(P));
   // Labels outside Σ are rejected.
   DGraph bad;
-  bad.add_arc(bad.add_node("z"), 0, 99);
+  bad.add_arc(bad.add_node("z"), Node(0), 99);
   EXPECT_THROW(product(bad, Pi, kSigma), Error);
 }
 

@@ -34,7 +34,8 @@ TEST(DpoConstructions, CategoricalEqualsInPlaceOnEveryApplication) {
           ASSERT_TRUE(same_derivation(a, b, &why)) << why;
           EXPECT_EQ(a.D.num_nodes(), fam.graphs[g].num_nodes() - r.deleted_nodes().size());
           // On maps: both paths agree whenever H is a map (else both refuse).
-          std::vector<Dart> md(m.node.begin(), m.node.end());
+          std::vector<Dart> md;
+          for (graph::Node v : m.node) md.push_back(graph::dart_of(v));
           bool ok1 = true, ok2 = true;
           MapDerivation x, y;
           try {

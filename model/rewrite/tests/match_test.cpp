@@ -48,17 +48,17 @@ TEST(Match, AnchoredMatchingPropagates) {
   const Rule r = parse_rule(kSew);
   const Map g = free_edges();
   const DGraph dg = to_dgraph(g);
-  auto m = anchored_match(r.left(), dg, {{0, 1}, {2, 3}});
+  auto m = anchored_match(r.left(), dg, {{Node(0), Node(1)}, {Node(2), Node(3)}});
   ASSERT_TRUE(m);
-  EXPECT_EQ(m->node, (std::vector<Node>{1, 0, 3, 2}));
-  EXPECT_FALSE(anchored_match(r.left(), dg, {{0, 1}, {2, 0}}));  // injectivity
-  EXPECT_THROW(anchored_match(r.left(), dg, {{0, 1}}), Error);    // c, d unreachable
+  EXPECT_EQ(m->node, (NodeMap{Node(1), Node(0), Node(3), Node(2)}));
+  EXPECT_FALSE(anchored_match(r.left(), dg, {{Node(0), Node(1)}, {Node(2), Node(0)}}));  // injectivity
+  EXPECT_THROW(anchored_match(r.left(), dg, {{Node(0), Node(1)}}), Error);    // c, d unreachable
   DGraph L;
   L.add_node("a");
   L.add_node("b");
-  L.add_arc(0, 1, 0);
-  L.add_arc(0, 0, 0);
-  EXPECT_THROW(anchored_match(L, dg, {{0, 0}}), Error);  // L not combinatorial
+  L.add_arc(Node(0), Node(1), 0);
+  L.add_arc(Node(0), Node(0), 0);
+  EXPECT_THROW(anchored_match(L, dg, {{Node(0), Node(0)}}), Error);  // L not combinatorial
 }
 
 TEST(Dpo, SewOnMapsBothWays) {
@@ -103,8 +103,8 @@ TEST(Dpo, NonCombinatorialResultIsAnError) {
   L.add_node("a");
   R.add_node("a");
   R.add_node("x");
-  R.add_link(0, 1, 0);
-  R.add_arc(1, 1, 1);
+  R.add_link(Node(0), Node(1), 0);
+  R.add_arc(Node(1), Node(1), 1);
   const Rule r(L, R, 1);
   Map g(1);
   g.add_darts(1);

@@ -45,11 +45,11 @@ TEST(RuleJson, ReadsAndDeducesStatuses) {
   ASSERT_EQ(r.deleted_nodes().size(), 1u);
   EXPECT_EQ(r.left().name(r.deleted_nodes()[0]), "d");
   ASSERT_EQ(r.added_nodes().size(), 1u);
-  EXPECT_EQ(r.left_arc_status(0), ElemStatus::Preserved);  // a-0->b on both sides (Assumption 4)
-  EXPECT_EQ(r.left_arc_status(1), ElemStatus::Deleted);
-  EXPECT_EQ(r.left_arc_status(2), ElemStatus::Deleted);    // the 2-loop (a link on one node = one arc)
+  EXPECT_EQ(r.left_arc_status(ArcId(0)), ElemStatus::Preserved);  // a-0->b on both sides (Assumption 4)
+  EXPECT_EQ(r.left_arc_status(ArcId(1)), ElemStatus::Deleted);
+  EXPECT_EQ(r.left_arc_status(ArcId(2)), ElemStatus::Deleted);    // the 2-loop (a link on one node = one arc)
   EXPECT_EQ(r.left().num_arcs(), 3u);
-  EXPECT_EQ(r.right_arc_status(1), ElemStatus::Added);
+  EXPECT_EQ(r.right_arc_status(ArcId(1)), ElemStatus::Added);
 }
 
 TEST(RuleJson, RoundTripAndAtomicWrite) {
@@ -90,7 +90,7 @@ TEST(RuleJson, ProgrammaticRuleValidation) {
   EXPECT_THROW(Rule(L, R, 2), Error);
   DGraph L2;
   L2.add_node("a");
-  L2.add_arc(0, 0, 7);
+  L2.add_arc(Node(0), Node(0), 7);
   try {
     Rule(L2, R, 2);
     FAIL();
@@ -107,6 +107,6 @@ TEST(RuleJson, JointRepresentationRoundTrip) {
   EXPECT_EQ(j.graph.num_arcs(), r.left().num_arcs() + r.right().num_arcs() + r.preserved_nodes().size());
   EXPECT_EQ(rule_to_json(from_joint(j)), rule_to_json(r));
   JointRepresentation bad = j;
-  bad.graph.add_arc(0, static_cast<Node>(r.left().num_nodes()), 0);  // crosses the sides
+  bad.graph.add_arc(Node(0), Node(static_cast<uint32_t>(r.left().num_nodes())), 0);  // crosses the sides
   EXPECT_THROW(from_joint(bad), Error);
 }

@@ -46,14 +46,14 @@ inline EngineVsDpo compare_engine_dpo(const Map& g, const RuleScheme& s, const s
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
   std::vector<Node> node_of(g.capacity(), kNoNode);
-  for (size_t k = 0; k < darts.size(); ++k) node_of[darts[k]] = static_cast<Node>(k);
+  for (size_t k = 0; k < darts.size(); ++k) node_of[darts[k]] = Node(static_cast<uint32_t>(k));
   std::vector<std::pair<Node, Node>> anchors;
   bool iso_ok = true;
   const auto hook_nodes = s.hook_nodes();
   for (size_t c = 0; c < hook_nodes.size(); ++c) {
     const uint32_t hv = hook_nodes[c];
     if (c == 0) {
-      for (uint32_t b = 0; b < sz; ++b) anchors.push_back({static_cast<Node>(hv * sz + b), node_of[O.darts[b]]});
+      for (uint32_t b = 0; b < sz; ++b) anchors.push_back({Node(static_cast<uint32_t>(hv * sz + b)), node_of[O.darts[b]]});
       continue;
     }
     auto iso = orbit_isomorphism(g, s.left.nodes[hook_nodes[0]].label, hooks[0], g, s.left.nodes[hv].label, hooks[c]);
@@ -63,7 +63,7 @@ inline EngineVsDpo compare_engine_dpo(const Map& g, const RuleScheme& s, const s
     }
     std::vector<Dart> img(g.capacity(), kNoDart);
     for (auto [x, y] : *iso) img[x] = y;
-    for (uint32_t b = 0; b < sz; ++b) anchors.push_back({static_cast<Node>(hv * sz + b), node_of[img[O.darts[b]]]});
+    for (uint32_t b = 0; b < sz; ++b) anchors.push_back({Node(static_cast<uint32_t>(hv * sz + b)), node_of[img[O.darts[b]]]});
   }
   std::optional<Match> m;
   if (iso_ok) m = anchored_match(r.left(), dg, anchors);
@@ -76,7 +76,7 @@ inline EngineVsDpo compare_engine_dpo(const Map& g, const RuleScheme& s, const s
   }
   if (!a.applied) return out;
   std::vector<Dart> match;
-  for (Node v : m->node) match.push_back(darts[v]);
+  for (Node v : m->node) match.push_back(darts[v.index()]);
   const MapDerivation md = rewrite::apply(r, g, match, rewrite::Construction::Categorical);
   // phi: engine result -> DPO result.
   std::vector<Dart> phi(h.capacity(), kNoDart);

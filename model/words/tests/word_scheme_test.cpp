@@ -38,7 +38,7 @@ bool O(const Rule& r, int i) { return check_non_orientation(r, i, diags); }
 
 // Every node of g is the source and the target of exactly one i-arc.
 bool incident(const DGraph& g, int i) {
-  for (Node v = 0; v < g.num_nodes(); ++v)
+  for (Node v : g.nodes())
     if (g.successors(v, i).size() != 1 || g.predecessors(v, i).size() != 1) return false;
   return true;
 }
@@ -153,24 +153,24 @@ TEST(PatternFunctor, Def48OnCubeGmapAndOmap) {
   const PatternGraph P = pattern_graph(cube, kGmapWords);
   ASSERT_EQ(P.size(), 48u);
   EXPECT_EQ(P.graph.num_arcs(), 48u * 4);
-  for (Node v = 0; v < P.size(); ++v) {
+  for (Node v : P.graph.nodes()) {
     EXPECT_EQ(P.targets(v, w("eps")), std::vector<Node>{v});  // ε-loop
     for (int i = 0; i <= 2; ++i)
-      EXPECT_EQ(P.targets(v, PathWord{{i, false}}), std::vector<Node>{cube.alpha(i, v)});
+      EXPECT_EQ(P.targets(v, PathWord{{i, false}}), std::vector<Node>{node_of(cube.alpha(i, dart_of(v)))});
   }
   EXPECT_EQ(components(P).size(), 1u);
   // Longer words follow the path: 01 then back with conj.
   const PatternGraph P2 = pattern_graph(cube, {w("01"), conj(w("01"))});
-  for (Node v = 0; v < P2.size(); ++v) {
+  for (Node v : P2.graph.nodes()) {
     const Node t = P2.targets(v, w("01"))[0];
-    EXPECT_EQ(t, cube.alpha(1, cube.alpha(0, v)));
+    EXPECT_EQ(dart_of(t), cube.alpha(1, cube.alpha(0, dart_of(v))));
     EXPECT_EQ(P2.targets(t, w("~1~0")), std::vector<Node>{v});
   }
   // O-map: ~1 follows the 1-arc backwards (beta_1^{-1}).
   const Map om = orient(make_cube(2));
   ASSERT_EQ(om.size(), 24u);
   const PatternGraph Po = pattern_graph(om, kOmapWords);
-  for (Node v = 0; v < Po.size(); ++v) {
+  for (Node v : Po.graph.nodes()) {
     const Node s = Po.targets(v, w("1"))[0];
     EXPECT_EQ(Po.targets(s, w("~1")), std::vector<Node>{v});
     EXPECT_NE(s, Po.targets(v, w("~1"))[0]);  // faces are quads: beta_1 is not an involution
@@ -188,7 +188,7 @@ TEST(F8, PatternComponentsAndEpsLoops) {
   const PatternGraph P = pattern_graph(G, kF8Words);
   ASSERT_EQ(P.size(), 8u);
   EXPECT_EQ(P.graph.num_arcs(), 8u * 3);  // one arc per word and node, no 3-arc left
-  for (Node v = 0; v < 8; ++v) {
+  for (Node v : P.graph.nodes()) {
     EXPECT_EQ(P.targets(v, w("eps")), std::vector<Node>{v});
     // conj(21)-arcs are the reverses of the 21-arcs.
     const Node t = P.targets(v, w("21"))[0];
@@ -198,12 +198,17 @@ TEST(F8, PatternComponentsAndEpsLoops) {
   EXPECT_EQ(P.targets(*G.find("a"), w("21")), std::vector<Node>{*G.find("b")});
   EXPECT_EQ(P.targets(*G.find("e"), w("21")), std::vector<Node>{*G.find("f")});
   // Components P_{a..d}, P_{e,f}, P_{g,h} (node ids a=0 ... h=7).
-  EXPECT_EQ(components(P), (std::vector<std::vector<Node>>{{0, 1, 2, 3}, {4, 5}, {6, 7}}));
+  auto ids = [](std::initializer_list<uint32_t> l) {
+    std::vector<Node> v;
+    for (uint32_t x : l) v.push_back(Node(x));
+    return v;
+  };
+  EXPECT_EQ(components(P), (std::vector<std::vector<Node>>{ids({0, 1, 2, 3}), ids({4, 5}), ids({6, 7})}));
   const PatternGraph Pf = component(P, *G.find("f"));
   ASSERT_EQ(Pf.size(), 2u);
-  EXPECT_EQ(Pf.graph.name(0), "f");
-  EXPECT_EQ(Pf.graph.name(1), "e");
-  EXPECT_EQ(Pf.origin, (std::vector<Node>{5, 4}));
+  EXPECT_EQ(Pf.graph.name(Node(0)), "f");
+  EXPECT_EQ(Pf.graph.name(Node(1)), "e");
+  EXPECT_EQ(Pf.origin, ids({5, 4}));
   EXPECT_EQ(Pf.graph.num_arcs(), 6u);
   // With a word using 3, the components merge (the 3-arcs are no longer dropped).
   EXPECT_EQ(components(pattern_graph(G, {w("eps"), w("3"), w("21"), conj(w("21"))})).size(), 1u);
@@ -229,7 +234,7 @@ TEST(F8, Fig419aInstantiatedOnEachComponent) {
     EXPECT_EQ(r.left().num_arcs(), k) << hook;       // one 1-loop per (u,y)
     EXPECT_EQ(r.right().num_arcs(), 3 * k) << hook;  // (u,y) <-> (u,x), and the 2-arc of (u,x)
     EXPECT_EQ(r.added_nodes().size(), k);
-    EXPECT_TRUE(r.right().find(Pv.graph.name(0) + ":x").has_value());
+    EXPECT_TRUE(r.right().find(Pv.graph.name(Node(0)) + ":x").has_value());
     // The thesis' claims, checked by the concrete checker on ι(S,P_v).
     EXPECT_TRUE(I(r, 1)) << hook;
     EXPECT_TRUE(I(r, 2)) << hook;
@@ -239,7 +244,7 @@ TEST(F8, Fig419aInstantiatedOnEachComponent) {
     EXPECT_EQ(O(r, 2), k == 2) << hook;
   }
   // The other reading (21 on the L-loop) breaks O(1) on a..d: rejected.
-  const Rule r21 = instantiate_word_rule(fig419a("21"), component(P, 0));
+  const Rule r21 = instantiate_word_rule(fig419a("21"), component(P, Node(0)));
   EXPECT_TRUE(I(r21, 1));
   EXPECT_FALSE(O(r21, 1));
   EXPECT_NE(conj(w("21")), w("21"));
@@ -250,7 +255,7 @@ TEST(F8, Fig419aMatchAndDerivation) {
   const PatternGraph P = pattern_graph(G, kF8Words);
   const WordRuleScheme S = fig419a();
   // On a..d the (eps,1)-loops of ι(L,P) need 1-loops in G: no match (Ex. 49).
-  const PatternGraph Pa = component(P, 0);
+  const PatternGraph Pa = component(P, Node(0));
   EXPECT_FALSE(propagate_match(S, Pa, instantiate_word_rule(S, Pa), G).has_value());
   // On e,f (1-free darts) the match is (u,y) ↦ u, and the derivation keeps I(1), I(2).
   const PatternGraph Pe = component(P, *G.find("e"));
@@ -280,8 +285,8 @@ TEST(WordScheme, InstantiationOperationalForm) {
   Pi.add_link("n", "m", "eps", 0);
   const DGraph I1 = instantiate_word_graph(Pi, P1);
   EXPECT_EQ(I1.num_nodes(), 2u);
-  EXPECT_EQ(I1.name(1), "u:m");
-  EXPECT_EQ(I1.successors(0, 0), std::vector<Node>{1});
+  EXPECT_EQ(I1.name(Node(1)), "u:m");
+  EXPECT_EQ(I1.successors(Node(0), 0), std::vector<Node>{Node(1)});
   // Words not in W are rejected; duplicate and empty names too.
   Pi.add_arc("n", "n", "2", 2);
   EXPECT_THROW(instantiate_word_graph(Pi, P1), Error);

@@ -15,5 +15,5 @@ void gmr::fuzzing::fuzz_one(std::string_view text) {
   }();
   const auto pairs = cli::parse_match_pairs(rule, map, std::string(text));
   for (const auto& [node, dart] : pairs)
-    if (node >= rule.left().num_nodes() || !map.alive(dart)) __builtin_trap();  // only valid pairs pass
+    if (node.index() >= rule.left().num_nodes() || !map.alive(dart)) __builtin_trap();  // only valid pairs pass
 }
