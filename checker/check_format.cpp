@@ -112,7 +112,7 @@ std::string to_text(const SemanticWitness& w, const Rule& r, const MapFamily& f)
   }
   s += "), match";
   for (graph::Node v : r.left().nodes())
-    s += " " + r.left().name(v) + "->" + std::to_string(w.match.node[v]);
+    s += " " + r.left().name(v) + "->" + std::to_string(graph::dart_of(w.match.node[v]));
   s += "; H breaks:";
   for (size_t k = 0; k < w.violations.size() && k < 3; ++k)
     s += " " + to_text(w.violations[k], w.H) + ";";

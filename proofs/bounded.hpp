@@ -10,6 +10,7 @@
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
 #include "checker/smt/symbolic_validation.hpp"
+#include "checker/smt/validation_format.hpp"
 
 namespace gmr::proofs {
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "checker/smt/scheme_conditions.hpp"
+#include "checker/smt/validation_format.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/testing/random_schemes.hpp"
 #include "model/testing/source_tree.hpp"

@@ -24,7 +24,7 @@ std::optional<Dart> dart_of(const DGraph& H, Node x) {
 std::vector<Dart> offending_darts(const Counterexample& c) {
   std::set<Dart> out;
   for (const auto& v : c.violations)
-    if (auto d = dart_of(c.H, v.at)) out.insert(*d);
+    if (auto d = dart_of(c.H, Node(v.at))) out.insert(*d);
   return {out.begin(), out.end()};
 }
 
@@ -54,7 +54,7 @@ nlohmann::ordered_json to_json(const Rule& r, unsigned bound, const Counterexamp
   for (const auto& v : c.violations) {
     nlohmann::ordered_json e;
     e["constraint"] = symbol(v.constraint);
-    e["node"] = c.H.node_str(v.at);
+    e["node"] = c.H.node_str(Node(v.at));
     e["i"] = v.i;
     if (v.j >= 0) e["j"] = v.j;
     e["text"] = graph::to_text(v, c.H);

@@ -28,7 +28,9 @@ std::string condition_text(std::string_view name, int i, int j = -1);
 // Built with designated initializers: {.constraint = Constraint::Cycle, .at = d, .i = 0, .j = 2}.
 struct ConstraintViolation {
   Constraint constraint{};
-  uint32_t at{};       // the dart (map) or node (D-graph) where the local constraint fails
+  // The dart (map) or the node's index (D-graph, graph::Node::index) where the local constraint
+  // fails; `path` names darts or node indices alike.
+  uint32_t at{};
   int i = -1, j = -1;  // dimension(s)
   std::vector<uint32_t> path{};  // the offending darts or nodes (a path from `at` for C)
   std::string message{};  // what is broken: "no outgoing 2-arc", "alpha_2 is not an involution..."

@@ -4,13 +4,25 @@
 
 namespace gmr::graph {
 
+namespace {
+
+// A ConstraintViolation names nodes by their index (constraint_violation.hpp).
+std::vector<uint32_t> indices(const std::vector<Node>& nodes) {
+  std::vector<uint32_t> out;
+  out.reserve(nodes.size());
+  for (Node x : nodes) out.push_back(x.index());
+  return out;
+}
+
+}  // namespace
+
 std::string to_text(const ConstraintViolation& v, const DGraph& g) {
   std::string s = std::string(to_text(v.constraint)) + " " +
-                  condition_text(symbol(v.constraint), v.i, v.j) + " at node " + g.node_str(v.at) +
+                  condition_text(symbol(v.constraint), v.i, v.j) + " at node " + g.node_str(Node(v.at)) +
                   ": " + v.message;
   if (!v.path.empty()) {
     s += " [path";
-    for (Node x : v.path) s += " " + g.node_str(x);
+    for (uint32_t x : v.path) s += " " + g.node_str(Node(x));
     s += "]";
   }
   return s;
@@ -22,9 +34,9 @@ std::vector<ConstraintViolation> check_incident_arcs(const DGraph& g, Node v, in
   const std::string li = std::to_string(i);
   auto add = [&](std::string message, std::vector<Node> path) {
     out.push_back({.constraint = Constraint::IncidentArcs,
-                   .at = v,
+                   .at = v.index(),
                    .i = i,
-                   .path = std::move(path),
+                   .path = indices(path),
                    .message = std::move(message)});
   };
   if (succ.empty()) add("no outgoing " + li + "-arc", {});
@@ -52,9 +64,9 @@ std::vector<ConstraintViolation> check_non_orientation(const DGraph& g, Node v, 
   // The i-arc a -> b has no reverse.
   auto add = [&](Node a, Node b) {
     out.push_back({.constraint = Constraint::NonOrientation,
-                   .at = v,
+                   .at = v.index(),
                    .i = i,
-                   .path = {a, b},
+                   .path = {a.index(), b.index()},
                    .message = "the " + std::to_string(i) + "-arc " + g.node_str(a) + "->" +
                               g.node_str(b) + " has no reverse"});
   };
@@ -84,10 +96,10 @@ std::vector<ConstraintViolation> check_cycle(const DGraph& g, Node v, int i, int
   std::string what = longest.size() == 5 ? "no " + l + l + "-path from this node returns to it"
                                          : "the " + l + l + "-path stops after " + std::to_string(longest.size() - 1) + " arcs";
   return {{.constraint = Constraint::Cycle,
-           .at = v,
+           .at = v.index(),
            .i = i,
            .j = j,
-           .path = std::move(longest),
+           .path = indices(longest),
            .message = std::move(what)}};
 }
 
@@ -103,9 +115,9 @@ std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, 
     const Arc& e = g.arc(a);
     if (e.label < lo || e.label > n)
       out.push_back({.constraint = Constraint::IncidentArcs,
-                     .at = e.src,
+                     .at = e.src.index(),
                      .i = e.label,
-                     .path = {e.src, e.tgt},
+                     .path = {e.src.index(), e.tgt.index()},
                      .message = "label " + std::to_string(e.label) + " outside " +
                                 std::to_string(lo) + ".." + std::to_string(n)});
   }

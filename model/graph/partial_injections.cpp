@@ -17,7 +17,7 @@ std::vector<PartialInjection> partial_injections(size_t m) {
     for (size_t t = 0; t < m; ++t) {
       if (used_t[t]) continue;
       used_t[t] = true;
-      cur.emplace_back(static_cast<Node>(s), static_cast<Node>(t));
+      cur.emplace_back(Node(static_cast<uint32_t>(s)), Node(static_cast<uint32_t>(t)));
       rec(s + 1);
       cur.pop_back();
       used_t[t] = false;
