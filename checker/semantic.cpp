@@ -19,7 +19,7 @@ SemanticVerdict semantic_verdict(const Rule& r, const MapFamily& f, bool stop_at
       if (!satisfies_gluing(r, G, m)) return true;
       ++v.applications;
       Derivation d = derive(r, G, m, Construction::Rewriting);
-      auto viol = check_gmap_constraints(d.H, f.n, f.kind);
+      auto viol = check_map_constraints(d.H, f.n, f.kind);
       if (viol.empty()) return true;
       if (v.preserves) {
         v.preserves = false;

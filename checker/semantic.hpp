@@ -3,7 +3,7 @@
 //
 //  * `semantic_verdict(rule, family)`: applies the rule through EVERY match (injective,
 //    label-preserving) satisfying the gluing condition on every map of the family and checks that
-//    the result is a G-map (resp. O-map) of the same dimension (Def. 32, check_gmap_constraints).
+//    the result is a G-map (resp. O-map) of the same dimension (Def. 32, check_map_constraints).
 //    `applications == 0` means the rule is not applicable within the bound (no match, or no match
 //    satisfies the gluing condition): its verdict is then vacuously "preserves" — callers that
 //    compare with the static checker must treat such rules separately (see the equivalence test).
@@ -31,7 +31,7 @@ struct SemanticWitness {
   size_t map_index = 0;
   Match match;
   DGraph H;
-  std::vector<ConstraintViolation> violations;  // of H (check_gmap_constraints)
+  std::vector<ConstraintViolation> violations;  // of H (check_map_constraints)
 };
 
 struct SemanticVerdict {

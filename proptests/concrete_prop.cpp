@@ -74,7 +74,7 @@ TEST(ConcreteProps, AcceptedRulesPreserveTheModelOnRandomMaps) {
       const DGraph G = to_dgraph(g);
       for (const Match& m : applicable_matches(r, G, 8)) {
         const Derivation d = derive(r, G, m);
-        const auto broken = check_gmap_constraints(d.H, r.dimension(), r.kind());
+        const auto broken = check_map_constraints(d.H, r.dimension(), r.kind());
         if (!broken.empty()) RC_LOG() << "map " << describe_counterexample(g) << "\n";
         RC_ASSERT(broken.empty());
         ++applied;

@@ -45,7 +45,7 @@ Map rule_applications(Rng& rng, int n, size_t steps) {
     std::vector<Dart> hooks;
     for (size_t h = 0; h < sch.hooks.size(); ++h) hooks.push_back(darts[uniform(rng, 0, darts.size() - 1)]);
     Map h = g;
-    if (scheme::apply(*ls.engine, h, hooks).applied && h.size() <= 600 && h.size() > 0) g = to_gmap(to_dgraph(h), n);  // renumbers the live darts densely
+    if (scheme::apply(*ls.engine, h, hooks).applied && h.size() <= 600 && h.size() > 0) g = to_map(to_dgraph(h), n);  // renumbers the live darts densely
   }
   return g;
 }

@@ -40,7 +40,7 @@ TEST(ModelProps, GeneratedMapsAreValid) {
     const Map g = c.build();
     RC_ASSERT(g.size() > 0u);
     RC_ASSERT(check_validity(g).ok());
-    RC_ASSERT(check_gmap_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
+    RC_ASSERT(check_map_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
   }));
 }
 
@@ -69,7 +69,7 @@ TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
       mine.insert({kind, v.at, v.i, v.j});
     }
     const DGraph dg = to_dgraph(g);
-    for (const auto& v : check_gmap_constraints(dg, g.dimension(), g.kind())) {
+    for (const auto& v : check_map_constraints(dg, g.dimension(), g.kind())) {
       if (v.constraint == Constraint::Cycle) theirs.insert({2, v.at, v.i, v.j});
       // Non-orientation at the arc's source is the involution failure at that dart; incident-arc
       // failures (two incoming arcs) come with it and are folded into the same violation.
@@ -158,7 +158,7 @@ TEST(ModelProps, GeneratedOMapsAreValid) {
     RC_TAG(to_string(c.family));
     RC_ASSERT(g.is_omap());
     RC_ASSERT(check_validity(g).ok());
-    RC_ASSERT(check_gmap_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
+    RC_ASSERT(check_map_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
   }));
 }
 

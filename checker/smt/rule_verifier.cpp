@@ -44,7 +44,7 @@ std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite:
     return c;
   }
   rewrite::Derivation d = rewrite::derive(r, Gd, *m, rewrite::Construction::Rewriting);
-  auto viol = graph::check_gmap_constraints(d.H, r.dimension(), r.kind());
+  auto viol = graph::check_map_constraints(d.H, r.dimension(), r.kind());
   if (viol.empty()) return std::nullopt;
   c.match = std::move(*m);
   c.H = std::move(d.H);

@@ -7,7 +7,7 @@
 //          constraints asserted once, then for b = max(1, |V_L|) .. bound a push, `size = b`, a
 //          check and a pop (incremental solving; the first counterexample has the fewest darts).
 //          Every model is replayed through the concrete derivation (rewrite/dpo.hpp) and
-//          checked with check_gmap_constraints: an encoding error would stop the run
+//          checked with check_map_constraints: an encoding error would stop the run
 //          (std::logic_error) instead of reporting a false counterexample.
 //  * Enum  the exhaustive enumerator (checker/semantic.hpp) on map_family(n, kind, bound).
 // `applicable` tells whether some application exists within the bound (a second SMT query
@@ -55,7 +55,7 @@ struct Counterexample {
   Match match;              // L node -> dart of G (as nodes of to_dgraph(G))
   bool gluing_fails = false;  // Consistency: the match fails the gluing condition (no H)
   DGraph H;                 // the result of the derivation (rewriting construction)
-  std::vector<ConstraintViolation> violations;  // of H (check_gmap_constraints)
+  std::vector<ConstraintViolation> violations;  // of H (check_map_constraints)
   Engine engine = Engine::Smt;
 };
 

@@ -197,7 +197,7 @@ TEST(FoldProperties, FoldThenInstantiateGivesBackTheInput) {
         EXPECT_TRUE(instantiates_back(f, j)) << name << " " << o.str();
         EXPECT_EQ(f.nodes.size() * f.hook_orbit.size(), g.size());
         const InstantiatedGraph inst = instantiate_graph(to_graph_scheme(f), f.hook_orbit);
-        EXPECT_TRUE(is_isomorphic(to_gmap(inst.graph, g.dimension()), g)) << name << " " << o.str();
+        EXPECT_TRUE(is_isomorphic(to_map(inst.graph, g.dimension()), g)) << name << " " << o.str();
       }
     EXPECT_GE(folded, 2u) << name;
   }

@@ -103,7 +103,7 @@ std::vector<ConstraintViolation> check_cycle(const DGraph& g, Node v, int i, int
            .message = std::move(what)}};
 }
 
-std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, MapKind kind) {
+std::vector<ConstraintViolation> check_map_constraints(const DGraph& g, int n, MapKind kind) {
   std::vector<ConstraintViolation> out;
   const MapSpec spec{n, kind};
   const int lo = spec.lowest_dim();

@@ -4,7 +4,7 @@
 //   I_G(i): v is the source of a unique i-arc and the target of a unique i-arc;
 //   O_G(i): every i-arc incident to v has a reverse;
 //   C_G(i,j): v is the source of an ijij-cycle.
-// Combinatorial graphs, G-maps and O-maps (Def. 32) are checked by `check_gmap_constraints`.
+// Combinatorial graphs, G-maps and O-maps (Def. 32) are checked by `check_map_constraints`.
 #pragma once
 #include <string>
 #include <vector>
@@ -25,6 +25,6 @@ std::vector<ConstraintViolation> check_cycle(const DGraph& g, Node v, int i, int
 
 // Def. 32 on the whole graph: kind G (labels 0..n, I, O on all, C on (0..n)_{+2}) or O (labels
 // 1..n, I on all, O on 2..n, C on (1..n)_{+2}). Also reports arcs whose label is outside the set.
-std::vector<ConstraintViolation> check_gmap_constraints(const DGraph& g, int n, MapKind kind);
+std::vector<ConstraintViolation> check_map_constraints(const DGraph& g, int n, MapKind kind);
 
 }  // namespace gmr::graph

@@ -85,7 +85,7 @@ DGraph to_dgraph(const Map& g) {
   return dg;
 }
 
-Map to_gmap(const DGraph& dg, int n, MapKind kind) {
+Map to_map(const DGraph& dg, int n, MapKind kind) {
   Map g(n, kind);
   g.add_darts(dg.num_nodes());
   for (Node v : dg.nodes()) {

@@ -65,12 +65,12 @@ class DGraph {
 // G-map <-> D-graph. Each dart becomes a node named by its index; an i-link between distinct darts
 // becomes two opposite i-arcs, an i-loop one loop arc.
 DGraph to_dgraph(const Map& g);
-// The correspondence of to_dgraph and to_gmap on a map whose darts are 0..size-1 (no free slot):
+// The correspondence of to_dgraph and to_map on a map whose darts are 0..size-1 (no free slot):
 // node v of the D-graph is dart v of the map.
 inline Node node_of(Dart d) { return Node(d); }
 inline Dart dart_of(Node v) { return v.index(); }
 // Requires incident arcs on every label of the map (one outgoing i-arc per node); throws
 // Error(InvalidMap) naming the node and label otherwise. Other constraints are not required.
-Map to_gmap(const DGraph& dg, int n, MapKind kind = MapKind::GMap);
+Map to_map(const DGraph& dg, int n, MapKind kind = MapKind::GMap);
 
 }  // namespace gmr::graph

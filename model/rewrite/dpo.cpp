@@ -286,7 +286,7 @@ MapDerivation apply_categorical(const Rule& r, const Map& g, const std::vector<D
                     "the result is not combinatorial: incident arcs I(" + std::to_string(i) + ") fails",
                     "node " + der.H.node_str(v));
   MapDerivation out;
-  out.H = to_gmap(der.H, g.dimension(), g.kind());
+  out.H = to_map(der.H, g.dimension(), g.kind());
   out.g_to_h.assign(g.capacity(), kNoDart);
   for (Node k : der.g_to_h.handles())
     out.g_to_h[darts[k.index()]] = der.g_to_h[k] == kNoNode ? kNoDart : dart_of(der.g_to_h[k]);

@@ -10,7 +10,7 @@
 // constructions (`Construction`), kept and tested against each other:
 //  * Categorical — the pushout complement D (G minus the images of the deleted nodes and arcs, as
 //    a new graph with the inclusion D -> G), then the pushout H of D <- L∩R -> R (D ⊔ (R \ L∩R)
-//    glued along L∩R), with the comatch m': R -> H; on maps, through to_dgraph/to_gmap;
+//    glued along L∩R), with the comatch m': R -> H; on maps, through to_dgraph/to_map;
 //  * Rewriting — editing a copy of G: remove the matched deleted arcs, append the added nodes and
 //    arcs, then compact the deleted nodes away by moving the last node into each hole. On maps the
 //    links of a copy are rewritten directly (Jerboa style) in phases: check the match (injective,

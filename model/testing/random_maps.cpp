@@ -195,7 +195,7 @@ std::vector<Generator> generators_for(int n) {
   return out;
 }
 
-Map random_gmap(Rng& rng, Generator gen, int n) {
+Map random_map(Rng& rng, Generator gen, int n) {
   switch (gen) {
     case Generator::GluedPolygons: {
       GluedPolygonsOptions o;

@@ -80,7 +80,7 @@ const char* to_string(Generator g);
 // SewSequence (n >= 0).
 std::vector<Generator> generators_for(int n);
 // One map of the given family with default options (Polycube requires n == 3).
-Map random_gmap(Rng& rng, Generator gen, int n);
+Map random_map(Rng& rng, Generator gen, int n);
 
 // --- random O-maps (Def. 32: beta_1 a permutation, beta_2..n involutions, cycle constraint on
 // (1..n)_{+2}) -------------------------------------------------------------------------------

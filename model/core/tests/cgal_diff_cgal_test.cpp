@@ -33,7 +33,7 @@ Stats sweep(Generator gen, uint64_t seeds, const char* what) {
   Stats st;
   for (uint64_t s = 0; s < seeds; ++s) {
     Rng rng(s * 7919 + N * 101 + static_cast<uint64_t>(gen));
-    const Map g = gmr::testing::random_gmap(rng, gen, static_cast<int>(N));
+    const Map g = gmr::testing::random_map(rng, gen, static_cast<int>(N));
     SCOPED_TRACE(std::string(gmr::testing::to_string(gen)) + " n=" + std::to_string(N) +
                  " seed=" + std::to_string(s));
     compare_one<N>(g, rng, st);
@@ -79,7 +79,7 @@ TEST(CgalDiff, ResewnRandomMaps) {
   for (uint64_t s = 0; s < 60; ++s) {
     Rng rng(s + 424242);
     compare_one<2>(
-        gmr::testing::random_gmap(rng, s % 2 ? Generator::GluedPolygons : Generator::SewSequence, 2), rng,
+        gmr::testing::random_map(rng, s % 2 ? Generator::GluedPolygons : Generator::SewSequence, 2), rng,
         st);
   }
   report("resewn random maps n=2", st);

@@ -152,7 +152,7 @@ TEST(TraversalEquivalence, ValidRandomMaps) {
     for (Generator gen : generators_for(n))
       for (uint64_t seed = 0; seed < 12; ++seed) {
         Rng rng(seed);
-        check_traversals(random_gmap(rng, gen, n), std::string(to_string(gen)) +
+        check_traversals(random_map(rng, gen, n), std::string(to_string(gen)) +
                                                        " n=" + std::to_string(n) +
                                                        " seed=" + std::to_string(seed));
         if (HasFatalFailure()) return;
@@ -171,7 +171,7 @@ TEST(TraversalEquivalence, StandardObjects) {
 TEST(TraversalEquivalence, InvalidMaps) {
   for (uint64_t seed = 0; seed < 60; ++seed) {
     Rng rng(seed);
-    Map g = random_gmap(rng, seed % 2 ? Generator::SewSequence : Generator::GluedPolygons,
+    Map g = random_map(rng, seed % 2 ? Generator::SewSequence : Generator::GluedPolygons,
                          2 + int(seed % 3 == 0));
     corrupt(g, rng, 1 + static_cast<int>(seed % 4), seed % 5 == 0);
     check_traversals(g, "corrupted seed=" + std::to_string(seed));
@@ -189,7 +189,7 @@ TEST(TraversalEquivalence, InvalidMaps) {
 TEST(TraversalEquivalence, MapsWithDeletedDarts) {
   for (uint64_t seed = 0; seed < 30; ++seed) {
     Rng rng(seed);
-    Map g = random_gmap(rng, Generator::SewSequence, 2 + int(seed % 2));
+    Map g = random_map(rng, Generator::SewSequence, 2 + int(seed % 2));
     // Delete a few darts (their partners become free in that dimension: possibly invalid, which
     // is fine here).
     const auto ds = g.darts();

@@ -17,9 +17,9 @@ static bool has(const std::vector<ConstraintViolation>& vs, Constraint k, Node v
 
 TEST(Constraints, GMapAsDGraphSatisfiesAll) {
   DGraph dg = to_dgraph(make_cube(2));
-  EXPECT_TRUE(check_gmap_constraints(dg, 2, MapKind::GMap).empty());
+  EXPECT_TRUE(check_map_constraints(dg, 2, MapKind::GMap).empty());
   DGraph s = to_dgraph(make_stacked_cubes());
-  EXPECT_TRUE(check_gmap_constraints(s, 3, MapKind::GMap).empty());
+  EXPECT_TRUE(check_map_constraints(s, 3, MapKind::GMap).empty());
 }
 
 TEST(Constraints, IncidentArcsMissingAndDuplicate) {
@@ -68,7 +68,7 @@ TEST(Constraints, CycleBrokenOnOneNode) {
   EXPECT_EQ(va[0].path.size(), 5u);
   EXPECT_EQ(va[0].path.front(), a.index());
   EXPECT_NE(va[0].path.back(), a.index());
-  auto all = check_gmap_constraints(g, 2, MapKind::GMap);
+  auto all = check_map_constraints(g, 2, MapKind::GMap);
   EXPECT_TRUE(has(all, Constraint::Cycle, a, 0, 2));
   EXPECT_TRUE(has(all, Constraint::Cycle, d, 0, 2));
   for (const auto& cv : all) EXPECT_EQ(cv.constraint, Constraint::Cycle);
@@ -77,7 +77,7 @@ TEST(Constraints, CycleBrokenOnOneNode) {
 TEST(Constraints, LabelOutsideDimensionSet) {
   DGraph g = to_dgraph(make_polygon(2, 2));
   g.add_arc(Node(0), Node(0), 5);
-  auto all = check_gmap_constraints(g, 2, MapKind::GMap);
+  auto all = check_map_constraints(g, 2, MapKind::GMap);
   ASSERT_FALSE(all.empty());
   EXPECT_NE(all[0].message.find("label 5"), std::string::npos);
 }
@@ -85,10 +85,10 @@ TEST(Constraints, LabelOutsideDimensionSet) {
 TEST(Constraints, OMapDimensionOneMayBeOriented) {
   Map o = orient(make_cube(2));
   DGraph dg = to_dgraph(o);
-  EXPECT_TRUE(check_gmap_constraints(dg, 2, MapKind::OMap).empty());
+  EXPECT_TRUE(check_map_constraints(dg, 2, MapKind::OMap).empty());
   // As a G-map over 1..2 the oriented 1-arcs break non-orientation.
   bool found = false;
-  for (const auto& c : check_gmap_constraints(dg, 2, MapKind::GMap))
+  for (const auto& c : check_map_constraints(dg, 2, MapKind::GMap))
     if (c.constraint == Constraint::NonOrientation && c.i == 1) found = true;
   EXPECT_TRUE(found);
 }
@@ -97,7 +97,7 @@ TEST(Constraints, ToGMapRejectsMissingArcWithLocation) {
   DGraph g;
   g.add_node("x");
   try {
-    to_gmap(g, 1);
+    to_map(g, 1);
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::InvalidMap);

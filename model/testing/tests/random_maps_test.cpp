@@ -65,8 +65,8 @@ TEST(RandomMaps, GeneratorsGiveValidDeterministicMaps) {
     for (Generator gen : generators_for(n)) {
       for (uint64_t seed = 0; seed < 40; ++seed) {
         Rng r1(seed), r2(seed);
-        Map g = random_gmap(r1, gen, n);
-        Map h = random_gmap(r2, gen, n);
+        Map g = random_map(r1, gen, n);
+        Map h = random_map(r2, gen, n);
         SCOPED_TRACE(std::string(to_string(gen)) + " n=" + std::to_string(n) +
                      " seed=" + std::to_string(seed));
         EXPECT_EQ(g.dimension(), n);
@@ -121,7 +121,7 @@ TEST(RandomMaps, SewSequencesUseEveryDimension) {
 TEST(RandomMaps, RelabelIsAnIsomorphicCopy) {
   for (uint64_t seed = 0; seed < 30; ++seed) {
     Rng rng(seed);
-    Map g = random_gmap(rng, Generator::SewSequence, 2 + static_cast<int>(seed % 2));
+    Map g = random_map(rng, Generator::SewSequence, 2 + static_cast<int>(seed % 2));
     const auto perm = random_permutation(rng, g.capacity());
     Map h = permute_darts(g, perm);
     ASSERT_TRUE(is_valid(h));
@@ -156,7 +156,7 @@ TEST(RandomMaps, MutationIsValidAndNotIsomorphic) {
     for (Generator gen : generators_for(n)) {
       for (uint64_t seed = 0; seed < 25; ++seed) {
         Rng rng(seed);
-        const Map g = random_gmap(rng, gen, n);
+        const Map g = random_map(rng, gen, n);
         Map h = g;
         const Mutation m = mutate_one_link(h, rng);
         SCOPED_TRACE(std::string(to_string(gen)) + " n=" + std::to_string(n) +
@@ -185,7 +185,7 @@ TEST(RandomMaps, ResewIsValid) {
   size_t changed = 0;
   for (uint64_t seed = 0; seed < 60; ++seed) {
     Rng rng(seed);
-    const Map g = random_gmap(rng, seed % 2 ? Generator::GluedPolygons : Generator::SewSequence,
+    const Map g = random_map(rng, seed % 2 ? Generator::GluedPolygons : Generator::SewSequence,
                                2 + int(seed % 3 == 0));
     Map h = g;
     const Mutation m = resew_one_link(h, rng);
