@@ -10,10 +10,10 @@ else
   mapfile -t files < <(find . -path ./build -prune -o -path './build-*' -prune -o \( -name '*.cpp' -o -name '*.hpp' \) -print)
 fi
 if [ "${1:-}" = "--check" ]; then
-  bad=()
-  for f in "${files[@]}"; do
-    clang-format --dry-run --Werror "$f" >/dev/null 2>&1 || bad+=("$f")
-  done
+  # One warning line "<file>:<line>:<col>: error: code should be clang-formatted" per difference.
+  mapfile -t bad < <(printf '%s\0' "${files[@]}" |
+    xargs -0 clang-format --dry-run --Werror 2>&1 |
+    sed -n 's/^\([^:]*\):[0-9]*:[0-9]*: error: code should be clang-formatted.*/\1/p' | sort -u)
   if [ ${#bad[@]} -gt 0 ]; then
     echo "gmr format: ${#bad[@]} file(s) differ from .clang-format (run tools/format.sh):" >&2
     printf '  %s\n' "${bad[@]}" >&2
