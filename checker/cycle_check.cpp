@@ -42,10 +42,17 @@ std::vector<std::string> path_names(const DGraph& g, const OptimalPath& p) {
 Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
   DGraph L = r.left(), R = r.right();
   std::set<std::string> seen;
-  auto note = [&](const std::string& code, const std::string& msg, std::vector<std::string> path, std::optional<Side> side) {
+  auto note = [&](const std::string& code, const std::string& msg, std::vector<std::string> path,
+                  std::optional<Side> side) {
     if (!notes || !seen.insert(code + msg).second) return;
-    notes->push_back(Diagnostic{.code = code, .severity = Severity::Note, .condition = symbol(Constraint::Cycle), .i = i, .j = j, .side = side,
-                                .path = std::move(path), .message = msg});
+    notes->push_back(Diagnostic{.code = code,
+                                .severity = Severity::Note,
+                                .condition = symbol(Constraint::Cycle),
+                                .i = i,
+                                .j = j,
+                                .side = side,
+                                .path = std::move(path),
+                                .message = msg});
   };
   auto name_of_r = [&](Node l) { return R.find(L.name(l)); };
   bool changed = true;
@@ -62,8 +69,9 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
             const std::string w = lbl(a) + lbl(b) + lbl(a);
             if (has_out(L, u3, b) || has_in(L, u0, b)) {
               note("C-completion-conflict",
-                   "the " + w + "-path cannot be closed by a " + lbl(b) + "-arc " + L.name(u3) + " -> " + L.name(u0) +
-                       " (another " + lbl(b) + "-arc is already there): L matches no graph satisfying C_G(" + lbl(i) + "," +
+                   "the " + w + "-path cannot be closed by a " + lbl(b) + "-arc " + L.name(u3) +
+                       " -> " + L.name(u0) + " (another " + lbl(b) +
+                       "-arc is already there): L matches no graph satisfying C_G(" + lbl(i) + "," +
                        lbl(j) + ")",
                    path, Side::L);
               continue;
@@ -73,8 +81,9 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
             L.add_arc(u3, u0, b);
             R.add_arc(*r3, *r0, b);
             note("C-completed",
-                 "ij-completion: the " + w + "-path is closed by the preserved " + lbl(b) + "-arc " + L.name(u3) + " -> " +
-                     L.name(u0) + " added to L and R (Assumption 5)",
+                 "ij-completion: the " + w + "-path is closed by the preserved " + lbl(b) +
+                     "-arc " + L.name(u3) + " -> " + L.name(u0) +
+                     " added to L and R (Assumption 5)",
                  path, Side::L);
             changed = true;
             break;
@@ -92,9 +101,10 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes) {
       for (Node u2 : R.successors(u1, b))
         for (Node u3 : R.successors(u2, a))
           if (!has_arc(R, u3, u0, b))
-            note("C-open-R",
-                 "the " + lbl(a) + lbl(b) + lbl(a) + "-path of R is not closed in R (not completed)",
-                 {R.name(u0), R.name(u1), R.name(u2), R.name(u3)}, Side::R);
+            note(
+                "C-open-R",
+                "the " + lbl(a) + lbl(b) + lbl(a) + "-path of R is not closed in R (not completed)",
+                {R.name(u0), R.name(u1), R.name(u2), R.name(u3)}, Side::R);
     }
   return Rule(std::move(L), std::move(R), r.dimension(), r.kind(), r.name());
 }
@@ -116,7 +126,8 @@ Rule complete_for_model(const Rule& r0, std::vector<Diagnostic>* notes) {
         const Node u = L.arc(a).src, v = L.arc(a).tgt;
         if (has_arc(L, v, u, i)) continue;
         auto ru = R.find(L.name(u)), rv = R.find(L.name(v));
-        if (!ru || !rv || has_out(L, v, i) || has_in(L, u, i)) continue;  // I_r / vacuity handle these
+        if (!ru || !rv || has_out(L, v, i) || has_in(L, u, i))
+          continue;  // I_r / vacuity handle these
         L.add_arc(v, u, i);
         R.add_arc(*rv, *ru, i);
         note({.code = "C-O-completed",
@@ -125,8 +136,9 @@ Rule complete_for_model(const Rule& r0, std::vector<Diagnostic>* notes) {
               .i = i,
               .side = Side::L,
               .nodes = {L.name(u), L.name(v)},
-              .message = "model completion: the reverse " + lbl(i) + "-arc " + L.name(v) + " -> " + L.name(u) + " of " +
-                  L.name(u) + " -> " + L.name(v) + " was added to L and R (preserved) before checking C_r"});
+              .message = "model completion: the reverse " + lbl(i) + "-arc " + L.name(v) + " -> " +
+                         L.name(u) + " of " + L.name(u) + " -> " + L.name(v) +
+                         " was added to L and R (preserved) before checking C_r"});
         changed = true;
       }
     }
@@ -160,12 +172,14 @@ bool on_alternating_cycle(const DGraph& g, ArcId a, int i, int j) {
 std::vector<OptimalPath> optimal_paths(const Rule& r, Side side, int i, int j) {
   const DGraph& g = r.side(side);
   if (!combinatorial_on(g, i, j))
-    throw Error(ErrorCode::Usage, "optimal paths need a side with at most one i- and j-arc per node",
+    throw Error(ErrorCode::Usage,
+                "optimal paths need a side with at most one i- and j-arc per node",
                 side == Side::R ? "right" : "left");
   const ElemStatus changed = side == Side::R ? ElemStatus::Added : ElemStatus::Deleted;
   HandleVector<ArcId, bool> in(g.num_arc_slots(), false);
   for (ArcId a : g.arc_slots())
-    in[a] = g.arc_alive(a) && (g.arc(a).label == i || g.arc(a).label == j) && r.arc_status(side, a) == changed;
+    in[a] = g.arc_alive(a) && (g.arc(a).label == i || g.arc(a).label == j) &&
+            r.arc_status(side, a) == changed;
   auto other = [&](int l) { return l == i ? j : i; };
   auto succ = [&](ArcId a) -> ArcId {
     for (ArcId b : g.out_arcs(g.arc(a).tgt))
@@ -211,7 +225,8 @@ std::vector<OptimalPath> optimal_paths(const Rule& r, Side side, int i, int j) {
   }
   std::vector<OptimalPath> out;
   for (auto& p : cand)
-    if (!(p.arcs.size() <= 4 && on_alternating_cycle(g, p.arcs.front(), i, j))) out.push_back(std::move(p));
+    if (!(p.arcs.size() <= 4 && on_alternating_cycle(g, p.arcs.front(), i, j)))
+      out.push_back(std::move(p));
   return out;
 }
 
@@ -219,8 +234,9 @@ namespace {
 
 // Def. 40.1 (with Def. 39): every (i,j)-optimal path of one side has exactly one coherent optimal
 // path (same source, target and label word) on the other side.
-bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, const std::vector<OptimalPath>& PR,
-                             int i, int j, std::vector<Diagnostic>& out) {
+bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL,
+                             const std::vector<OptimalPath>& PR, int i, int j,
+                             std::vector<Diagnostic>& out) {
   bool ok = true;
   const DGraph &L = r.left(), &R = r.right();
   for (Side side : {Side::L, Side::R}) {
@@ -232,7 +248,9 @@ bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, 
     for (const auto& p : mine) {
       size_t partners = 0;
       for (const auto& q : theirs)
-        if (h.name(q.source) == g.name(p.source) && h.name(q.target) == g.name(p.target) && q.word == p.word) ++partners;
+        if (h.name(q.source) == g.name(p.source) && h.name(q.target) == g.name(p.target) &&
+            q.word == p.word)
+          ++partners;
       if (partners == 1) continue;
       ok = false;
       Diagnostic d{.code = partners == 0 ? "C-incoherent" : "C-ambiguous",
@@ -241,9 +259,10 @@ bool check_coherent_partners(const Rule& r, const std::vector<OptimalPath>& PL, 
                    .j = j,
                    .side = side,
                    .path = path_names(g, p)};
-      d.message = "the (" + lbl(i) + "," + lbl(j) + ")-optimal path " + g.name(p.source) + " ~" + word_text(p.word) + "~> " +
-                  g.name(p.target) + " of " + to_string(side) + " has " + std::to_string(partners) +
-                  " coherent optimal paths in " + to_string(other(side)) + "; exactly one is required (Defs. 39, 40.1)";
+      d.message = "the (" + lbl(i) + "," + lbl(j) + ")-optimal path " + g.name(p.source) + " ~" +
+                  word_text(p.word) + "~> " + g.name(p.target) + " of " + to_string(side) +
+                  " has " + std::to_string(partners) + " coherent optimal paths in " +
+                  to_string(other(side)) + "; exactly one is required (Defs. 39, 40.1)";
       d.nodes = {g.name(p.source), g.name(p.target)};
       for (ArcId a : p.arcs) d.arcs.push_back(r.arc_str(side, a));
       out.push_back(std::move(d));
@@ -273,10 +292,15 @@ bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& 
         if (L.arc(a).label == d && r.left_arc_status(a) == ElemStatus::Deleted) rewired = true;
       if (!rewired || covered(w, d)) continue;
       ok = false;
-      Diagnostic dg{.code = "C-preserved-node", .condition = symbol(Constraint::Cycle), .i = i, .j = j, .side = Side::R, .nodes = {L.name(v)}};
-      dg.message = "preserved node " + L.name(v) + " loses its " + lbl(d) + "-arc but its " + lbl(d) +
-                   "-arc in R is neither on an " + lbl(i) + lbl(j) + lbl(i) + lbl(j) + "-cycle nor on an (" + lbl(i) + "," +
-                   lbl(j) + ")-optimal path (Def. 40.2)";
+      Diagnostic dg{.code = "C-preserved-node",
+                    .condition = symbol(Constraint::Cycle),
+                    .i = i,
+                    .j = j,
+                    .side = Side::R,
+                    .nodes = {L.name(v)}};
+      dg.message = "preserved node " + L.name(v) + " loses its " + lbl(d) + "-arc but its " +
+                   lbl(d) + "-arc in R is neither on an " + lbl(i) + lbl(j) + lbl(i) + lbl(j) +
+                   "-cycle nor on an (" + lbl(i) + "," + lbl(j) + ")-optimal path (Def. 40.2)";
       for (ArcId a : R.out_arcs(w))
         if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(Side::R, a));
       out.push_back(std::move(dg));
@@ -286,9 +310,15 @@ bool check_rewired_nodes_covered(const Rule& r, const std::vector<OptimalPath>& 
     for (int d : {i, j}) {
       if (covered(w, d)) continue;
       ok = false;
-      Diagnostic dg{.code = "C-added-node", .condition = symbol(Constraint::Cycle), .i = i, .j = j, .side = Side::R, .nodes = {R.name(w)}};
-      dg.message = "added node " + R.name(w) + " is not the source of a " + lbl(d) + "-arc on an " + lbl(i) + lbl(j) + lbl(i) +
-                   lbl(j) + "-cycle or on an (" + lbl(i) + "," + lbl(j) + ")-optimal path of R (Def. 40.3)";
+      Diagnostic dg{.code = "C-added-node",
+                    .condition = symbol(Constraint::Cycle),
+                    .i = i,
+                    .j = j,
+                    .side = Side::R,
+                    .nodes = {R.name(w)}};
+      dg.message = "added node " + R.name(w) + " is not the source of a " + lbl(d) + "-arc on an " +
+                   lbl(i) + lbl(j) + lbl(i) + lbl(j) + "-cycle or on an (" + lbl(i) + "," + lbl(j) +
+                   ")-optimal path of R (Def. 40.3)";
       for (ArcId a : R.out_arcs(w))
         if (R.arc(a).label == d) dg.arcs.push_back(r.arc_str(Side::R, a));
       out.push_back(std::move(dg));
@@ -314,7 +344,7 @@ bool check_cycle_as_written(const Rule& r, int i, int j, std::vector<Diagnostic>
                    .i = i,
                    .j = j,
                    .message = "not evaluated: a node has two " + lbl(i) + "- or " + lbl(j) +
-                       "-arcs on one side (the rule fails Def. 35 or I_r)"});
+                              "-arcs on one side (the rule fails Def. 35 or I_r)"});
     return true;
   }
   const auto PL = optimal_paths(r, Side::L, i, j), PR = optimal_paths(r, Side::R, i, j);

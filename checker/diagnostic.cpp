@@ -6,9 +6,12 @@ namespace gmr::checker {
 
 const char* to_string(Severity s) {
   switch (s) {
-    case Severity::Error: return "error";
-    case Severity::Warning: return "warning";
-    case Severity::Note: return "note";
+    case Severity::Error:
+      return "error";
+    case Severity::Warning:
+      return "warning";
+    case Severity::Note:
+      return "note";
   }
   return "?";
 }
@@ -25,13 +28,15 @@ std::string Diagnostic::side_str() const { return side ? to_string(*side) : ""; 
 bool CheckReport::ok() const { return errors() == 0; }
 
 size_t CheckReport::errors() const {
-  return static_cast<size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
-                                           [](const Diagnostic& d) { return d.severity == Severity::Error; }));
+  return static_cast<size_t>(
+      std::count_if(diagnostics.begin(), diagnostics.end(),
+                    [](const Diagnostic& d) { return d.severity == Severity::Error; }));
 }
 
 size_t CheckReport::warnings() const {
-  return static_cast<size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
-                                           [](const Diagnostic& d) { return d.severity == Severity::Warning; }));
+  return static_cast<size_t>(
+      std::count_if(diagnostics.begin(), diagnostics.end(),
+                    [](const Diagnostic& d) { return d.severity == Severity::Warning; }));
 }
 
 bool CheckReport::holds(const std::string& condition) const {

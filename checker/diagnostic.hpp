@@ -16,10 +16,12 @@
 //                        and the target of exactly one i-arc in L.
 //   O-no-reverse         Def. 37 (O_r(i)): a deleted (resp. added) i-arc has no reverse i-arc in L
 //                        (resp. R).
-//   O-status-mismatch    Def. 37: the unique reverse of a deleted (resp. added) i-arc is not deleted
+//   O-status-mismatch    Def. 37: the unique reverse of a deleted (resp. added) i-arc is not
+//   deleted
 //                        (resp. added) — e.g. it is preserved.
 //   O-several-reverses   Def. 37: a deleted/added i-arc has several reverse i-arcs (non-unique).
-//   C-incoherent         Def. 39/40.1 (C_r(i,j)): an (i,j)-optimal path has no coherent optimal path
+//   C-incoherent         Def. 39/40.1 (C_r(i,j)): an (i,j)-optimal path has no coherent optimal
+//   path
 //                        (same source, target and label word) on the other side.
 //   C-ambiguous          Def. 39/40.1: an (i,j)-optimal path has two or more coherent partners.
 //   C-preserved-node     Def. 40.2: a preserved node with a deleted i-arc (resp. j-arc) has no
@@ -36,8 +38,8 @@
 //   C-open-R             (note) an iji-path of R is not closed in R. Not completed (completing R
 //                        would change the matches); C_r judges it through optimal paths.
 #pragma once
-#include <string>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -66,18 +68,18 @@ std::string word_text(const std::vector<int>& w);
 //   Diagnostic{.code = "I-added-node", .condition = symbol(Constraint::IncidentArcs), .i = 2,
 //              .side = Side::R, .message = ...}.
 struct Diagnostic {
-  std::string code{};               // stable, listed above and in scheme_checker.hpp
+  std::string code{};  // stable, listed above and in scheme_checker.hpp
   Severity severity = Severity::Error;
   // Concrete rules: "combinatorial", "w-I", "I", "O", "C", the dimension(s) in i and j.
   // Schemes: "structure", "hooks" or the full condition ("I(2)", "C(0,2)"), i = j = -1.
   std::string condition{};
   int i = -1, j = -1;
-  std::optional<Side> side{};      // the rule side the witnesses live on, when there is one
-  std::vector<std::string> nodes{};// node names (witnesses)
-  std::vector<std::string> arcs{}; // concrete "a -0-> b (L)", scheme "n0 -1- n2"
-  std::vector<std::string> path{}; // node names along a path or cycle, on `side`
+  std::optional<Side> side{};        // the rule side the witnesses live on, when there is one
+  std::vector<std::string> nodes{};  // node names (witnesses)
+  std::vector<std::string> arcs{};   // concrete "a -0-> b (L)", scheme "n0 -1- n2"
+  std::vector<std::string> path{};   // node names along a path or cycle, on `side`
   std::string message{};
-  std::string side_str() const;       // "L", "R" or ""
+  std::string side_str() const;  // "L", "R" or ""
 };
 
 // What a report is about: a concrete rule (check_rule, rule_check.hpp) or a rule scheme
@@ -87,8 +89,8 @@ enum class CheckSubject : uint8_t { Rule, Scheme };
 
 struct CheckReport {
   CheckSubject subject = CheckSubject::Rule;
-  std::string rule;               // the rule's name
-  MapKind kind = MapKind::GMap;   // concrete rules: the kind and dimension of the maps
+  std::string rule;              // the rule's name
+  MapKind kind = MapKind::GMap;  // concrete rules: the kind and dimension of the maps
   int n = 0;
   std::vector<Diagnostic> diagnostics;
   // In checking order. Concrete rules: "combinatorial", "I(0)", ..., "O(0)", ..., "C(0,2)", ...;

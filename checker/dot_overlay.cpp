@@ -8,8 +8,9 @@ using namespace gmr::draw;
 
 namespace {
 
-void add(std::vector<DotHighlight>& out, std::optional<graph::Side> side, const std::vector<std::string>& nodes,
-         const std::vector<std::string>& path, const std::string& code, const std::string& message, bool error) {
+void add(std::vector<DotHighlight>& out, std::optional<graph::Side> side,
+         const std::vector<std::string>& nodes, const std::vector<std::string>& path,
+         const std::string& code, const std::string& message, bool error) {
   for (const auto& v : nodes.empty() ? path : nodes) out.push_back({side, v, code, message, error});
 }
 
@@ -17,7 +18,8 @@ void add(std::vector<DotHighlight>& out, std::optional<graph::Side> side, const 
 std::optional<graph::Side> side_of(const Diagnostic& d) {
   if (d.side || d.arcs.empty()) return d.side;
   auto on = [&](const char* tag) {
-    return std::all_of(d.arcs.begin(), d.arcs.end(), [&](const std::string& a) { return a.ends_with(tag); });
+    return std::all_of(d.arcs.begin(), d.arcs.end(),
+                       [&](const std::string& a) { return a.ends_with(tag); });
   };
   if (on("(L)")) return graph::Side::L;
   if (on("(R)")) return graph::Side::R;

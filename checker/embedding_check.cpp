@@ -68,19 +68,22 @@ bool check_embeddings(const RuleScheme& s, std::vector<Diagnostic>& out) {
     for (const auto& x : s.right.nodes[v].expressions) {
       if (x.code.empty() && !x.unsupported.empty()) {
         add("E-unsupported", Severity::Warning, {name},
-            "the Jerboa expression for '" + x.embedding + "' is not translated (" + x.unsupported + "): " + x.jerboa);
+            "the Jerboa expression for '" + x.embedding + "' is not translated (" + x.unsupported +
+                "): " + x.jerboa);
         continue;
       }
       size_t e = 0;
       while (e < sigs.size() && sigs[e].name != x.embedding) ++e;
       if (e == sigs.size()) {
         if (!s.find_embedding(x.embedding))
-          add("E-undeclared", Severity::Error, {name}, "expression for the undeclared embedding '" + x.embedding + "'");
+          add("E-undeclared", Severity::Error, {name},
+              "expression for the undeclared embedding '" + x.embedding + "'");
         continue;
       }
       if (written[e][v]) {
         add("E-unique", Severity::Error, {name},
-            "two expressions for embedding '" + x.embedding + "' on one node (thesis Def. 71, uniqueness)");
+            "two expressions for embedding '" + x.embedding +
+                "' on one node (thesis Def. 71, uniqueness)");
         continue;
       }
       written[e][v] = true;
@@ -104,8 +107,10 @@ bool check_embeddings(const RuleScheme& s, std::vector<Diagnostic>& out) {
       std::vector<uint32_t> with;
       bool malformed = false;
       for (uint32_t v : nodes) {
-        if (compiled[e][v]) with.push_back(v);
-        else if (written[e][v]) malformed = true;
+        if (compiled[e][v])
+          with.push_back(v);
+        else if (written[e][v])
+          malformed = true;
       }
       if (malformed) continue;  // already reported
       if (!with.empty()) {
@@ -113,9 +118,10 @@ bool check_embeddings(const RuleScheme& s, std::vector<Diagnostic>& out) {
         for (uint32_t v : with)
           if (expr::to_text(*compiled[e][v]) != first) {
             add("E-orbit-terms", Severity::Error, names,
-                "nodes " + s.right.nodes[with[0]].name + " and " + s.right.nodes[v].name + " are in one " +
-                    sigs[e].orbit.str() + "-class of R and give '" + sigs[e].name + "' different expressions: " +
-                    first + " and " + expr::to_text(*compiled[e][v]) + " (thesis Def. 71, orbit consistency)");
+                "nodes " + s.right.nodes[with[0]].name + " and " + s.right.nodes[v].name +
+                    " are in one " + sigs[e].orbit.str() + "-class of R and give '" + sigs[e].name +
+                    "' different expressions: " + first + " and " + expr::to_text(*compiled[e][v]) +
+                    " (thesis Def. 71, orbit consistency)");
             break;
           }
         continue;
@@ -129,14 +135,16 @@ bool check_embeddings(const RuleScheme& s, std::vector<Diagnostic>& out) {
         }
       if (preserved.empty()) {
         add("E-no-value", Severity::Error, names,
-            "a " + sigs[e].orbit.str() + "-class of added nodes without expression: its orbits get no '" +
-                sigs[e].name + "' value (thesis Def. 81)");
+            "a " + sigs[e].orbit.str() +
+                "-class of added nodes without expression: its orbits get no '" + sigs[e].name +
+                "' value (thesis Def. 81)");
         continue;
       }
       if (origins.size() > 1) {
         add("E-merge", Severity::Error, names,
             "the class joins preserved nodes of " + std::to_string(origins.size()) + " different " +
-                sigs[e].orbit.str() + "-classes of L and has no expression: merged orbits may hold different '" +
+                sigs[e].orbit.str() +
+                "-classes of L and has no expression: merged orbits may hold different '" +
                 sigs[e].name + "' values");
         continue;
       }

@@ -16,7 +16,8 @@
 //                   (Def. 81, all-or-nothing; Fig. 5.15b)
 //   E-merge         a class without expression whose preserved nodes lie in different classes of
 //                   L: the rewrite merges orbits that may hold different values (Fig. 5.18a)
-//   E-unsupported   (warning) a Jerboa expression that could not be translated (model/rule_io/jme_expression.hpp);
+//   E-unsupported   (warning) a Jerboa expression that could not be translated
+//   (model/rule_io/jme_expression.hpp);
 //                   the node is checked as if it had none
 //   E-merge-instances (warning) a preserved node without expression whose R label links, for pi,
 //                   positions its L label does not: the instances of the node may merge several

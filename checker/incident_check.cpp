@@ -39,8 +39,8 @@ bool weak(const Rule& r, int i, std::vector<Diagnostic>& out, const char* cond) 
       ok = false;
       Diagnostic d{.code = "I-preserved-node", .condition = cond, .i = i};
       const char* what = dir ? "incoming" : "outgoing";
-      d.message = "preserved node " + L.name(v) + " has " + count_str(l.size(), what, i) + " in L but " +
-                  count_str(rr.size(), what, i) + " in R (Def. 33.1)";
+      d.message = "preserved node " + L.name(v) + " has " + count_str(l.size(), what, i) +
+                  " in L but " + count_str(rr.size(), what, i) + " in R (Def. 33.1)";
       d.nodes = {L.name(v)};
       d.arcs = arc_strs(r, Side::L, l);
       for (auto& s : arc_strs(r, Side::R, rr)) d.arcs.push_back(s);
@@ -52,8 +52,10 @@ bool weak(const Rule& r, int i, std::vector<Diagnostic>& out, const char* cond) 
     if (o.size() == 1 && in.size() == 1) continue;
     ok = false;
     Diagnostic d{.code = "I-added-node", .condition = cond, .i = i};
-    d.message = "added node " + R.name(w) + " is the source of " + count_str(o.size(), "outgoing", i) + " and the target of " +
-                count_str(in.size(), "incoming", i) + " in R; exactly one each is required (Def. 33.2)";
+    d.message = "added node " + R.name(w) + " is the source of " +
+                count_str(o.size(), "outgoing", i) + " and the target of " +
+                count_str(in.size(), "incoming", i) +
+                " in R; exactly one each is required (Def. 33.2)";
     d.nodes = {R.name(w)};
     d.arcs = arc_strs(r, Side::R, o);
     for (auto& s : arc_strs(r, Side::R, in))
@@ -75,9 +77,11 @@ bool check_combinatorial(const Rule& r, std::vector<Diagnostic>& out) {
       for (auto& [i, arcs] : by) {
         if (arcs.size() <= 1) continue;
         ok = false;
-        Diagnostic d{.code = "comb-multiple-arcs", .condition = "combinatorial", .i = i, .side = Side::L};
-        d.message = "node " + L.name(v) + " is the " + (dir ? "target" : "source") + " of " + std::to_string(arcs.size()) +
-                    " " + std::to_string(i) + "-arcs in L; no injective match into a combinatorial graph exists (Def. 35)";
+        Diagnostic d{
+            .code = "comb-multiple-arcs", .condition = "combinatorial", .i = i, .side = Side::L};
+        d.message = "node " + L.name(v) + " is the " + (dir ? "target" : "source") + " of " +
+                    std::to_string(arcs.size()) + " " + std::to_string(i) +
+                    "-arcs in L; no injective match into a combinatorial graph exists (Def. 35)";
         d.nodes = {L.name(v)};
         d.arcs = arc_strs(r, Side::L, arcs);
         out.push_back(std::move(d));
@@ -87,7 +91,9 @@ bool check_combinatorial(const Rule& r, std::vector<Diagnostic>& out) {
   return ok;
 }
 
-bool check_weak_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) { return weak(r, i, out, "w-I"); }
+bool check_weak_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) {
+  return weak(r, i, out, "w-I");
+}
 
 bool check_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) {
   bool ok = weak(r, i, out, symbol(Constraint::IncidentArcs));
@@ -96,10 +102,14 @@ bool check_incident_arcs(const Rule& r, int i, std::vector<Diagnostic>& out) {
     const auto o = arcs_with(L, L.out_arcs(v), i), in = arcs_with(L, L.in_arcs(v), i);
     if (o.size() == 1 && in.size() == 1) continue;
     ok = false;
-    Diagnostic d{.code = "I-deleted-node", .condition = symbol(Constraint::IncidentArcs), .i = i, .side = Side::L};
-    d.message = "deleted node " + L.name(v) + " is the source of " + count_str(o.size(), "outgoing", i) + " and the target of " +
-                count_str(in.size(), "incoming", i) +
-                " in L; exactly one each is required, else a match leaves dangling arcs (Def. 34, Fact 1)";
+    Diagnostic d{.code = "I-deleted-node",
+                 .condition = symbol(Constraint::IncidentArcs),
+                 .i = i,
+                 .side = Side::L};
+    d.message =
+        "deleted node " + L.name(v) + " is the source of " + count_str(o.size(), "outgoing", i) +
+        " and the target of " + count_str(in.size(), "incoming", i) +
+        " in L; exactly one each is required, else a match leaves dangling arcs (Def. 34, Fact 1)";
     d.nodes = {L.name(v)};
     d.arcs = arc_strs(r, Side::L, o);
     for (auto& s : arc_strs(r, Side::L, in))

@@ -25,15 +25,18 @@ bool check_non_orientation(const Rule& r, int i, std::vector<Diagnostic>& out) {
       const std::string what = std::string(to_string(changed)) + " arc " + r.arc_str(side, a);
       if (rev.empty()) {
         d.code = "O-no-reverse";
-        d.message = "the " + what + " has no reverse " + std::to_string(i) + "-arc in " + to_string(side) + " (Def. 37)";
+        d.message = "the " + what + " has no reverse " + std::to_string(i) + "-arc in " +
+                    to_string(side) + " (Def. 37)";
       } else if (rev.size() > 1) {
         d.code = "O-several-reverses";
-        d.message = "the " + what + " has " + std::to_string(rev.size()) + " reverse arcs; a unique one is required (Def. 37)";
+        d.message = "the " + what + " has " + std::to_string(rev.size()) +
+                    " reverse arcs; a unique one is required (Def. 37)";
         for (ArcId b : rev) d.arcs.push_back(r.arc_str(side, b));
       } else if (r.arc_status(side, rev[0]) != changed) {
         d.code = "O-status-mismatch";
-        d.message = "the " + what + " has the " + to_string(r.arc_status(side, rev[0])) + " reverse " +
-                    r.arc_str(side, rev[0]) + "; both must be " + to_string(changed) + " (Def. 37)";
+        d.message = "the " + what + " has the " + to_string(r.arc_status(side, rev[0])) +
+                    " reverse " + r.arc_str(side, rev[0]) + "; both must be " + to_string(changed) +
+                    " (Def. 37)";
         d.arcs.push_back(r.arc_str(side, rev[0]));
       } else {
         continue;

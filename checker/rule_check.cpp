@@ -12,10 +12,13 @@ CheckReport check_rule(const Rule& r, bool model_completion) {
   auto& d = rep.diagnostics;
   rep.conditions.emplace_back("combinatorial", check_combinatorial(r, d));
   const auto labels = r.labels();
-  for (int i : labels) rep.conditions.emplace_back(condition_text(symbol(Constraint::IncidentArcs), i), check_incident_arcs(r, i, d));
+  for (int i : labels)
+    rep.conditions.emplace_back(condition_text(symbol(Constraint::IncidentArcs), i),
+                                check_incident_arcs(r, i, d));
   for (int i : labels)
     if (!(r.kind() == MapKind::OMap && i == 1))
-      rep.conditions.emplace_back(condition_text(symbol(Constraint::NonOrientation), i), check_non_orientation(r, i, d));
+      rep.conditions.emplace_back(condition_text(symbol(Constraint::NonOrientation), i),
+                                  check_non_orientation(r, i, d));
   bool any_pair = false;
   for (int i : labels)
     for (int j : labels) any_pair = any_pair || j >= i + 2;
@@ -24,7 +27,8 @@ CheckReport check_rule(const Rule& r, bool model_completion) {
   for (int i : labels)
     for (int j : labels)
       if (j >= i + 2)
-        rep.conditions.emplace_back(condition_text(symbol(Constraint::Cycle), i, j), check_cycle(c, i, j, d));
+        rep.conditions.emplace_back(condition_text(symbol(Constraint::Cycle), i, j),
+                                    check_cycle(c, i, j, d));
   return rep;
 }
 

@@ -14,8 +14,8 @@
 //   check_cycle                Def. 40, C_r(i,j), on the ij-completion of the rule (per constraint,
 //                              exactly as Theorem 3: graphs satisfying I and C only);
 //   check_rule                 the model-level conjunction (§3.4): for an n-G-map rule
-//                              combinatorial, I_r(0..n), O_r(0..n), C_r((0..n)_{+2}); for an n-O-map
-//                              rule combinatorial, I_r(1..n), O_r(2..n), C_r((1..n)_{+2}).
+//                              combinatorial, I_r(0..n), O_r(0..n), C_r((0..n)_{+2}); for an
+//                              n-O-map rule combinatorial, I_r(1..n), O_r(2..n), C_r((1..n)_{+2}).
 //                              I_r and O_r are checked on the rule as written; C_r on its model
 //                              completion (complete_for_model, below).
 //
@@ -28,7 +28,8 @@
 //    unique in a combinatorial rule); an open chain is one maximal path; a closed chain of k arcs
 //    gives its k rotations, each a maximal non-overlapping path. Def. 38.5 then drops every path
 //    lying on an ijij-cycle of the side (interface arcs included, Ex. 39).
-//  * ij-completion is applied to L only (completing R would change the matches); unclosed iji-paths of R are notes.
+//  * ij-completion is applied to L only (completing R would change the matches); unclosed iji-paths
+//  of R are notes.
 //    A completion arc whose end is not preserved is not added (the deleted end then fails I_r);
 //    a conflicting completion (the end already has another j-arc) is a note: L can then never
 //    match a graph satisfying C_G(i,j).
@@ -39,8 +40,8 @@
 #include <vector>
 
 #include "checker/diagnostic.hpp"
-#include "model/rewrite/rule.hpp"
 #include "model/graph/dgraph.hpp"
+#include "model/rewrite/rule.hpp"
 
 namespace gmr::checker {
 using graph::ArcId;
@@ -70,7 +71,7 @@ Rule ij_complete(const Rule& r, int i, int j, std::vector<Diagnostic>* notes = n
 struct OptimalPath {
   std::vector<ArcId> arcs;  // on the side's graph
   Node source, target;
-  std::vector<int> word;    // labels along the path
+  std::vector<int> word;  // labels along the path
 };
 // (i,j)-optimal paths of L (right = false) or R of r, which must be combinatorial on i and j on
 // that side (else Error(Usage)). r is used as given (complete it first).

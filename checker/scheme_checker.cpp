@@ -16,7 +16,8 @@ using words::RewritingSystem;
 
 std::vector<int> gmap_word_normal_form(int n, const std::vector<int>& w) {
   std::vector<int> out;
-  for (const words::Letter& l : RewritingSystem::gmap(n).normal_form(words::word_of_dims(w))) out.push_back(l.dim);
+  for (const words::Letter& l : RewritingSystem::gmap(n).normal_form(words::word_of_dims(w)))
+    out.push_back(l.dim);
   return out;
 }
 
@@ -43,14 +44,18 @@ class Checker {
     rep_.conditions.emplace_back("structure", structure_ok);
     rep_.conditions.emplace_back("hooks", hooks());
     if (!structure_ok) return std::move(rep_);
-    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back(condition_text(symbol(Constraint::IncidentArcs), d), incident(d));
-    for (int d = 0; d <= s_.dimension; ++d) rep_.conditions.emplace_back(condition_text(symbol(Constraint::NonOrientation), d), true);
+    for (int d = 0; d <= s_.dimension; ++d)
+      rep_.conditions.emplace_back(condition_text(symbol(Constraint::IncidentArcs), d),
+                                   incident(d));
+    for (int d = 0; d <= s_.dimension; ++d)
+      rep_.conditions.emplace_back(condition_text(symbol(Constraint::NonOrientation), d), true);
     for (int i = 0; i <= s_.dimension; ++i)
       for (int j = i + 2; j <= s_.dimension; ++j)
         rep_.conditions.emplace_back(condition_text(symbol(Constraint::Cycle), i, j), cycle(i, j));
     bool has_expressions = !s_.embeddings.empty();
     for (const auto& n : s_.right.nodes) has_expressions |= !n.expressions.empty();
-    if (has_expressions && opt_.embeddings) rep_.conditions.emplace_back("embeddings", check_embeddings(s_, rep_.diagnostics));
+    if (has_expressions && opt_.embeddings)
+      rep_.conditions.emplace_back("embeddings", check_embeddings(s_, rep_.diagnostics));
     if (!s_.precondition.empty())
       add("S-precondition", Severity::Warning, "structure", std::nullopt, {},
           "the Jerboa precondition is not evaluated; the verdict is about the topology only");
@@ -90,7 +95,8 @@ class Checker {
     for (uint32_t v = 0; v < s_.left.size(); ++v)
       if (auto it = right_index.find(s_.left.nodes[v].name); it != right_index.end()) {
         counterpart_[0][v] = it->second;
-        if (counterpart_[1][it->second] == kNone) counterpart_[1][it->second] = v;  // the first, as find()
+        if (counterpart_[1][it->second] == kNone)
+          counterpart_[1][it->second] = v;  // the first, as find()
       }
     for (Side r : graph::kSides) {
       const GraphScheme& g = side(r);
@@ -128,8 +134,8 @@ class Checker {
       if (x == OrbitType::kHole || x < 0 || x > n || !seen.insert(x).second) orbit_ok = false;
     if (!orbit_ok) {
       add("S-orbit", Severity::Error, "structure", std::nullopt, {},
-          "the rule's orbit type " + s_.orbit.str() + " must list distinct dimensions of 0.." + std::to_string(n) +
-              " without `_`");
+          "the rule's orbit type " + s_.orbit.str() + " must list distinct dimensions of 0.." +
+              std::to_string(n) + " without `_`");
       ok = false;
     }
     for (Side r : graph::kSides) {
@@ -144,15 +150,15 @@ class Checker {
         }
         if (nd.label.size() != s_.orbit.size()) {
           add("S-label-arity", Severity::Error, "structure", r, {nd.name},
-              "label " + nd.label.str() + " has arity " + std::to_string(nd.label.size()) + ", the orbit type " +
-                  s_.orbit.str() + " has " + std::to_string(s_.orbit.size()));
+              "label " + nd.label.str() + " has arity " + std::to_string(nd.label.size()) +
+                  ", the orbit type " + s_.orbit.str() + " has " + std::to_string(s_.orbit.size()));
           ok = false;
         }
         for (int x : nd.label.dims())
           if (x != OrbitType::kHole && (x < 0 || x > n)) {
             add("S-dim-range", Severity::Error, "structure", r, {nd.name},
-                "label " + nd.label.str() + " uses dimension " + std::to_string(x) + " outside 0.." +
-                    std::to_string(n));
+                "label " + nd.label.str() + " uses dimension " + std::to_string(x) +
+                    " outside 0.." + std::to_string(n));
             ok = false;
           }
       }
@@ -163,9 +169,10 @@ class Checker {
           continue;
         }
         if (e.dim < 0 || e.dim > n) {
-          auto& d = add("S-dim-range", Severity::Error, "structure", r,
-                        {g.nodes[e.a].name, g.nodes[e.b].name},
-                        "arc dimension " + std::to_string(e.dim) + " outside 0.." + std::to_string(n));
+          auto& d =
+              add("S-dim-range", Severity::Error, "structure", r,
+                  {g.nodes[e.a].name, g.nodes[e.b].name},
+                  "arc dimension " + std::to_string(e.dim) + " outside 0.." + std::to_string(n));
           d.arcs = {arc_text(g, e)};
           ok = false;
         }
@@ -198,7 +205,8 @@ class Checker {
     for (size_t h = 0; h < s_.hooks.size(); ++h) {
       auto v = s_.left.find(s_.hooks[h]);
       if (!v) {
-        add("S-no-hook", Severity::Error, "hooks", Side::L, {s_.hooks[h]}, "hook " + s_.hooks[h] + " is not an L node");
+        add("S-no-hook", Severity::Error, "hooks", Side::L, {s_.hooks[h]},
+            "hook " + s_.hooks[h] + " is not an L node");
         ok = false;
         continue;
       }
@@ -210,7 +218,8 @@ class Checker {
         ok = false;
       } else if (h == 0 && lab != s_.orbit) {
         add("S-hook-orbit", Severity::Error, "hooks", Side::L, {s_.hooks[h]},
-            "the reference hook's label " + lab.str() + " differs from the rule's orbit type " + s_.orbit.str());
+            "the reference hook's label " + lab.str() + " differs from the rule's orbit type " +
+                s_.orbit.str());
         ok = false;
       }
     }
@@ -224,8 +233,8 @@ class Checker {
         ok = false;
       } else if (hooks_of[c].size() > 1) {
         add("S-several-hooks", Severity::Error, "hooks", Side::L, hooks_of[c],
-            "connected component {" + join(members) + "} of L has " + std::to_string(hooks_of[c].size()) +
-                " hooks (" + join(hooks_of[c]) + ")");
+            "connected component {" + join(members) + "} of L has " +
+                std::to_string(hooks_of[c].size()) + " hooks (" + join(hooks_of[c]) + ")");
         ok = false;
       }
     }
@@ -258,15 +267,17 @@ class Checker {
         }
         if (cr != cl) {
           add("I-preserved-node", Severity::Error, cond, cl ? Side::L : Side::R, {nm},
-              "preserved node " + nm + (cl ? " has a " + ds + "-arc in L but none in R"
-                                           : " gains a " + ds + "-arc in R it does not have in L") +
+              "preserved node " + nm +
+                  (cl ? " has a " + ds + "-arc in L but none in R"
+                      : " gains a " + ds + "-arc in R it does not have in L") +
                   " (E2): its instances would have " + (cl ? "no " : "two ") + ds + "-links");
           ok = false;
         }
       } else if (cl != 1) {
         add("I-deleted-node", Severity::Error, cond, Side::L, {nm},
-            "deleted node " + nm + " has no " + ds + "-arc in L (E3, gluing condition): the links of its darts "
-            "outside the match would dangle, so the rule never applies");
+            "deleted node " + nm + " has no " + ds +
+                "-arc in L (E3, gluing condition): the links of its darts "
+                "outside the match would dangle, so the rule never applies");
         ok = false;
       }
     }
@@ -290,7 +301,8 @@ class Checker {
     const GraphScheme& g = side(r);
     std::vector<std::array<CoreArc, 2>> out(g.size());
     const int lab[2] = {i, j};
-    // Label positions first, then explicit arcs in order (the last one wins, as in a per-node scan).
+    // Label positions first, then explicit arcs in order (the last one wins, as in a per-node
+    // scan).
     for (uint32_t v = 0; v < g.size(); ++v)
       for (int k = 0; k < 2; ++k)
         for (size_t p = 0; p < g.nodes[v].label.size(); ++p)
@@ -320,7 +332,8 @@ class Checker {
   // Is `this_arc` (an out-arc on side `this_side`, towards the node named tgt_name) preserved, i.e.
   // is `other_arc` (the same node's out-arc with the same label on the other side) the same arc:
   // same letter and a target of the same name, the target name being read on the other side.
-  bool same_arc(const CoreArc& other_arc, const std::string& tgt_name, const CoreArc& this_arc, Side this_side) const {
+  bool same_arc(const CoreArc& other_arc, const std::string& tgt_name, const CoreArc& this_arc,
+                Side this_side) const {
     return other_arc.exists && this_arc.exists && other_arc.letter == this_arc.letter &&
            side(other(this_side)).nodes[other_arc.target].name == tgt_name;
   }
@@ -332,15 +345,16 @@ class Checker {
       for (uint32_t v = 0; v < side(r).size(); ++v)
         if (count_arcs(r, v, i) > 1 || count_arcs(r, v, j) > 1) {
           add("C-skipped", Severity::Note, cond, r, {side(r).nodes[v].name},
-              cond + " not evaluated: a node has two " + std::to_string(i) + "- or " + std::to_string(j) + "-arcs");
+              cond + " not evaluated: a node has two " + std::to_string(i) + "- or " +
+                  std::to_string(j) + "-arcs");
           return true;
         }
     return false;
   }
 
   // The (i,j)-cores of L and R, and which of their arcs are changed (deleted in L, added in R): an
-  // arc is preserved iff the same node has an arc with the same label, letter and target name on the
-  // other side (Def. 46).
+  // arc is preserved iff the same node has an arc with the same label, letter and target name on
+  // the other side (Def. 46).
   void cores_and_changed_arcs(SideData (&sd)[2], int i, int j) const {
     for (Side r : graph::kSides) sd[index_of(r)].core = core(r, i, j);
     for (Side r : graph::kSides) {
@@ -354,7 +368,8 @@ class Checker {
           const CoreArc& a = sd[index_of(r)].core[v][k];
           if (!a.exists) continue;
           const bool preserved =
-              counterpart && same_arc(sd[index_of(other(r))].core[*counterpart][k], g.nodes[a.target].name, a, r);
+              counterpart &&
+              same_arc(sd[index_of(other(r))].core[*counterpart][k], g.nodes[a.target].name, a, r);
           sd[index_of(r)].changed[v][k] = !preserved;
         }
       }
@@ -398,9 +413,9 @@ class Checker {
             std::sort(key.begin(), key.end());
             if (reported.insert("len" + std::string(to_string(r)) + join(key)).second) {
               auto& d = add("C-cycle-length", Severity::Error, cond, r, names,
-                            "alternating (" + std::to_string(i) + "," + std::to_string(j) + ")-cycle of length " +
-                                std::to_string(steps) + " through " + join(names) +
-                                " (E10): its instances cannot be ijij-cycles");
+                            "alternating (" + std::to_string(i) + "," + std::to_string(j) +
+                                ")-cycle of length " + std::to_string(steps) + " through " +
+                                join(names) + " (E10): its instances cannot be ijij-cycles");
               d.path = names;
             }
             ok = false;
@@ -422,8 +437,9 @@ class Checker {
             if (reported.insert("word" + std::string(to_string(r)) + join(key)).second) {
               auto& d = add("C-cycle-word", Severity::Error, cond, r, names,
                             "the (" + std::to_string(lab[k0]) + "," + std::to_string(lab[1 - k0]) +
-                                ")-cycle through " + join(names) + " reads the word " + word_text(word) +
-                                ", whose normal form " + word_text(gmap_word_normal_form(s_.dimension, word)) +
+                                ")-cycle through " + join(names) + " reads the word " +
+                                word_text(word) + ", whose normal form " +
+                                word_text(gmap_word_normal_form(s_.dimension, word)) +
                                 " is not ε (E11): its instances do not close");
               d.path = names;
             }
@@ -467,7 +483,8 @@ class Checker {
           }
           p.tgt = x;
           bool all_on_cycles = true;
-          for (auto [y, l] : p.arcs) all_on_cycles = all_on_cycles && sd[index_of(r)].on_cycle[y][l];
+          for (auto [y, l] : p.arcs)
+            all_on_cycles = all_on_cycles && sd[index_of(r)].on_cycle[y][l];
           if (all_on_cycles) continue;
           for (auto [y, l] : p.arcs) sd[index_of(r)].on_path[y][l] = true;
           sd[index_of(r)].paths.push_back(std::move(p));
@@ -485,28 +502,36 @@ class Checker {
       for (const auto& p : sd[index_of(r)].paths) {
         std::vector<const SideData::Path*> partners;
         for (const auto& q : sd[index_of(other(r))].paths)
-          if (h.nodes[q.src].name == g.nodes[p.src].name && h.nodes[q.tgt].name == g.nodes[p.tgt].name &&
-              q.labels == p.labels)
+          if (h.nodes[q.src].name == g.nodes[p.src].name &&
+              h.nodes[q.tgt].name == g.nodes[p.tgt].name && q.labels == p.labels)
             partners.push_back(&q);
         std::vector<std::string> names{g.nodes[p.src].name};
-        for (size_t t = 0; t < p.arcs.size(); ++t) names.push_back(g.nodes[c_target(sd[index_of(r)], p.arcs[t])].name);
+        for (size_t t = 0; t < p.arcs.size(); ++t)
+          names.push_back(g.nodes[c_target(sd[index_of(r)], p.arcs[t])].name);
         std::string lw;
         for (int l : p.labels) lw += std::to_string(l);
-        const std::string what = "the (" + std::to_string(i) + "," + std::to_string(j) + ")-optimal path " +
-                                 join(names) + " of " + to_string(r) + " (labels " + lw + ")";
+        const std::string what = "the (" + std::to_string(i) + "," + std::to_string(j) +
+                                 ")-optimal path " + join(names) + " of " + to_string(r) +
+                                 " (labels " + lw + ")";
         if (partners.size() != 1) {
-          auto& d = add(partners.empty() ? "C-incoherent" : "C-ambiguous", Severity::Error, cond, r,
-                        {g.nodes[p.src].name, g.nodes[p.tgt].name},
-                        what + (partners.empty() ? " has no coherent optimal path in " + std::string(to_string(other(r)))
-                                                 : " has " + std::to_string(partners.size()) +
-                                                       " coherent optimal paths in " + to_string(other(r))) +
-                            " (E8): some instance of an ijij-cycle through it is broken");
+          auto& d =
+              add(partners.empty() ? "C-incoherent" : "C-ambiguous", Severity::Error, cond, r,
+                  {g.nodes[p.src].name, g.nodes[p.tgt].name},
+                  what +
+                      (partners.empty()
+                           ? " has no coherent optimal path in " + std::string(to_string(other(r)))
+                           : " has " + std::to_string(partners.size()) +
+                                 " coherent optimal paths in " + to_string(other(r))) +
+                      " (E8): some instance of an ijij-cycle through it is broken");
           d.path = names;
           ok = false;
-        } else if (gmap_word_normal_form(s_.dimension, p.word) != gmap_word_normal_form(s_.dimension, partners[0]->word)) {
-          auto& d = add("C-word", Severity::Error, cond, r, {g.nodes[p.src].name, g.nodes[p.tgt].name},
-                        what + " reads the word " + word_text(p.word) + ", its partner " + word_text(partners[0]->word) +
-                            ": not congruent (E9), the instances end at different darts");
+        } else if (gmap_word_normal_form(s_.dimension, p.word) !=
+                   gmap_word_normal_form(s_.dimension, partners[0]->word)) {
+          auto& d =
+              add("C-word", Severity::Error, cond, r, {g.nodes[p.src].name, g.nodes[p.tgt].name},
+                  what + " reads the word " + word_text(p.word) + ", its partner " +
+                      word_text(partners[0]->word) +
+                      ": not congruent (E9), the instances end at different darts");
           d.path = names;
           ok = false;
         }
@@ -541,14 +566,16 @@ class Checker {
           msg = "has no " + ds + "-arc in R";
         else
           msg = "gets in R a " + ds + "-arc (to " + s_.right.nodes[ra.target].name +
-                ") that is neither on an alternating (" + std::to_string(i) + "," + std::to_string(j) +
-                ")-cycle nor on an optimal path";
+                ") that is neither on an alternating (" + std::to_string(i) + "," +
+                std::to_string(j) + ")-cycle nor on an optimal path";
         if (l)
           add("C-preserved-node", Severity::Error, cond, Side::R, {nm},
-              "preserved node " + nm + (opt_.algorithm3_strict ? " with a " : " with a deleted ") + ds +
-                  "-arc in L " + msg + (opt_.algorithm3_strict ? " (E12, Algorithm 3)" : " (E12, Def. 40.2)"));
+              "preserved node " + nm + (opt_.algorithm3_strict ? " with a " : " with a deleted ") +
+                  ds + "-arc in L " + msg +
+                  (opt_.algorithm3_strict ? " (E12, Algorithm 3)" : " (E12, Def. 40.2)"));
         else
-          add("C-added-node", Severity::Error, cond, Side::R, {nm}, "added node " + nm + " " + msg + " (E13)");
+          add("C-added-node", Severity::Error, cond, Side::R, {nm},
+              "added node " + nm + " " + msg + " (E13)");
         ok = false;
       }
     }
@@ -568,7 +595,9 @@ class Checker {
     return ok;
   }
 
-  static uint32_t c_target(const SideData& sd, std::pair<uint32_t, int> a) { return sd.core[a.first][a.second].target; }
+  static uint32_t c_target(const SideData& sd, std::pair<uint32_t, int> a) {
+    return sd.core[a.first][a.second].target;
+  }
 
   const RuleScheme& s_;
   SchemeCheckOptions opt_;
@@ -577,6 +606,8 @@ class Checker {
 
 }  // namespace
 
-CheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt) { return Checker(s, opt).run(); }
+CheckReport check_scheme(const RuleScheme& s, const SchemeCheckOptions& opt) {
+  return Checker(s, opt).run();
+}
 
 }  // namespace gmr::checker

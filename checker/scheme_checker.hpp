@@ -1,10 +1,11 @@
 // Static checker for Jerboa rule schemes (thesis §4.4–4.7 and Ch. 6).
 //
-// Diagnostics are the checker's one Diagnostic/Severity (diagnostic.hpp); JSON in docs/check-format.md.
+// Diagnostics are the checker's one Diagnostic/Severity (diagnostic.hpp); JSON in
+// docs/check-format.md.
 //
-// A scheme is read as a (W×D)-rule scheme (thesis Fig. 6.15 translation): an explicit arc a –d– b is
-// an (ε,d)-arc in both directions (one loop arc when a == b), and label position p with o^v[p] = d
-// is an (o[p], d)-loop on v. Arcs are preserved iff they have the same ends and the same full
+// A scheme is read as a (W×D)-rule scheme (thesis Fig. 6.15 translation): an explicit arc a –d– b
+// is an (ε,d)-arc in both directions (one loop arc when a == b), and label position p with o^v[p] =
+// d is an (o[p], d)-loop on v. Arcs are preserved iff they have the same ends and the same full
 // (w,d) label on both sides (Def. 46). The conditions checked, all local and syntactic:
 //
 // Jerboa's practical checks (code, severity):
@@ -47,8 +48,8 @@
 //   C-added-node      error   E13 (Def. 40.3): the same for an added node
 //   C-skipped         note    C_S(i,j) not evaluated because a node has two i- or j-arcs
 //
-// Algorithm 3 versus Def. 40: the thesis' Algorithm 3 (lines 24–27) tests every preserved node having ANY
-// i-arc in L, while Def. 40.2 concerns deleted arcs only. The default follows Def. 40;
+// Algorithm 3 versus Def. 40: the thesis' Algorithm 3 (lines 24–27) tests every preserved node
+// having ANY i-arc in L, while Def. 40.2 concerns deleted arcs only. The default follows Def. 40;
 // `algorithm3_strict` reproduces Algorithm 3 (tests show a scheme on which they disagree).
 // ij-completion of L (Assumption 5) is not performed on schemes: Jerboa schemes match orbits whose
 // implicit arcs are already complete; an L-side iji-path that is not closed in L is judged as is.
@@ -67,7 +68,7 @@ using scheme::RuleScheme;
 
 struct SchemeCheckOptions {
   bool algorithm3_strict = false;  // Algorithm 3 literally (see above)
-  bool embeddings = true;          // the embedding checks (embedding_check.hpp); false: topology only
+  bool embeddings = true;  // the embedding checks (embedding_check.hpp); false: topology only
 };
 
 // The report of a scheme (subject Scheme; its text and gmr.check JSON: diagnostic.hpp).

@@ -1,7 +1,7 @@
 #include "checker/semantic.hpp"
 
-#include "model/rewrite/dpo.hpp"
 #include "model/core/error.hpp"
+#include "model/rewrite/dpo.hpp"
 
 namespace gmr::checker {
 using namespace gmr::graph;
@@ -9,7 +9,8 @@ using namespace gmr::rewrite;
 
 SemanticVerdict semantic_verdict(const Rule& r, const MapFamily& f, bool stop_at_first) {
   if (r.kind() != f.kind || r.dimension() != f.n)
-    throw Error(ErrorCode::Usage, "the rule and the map family have different models", "rule " + r.name());
+    throw Error(ErrorCode::Usage, "the rule and the map family have different models",
+                "rule " + r.name());
   SemanticVerdict v;
   for (size_t k = 0; k < f.graphs.size(); ++k) {
     const DGraph& G = f.graphs[k];

@@ -1,5 +1,6 @@
-// Semantic verdicts of concrete rules on the bounded family of small maps (model/graph/map_family.hpp):
-// the reference the static checker and the SMT encodings are compared with.
+// Semantic verdicts of concrete rules on the bounded family of small maps
+// (model/graph/map_family.hpp): the reference the static checker and the SMT encodings are compared
+// with.
 //
 //  * `semantic_verdict(rule, family)`: applies the rule through EVERY match (injective,
 //    label-preserving) satisfying the gluing condition on every map of the family and checks that
@@ -14,10 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "model/core/map.hpp"
 #include "model/graph/constraints.hpp"
 #include "model/graph/dgraph.hpp"
 #include "model/graph/map_family.hpp"
-#include "model/core/map.hpp"
 #include "model/rewrite/match.hpp"
 #include "model/rewrite/rule.hpp"
 
@@ -35,9 +36,9 @@ struct SemanticWitness {
 };
 
 struct SemanticVerdict {
-  size_t matches = 0;       // matches found (gluing or not)
-  size_t applications = 0;  // matches satisfying the gluing condition
-  bool preserves = true;    // every application yields a map of the model
+  size_t matches = 0;                      // matches found (gluing or not)
+  size_t applications = 0;                 // matches satisfying the gluing condition
+  bool preserves = true;                   // every application yields a map of the model
   std::optional<SemanticWitness> witness;  // the first breaking application (smallest map first)
   bool applicable() const { return applications > 0; }
 };

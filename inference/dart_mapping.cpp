@@ -4,9 +4,9 @@
 #include <numeric>
 
 #include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
 #include "model/map_io/json_reader.hpp"
 #include "model/map_io/json_writer.hpp"
-#include "model/core/orbit.hpp"
 #include "model/map_io/read_file.hpp"
 
 namespace gmr::inference {
@@ -63,7 +63,8 @@ DartMapping parse_mapping(std::string_view text, const std::string& source) {
       if (op.orbit.has_hole() || op.after_orbit.has_hole())
         o.fail("an orbit pair uses orbit types without `_`");
       if (op.orbit.size() != op.after_orbit.size())
-        o["after_orbit"].fail("\"orbit\" and \"after_orbit\" must have the same size (positional relabeling)");
+        o["after_orbit"].fail(
+            "\"orbit\" and \"after_orbit\" must have the same size (positional relabeling)");
       m.orbits.push_back(op);
     }
   }
@@ -71,7 +72,8 @@ DartMapping parse_mapping(std::string_view text, const std::string& source) {
     if (auto sel = root.get(key)) {
       std::vector<Dart> darts;
       for (size_t k = 0; k < sel->array_size(); ++k) darts.push_back(read_dart((*sel)[k]));
-      (std::string(key) == "before_selection" ? m.before_selection : m.after_selection) = std::move(darts);
+      (std::string(key) == "before_selection" ? m.before_selection : m.after_selection) =
+          std::move(darts);
     }
   return m;
 }
@@ -90,7 +92,9 @@ std::string mapping_to_json_text(const DartMapping& m) {
   if (!m.orbits.empty()) {
     nlohmann::ordered_json orbits = nlohmann::ordered_json::array();
     for (const auto& o : m.orbits)
-      orbits.push_back({{"before", o.before}, {"after", o.after}, {"orbit", o.orbit.str()},
+      orbits.push_back({{"before", o.before},
+                        {"after", o.after},
+                        {"orbit", o.orbit.str()},
                         {"after_orbit", o.after_orbit.str()}});
     j["orbits"] = orbits;
   }
@@ -100,7 +104,7 @@ std::string mapping_to_json_text(const DartMapping& m) {
 }
 
 std::vector<std::pair<Dart, Dart>> expand_mapping(const Map& before, const Map& after,
-                                                   const DartMapping& m) {
+                                                  const DartMapping& m) {
   // Every pair with its source: pairs[s] for s < pairs.size(), else orbits[s - pairs.size()] (the
   // place named in errors, formatted only when one is raised).
   std::vector<std::pair<Dart, Dart>> out(m.pairs.begin(), m.pairs.end());
@@ -108,21 +112,26 @@ std::vector<std::pair<Dart, Dart>> expand_mapping(const Map& before, const Map& 
   std::iota(source.begin(), source.end(), 0u);
   auto where = [&](size_t k) {
     const size_t s = source[k];
-    return s < m.pairs.size() ? "pairs[" + std::to_string(s) + "]" : "orbits[" + std::to_string(s - m.pairs.size()) + "]";
+    return s < m.pairs.size() ? "pairs[" + std::to_string(s) + "]"
+                              : "orbits[" + std::to_string(s - m.pairs.size()) + "]";
   };
   for (size_t k = 0; k < m.orbits.size(); ++k) {
     const OrbitPair& o = m.orbits[k];
     const std::string at = "orbits[" + std::to_string(k) + "]";
-    if (!before.alive(o.before)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(o.before) + " in the before map", at);
-    if (!after.alive(o.after)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(o.after) + " in the after map", at);
+    if (!before.alive(o.before))
+      throw Error(ErrorCode::Schema, "no dart " + std::to_string(o.before) + " in the before map",
+                  at);
+    if (!after.alive(o.after))
+      throw Error(ErrorCode::Schema, "no dart " + std::to_string(o.after) + " in the after map",
+                  at);
     require_orbit_type(before, o.orbit);
     require_orbit_type(after, o.after_orbit);
     const auto iso = orbit_isomorphism(before, o.orbit, o.before, after, o.after_orbit, o.after);
     if (!iso)
       throw Error(ErrorCode::Schema,
-                  "the " + o.orbit.str() + "-orbit of before dart " + std::to_string(o.before) + " and the " +
-                      o.after_orbit.str() + "-orbit of after dart " + std::to_string(o.after) +
-                      " are not isomorphic (Alg. 5)",
+                  "the " + o.orbit.str() + "-orbit of before dart " + std::to_string(o.before) +
+                      " and the " + o.after_orbit.str() + "-orbit of after dart " +
+                      std::to_string(o.after) + " are not isomorphic (Alg. 5)",
                   at);
     for (auto p : *iso) {
       out.push_back(p);
@@ -134,19 +143,23 @@ std::vector<std::pair<Dart, Dart>> expand_mapping(const Map& before, const Map& 
   uniq.reserve(out.size());
   for (size_t k = 0; k < out.size(); ++k) {
     const auto [g, h] = out[k];
-    if (!before.alive(g)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(g) + " in the before map", where(k));
-    if (!after.alive(h)) throw Error(ErrorCode::Schema, "no dart " + std::to_string(h) + " in the after map", where(k));
+    if (!before.alive(g))
+      throw Error(ErrorCode::Schema, "no dart " + std::to_string(g) + " in the before map",
+                  where(k));
+    if (!after.alive(h))
+      throw Error(ErrorCode::Schema, "no dart " + std::to_string(h) + " in the after map",
+                  where(k));
     const bool sb = seen_b[g] != UINT32_MAX, sa = seen_a[h] != UINT32_MAX;
     if (sb && sa && seen_b[g] == h) continue;  // the same pair twice (e.g. overlapping orbit pairs)
     if (sb)
       throw Error(ErrorCode::Schema,
-                  "before dart " + std::to_string(g) + " is mapped twice (to " + std::to_string(seen_b[g]) +
-                      " and " + std::to_string(h) + ")",
+                  "before dart " + std::to_string(g) + " is mapped twice (to " +
+                      std::to_string(seen_b[g]) + " and " + std::to_string(h) + ")",
                   where(k));
     if (sa)
       throw Error(ErrorCode::Schema,
-                  "after dart " + std::to_string(h) + " is the image of two darts (" + std::to_string(seen_a[h]) +
-                      " and " + std::to_string(g) + ")",
+                  "after dart " + std::to_string(h) + " is the image of two darts (" +
+                      std::to_string(seen_a[h]) + " and " + std::to_string(g) + ")",
                   where(k));
     seen_b[g] = h;
     seen_a[h] = g;
@@ -156,12 +169,14 @@ std::vector<std::pair<Dart, Dart>> expand_mapping(const Map& before, const Map& 
   return uniq;
 }
 
-JointGraph joint_from_pair(const Map& before, const Map& after, const DartMapping& m, JointIndex* index) {
+JointGraph joint_from_pair(const Map& before, const Map& after, const DartMapping& m,
+                           JointIndex* index) {
   if (before.is_omap() || after.is_omap())
     throw Error(ErrorCode::Usage, "rule inference works on G-maps, not O-maps");
   if (before.dimension() != after.dimension())
-    throw Error(ErrorCode::Usage, "the before map has dimension " + std::to_string(before.dimension()) +
-                                      " and the after map " + std::to_string(after.dimension()));
+    throw Error(ErrorCode::Usage, "the before map has dimension " +
+                                      std::to_string(before.dimension()) + " and the after map " +
+                                      std::to_string(after.dimension()));
   const auto pairs = expand_mapping(before, after, m);
   const int n = before.dimension();
   // Selected darts (all live darts without a selection).
@@ -183,8 +198,14 @@ JointGraph joint_from_pair(const Map& before, const Map& after, const DartMappin
   const auto sb = selected(before, m.before_selection, "before_selection");
   const auto sa = selected(after, m.after_selection, "after_selection");
   for (auto [g, h] : pairs) {
-    if (!sb[g]) throw Error(ErrorCode::Schema, "before dart " + std::to_string(g) + " is mapped but not selected", "before_selection");
-    if (!sa[h]) throw Error(ErrorCode::Schema, "after dart " + std::to_string(h) + " is mapped but not selected", "after_selection");
+    if (!sb[g])
+      throw Error(ErrorCode::Schema,
+                  "before dart " + std::to_string(g) + " is mapped but not selected",
+                  "before_selection");
+    if (!sa[h])
+      throw Error(ErrorCode::Schema,
+                  "after dart " + std::to_string(h) + " is mapped but not selected",
+                  "after_selection");
   }
   JointGraph j(n);
   j.reserve(before.size() + after.size());

@@ -1,5 +1,6 @@
-// Mappings of preserved darts from a before map G to an after map H (thesis §7.1.2 and §7.3). A mapping is a set of dart pairs (g, h): dart g of G is preserved as dart h of H. It
-// must be injective both ways. Three ways to give one:
+// Mappings of preserved darts from a before map G to an after map H (thesis §7.1.2 and §7.3). A
+// mapping is a set of dart pairs (g, h): dart g of G is preserved as dart h of H. It must be
+// injective both ways. Three ways to give one:
 //  * identity on dart ids: every dart id alive in both maps is paired with itself (the snapshot
 //    mode of Jerboa Studio: one object edited in place, e.g. by the scheme engine, which keeps the
 //    ids of preserved darts);
@@ -57,7 +58,7 @@ std::string mapping_to_json_text(const DartMapping& m);
 // (located "pairs[k]" / "orbits[k]") for a dead dart, a dart paired twice on either side, or
 // orbits that are not isomorphic.
 std::vector<std::pair<Dart, Dart>> expand_mapping(const Map& before, const Map& after,
-                                                   const DartMapping& m);
+                                                  const DartMapping& m);
 
 // κ(G, H) (thesis Def. 36 on maps): the (selected) darts of G on side L, then those of H on side R,
 // links copied (undefined towards unselected darts), one κ-link per mapped pair. Both maps must be

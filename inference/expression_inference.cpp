@@ -53,7 +53,8 @@ Q rationalize(double x) {
 std::vector<uint32_t> orbit_ids(const Map& g, DimMask mask) {
   std::vector<uint32_t> id(g.capacity(), UINT32_MAX);
   uint32_t n = 0;
-  visit_all_orbits(g, mask, [&](Dart) { ++n; }, [&](Dart x) { id[x] = n - 1; });
+  visit_all_orbits(
+      g, mask, [&](Dart) { ++n; }, [&](Dart x) { id[x] = n - 1; });
   return id;
 }
 
@@ -103,7 +104,9 @@ std::string q_text(const Q& q) {
 std::vector<uint32_t> classes(const GraphScheme& g, DimMask mask) {
   std::vector<uint32_t> p(g.size());
   std::iota(p.begin(), p.end(), 0u);
-  std::function<uint32_t(uint32_t)> find = [&](uint32_t x) { return p[x] == x ? x : p[x] = find(p[x]); };
+  std::function<uint32_t(uint32_t)> find = [&](uint32_t x) {
+    return p[x] == x ? x : p[x] = find(p[x]);
+  };
   for (const auto& a : g.arcs)
     if (mask >> a.dim & 1u) p[std::max(find(a.a), find(a.b))] = std::min(find(a.a), find(a.b));
   for (uint32_t v = 0; v < g.size(); ++v) p[v] = find(v);
@@ -117,27 +120,34 @@ ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& be
                                       const std::string& embedding) {
   const EmbeddingField* fb = before.find(embedding);
   const EmbeddingField* fa = after.find(embedding);
-  if (!fb || !fa) throw Error(ErrorCode::Usage, "both objects need the embedding '" + embedding + "'", "embedding");
+  if (!fb || !fa)
+    throw Error(ErrorCode::Usage, "both objects need the embedding '" + embedding + "'",
+                "embedding");
   const OrbitType pos_orbit = fb->orbit();
   const DimMask mask = pos_orbit.mask();
   // 1. The associated darts: the scheme applied to a copy of G gives H.
   Map g = before.map;
   const SchemeApplication app = scheme::apply(SchemeEngine(s), g, hooks);
-  if (!app) throw Error(ErrorCode::Usage, "the scheme does not apply to the object before: " + app.why, "scheme " + s.name);
+  if (!app)
+    throw Error(ErrorCode::Usage, "the scheme does not apply to the object before: " + app.why,
+                "scheme " + s.name);
   bool same = g.capacity() == after.map.capacity() && g.dimension() == after.map.dimension();
   for (Dart d = 0; same && d < g.capacity(); ++d) {
     same = g.alive(d) == after.map.alive(d);
-    for (int i = 0; same && g.alive(d) && i <= g.dimension(); ++i) same = g.alpha(i, d) == after.map.alpha(i, d);
+    for (int i = 0; same && g.alive(d) && i <= g.dimension(); ++i)
+      same = g.alpha(i, d) == after.map.alpha(i, d);
   }
   if (!same)
-    throw Error(ErrorCode::Usage, "the object after is not the scheme's result on the object before (dart for dart)",
+    throw Error(ErrorCode::Usage,
+                "the object after is not the scheme's result on the object before (dart for dart)",
                 "scheme " + s.name);
   const Map& G = before.map;
   const size_t sz = app.orbit_size();
   const int n = G.dimension();
   // Points of interest (Table 8.1's representatives): <>, <0>, <0,1>, ..., <0..n>.
   std::vector<OrbitType> pois;
-  for (int k = 0; k <= n + 1; ++k) pois.push_back(k == 0 ? OrbitType{} : OrbitType::range(0, k - 1));
+  for (int k = 0; k <= n + 1; ++k)
+    pois.push_back(k == 0 ? OrbitType{} : OrbitType::range(0, k - 1));
   const std::vector<uint32_t> vertex = orbit_ids(G, mask);
   std::vector<Vec> vertex_pos(*std::max_element(vertex.begin(), vertex.end()) + 1);
   for (Dart d = 0; d < G.capacity(); ++d)
@@ -182,7 +192,8 @@ ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& be
   std::vector<bool> solved(s.right.size(), false);
   ExpressionInference out;
   out.scheme = s;
-  if (!out.scheme.find_embedding(embedding)) out.scheme.embeddings.push_back({embedding, pos_orbit, "point"});
+  if (!out.scheme.find_embedding(embedding))
+    out.scheme.embeddings.push_back({embedding, pos_orbit, "point"});
   const auto sigs = expr::embedding_signatures(out.scheme);
   const auto ctx = expr::check_context(out.scheme, sigs);
   const expr::EmbeddingSignature* sig = nullptr;
@@ -199,7 +210,8 @@ ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& be
     const auto l = s.left_of(v);
     if (!l) continue;
     bool kept = true;
-    for (uint32_t b = 0; b < sz && kept; ++b) kept = after_value(app.comatch_at(v, b)) == poi(OrbitType{}, app.match_at(*l, b));
+    for (uint32_t b = 0; b < sz && kept; ++b)
+      kept = after_value(app.comatch_at(v, b)) == poi(OrbitType{}, app.match_at(*l, b));
     if (kept) {
       out.nodes[v].status = InferredExpression::Status::Kept;
       solve_class(v);
@@ -242,7 +254,8 @@ ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& be
     }
     // Sparsest solution first, as an expression of mass 1.
     std::vector<size_t> support;
-    std::function<bool(size_t, size_t, bool)> search = [&](size_t start, size_t left, bool translation) -> bool {
+    std::function<bool(size_t, size_t, bool)> search = [&](size_t start, size_t left,
+                                                           bool translation) -> bool {
       if (left == 0) {
         auto [m, nc] = system(support, translation);
         const Solve sol = solve(m, nc);
@@ -255,12 +268,15 @@ ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& be
           if (sol.x[k] == 0) continue;
           const Column& c = columns[support[k]];
           const std::string node = s.left.nodes[c.rep].name;
-          const std::string term = c.poi == 0 ? node + ".position"
-                                              : "middle(" + pois[c.poi].str() + "_" + embedding + "(" + node + "))";
-          code += (code.empty() ? "" : " + ") + (sol.x[k] == 1 ? term : q_text(sol.x[k]) + " * " + term);
+          const std::string term =
+              c.poi == 0 ? node + ".position"
+                         : "middle(" + pois[c.poi].str() + "_" + embedding + "(" + node + "))";
+          code += (code.empty() ? "" : " + ") +
+                  (sol.x[k] == 1 ? term : q_text(sol.x[k]) + " * " + term);
         }
         if (translation) {
-          const std::string t = q_text(sol.x[support.size()]) + ", " + q_text(sol.x[support.size() + 1]) + ", " +
+          const std::string t = q_text(sol.x[support.size()]) + ", " +
+                                q_text(sol.x[support.size() + 1]) + ", " +
                                 q_text(sol.x[support.size() + 2]);
           code = mass == 0 ? (code.empty() ? "" : code + " + ") + "point(" + t + ")"
                            : code + " + vector(" + t + ")";
@@ -290,7 +306,8 @@ ExpressionInference infer_expressions(const RuleScheme& s, const EmbeddedMap& be
     if (!found) continue;
     res.status = InferredExpression::Status::Solved;
     auto& exprs = out.scheme.right.nodes[v].expressions;
-    exprs.erase(std::remove_if(exprs.begin(), exprs.end(), [&](const auto& x) { return x.embedding == embedding; }),
+    exprs.erase(std::remove_if(exprs.begin(), exprs.end(),
+                               [&](const auto& x) { return x.embedding == embedding; }),
                 exprs.end());
     exprs.push_back({embedding, res.code, {}, {}});
   }

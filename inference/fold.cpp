@@ -11,14 +11,22 @@ using namespace gmr::scheme;
 
 const char* to_string(FoldFailureKind k) {
   switch (k) {
-    case FoldFailureKind::None: return "none";
-    case FoldFailureKind::ArcFailure: return "arc failure";
-    case FoldFailureKind::InstantiationFailure: return "instantiation failure";
-    case FoldFailureKind::RelabelingFailure: return "relabeling failure";
-    case FoldFailureKind::PartialNeighbourhood: return "partial neighbourhood";
-    case FoldFailureKind::NotSpanning: return "instantiation not spanning all links";
-    case FoldFailureKind::PartialHookOrbit: return "partial hook orbit";
-    case FoldFailureKind::NotConnected: return "not connected";
+    case FoldFailureKind::None:
+      return "none";
+    case FoldFailureKind::ArcFailure:
+      return "arc failure";
+    case FoldFailureKind::InstantiationFailure:
+      return "instantiation failure";
+    case FoldFailureKind::RelabelingFailure:
+      return "relabeling failure";
+    case FoldFailureKind::PartialNeighbourhood:
+      return "partial neighbourhood";
+    case FoldFailureKind::NotSpanning:
+      return "instantiation not spanning all links";
+    case FoldFailureKind::PartialHookOrbit:
+      return "partial hook orbit";
+    case FoldFailureKind::NotConnected:
+      return "not connected";
   }
   return "?";
 }
@@ -29,9 +37,15 @@ namespace {
 
 class Folder {
  public:
-  Folder(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, FoldResult& r,
-         FoldWorkspace& ws)
-      : j_(j), o_(o), opt_(opt), r_(r), n_(j.dimension()), node_of_(ws.node_of), index_of_(ws.index_of),
+  Folder(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt,
+         FoldResult& r, FoldWorkspace& ws)
+      : j_(j),
+        o_(o),
+        opt_(opt),
+        r_(r),
+        n_(j.dimension()),
+        node_of_(ws.node_of),
+        index_of_(ws.index_of),
         touched_(ws.touched) {
     r_.orbit = o;
     r_.start = start;
@@ -84,8 +98,8 @@ class Folder {
     return "(" + std::to_string(b) + "," + node_name(m) + ") = dart " + d(dart(m, b));
   }
 
-  void fail(FoldFailureKind kind, uint32_t node, int dim, std::vector<uint32_t> darts, std::string message,
-            int position = -1) {
+  void fail(FoldFailureKind kind, uint32_t node, int dim, std::vector<uint32_t> darts,
+            std::string message, int position = -1) {
     r_.failure = {kind, node, dim, position, std::move(darts), std::move(message)};
   }
 
@@ -117,8 +131,9 @@ class Folder {
         if (y == kUndefined) {
           for (uint32_t z : order) index_of_[z] = kUndefined;
           fail(FoldFailureKind::PartialHookOrbit, kNoFoldNode, o_[p], {x},
-               "partial hook orbit: dart " + d(x) + " of the " + o_.str() + "-orbit of the start dart has no " +
-                   std::to_string(o_[p]) + "-neighbour (cut by the selection); the hook orbit must be complete",
+               "partial hook orbit: dart " + d(x) + " of the " + o_.str() +
+                   "-orbit of the start dart has no " + std::to_string(o_[p]) +
+                   "-neighbour (cut by the selection); the hook orbit must be complete",
                static_cast<int>(p));
           return false;
         }
@@ -132,7 +147,8 @@ class Folder {
     s_ = order.size();
     nb_.resize(s_ * o_.size());
     for (uint32_t b = 0; b < s_; ++b)
-      for (size_t p = 0; p < o_.size(); ++p) nb_[b * o_.size() + p] = index_of_[j_.nbr(order[b], o_[p])];
+      for (size_t p = 0; p < o_.size(); ++p)
+        nb_[b * o_.size() + p] = index_of_[j_.nbr(order[b], o_[p])];
     r_.hook_orbit.arity = o_.size();
     r_.hook_orbit.nb = nb_;
     for (uint32_t x : order) r_.hook_orbit.darts.push_back(j_.origin(x));
@@ -144,8 +160,12 @@ class Folder {
 
   // Explicit arcs by (node, dimension slot): O(1) "arc already present" (the fold stays linear).
   std::vector<uint32_t> arc_to_;
-  size_t slot(int dim) const { return dim == kKappa ? static_cast<size_t>(n_) + 1 : static_cast<size_t>(dim); }
-  bool has_arc(uint32_t m, int dim, uint32_t m2) const { return arc_to_[m * (n_ + 2) + slot(dim)] == m2; }
+  size_t slot(int dim) const {
+    return dim == kKappa ? static_cast<size_t>(n_) + 1 : static_cast<size_t>(dim);
+  }
+  bool has_arc(uint32_t m, int dim, uint32_t m2) const {
+    return arc_to_[m * (n_ + 2) + slot(dim)] == m2;
+  }
   void add_arc(uint32_t m, int dim, uint32_t m2) {
     r_.arcs.push_back({std::min(m, m2), std::max(m, m2), dim});
     arc_to_[m * (n_ + 2) + slot(dim)] = m2;
@@ -161,9 +181,9 @@ class Folder {
       if (defined != (x != kUndefined)) {
         const uint32_t with = defined ? b : 0, without = defined ? 0 : b;
         fail(FoldFailureKind::PartialNeighbourhood, m, dim, {dart(m, with), dart(m, without)},
-             "partial neighbourhood at node " + node_name(m) + ", dimension " + dimension_text(dim) + ": " +
-                 at(m, with) + " has a " + dimension_text(dim) + "-neighbour but " + at(m, without) +
-                 " has none (all or none, thesis App. C)");
+             "partial neighbourhood at node " + node_name(m) + ", dimension " +
+                 dimension_text(dim) + ": " + at(m, with) + " has a " + dimension_text(dim) +
+                 "-neighbour but " + at(m, without) + " has none (all or none, thesis App. C)");
         return kNoFoldNode;
       }
     }
@@ -175,9 +195,10 @@ class Folder {
         const uint32_t y = j_.nbr(dart(m, b), dim);
         if (y != dart(m2, b)) {
           fail(FoldFailureKind::InstantiationFailure, m, dim, {dart(m, b), y, dart(m2, b)},
-               "instantiation failure at arc " + node_name(m) + " -" + dimension_text(dim) + "- " + node_name(m2) +
-                   ": " + at(m, b) + " is " + dimension_text(dim) + "-linked to dart " + d(y) + ", not to " +
-                   at(m2, b) + " (thesis Alg. 6 step 2.1)");
+               "instantiation failure at arc " + node_name(m) + " -" + dimension_text(dim) + "- " +
+                   node_name(m2) + ": " + at(m, b) + " is " + dimension_text(dim) +
+                   "-linked to dart " + d(y) + ", not to " + at(m2, b) +
+                   " (thesis Alg. 6 step 2.1)");
           return kNoFoldNode;
         }
       }
@@ -185,9 +206,10 @@ class Folder {
     }
     if (m2 != kNoFoldNode) {  // arc failure
       fail(FoldFailureKind::ArcFailure, m, dim, {dart(m, 0), x},
-           "arc failure at node " + node_name(m) + ", dimension " + dimension_text(dim) + ": " + at(m, 0) + " is " +
-               dimension_text(dim) + "-linked to (" + std::to_string(index_of_[x]) + "," + node_name(m2) +
-               ") = dart " + d(x) + "; neither an explicit arc nor an implicit arc produces a link between " +
+           "arc failure at node " + node_name(m) + ", dimension " + dimension_text(dim) + ": " +
+               at(m, 0) + " is " + dimension_text(dim) + "-linked to (" +
+               std::to_string(index_of_[x]) + "," + node_name(m2) + ") = dart " + d(x) +
+               "; neither an explicit arc nor an implicit arc produces a link between " +
                "different orbit indices (thesis Alg. 6 step 2.1)");
       return kNoFoldNode;
     }
@@ -198,9 +220,10 @@ class Folder {
       const uint32_t y = j_.nbr(dart(m, b), dim);
       if (node_of_[y] != kNoFoldNode) {
         fail(FoldFailureKind::InstantiationFailure, m, dim, {dart(m, b), y},
-             "instantiation failure at arc " + node_name(m) + " -" + dimension_text(dim) + "- " + node_name(v) +
-                 ": " + at(m, b) + " is " + dimension_text(dim) + "-linked to dart " + d(y) + ", which already " +
-                 "stands for (" + std::to_string(index_of_[y]) + "," + node_name(node_of_[y]) +
+             "instantiation failure at arc " + node_name(m) + " -" + dimension_text(dim) + "- " +
+                 node_name(v) + ": " + at(m, b) + " is " + dimension_text(dim) +
+                 "-linked to dart " + d(y) + ", which already " + "stands for (" +
+                 std::to_string(index_of_[y]) + "," + node_name(node_of_[y]) +
                  ") (thesis Alg. 6 step 2.1)");
         return kNoFoldNode;
       }
@@ -245,7 +268,8 @@ class Folder {
       r_.nodes[v].label = OrbitType(*ch.label);
       return true;
     }
-    if (ch.label) throw Error(ErrorCode::Usage, "relabeling choice out of range at node " + node_name(v));
+    if (ch.label)
+      throw Error(ErrorCode::Usage, "relabeling choice out of range at node " + node_name(v));
     const auto p = static_cast<size_t>(ch.failed_position);
     const int jd = ch.failed_dim;
     std::string why;
@@ -260,11 +284,14 @@ class Folder {
       why = "no injective choice of dimensions for the positions";
     }
     std::string cands;
-    for (int k : c.candidates[p]) cands += (cands.empty() ? "" : ", ") + (k == OrbitType::kHole ? std::string("_") : std::to_string(k));
+    for (int k : c.candidates[p])
+      cands += (cands.empty() ? "" : ", ") +
+               (k == OrbitType::kHole ? std::string("_") : std::to_string(k));
     fail(FoldFailureKind::RelabelingFailure, v, jd == OrbitType::kHole ? kNoDimension : jd, darts,
-         "relabeling failure at node " + node_name(v) + ", position " + std::to_string(p) + " (dimension " +
-             std::to_string(o_[p]) + " of " + o_.str() + ", candidates " + cands + "): " + std::to_string(o_[p]) +
-             " -> " + (jd == OrbitType::kHole ? std::string("_") : std::to_string(jd)) + " fails: " + why +
+         "relabeling failure at node " + node_name(v) + ", position " + std::to_string(p) +
+             " (dimension " + std::to_string(o_[p]) + " of " + o_.str() + ", candidates " + cands +
+             "): " + std::to_string(o_[p]) + " -> " +
+             (jd == OrbitType::kHole ? std::string("_") : std::to_string(jd)) + " fails: " + why +
              " (thesis Alg. 6 step 2.2)",
          static_cast<int>(p));
     return false;
@@ -275,8 +302,8 @@ class Folder {
     for (uint32_t x = 0; x < j_.size(); ++x)
       if (node_of_[x] == kNoFoldNode) {
         fail(FoldFailureKind::NotConnected, kNoFoldNode, kNoDimension, {x},
-             "not connected: dart " + d(x) + " is not reachable from the start dart " + d(r_.start) +
-                 " (folding needs a connected map or joint representation)");
+             "not connected: dart " + d(x) + " is not reachable from the start dart " +
+                 d(r_.start) + " (folding needs a connected map or joint representation)");
         return false;
       }
     return true;
@@ -294,8 +321,9 @@ class Folder {
         const bool twice = arc_at[u * k + slot] != kNoFoldNode && arc_at[u * k + slot] != w;
         if (twice || (e.dim != kKappa && r_.nodes[u].label.contains(e.dim))) {
           fail(FoldFailureKind::NotSpanning, u, e.dim, {dart(u, 0)},
-               "instantiation not spanning all links at node " + node_name(u) + ", dimension " + dimension_text(e.dim) +
-                   ": the folded scheme gives " + at(u, 0) + " two " + dimension_text(e.dim) +
+               "instantiation not spanning all links at node " + node_name(u) + ", dimension " +
+                   dimension_text(e.dim) + ": the folded scheme gives " + at(u, 0) + " two " +
+                   dimension_text(e.dim) +
                    "-links (J is not a G-map here: a link seen from one side only; thesis App. C)");
           return;
         }
@@ -311,24 +339,28 @@ class Folder {
           if (dim != kKappa && label[p] == dim) pos = static_cast<int>(p);
         for (uint32_t b = 0; b < s_; ++b) {
           uint32_t expected = kUndefined;
-          if (pos >= 0) expected = dart(m, nb(b, static_cast<size_t>(pos)));
-          else if (arc_at[m * k + slot] != kNoFoldNode) expected = dart(arc_at[m * k + slot], b);
+          if (pos >= 0)
+            expected = dart(m, nb(b, static_cast<size_t>(pos)));
+          else if (arc_at[m * k + slot] != kNoFoldNode)
+            expected = dart(arc_at[m * k + slot], b);
           const uint32_t got = j_.nbr(dart(m, b), dim);
           // ι(P, O) is undirected: a link seen from one side only is never spanned.
           if (got == expected && (got == kUndefined || j_.nbr(got, dim) == dart(m, b))) continue;
           if (got == expected) {
             fail(FoldFailureKind::NotSpanning, m, dim, {dart(m, b), got},
                  "instantiation not spanning all links at node " + node_name(m) + ", dimension " +
-                     dimension_text(dim) + ": " + at(m, b) + " is " + dimension_text(dim) + "-linked to dart " +
-                     d(got) + " but not conversely (thesis App. C)");
+                     dimension_text(dim) + ": " + at(m, b) + " is " + dimension_text(dim) +
+                     "-linked to dart " + d(got) + " but not conversely (thesis App. C)");
             return;
           }
-          std::string what = got == kUndefined ? "has no " + dimension_text(dim) + "-neighbour"
-                                               : "is " + dimension_text(dim) + "-linked to dart " + d(got);
+          std::string what = got == kUndefined
+                                 ? "has no " + dimension_text(dim) + "-neighbour"
+                                 : "is " + dimension_text(dim) + "-linked to dart " + d(got);
           std::string want = expected == kUndefined ? "no link" : "a link to dart " + d(expected);
           fail(FoldFailureKind::NotSpanning, m, dim, {dart(m, b)},
-               "instantiation not spanning all links at node " + node_name(m) + ", dimension " + dimension_text(dim) +
-                   ": " + at(m, b) + " " + what + " while the folded scheme instantiates " + want + " (thesis App. C)");
+               "instantiation not spanning all links at node " + node_name(m) + ", dimension " +
+                   dimension_text(dim) + ": " + at(m, b) + " " + what +
+                   " while the folded scheme instantiates " + want + " (thesis App. C)");
           return;
         }
       }
@@ -338,29 +370,35 @@ class Folder {
 
 }  // namespace
 
-FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, FoldWorkspace* ws) {
+FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt,
+                FoldWorkspace* ws) {
   DimMask seen = 0;
   for (int dim : o.dims()) {
-    if (dim == OrbitType::kHole) throw Error(ErrorCode::Usage, "the folding orbit type " + o.str() + " has `_`");
+    if (dim == OrbitType::kHole)
+      throw Error(ErrorCode::Usage, "the folding orbit type " + o.str() + " has `_`");
     if (dim < 0 || dim > j.dimension())
-      throw Error(ErrorCode::Usage, "dimension " + std::to_string(dim) + " of " + o.str() + " is not in 0.." +
-                                        std::to_string(j.dimension()));
-    if ((seen >> dim) & 1u) throw Error(ErrorCode::Usage, "the orbit type " + o.str() + " repeats dimension " + std::to_string(dim));
+      throw Error(ErrorCode::Usage, "dimension " + std::to_string(dim) + " of " + o.str() +
+                                        " is not in 0.." + std::to_string(j.dimension()));
+    if ((seen >> dim) & 1u)
+      throw Error(ErrorCode::Usage,
+                  "the orbit type " + o.str() + " repeats dimension " + std::to_string(dim));
     seen |= DimMask(1) << dim;
   }
   if (start >= j.size()) throw Error(ErrorCode::Usage, "no start dart " + std::to_string(start));
   if (j.side(start) != Side::L)
-    throw Error(ErrorCode::Usage, "the start dart " + j.describe(start) + " is on the after side; folding starts in L");
+    throw Error(ErrorCode::Usage, "the start dart " + j.describe(start) +
+                                      " is on the after side; folding starts in L");
   FoldResult r;
   std::optional<FoldWorkspace> local;
   if (!ws) ws = &local.emplace(j.size());
-  if (ws->node_of.size() != j.size()) throw Error(ErrorCode::Usage, "fold workspace made for another joint graph");
+  if (ws->node_of.size() != j.size())
+    throw Error(ErrorCode::Usage, "fold workspace made for another joint graph");
   Folder(j, o, start, opt, r, *ws).run();
   return r;
 }
 
-FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt, size_t limit,
-                 FoldWorkspace* ws) {
+FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt,
+                 size_t limit, FoldWorkspace* ws) {
   FoldAll out;
   std::optional<FoldWorkspace> local;
   if (!ws) ws = &local.emplace(j.size());
@@ -400,7 +438,8 @@ GraphScheme to_graph_scheme(const FoldResult& f) {
   if (!f.ok()) throw Error(ErrorCode::Usage, "the fold failed: " + f.failure.message);
   GraphScheme s;
   for (uint32_t k = 0; k < f.nodes.size(); ++k) {
-    if (f.nodes[k].side != Side::L) throw Error(ErrorCode::Usage, "the fold has an after side: make a rule of it");
+    if (f.nodes[k].side != Side::L)
+      throw Error(ErrorCode::Usage, "the fold has an after side: make a rule of it");
     s.add_node(node_name(k), f.nodes[k].label);
   }
   for (const auto& e : f.arcs) {

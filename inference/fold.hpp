@@ -1,9 +1,9 @@
 // Topological folding (thesis §7.2, Algorithm 6, App. C).
 //
-// Input: a joint graph J (joint_graph.hpp: a connected G-map, or the joint representation κ(G,H) of a
-// before/after pair), an orbit type <o> (no `_`) and a start dart a on side L.
-// Output: a graph scheme P with hook h decorated <o> such that ι(P, J<o>(a)) = J with (a,h) ↦ a
-// (thesis Def. 88–89), or the named reason why none exists.
+// Input: a joint graph J (joint_graph.hpp: a connected G-map, or the joint representation κ(G,H) of
+// a before/after pair), an orbit type <o> (no `_`) and a start dart a on side L. Output: a graph
+// scheme P with hook h decorated <o> such that ι(P, J<o>(a)) = J with (a,h) ↦ a (thesis Def.
+// 88–89), or the named reason why none exists.
 //
 //  Step 1 (createHook): O = J<o>(a) (Alg. 4, BFS, a gets index 0), h = node <o>, (b,h) = O[b].
 //  Step 2.1 (arcExt), for each node m in BFS order and each d in ({0..n} ∪ {κ}) \ dims(m):
@@ -43,7 +43,8 @@ using scheme::OrbitGraph;
 enum class FoldFailureKind {
   None,
   ArcFailure,            // step 2.1: (a,m) –d– (c,m'), c != a
-  InstantiationFailure,  // step 2.1: an arc m –d– m' chosen from (a,m) is not instantiated at some b
+  InstantiationFailure,  // step 2.1: an arc m –d– m' chosen from (a,m) is not instantiated at some
+                         // b
   RelabelingFailure,     // step 2.2: no injective relabeling passes the check
   PartialNeighbourhood,  // App. C: some (b,m) has a d-neighbour and some has none
   NotSpanning,           // App. C: a link of J that ι(P, O) does not produce
@@ -66,7 +67,7 @@ struct FoldFailure {
 };
 
 struct FoldNode {
-  OrbitType label;              // positional relabeling of <o> (kHole = `_`)
+  OrbitType label;  // positional relabeling of <o> (kHole = `_`)
   Side side = Side::L;
   std::vector<uint32_t> darts;  // darts[b] = (b, node): the dart of J standing for orbit dart b
 };
@@ -90,7 +91,7 @@ struct FoldOptions {
 struct FoldResult {
   OrbitType orbit;
   uint32_t start = 0;
-  OrbitGraph hook_orbit;  // O = J<o>(a): darts = origin ids of the hook's darts, nb table
+  OrbitGraph hook_orbit;        // O = J<o>(a): darts = origin ids of the hook's darts, nb table
   std::vector<FoldNode> nodes;  // node 0 is the hook; on failure, the nodes built so far
   std::vector<FoldArc> arcs;
   FoldFailure failure;
@@ -100,9 +101,9 @@ struct FoldResult {
   std::vector<uint32_t> alternatives;
 };
 
-// Scratch space of folds on one joint graph: the (node, index) owner of every dart, reset after each
-// fold through the list of darts it touched, so that a fold that fails early costs what it visited
-// and not |J| (the driver runs up to |J|/|O| folds per orbit type).
+// Scratch space of folds on one joint graph: the (node, index) owner of every dart, reset after
+// each fold through the list of darts it touched, so that a fold that fails early costs what it
+// visited and not |J| (the driver runs up to |J|/|O| folds per orbit type).
 class FoldWorkspace {
  public:
   explicit FoldWorkspace(size_t darts) : node_of(darts, UINT32_MAX), index_of(darts, UINT32_MAX) {}
@@ -112,8 +113,8 @@ class FoldWorkspace {
 // Algorithm 6. Throws Error(Usage) when <o> has `_`, repeats a dimension or exceeds n, when the
 // start dart is out of range or on side R. Failure is a result, never an exception. `ws` (optional)
 // must have been made for j.
-FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt = {},
-                FoldWorkspace* ws = nullptr);
+FoldResult fold(const JointGraph& j, const OrbitType& o, uint32_t start,
+                const FoldOptions& opt = {}, FoldWorkspace* ws = nullptr);
 
 // Every successful fold over all combinations of consistent relabelings (the default choice first),
 // at most `limit` folds run. Each result carries its choices in FoldResult::alternatives' order.
@@ -123,8 +124,8 @@ struct FoldAll {
   size_t runs = 0;
   bool truncated = false;  // the limit was reached
 };
-FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start, const FoldOptions& opt = {},
-                 size_t limit = 1000, FoldWorkspace* ws = nullptr);
+FoldAll fold_all(const JointGraph& j, const OrbitType& o, uint32_t start,
+                 const FoldOptions& opt = {}, size_t limit = 1000, FoldWorkspace* ws = nullptr);
 
 // "n<k>".
 std::string node_name(uint32_t k);

@@ -28,7 +28,8 @@ std::string instantiation_mismatch(const FoldResult& f, const JointGraph& j) {
     for (int d = 0; d <= n + 1; ++d) {
       const auto succ = inst.graph.successors(u, d);
       const uint32_t want = j.nbr(x, d == n + 1 ? kKappa : d);
-      const bool same = want == kUndefined ? succ.empty() : (succ.size() == 1 && node_to_dart[succ[0]] == want);
+      const bool same =
+          want == kUndefined ? succ.empty() : (succ.size() == 1 && node_to_dart[succ[0]] == want);
       if (!same)
         return "dart " + j.describe(x) + ", dimension " + dimension_text(d == n + 1 ? kKappa : d) +
                ": the instantiation has " + std::to_string(succ.size()) + " neighbour(s), J has " +

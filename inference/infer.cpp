@@ -8,11 +8,16 @@ namespace gmr::inference {
 
 const char* to_string(AttemptOutcome o) {
   switch (o) {
-    case AttemptOutcome::FoldFailed: return "fold failed";
-    case AttemptOutcome::NoHook: return "no hook";
-    case AttemptOutcome::Inconsistent: return "rejected by the checker";
-    case AttemptOutcome::Accepted: return "accepted";
-    case AttemptOutcome::Duplicate: return "duplicate";
+    case AttemptOutcome::FoldFailed:
+      return "fold failed";
+    case AttemptOutcome::NoHook:
+      return "no hook";
+    case AttemptOutcome::Inconsistent:
+      return "rejected by the checker";
+    case AttemptOutcome::Accepted:
+      return "accepted";
+    case AttemptOutcome::Duplicate:
+      return "duplicate";
   }
   return "?";
 }
@@ -47,7 +52,8 @@ std::vector<uint32_t> equivalent_starts(const FoldResult& f) {
 
 InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
   InferenceResult res;
-  const std::vector<OrbitType> types = opt.orbit ? std::vector<OrbitType>{*opt.orbit} : all_orbit_types(j.dimension());
+  const std::vector<OrbitType> types =
+      opt.orbit ? std::vector<OrbitType>{*opt.orbit} : all_orbit_types(j.dimension());
   std::vector<uint8_t> marked(j.size());
   FoldWorkspace ws(j.size());
   auto process = [&](const FoldResult& f, const OrbitType& o, uint32_t a) {
@@ -68,7 +74,8 @@ InferenceResult infer_rules(const JointGraph& j, const InferOptions& opt) {
     for (const auto& n : f.nodes) (n.side == Side::L ? at.left_nodes : at.right_nodes)++;
     InferredRule r = rule_from_fold(f, j, "inferred_" + std::to_string(res.rules.size()), opt.rule);
     if (!r.accepted()) {
-      at.outcome = r.verdict == RuleVerdict::NoHook ? AttemptOutcome::NoHook : AttemptOutcome::Inconsistent;
+      at.outcome =
+          r.verdict == RuleVerdict::NoHook ? AttemptOutcome::NoHook : AttemptOutcome::Inconsistent;
       at.reason = r.reason;
       at.rejected = std::move(r);
       res.attempts.push_back(std::move(at));

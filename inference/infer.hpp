@@ -5,7 +5,8 @@
 // lexicographically: <>, <0>, <1>, ..., <0,1,...,n>), for each L dart a of the joint graph in
 // increasing index order that is not marked for <o>:
 //   fold(J, <o>, a) (fold.hpp) — or, with all_relabelings, every fold over the combinations of
-//   consistent relabelings (fold_all), each processed as below; then mark (a documented choice, the thesis leaving it open):
+//   consistent relabelings (fold_all), each processed as below; then mark (a documented choice, the
+//   thesis leaving it open):
 //    * the whole hook orbit J<o>(a): instantiation does not depend on which dart of O is the
 //      start, so every dart of O would give the same answer;
 //    * after a success or a failure, also the darts of every L node whose decoration has no `_`
@@ -49,19 +50,19 @@ const char* to_string(AttemptOutcome o);
 
 struct InferAttempt {
   OrbitType orbit;
-  uint32_t start = 0;          // joint-graph dart
-  std::string start_text;      // as users see it ("before 7")
+  uint32_t start = 0;      // joint-graph dart
+  std::string start_text;  // as users see it ("before 7")
   AttemptOutcome outcome = AttemptOutcome::FoldFailed;
-  FoldFailure failure;         // FoldFailed
+  FoldFailure failure;  // FoldFailed
   size_t left_nodes = 0, right_nodes = 0;
-  std::string reason;          // NoHook / Inconsistent: why; FoldFailed: the failure message
-  int rule = -1;               // Accepted: index in InferenceResult::rules; Duplicate: the rule it equals
+  std::string reason;  // NoHook / Inconsistent: why; FoldFailed: the failure message
+  int rule = -1;       // Accepted: index in InferenceResult::rules; Duplicate: the rule it equals
   std::optional<InferredRule> rejected;  // NoHook / Inconsistent: the rule and the checker's report
 };
 
 struct InferenceResult {
-  std::vector<InferredRule> rules;        // accepted, pairwise non-isomorphic
-  std::vector<size_t> duplicates;         // duplicates[k]: attempts merged into rules[k]
+  std::vector<InferredRule> rules;  // accepted, pairwise non-isomorphic
+  std::vector<size_t> duplicates;   // duplicates[k]: attempts merged into rules[k]
   std::vector<InferAttempt> attempts;
   bool truncated = false;  // all_relabelings: some start dart reached relabeling_limit
 };

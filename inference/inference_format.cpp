@@ -20,7 +20,7 @@ nlohmann::ordered_json to_json(const FoldFailure& f, const JointGraph& j) {
   nlohmann::ordered_json out;
   out["kind"] = to_string(f.kind);
   out["node"] = f.node == kNoFoldNode ? nlohmann::ordered_json(nullptr)
-                                  : nlohmann::ordered_json(node_name(f.node));
+                                      : nlohmann::ordered_json(node_name(f.node));
   out["dimension"] = dim_json(f.dim);
   if (f.position >= 0) out["position"] = f.position;
   nlohmann::ordered_json darts = nlohmann::ordered_json::array();

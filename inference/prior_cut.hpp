@@ -7,9 +7,9 @@
 // when the dart has it on both sides — x –d– x in G and κ(x) –d– κ(x) in H — so that the rule
 // leaves the d-links of those darts as they are; a d-loop the operation creates or removes is part
 // of what it does and stays. A cut slot becomes undefined, which folding reads like a selection
-// cut (all or none per node, docs/inference.md). Posterior-cut loops (rule_from_fold.hpp) remove the
-// same loops from the inferred scheme instead; excluded loops (relabeling.hpp) only decide how a
-// loop is read.
+// cut (all or none per node, docs/inference.md). Posterior-cut loops (rule_from_fold.hpp) remove
+// the same loops from the inferred scheme instead; excluded loops (relabeling.hpp) only decide how
+// a loop is read.
 #pragma once
 #include <cstddef>
 

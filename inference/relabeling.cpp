@@ -4,10 +4,12 @@
 
 namespace gmr::inference {
 
-std::vector<int> order_candidates(std::vector<int> dims, int o_p, bool loop, const LoopPolicy& policy) {
+std::vector<int> order_candidates(std::vector<int> dims, int o_p, bool loop,
+                                  const LoopPolicy& policy) {
   std::sort(dims.begin(), dims.end());
   std::vector<int> out;
-  if (std::find(dims.begin(), dims.end(), o_p) != dims.end() && (!loop || policy.implicit(o_p))) out.push_back(o_p);
+  if (std::find(dims.begin(), dims.end(), o_p) != dims.end() && (!loop || policy.implicit(o_p)))
+    out.push_back(o_p);
   for (int j : dims)
     if (j != o_p && (!loop || policy.implicit(j))) out.push_back(j);
   // `_` comes last at every position: a position without candidate is a deletion; a loop position
@@ -64,7 +66,8 @@ struct Search {
 
 }  // namespace
 
-RelabelingChoice choose_relabeling(const RelabelingCandidates& c, const std::function<bool(size_t, int)>& passes) {
+RelabelingChoice choose_relabeling(const RelabelingCandidates& c,
+                                   const std::function<bool(size_t, int)>& passes) {
   Search s{c, passes, {}, std::vector<int>(c.candidates.size(), OrbitType::kHole)};
   for (const auto& cp : c.candidates) s.ok.emplace_back(cp.size(), -1);
   RelabelingChoice out;
@@ -90,12 +93,13 @@ RelabelingChoice choose_relabeling(const RelabelingCandidates& c, const std::fun
     }
   }
   out.failed_position = 0;
-  out.failed_dim = c.candidates.empty() || c.candidates[0].empty() ? OrbitType::kHole : c.candidates[0][0];
+  out.failed_dim =
+      c.candidates.empty() || c.candidates[0].empty() ? OrbitType::kHole : c.candidates[0][0];
   return out;
 }
 
-std::vector<std::vector<int>> enumerate_relabelings(const RelabelingCandidates& c,
-                                                    const std::function<bool(size_t, int)>& passes) {
+std::vector<std::vector<int>> enumerate_relabelings(
+    const RelabelingCandidates& c, const std::function<bool(size_t, int)>& passes) {
   Search s{c, passes, {}, std::vector<int>(c.candidates.size(), OrbitType::kHole)};
   for (const auto& cp : c.candidates) s.ok.emplace_back(cp.size(), -1);
   std::vector<std::vector<int>> all;

@@ -9,8 +9,8 @@
 //  1. candidates of a position are ordered: the identity j = o_p first, then increasing j;
 //  2. a *loop* position (c = a: a has an o_p-loop) may also be read as no implicit arc (`_`), the
 //     j-loop then becoming an explicit loop of step 2.1. Implicit is tried first ("aggressive", the
-//     thesis' default); for the dimensions of LoopPolicy::explicit_loops (Jerboa's "excluded loops")
-//     the implicit reading is not offered at all ("conservative");
+//     thesis' default); for the dimensions of LoopPolicy::explicit_loops (Jerboa's "excluded
+//     loops") the implicit reading is not offered at all ("conservative");
 //  3. `_` (deletion, no check needed, thesis §7.2.3) is the last option of every position, but at
 //     a non-loop position it is admissible only when each of the position's candidates is taken by
 //     another position (the thesis removes the dimensions used by earlier positions from C and
@@ -48,7 +48,8 @@ struct RelabelingCandidates {
 
 // Orders the raw candidate set of a position (rule 1 and 2). `dims` are the j with (a,v)–j–(c,v);
 // o_p the position's dimension; loop: c == a.
-std::vector<int> order_candidates(std::vector<int> dims, int o_p, bool loop, const LoopPolicy& policy);
+std::vector<int> order_candidates(std::vector<int> dims, int o_p, bool loop,
+                                  const LoopPolicy& policy);
 
 struct RelabelingChoice {
   std::optional<std::vector<int>> label;  // the chosen relabeling, or none
@@ -59,7 +60,8 @@ struct RelabelingChoice {
 };
 
 // `passes(p, j)` is the full relabeling check of position p read as j (never called for `_`).
-RelabelingChoice choose_relabeling(const RelabelingCandidates& c, const std::function<bool(size_t, int)>& passes);
+RelabelingChoice choose_relabeling(const RelabelingCandidates& c,
+                                   const std::function<bool(size_t, int)>& passes);
 std::vector<std::vector<int>> enumerate_relabelings(const RelabelingCandidates& c,
                                                     const std::function<bool(size_t, int)>& passes);
 

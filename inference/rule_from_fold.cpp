@@ -1,6 +1,5 @@
 #include "inference/rule_from_fold.hpp"
 
-
 #include "model/core/error.hpp"
 
 namespace gmr::inference {
@@ -10,9 +9,12 @@ using namespace gmr::scheme;
 
 const char* to_string(RuleVerdict v) {
   switch (v) {
-    case RuleVerdict::Accepted: return "accepted";
-    case RuleVerdict::NoHook: return "no hook";
-    case RuleVerdict::Inconsistent: return "rejected by the checker";
+    case RuleVerdict::Accepted:
+      return "accepted";
+    case RuleVerdict::NoHook:
+      return "no hook";
+    case RuleVerdict::Inconsistent:
+      return "rejected by the checker";
   }
   return "?";
 }
@@ -52,8 +54,8 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
   s.name = name;
   s.dimension = j.dimension();
   s.orbit = f.orbit;
-  s.description = "Inferred by topological folding (thesis Alg. 6) on " + f.orbit.str() + " from before dart " +
-                  std::to_string(out.start) + ".";
+  s.description = "Inferred by topological folding (thesis Alg. 6) on " + f.orbit.str() +
+                  " from before dart " + std::to_string(out.start) + ".";
   const size_t k = f.nodes.size();
   std::vector<uint32_t> kappa(k, kNoFoldNode);
   for (const auto& e : f.arcs)
@@ -97,7 +99,8 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
     const OrbitType& label = s.left.nodes[v].label;
     if (label.has_hole()) continue;
     uint32_t& cur = hook[comp[v]];
-    if (cur == kNoFoldNode || (cur != h && label == f.orbit && s.left.nodes[cur].label != f.orbit)) cur = v;
+    if (cur == kNoFoldNode || (cur != h && label == f.orbit && s.left.nodes[cur].label != f.orbit))
+      cur = v;
   }
   s.hooks.push_back(s.left.nodes[h].name);
   for (uint32_t v = 0; v < s.left.size(); ++v) {  // components in order of their first node
@@ -105,8 +108,9 @@ InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std:
     if (c == comp[h] || hook[c] == UINT32_MAX - 1) continue;
     if (hook[c] == kNoFoldNode) {
       out.verdict = RuleVerdict::NoHook;
-      out.reason = "the L component of node " + s.left.nodes[v].name +
-                   " has no node with a full decoration (no `_`) to serve as its hook (thesis §7.3.1)";
+      out.reason =
+          "the L component of node " + s.left.nodes[v].name +
+          " has no node with a full decoration (no `_`) to serve as its hook (thesis §7.3.1)";
       return out;
     }
     s.hooks.push_back(s.left.nodes[hook[c]].name);

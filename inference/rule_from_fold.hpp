@@ -8,11 +8,11 @@
 //  5. the scheme checker (checker/scheme_checker.hpp) runs; an inconsistent scheme is rejected with
 //  its diagnostics (thesis §7.2.4: a foldable scheme can be topologically invalid).
 //
-// Posterior-cut loops (thesis §7.3, Jerboa's parameter; the side it applies to is a documented choice): for the dimensions of
-// `cut_loops`, an explicit d-loop on a PRESERVED node that is present on both sides is removed from
-// both sides (the only safe reading: the rule then neither requires nor touches the d-links of that
-// node, instead of demanding free cells). A loop only in L or only in R is kept (removing it would
-// change what the rule does).
+// Posterior-cut loops (thesis §7.3, Jerboa's parameter; the side it applies to is a documented
+// choice): for the dimensions of `cut_loops`, an explicit d-loop on a PRESERVED node that is
+// present on both sides is removed from both sides (the only safe reading: the rule then neither
+// requires nor touches the d-links of that node, instead of demanding free cells). A loop only in L
+// or only in R is kept (removing it would change what the rule does).
 //
 // Names (deterministic): L nodes n0, n1, ... in fold creation order (n0 is the hook); an R node
 // κ-paired with an L node takes its name; the other R nodes continue the numbering in creation
@@ -35,8 +35,8 @@ const char* to_string(RuleVerdict v);  // "accepted", "no hook", "rejected by th
 struct InferredRule {
   RuleScheme scheme;
   RuleVerdict verdict = RuleVerdict::Accepted;
-  std::string reason;          // empty when accepted
-  CheckReport check;     // the checker's report (empty for NoHook)
+  std::string reason;  // empty when accepted
+  CheckReport check;   // the checker's report (empty for NoHook)
   // Darts (origin ids in the before / after map) of each node, indexed like scheme.left/right
   // nodes, darts[b] for orbit dart b.
   std::vector<std::vector<Dart>> left_darts, right_darts;
@@ -50,7 +50,7 @@ struct RuleOptions {
   DimMask cut_loops = 0;
 };
 
-InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j, const std::string& name = "inferred",
-                            const RuleOptions& opt = {});
+InferredRule rule_from_fold(const FoldResult& f, const JointGraph& j,
+                            const std::string& name = "inferred", const RuleOptions& opt = {});
 
 }  // namespace gmr::inference

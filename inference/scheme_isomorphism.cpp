@@ -19,10 +19,10 @@ constexpr uint32_t kNone = UINT32_MAX;
 
 // The joint representation κ(L,R) of a scheme as a node-labelled graph.
 struct Joint {
-  size_t slots = 0;                 // n+2: 0..n, then κ
-  size_t left = 0;                  // nodes 0..left-1 are L, the rest R
+  size_t slots = 0;  // n+2: 0..n, then κ
+  size_t left = 0;   // nodes 0..left-1 are L, the rest R
   std::vector<std::vector<int>> label;
-  std::vector<uint32_t> nbr;        // nbr[v * slots + slot]
+  std::vector<uint32_t> nbr;  // nbr[v * slots + slot]
 
   size_t size() const { return label.size(); }
   uint32_t at(uint32_t v, size_t slot) const { return nbr[v * slots + slot]; }
@@ -52,12 +52,14 @@ Joint joint_of(const RuleScheme& s, const std::vector<size_t>& perm) {
     }
     for (const auto& e : g.arcs) {
       if (e.dim < 0 || e.dim > s.dimension)
-        throw Error(ErrorCode::Usage, std::string("arc of dimension ") + std::to_string(e.dim) + " in " + side);
+        throw Error(ErrorCode::Usage,
+                    std::string("arc of dimension ") + std::to_string(e.dim) + " in " + side);
       for (auto [u, w] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
         uint32_t& slot = j.nbr[(base + u) * j.slots + static_cast<size_t>(e.dim)];
         if (slot != kNone && slot != base + w)
-          throw Error(ErrorCode::Usage, std::string("node ") + g.nodes[u].name + " of " + side + " has two " +
-                                            std::to_string(e.dim) + "-arcs: no joint representation (Def. 90)");
+          throw Error(ErrorCode::Usage, std::string("node ") + g.nodes[u].name + " of " + side +
+                                            " has two " + std::to_string(e.dim) +
+                                            "-arcs: no joint representation (Def. 90)");
         slot = base + w;
       }
     }
@@ -144,7 +146,8 @@ std::optional<SchemeIsomorphism> try_permutation(const RuleScheme& s1, const Rul
   std::vector<size_t> id(perm.size());
   std::iota(id.begin(), id.end(), size_t{0});
   const Joint a = joint_of(s1, perm), b = joint_of(s2, id);
-  Matcher m{a, b, {}, {}, std::vector<uint32_t>(a.size(), kNone), std::vector<uint32_t>(b.size(), kNone)};
+  Matcher m{
+      a, b, {}, {}, std::vector<uint32_t>(a.size(), kNone), std::vector<uint32_t>(b.size(), kNone)};
   std::map<std::vector<int>, size_t> hist;
   for (uint32_t v = 0; v < a.size(); ++v) {
     m.sa.push_back(a.signature(v));
@@ -185,9 +188,12 @@ std::optional<SchemeIsomorphism> try_permutation(const RuleScheme& s1, const Rul
   iso.positions = perm;
   const auto nl = static_cast<uint32_t>(a.left);
   for (uint32_t v = 0; v < a.size(); ++v) {
-    if (m.mapd[v] == kNone) return std::nullopt;  // full cover (Alg. 7 as printed returns mapd unchecked)
-    if (v < nl) iso.left.push_back(m.mapd[v]);
-    else iso.right.push_back(m.mapd[v] - nl);
+    if (m.mapd[v] == kNone)
+      return std::nullopt;  // full cover (Alg. 7 as printed returns mapd unchecked)
+    if (v < nl)
+      iso.left.push_back(m.mapd[v]);
+    else
+      iso.right.push_back(m.mapd[v] - nl);
   }
   return iso;
 }
@@ -196,8 +202,8 @@ std::optional<SchemeIsomorphism> try_permutation(const RuleScheme& s1, const Rul
 
 std::optional<SchemeIsomorphism> scheme_isomorphism(const RuleScheme& a, const RuleScheme& b,
                                                     const SchemeIsomorphismOptions& opt) {
-  if (a.dimension != b.dimension || a.orbit.size() != b.orbit.size() || a.left.size() != b.left.size() ||
-      a.right.size() != b.right.size())
+  if (a.dimension != b.dimension || a.orbit.size() != b.orbit.size() ||
+      a.left.size() != b.left.size() || a.right.size() != b.right.size())
     return std::nullopt;
   for (const GraphScheme* g : {&a.left, &a.right, &b.left, &b.right})
     for (const auto& n : g->nodes)

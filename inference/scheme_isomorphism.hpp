@@ -41,7 +41,8 @@ struct SchemeIsomorphism {
 // Error(Usage): such a scheme is not combinatorial and has no joint representation as required).
 std::optional<SchemeIsomorphism> scheme_isomorphism(const RuleScheme& a, const RuleScheme& b,
                                                     const SchemeIsomorphismOptions& opt = {});
-inline bool schemes_isomorphic(const RuleScheme& a, const RuleScheme& b, const SchemeIsomorphismOptions& opt = {}) {
+inline bool schemes_isomorphic(const RuleScheme& a, const RuleScheme& b,
+                               const SchemeIsomorphismOptions& opt = {}) {
   return scheme_isomorphism(a, b, opt).has_value();
 }
 

@@ -17,16 +17,24 @@ namespace gmr::proofs {
 // "For every rule over at most max_nodes nodes with arcs on `labels`, and every map of the model
 // with at most `bound` darts: the rule satisfies the conditions iff every match glues and yields a
 // map" (rules matching no map within the bound excluded). Fails with the smallest counterexample.
-inline smt::ValidationReport prove_conditions(int n, MapKind kind, std::vector<int> labels, int max_nodes,
-                                              unsigned bound, smt::Engine engine = smt::Engine::Smt) {
+inline smt::ValidationReport prove_conditions(int n, MapKind kind, std::vector<int> labels,
+                                              int max_nodes, unsigned bound,
+                                              smt::Engine engine = smt::Engine::Smt) {
   const smt::BuiltinCondition* c = smt::find_builtin_condition("thesis");
-  const smt::ValidationOptions o{
-      .n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound, .engine = engine};
-  const smt::ValidationReport r = smt::validate_condition(c->name, [&](const std::vector<rewrite::Rule>& rules) {
-    std::vector<bool> out;
-    for (const auto& x : rules) out.push_back(c->holds(x));
-    return out;
-  }, o);
+  const smt::ValidationOptions o{.n = n,
+                                 .kind = kind,
+                                 .labels = std::move(labels),
+                                 .max_nodes = max_nodes,
+                                 .bound = bound,
+                                 .engine = engine};
+  const smt::ValidationReport r = smt::validate_condition(
+      c->name,
+      [&](const std::vector<rewrite::Rule>& rules) {
+        std::vector<bool> out;
+        for (const auto& x : rules) out.push_back(c->holds(x));
+        return out;
+      },
+      o);
   std::printf("%s", smt::to_text(r).c_str());
   EXPECT_EQ(r.checked, r.rules);
   EXPECT_TRUE(r.sound()) << "sufficiency fails:\n" << smt::to_text(r);
@@ -38,8 +46,9 @@ inline smt::ValidationReport prove_conditions(int n, MapKind kind, std::vector<i
 // The same statement for the whole family at once, with the rule symbolic too
 // (checker/smt/symbolic_validation.hpp): Theorems 1 and 2 as formulas, Theorem 3 (models with
 // cycle pairs) through the concrete cycle checker's lemmas.
-inline smt::SymbolicReport prove_conditions_symbolic(int n, MapKind kind, std::vector<int> labels, int max_nodes,
-                                                     unsigned bound, const std::string& condition = "thesis") {
+inline smt::SymbolicReport prove_conditions_symbolic(int n, MapKind kind, std::vector<int> labels,
+                                                     int max_nodes, unsigned bound,
+                                                     const std::string& condition = "thesis") {
   const smt::ValidationOptions o{
       .n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound};
   const smt::SymbolicReport r = smt::validate_symbolic(condition, o);

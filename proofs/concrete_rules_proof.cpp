@@ -9,27 +9,42 @@ using namespace gmr;
 using namespace gmr::proofs;
 
 // Theorems 1 and 2 on 1-G-maps (no cycle pair): 2 nodes, labels 0 and 1, 4 darts.
-TEST(Proof, Thm1And2_1GMaps_Labels01_Nodes2_Darts4) { prove_conditions(1, MapKind::GMap, {0, 1}, 2, 4); }
+TEST(Proof, Thm1And2_1GMaps_Labels01_Nodes2_Darts4) {
+  prove_conditions(1, MapKind::GMap, {0, 1}, 2, 4);
+}
 
-// Theorem 2 needs three nodes (a permutation of two darts is an involution): label 0, 3 nodes, 5 darts.
+// Theorem 2 needs three nodes (a permutation of two darts is an involution): label 0, 3 nodes, 5
+// darts.
 TEST(Proof, Thm2_1GMaps_Label0_Nodes3_Darts5) { prove_conditions(1, MapKind::GMap, {0}, 3, 5); }
 
 // Theorem 3 on the cycle pair (0,2) of 2-G-maps: 2 nodes, labels 0 and 2, 4 darts.
-TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts4) { prove_conditions(2, MapKind::GMap, {0, 2}, 2, 4); }
+TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts4) {
+  prove_conditions(2, MapKind::GMap, {0, 2}, 2, 4);
+}
 
 // Theorems 1 and 2 on 1-G-maps with 6 darts.
-TEST(Proof, Thm1And2_1GMaps_Labels01_Nodes2_Darts6) { prove_conditions(1, MapKind::GMap, {0, 1}, 2, 6); }
+TEST(Proof, Thm1And2_1GMaps_Labels01_Nodes2_Darts6) {
+  prove_conditions(1, MapKind::GMap, {0, 1}, 2, 6);
+}
 
 // Theorem 3 on the cycle pair (0,2) with 6 darts.
-TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts6) { prove_conditions(2, MapKind::GMap, {0, 2}, 2, 6); }
+TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts6) {
+  prove_conditions(2, MapKind::GMap, {0, 2}, 2, 6);
+}
 
 // 8 darts: Theorem 2 with three nodes, Theorem 3 on (0,2), O-maps.
 TEST(Proof, Thm2_1GMaps_Label0_Nodes3_Darts8) { prove_conditions(1, MapKind::GMap, {0}, 3, 8); }
-TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts8) { prove_conditions(2, MapKind::GMap, {0, 2}, 2, 8); }
-TEST(Proof, Thm1And2_2OMaps_Labels12_Nodes2_Darts8) { prove_conditions(2, MapKind::OMap, {1, 2}, 2, 8); }
+TEST(Proof, Thm3_2GMaps_Labels02_Nodes2_Darts8) {
+  prove_conditions(2, MapKind::GMap, {0, 2}, 2, 8);
+}
+TEST(Proof, Thm1And2_2OMaps_Labels12_Nodes2_Darts8) {
+  prove_conditions(2, MapKind::OMap, {1, 2}, 2, 8);
+}
 
 // O-maps (beta_1 a permutation, no non-orientation on 1): 2 nodes, labels 1 and 2, 4 darts.
-TEST(Proof, Thm1And2_2OMaps_Labels12_Nodes2_Darts4) { prove_conditions(2, MapKind::OMap, {1, 2}, 2, 4); }
+TEST(Proof, Thm1And2_2OMaps_Labels12_Nodes2_Darts4) {
+  prove_conditions(2, MapKind::OMap, {1, 2}, 2, 4);
+}
 
 // Theorem 2 on O-maps' involutive label 2, three nodes, 4 darts.
 TEST(Proof, Thm2_2OMaps_Label2_Nodes3_Darts4) { prove_conditions(2, MapKind::OMap, {2}, 3, 4); }

@@ -36,12 +36,14 @@ Rule renamed(const Rule& r, const std::string& perm) {
   auto rename = [&](const std::string& name) { return std::string(1, perm[name[0] - 'a']); };
   auto side = [&](const DGraph& g) {
     std::vector<Node> order(g.nodes().begin(), g.nodes().end());
-    std::sort(order.begin(), order.end(), [&](Node x, Node y) { return rename(g.name(x)) < rename(g.name(y)); });
+    std::sort(order.begin(), order.end(),
+              [&](Node x, Node y) { return rename(g.name(x)) < rename(g.name(y)); });
     DGraph out;
     HandleVector<Node, Node> to(g.num_nodes());
     for (Node v : order) to[v] = out.add_node(rename(g.name(v)));
     for (auto k = static_cast<uint32_t>(g.num_arc_slots()); k-- > 0;)
-      if (const ArcId a(k); g.arc_alive(a)) out.add_arc(to[g.arc(a).src], to[g.arc(a).tgt], g.arc(a).label);
+      if (const ArcId a(k); g.arc_alive(a))
+        out.add_arc(to[g.arc(a).src], to[g.arc(a).tgt], g.arc(a).label);
     return out;
   };
   return Rule(side(r.left()), side(r.right()), r.dimension(), r.kind(), r.name());
@@ -53,7 +55,8 @@ Rule swapped_02(const Rule& r) {
     DGraph out;
     for (Node v : g.nodes()) out.add_node(g.name(v));
     for (ArcId a : g.arc_slots())
-      if (g.arc_alive(a)) out.add_arc(g.arc(a).src, g.arc(a).tgt, g.arc(a).label == 1 ? 1 : 2 - g.arc(a).label);
+      if (g.arc_alive(a))
+        out.add_arc(g.arc(a).src, g.arc(a).tgt, g.arc(a).label == 1 ? 1 : 2 - g.arc(a).label);
     return out;
   };
   return Rule(side(r.left()), side(r.right()), r.dimension(), r.kind(), r.name());
@@ -69,16 +72,19 @@ void prove_decomposition(int nodes) {
   size_t rules = 0, guarded = 0, split = 0, split_mixed = 0, unguarded_differ = 0, looked_up = 0;
   // (3) Every component of a rule with w-I_r is a pattern of the symbolic engine's table
   // (cycle_table.hpp, built here with w-I_r only), with the checker's verdict on the component.
-  std::vector<std::map<std::pair<std::vector<int>, std::vector<uint64_t>>, bool>> table(readings.size());
+  std::vector<std::map<std::pair<std::vector<int>, std::vector<uint64_t>>, bool>> table(
+      readings.size());
   for (size_t k = 0; k < readings.size(); ++k)
-    for (const auto& p : cycle_table(MapSpec{2, MapKind::GMap}, {0, 2}, nodes,
-                                     ThesisParts{.dangling = false, .orientation = false}, readings[k].second)
-                             .patterns)
+    for (const auto& p :
+         cycle_table(MapSpec{2, MapKind::GMap}, {0, 2}, nodes,
+                     ThesisParts{.dangling = false, .orientation = false}, readings[k].second)
+             .patterns)
       table[k].emplace(std::pair{p.status, p.arcs}, p.holds);
   for_each_rule(2, MapKind::GMap, nodes, {0, 2}, [&](size_t index, const Rule& r) {
     ++rules;
     std::vector<checker::Diagnostic> d;
-    const bool w_ir = checker::check_weak_incident_arcs(r, 0, d) && checker::check_weak_incident_arcs(r, 2, d);
+    const bool w_ir =
+        checker::check_weak_incident_arcs(r, 0, d) && checker::check_weak_incident_arcs(r, 2, d);
     if (!w_ir && index % 64 != 0) return true;  // the guard's necessity: one rule in 64 is enough
     const auto components = rule_components(r, {0, 2});
     for (size_t ri = 0; ri < readings.size(); ++ri) {
@@ -92,7 +98,8 @@ void prove_decomposition(int nodes) {
       EXPECT_EQ(whole, by_components) << name << " on " << rule_text(r);
       size_t failing = 0;
       for (const auto& k : components) {
-        const bool verdict = components.size() == 1 ? whole : cycle_condition(restrict_rule(r, k, {0, 2}), reading);
+        const bool verdict =
+            components.size() == 1 ? whole : cycle_condition(restrict_rule(r, k, {0, 2}), reading);
         failing += !verdict;
         const ComponentPattern p = component_pattern(r, k, {0, 2});
         const auto it = table[ri].find(std::pair{p.status, p.arcs});
@@ -107,19 +114,23 @@ void prove_decomposition(int nodes) {
         ++split;
         if (failing > 0 && failing < components.size()) ++split_mixed;
       }
-      EXPECT_EQ(cycle_condition(swapped_02(r), reading), whole) << name << " on " << rule_text(r) << ", 0 and 2 swapped";
+      EXPECT_EQ(cycle_condition(swapped_02(r), reading), whole)
+          << name << " on " << rule_text(r) << ", 0 and 2 swapped";
       std::string perm = std::string("abcd").substr(0, node_count(r));
       while (std::next_permutation(perm.begin(), perm.end()))
-        EXPECT_EQ(cycle_condition(renamed(r, perm), reading), whole) << name << " on " << rule_text(r) << ", renamed " << perm;
+        EXPECT_EQ(cycle_condition(renamed(r, perm), reading), whole)
+            << name << " on " << rule_text(r) << ", renamed " << perm;
     }
     guarded += w_ir;
     return !::testing::Test::HasFailure();
   });
   size_t family = 0;
   for (int m = 1; m <= nodes; ++m) family += count_rules(m, 2);
-  std::printf("%zu rules, %zu with w-I_r on 0 and 2; with w-I_r: %zu verdicts on several components, %zu of them with "
-              "failing and holding components; without w-I_r (one rule in 64): %zu verdicts differ\n",
-              rules, guarded, split, split_mixed, unguarded_differ);
+  std::printf(
+      "%zu rules, %zu with w-I_r on 0 and 2; with w-I_r: %zu verdicts on several components, %zu "
+      "of them with "
+      "failing and holding components; without w-I_r (one rule in 64): %zu verdicts differ\n",
+      rules, guarded, split, split_mixed, unguarded_differ);
   EXPECT_EQ(rules, family);
   EXPECT_GT(looked_up, 0u);
   EXPECT_GT(split_mixed, 0u);       // the decomposition is exercised where it matters
@@ -143,8 +154,9 @@ TEST(Proof, CycleByComponents_2GMaps_Labels02_Nodes4_EveryRuleOfSeveralComponent
   const std::vector<int> labels{0, 2};
   size_t unions = 0, mixed = 0;
   for (const auto& [name, reading] : readings) {
-    const CycleTable table = cycle_table(MapSpec{2, MapKind::GMap}, labels, 3,
-                                         ThesisParts{.dangling = false, .orientation = false}, reading);
+    const CycleTable table =
+        cycle_table(MapSpec{2, MapKind::GMap}, labels, 3,
+                    ThesisParts{.dangling = false, .orientation = false}, reading);
     std::vector<std::vector<const ComponentPattern*>> by_size(4);
     for (const auto& p : table.patterns) by_size[p.nodes()].push_back(&p);
     for (const std::vector<size_t>& sizes :
@@ -178,11 +190,14 @@ TEST(Proof, CycleByComponents_2GMaps_Labels02_Nodes4_EveryRuleOfSeveralComponent
         EXPECT_EQ(cycle_condition(u, reading), all) << name << " on " << rule_text(u);
         if (::testing::Test::HasFailure()) return;
         size_t part = 0;
-        while (part < sizes.size() && ++choice[part] == by_size[sizes[part]].size()) choice[part++] = 0;
+        while (part < sizes.size() && ++choice[part] == by_size[sizes[part]].size())
+          choice[part++] = 0;
         if (part == sizes.size()) break;
       }
     }
   }
-  std::printf("%zu unions of several components (all readings), %zu with failing and holding parts\n", unions, mixed);
+  std::printf(
+      "%zu unions of several components (all readings), %zu with failing and holding parts\n",
+      unions, mixed);
   EXPECT_GT(mixed, 0u);
 }

@@ -31,7 +31,8 @@ TEST(Proof, Thm4To6_LibrarySchemes_Darts5) {
     const RuleScheme s = io::read_scheme_file(e.path());
     ASSERT_TRUE(checker::check_scheme(s).ok()) << s.name;
     const SchemeVerifyResult v = verify_scheme(s, 5, Engine::Smt);
-    std::printf("  %-28s %zu hook orbits, %zu applicable, %.2fs\n", s.name.c_str(), v.orbits, v.applicable, v.seconds);
+    std::printf("  %-28s %zu hook orbits, %zu applicable, %.2fs\n", s.name.c_str(), v.orbits,
+                v.applicable, v.seconds);
     EXPECT_TRUE(v.preserves) << s.name;
     ++n;
   }
@@ -50,13 +51,14 @@ TEST(Proof, Thm4To6_RandomSchemes_Seeds200_Darts4) {
     const SchemeVerifyResult v = verify_scheme(s, 4, Engine::Smt);
     if (ok) {
       ++accepted;
-      EXPECT_TRUE(v.preserves) << "seed " << seed << ": accepted scheme " << s.name << " breaks a map";
+      EXPECT_TRUE(v.preserves) << "seed " << seed << ": accepted scheme " << s.name
+                               << " breaks a map";
     } else {
       ++rejected;
       broken_rejected += !v.preserves;
     }
   }
-  std::printf("accepted %zu, rejected %zu (of which %zu break a map of at most 4 darts)\n", accepted, rejected,
-              broken_rejected);
+  std::printf("accepted %zu, rejected %zu (of which %zu break a map of at most 4 darts)\n",
+              accepted, rejected, broken_rejected);
   EXPECT_GT(accepted, 0u);
 }

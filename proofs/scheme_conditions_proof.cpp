@@ -32,7 +32,8 @@ std::vector<RuleScheme> scheme_family(uint64_t seeds) {
 }
 SchemeValidationReport validate(const std::string& name, const std::vector<RuleScheme>& family,
                                 const SchemeFamilyVerdicts& verdicts) {
-  const std::vector<bool> holds = evaluate_scheme_condition(*find_builtin_scheme_condition(name), family);
+  const std::vector<bool> holds =
+      evaluate_scheme_condition(*find_builtin_scheme_condition(name), family);
   const SchemeValidationReport r = classify_scheme_condition(name, holds, family, verdicts);
   std::printf("%s", to_text(r).c_str());
   return r;

@@ -26,25 +26,34 @@ TEST(ProofSlow, Thm1To3_Symbolic_2GMaps_Labels012_Nodes4_Darts8) {
 TEST(ProofSlow, Thm1To3_Symbolic_2GMaps_Nodes2_Darts4To6_AgreesWithEnumerator) {
   for (unsigned bound = 4; bound <= 6; ++bound)
     for (const auto& c : smt::builtin_conditions()) {
-      const smt::ValidationOptions o{.n = 2, .kind = MapKind::GMap, .labels = {0, 1, 2}, .max_nodes = 2,
-                                     .bound = bound, .engine = smt::Engine::Enum};
+      const smt::ValidationOptions o{.n = 2,
+                                     .kind = MapKind::GMap,
+                                     .labels = {0, 1, 2},
+                                     .max_nodes = 2,
+                                     .bound = bound,
+                                     .engine = smt::Engine::Enum};
       const smt::SymbolicReport s = smt::validate_symbolic(c.name, o);
-      const smt::ValidationReport e = smt::validate_condition(c.name, [&](const std::vector<rewrite::Rule>& rules) {
-        std::vector<bool> out;
-        for (const auto& x : rules) out.push_back(c.holds(x));
-        return out;
-      }, o);
+      const smt::ValidationReport e = smt::validate_condition(
+          c.name,
+          [&](const std::vector<rewrite::Rule>& rules) {
+            std::vector<bool> out;
+            for (const auto& x : rules) out.push_back(c.holds(x));
+            return out;
+          },
+          o);
       std::printf("%s%s", smt::to_text(s).c_str(), smt::to_text(e).c_str());
       ASSERT_TRUE(s.sound_decided && s.complete_decided);
       EXPECT_EQ(s.sound(), e.sound()) << c.name << ", " << bound << " darts";
       EXPECT_EQ(s.complete(), e.complete()) << c.name << ", " << bound << " darts";
       if (s.smallest_unsound) {
-        const smt::VerifyResult v = smt::verify_enum(s.smallest_unsound->rule, bound, smt::Semantics::Consistency);
+        const smt::VerifyResult v =
+            smt::verify_enum(s.smallest_unsound->rule, bound, smt::Semantics::Consistency);
         EXPECT_FALSE(v.preserves) << c.name;
       }
       if (s.smallest_incomplete) {
         EXPECT_FALSE(c.holds(s.smallest_incomplete->rule));
-        const smt::VerifyResult v = smt::verify_enum(s.smallest_incomplete->rule, bound, smt::Semantics::Consistency);
+        const smt::VerifyResult v =
+            smt::verify_enum(s.smallest_incomplete->rule, bound, smt::Semantics::Consistency);
         EXPECT_TRUE(v.applicable && v.preserves) << c.name;
       }
     }

@@ -15,7 +15,8 @@ struct CaseLine {
   uint64_t seed = 0;
 
   std::string str() const {
-    return family + " " + std::to_string(n) + " " + std::to_string(size) + " " + std::to_string(seed);
+    return family + " " + std::to_string(n) + " " + std::to_string(size) + " " +
+           std::to_string(seed);
   }
   // nullopt when a field is missing or malformed, or size == 0.
   static std::optional<CaseLine> parse(const std::string& line) {

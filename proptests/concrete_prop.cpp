@@ -15,12 +15,12 @@
 #include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
 #include "checker/semantic.hpp"
+#include "model/core/error.hpp"
+#include "model/core/signature.hpp"
 #include "model/graph/constraints.hpp"
 #include "model/graph/dgraph.hpp"
 #include "model/rewrite/dpo.hpp"
-#include "model/core/error.hpp"
 #include "model/rewrite/match.hpp"
-#include "model/core/signature.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 #include "proptests/rule_cases.hpp"
@@ -85,25 +85,28 @@ TEST(ConcreteProps, AcceptedRulesPreserveTheModelOnRandomMaps) {
 }
 
 TEST(ConcreteProps, RejectedRulesBreakTheModelOnSmallMaps) {
-  EXPECT_TRUE(check_property<RuleCase>("concrete_rejected_witness", gen_arbitrary_rule_case(), [](const RuleCase& c) {
-    const Rule r = c.build();
-    const CheckReport rep = check_rule(r);
-    RC_TAG(rep.ok() ? "accepted" : "rejected");
-    const SemanticVerdict v = semantic_verdict(r, small_maps(r.dimension(), r.kind()));
-    RC_CLASSIFY(!v.applicable(), "not applicable within 4 darts");
-    if (!v.applicable()) return;  // vacuous within the bound (see checker/tests/equivalence_test.cpp)
-    if (rep.ok() != v.preserves) RC_LOG() << "checker: " << to_text(rep) << "\n";
-    RC_ASSERT(rep.ok() == v.preserves);  // both directions on the exhaustive bound
-  }));
+  EXPECT_TRUE(check_property<RuleCase>(
+      "concrete_rejected_witness", gen_arbitrary_rule_case(), [](const RuleCase& c) {
+        const Rule r = c.build();
+        const CheckReport rep = check_rule(r);
+        RC_TAG(rep.ok() ? "accepted" : "rejected");
+        const SemanticVerdict v = semantic_verdict(r, small_maps(r.dimension(), r.kind()));
+        RC_CLASSIFY(!v.applicable(), "not applicable within 4 darts");
+        if (!v.applicable())
+          return;  // vacuous within the bound (see checker/tests/equivalence_test.cpp)
+        if (rep.ok() != v.preserves) RC_LOG() << "checker: " << to_text(rep) << "\n";
+        RC_ASSERT(rep.ok() == v.preserves);  // both directions on the exhaustive bound
+      }));
 }
 
 TEST(ConcreteProps, ConsistentByConstructionIsAccepted) {
-  EXPECT_TRUE(check_property<RuleCase>("concrete_valid_accepted", gen_consistent_rule_case(), [](const RuleCase& c) {
-    const Rule r = c.build();
-    const CheckReport rep = check_rule(r);
-    if (!rep.ok()) RC_LOG() << to_text(rep) << "\n";
-    RC_ASSERT(rep.ok());
-  }));
+  EXPECT_TRUE(check_property<RuleCase>("concrete_valid_accepted", gen_consistent_rule_case(),
+                                       [](const RuleCase& c) {
+                                         const Rule r = c.build();
+                                         const CheckReport rep = check_rule(r);
+                                         if (!rep.ok()) RC_LOG() << to_text(rep) << "\n";
+                                         RC_ASSERT(rep.ok());
+                                       }));
 }
 
 TEST(ConcreteProps, TwoDpoConstructionsAgree) {

@@ -1,8 +1,9 @@
 // Topological events (Gaide et al. 2023): on random rule schemes accepted by the scheme checker,
 // on the library (tools/data/rules and the Jerboa fixture's rules) and on random G-maps at random
-// hooks — and on random concrete rules through their scheme on <> — the static analysis with its run-time confirmation (checker/events/event_log.hpp) logs
-// exactly the events of the dynamic detector, which compares every orbit of G and H
-// (checker/events/dynamic_events.hpp), for every orbit type of the dimension.
+// hooks — and on random concrete rules through their scheme on <> — the static analysis with its
+// run-time confirmation (checker/events/event_log.hpp) logs exactly the events of the dynamic
+// detector, which compares every orbit of G and H (checker/events/dynamic_events.hpp), for every
+// orbit type of the dimension.
 #include <gtest/gtest.h>
 
 #include "checker/events/concrete_scheme.hpp"
@@ -33,7 +34,8 @@ std::string listing(const std::vector<OrbitEvent>& es) {
 
 // Tries up to `tries` random hook choices on a random map of the scheme's dimension; at the first
 // application, the log and the dynamic detector must agree on every orbit type.
-void log_equals_dynamic(const SchemeEngine& engine, const StaticEvents& st, size_t max_map_size, int tries) {
+void log_equals_dynamic(const SchemeEngine& engine, const StaticEvents& st, size_t max_map_size,
+                        int tries) {
   const RuleScheme& s = engine.scheme();
   const MapCase mc = *gen_map_case_of_dim(s.dimension, max_map_size);
   Map g = mc.build();
@@ -56,7 +58,9 @@ void log_equals_dynamic(const SchemeEngine& engine, const StaticEvents& st, size
       const auto dyn = dynamic_events(before[t], g, &app.match);
       const auto& log = recorder.logs().back().orbits[t].events;
       if (!same_events(log, dyn)) {
-        RC_LOG() << st.orbits[t].orbit.str() << "\nlog:\n" << listing(log) << "dynamic:\n" << listing(dyn);
+        RC_LOG() << st.orbits[t].orbit.str() << "\nlog:\n"
+                 << listing(log) << "dynamic:\n"
+                 << listing(dyn);
         RC_FAIL("the event log differs from the dynamic detector");
       }
     }
@@ -77,15 +81,18 @@ void random_scheme_property(const SchemeCase& c) {
 }  // namespace
 
 TEST(EventProps, LogEqualsDynamicOnRandomSchemes2D) {
-  EXPECT_TRUE(check_property<SchemeCase>("events_random_2d", gen_scheme_case_of_dim(2), random_scheme_property));
+  EXPECT_TRUE(check_property<SchemeCase>("events_random_2d", gen_scheme_case_of_dim(2),
+                                         random_scheme_property));
 }
 
 TEST(EventProps, LogEqualsDynamicOnRandomSchemes3D) {
-  EXPECT_TRUE(check_property<SchemeCase>("events_random_3d", gen_scheme_case_of_dim(3), random_scheme_property));
+  EXPECT_TRUE(check_property<SchemeCase>("events_random_3d", gen_scheme_case_of_dim(3),
+                                         random_scheme_property));
 }
 
 TEST(EventProps, LogEqualsDynamicOnConsistentByConstructionSchemes) {
-  EXPECT_TRUE(check_property<SchemeCase>("events_copies", gen_copies_scheme_case(), random_scheme_property));
+  EXPECT_TRUE(check_property<SchemeCase>("events_copies", gen_copies_scheme_case(),
+                                         random_scheme_property));
 }
 
 // Every accepted library scheme (standard operations and Jerboa rules) of dimensions 2 and 3.
@@ -106,13 +113,14 @@ TEST(EventProps, LogEqualsDynamicOnTheLibrary) {
 // Concrete rules through their scheme on <> (checker/events/concrete_scheme.hpp): random rules
 // consistent by construction, on G-maps, applied where their hooks' darts match.
 TEST(EventProps, LogEqualsDynamicOnConcreteRules) {
-  EXPECT_TRUE(check_property<RuleCase>("events_concrete", gen_consistent_rule_case(), [](const RuleCase& c) {
-    const rewrite::Rule r = c.build();
-    RC_PRE(r.kind() == MapKind::GMap);
-    const RuleScheme s = scheme_of_concrete_rule(r);
-    std::optional<SchemeEngine> engine;
-    emplace_engine_or_discard(engine, s, "not a scheme the engine applies");
-    RC_PRE(engine->not_combinatorial().empty());
-    log_equals_dynamic(*engine, analyse(s), 6, 16);
-  }));
+  EXPECT_TRUE(check_property<RuleCase>(
+      "events_concrete", gen_consistent_rule_case(), [](const RuleCase& c) {
+        const rewrite::Rule r = c.build();
+        RC_PRE(r.kind() == MapKind::GMap);
+        const RuleScheme s = scheme_of_concrete_rule(r);
+        std::optional<SchemeEngine> engine;
+        emplace_engine_or_discard(engine, s, "not a scheme the engine applies");
+        RC_PRE(engine->not_combinatorial().empty());
+        log_equals_dynamic(*engine, analyse(s), 6, 16);
+      }));
 }

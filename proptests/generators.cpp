@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "model/graph/dgraph.hpp"
 #include "model/draw/map_dot.hpp"
+#include "model/graph/dgraph.hpp"
 #include "model/map_io/map_json.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
@@ -43,9 +43,11 @@ Map rule_applications(Rng& rng, int n, size_t steps) {
     const RuleScheme& sch = ls.scheme;
     const auto darts = g.darts();
     std::vector<Dart> hooks;
-    for (size_t h = 0; h < sch.hooks.size(); ++h) hooks.push_back(darts[uniform(rng, 0, darts.size() - 1)]);
+    for (size_t h = 0; h < sch.hooks.size(); ++h)
+      hooks.push_back(darts[uniform(rng, 0, darts.size() - 1)]);
     Map h = g;
-    if (scheme::apply(*ls.engine, h, hooks).applied && h.size() <= 600 && h.size() > 0) g = to_map(to_dgraph(h), n);  // renumbers the live darts densely
+    if (scheme::apply(*ls.engine, h, hooks).applied && h.size() <= 600 && h.size() > 0)
+      g = to_map(to_dgraph(h), n);  // renumbers the live darts densely
   }
   return g;
 }
@@ -54,12 +56,18 @@ Map rule_applications(Rng& rng, int n, size_t steps) {
 
 const char* to_string(Family f) {
   switch (f) {
-    case Family::GluedPolygons: return "glued-polygons";
-    case Family::Polycube: return "polycube";
-    case Family::SewSequence: return "sew-sequence";
-    case Family::RuleApplications: return "rule-applications";
-    case Family::PermutationOMap: return "permutation-omap";
-    case Family::Oriented: return "oriented";
+    case Family::GluedPolygons:
+      return "glued-polygons";
+    case Family::Polycube:
+      return "polycube";
+    case Family::SewSequence:
+      return "sew-sequence";
+    case Family::RuleApplications:
+      return "rule-applications";
+    case Family::PermutationOMap:
+      return "permutation-omap";
+    case Family::Oriented:
+      return "oriented";
   }
   return "?";
 }
@@ -136,7 +144,9 @@ Map MapCase::build() const {
 
 std::string MapCase::str() const { return "MapCase{" + corpus_line() + "}"; }
 
-std::string MapCase::corpus_line() const { return CaseLine{to_string(family), n, size, seed}.str(); }
+std::string MapCase::corpus_line() const {
+  return CaseLine{to_string(family), n, size, seed}.str();
+}
 
 std::optional<MapCase> MapCase::parse(const std::string& line) {
   const auto l = CaseLine::parse(line);
@@ -152,23 +162,31 @@ namespace {
 rc::Gen<MapCase> gen_case_of_dim(int n, size_t max_size, bool omap) {
   const auto families = families_for(n, omap);
   return rc::gen::apply(
-      [n, families](size_t fam, size_t size, uint64_t seed) { return MapCase{families[fam], n, size, seed}; },
+      [n, families](size_t fam, size_t size, uint64_t seed) {
+        return MapCase{families[fam], n, size, seed};
+      },
       rc::gen::inRange<size_t>(0, families.size()), rc::gen::inRange<size_t>(1, max_size + 1),
       rc::gen::inRange<uint64_t>(0, 1u << 20));
 }
 
 }  // namespace
 
-rc::Gen<MapCase> gen_map_case_of_dim(int n, size_t max_size) { return gen_case_of_dim(n, max_size, false); }
-
-rc::Gen<MapCase> gen_map_case(size_t max_size) {
-  return rc::gen::mapcat(rc::gen::inRange(1, 4), [max_size](int n) { return gen_map_case_of_dim(n, max_size); });
+rc::Gen<MapCase> gen_map_case_of_dim(int n, size_t max_size) {
+  return gen_case_of_dim(n, max_size, false);
 }
 
-rc::Gen<MapCase> gen_omap_case_of_dim(int n, size_t max_size) { return gen_case_of_dim(n, max_size, true); }
+rc::Gen<MapCase> gen_map_case(size_t max_size) {
+  return rc::gen::mapcat(rc::gen::inRange(1, 4),
+                         [max_size](int n) { return gen_map_case_of_dim(n, max_size); });
+}
+
+rc::Gen<MapCase> gen_omap_case_of_dim(int n, size_t max_size) {
+  return gen_case_of_dim(n, max_size, true);
+}
 
 rc::Gen<MapCase> gen_omap_case(size_t max_size) {
-  return rc::gen::mapcat(rc::gen::inRange(2, 4), [max_size](int n) { return gen_omap_case_of_dim(n, max_size); });
+  return rc::gen::mapcat(rc::gen::inRange(2, 4),
+                         [max_size](int n) { return gen_omap_case_of_dim(n, max_size); });
 }
 
 rc::Gen<OrbitType> gen_orbit_type(int n) {

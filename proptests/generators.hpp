@@ -26,7 +26,14 @@
 
 namespace gmr::prop {
 
-enum class Family { GluedPolygons, Polycube, SewSequence, RuleApplications, PermutationOMap, Oriented };
+enum class Family {
+  GluedPolygons,
+  Polycube,
+  SewSequence,
+  RuleApplications,
+  PermutationOMap,
+  Oriented
+};
 const char* to_string(Family f);
 std::optional<Family> parse_family(const std::string& s);
 bool is_omap_family(Family f);

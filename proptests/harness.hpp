@@ -12,12 +12,12 @@
 // A case type `Case` (MapCase, RuleCase, SchemeCase) provides `static std::optional<Case>
 // parse(const std::string& line)`, `std::string corpus_line() const` and `std::string str() const`.
 #pragma once
+#include <rapidcheck.h>
+
 #include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include <rapidcheck.h>
 
 namespace gmr::prop {
 
@@ -27,7 +27,8 @@ std::vector<std::string> corpus_lines(const std::string& property);
 void record_finding(const std::string& property, const std::string& line);
 
 template <class Case>
-bool check_property(const std::string& property, const rc::Gen<Case>& gen, const std::function<void(const Case&)>& body) {
+bool check_property(const std::string& property, const rc::Gen<Case>& gen,
+                    const std::function<void(const Case&)>& body) {
   for (const std::string& line : corpus_lines(property)) {
     const auto c = Case::parse(line);
     if (!c) {
@@ -35,7 +36,8 @@ bool check_property(const std::string& property, const rc::Gen<Case>& gen, const
       continue;
     }
     // Through rc::gen::just so that RapidCheck shows the case (showValue: JSON and diagram).
-    if (!rc::check(property + " (corpus " + c->str() + ")", [&] { body(*rc::gen::just(*c)); })) return false;
+    if (!rc::check(property + " (corpus " + c->str() + ")", [&] { body(*rc::gen::just(*c)); }))
+      return false;
   }
   Case last_failure{};
   bool failed_once = false;

@@ -5,14 +5,14 @@
 //    the component exactly, with |nodes| · |hook orbit| = |component|; <> always folds;
 //  * round trip through a rule: a checker-accepted library scheme S applied at a random hook h of
 //    a random connected map G gives H; inferring from (G, H) with the identity mapping (the engine
-//    keeps the ids of preserved darts) on S's orbit type from h, the inferred rule, when the checker
-//    accepts it, applied to G at its own hooks gives H up to isomorphism. It may legitimately differ
-//    from S: (1) its L is the whole of G folded on <o> (G is the example, thesis §7.6), so L is one
-//    node only when G is a single <o>-orbit; (2) free darts (loops) of G on preserved darts become
-//    explicit loops the rule demands (thesis §7.2.5; posterior-cut loops remove them); (3) where
-//    loops make several relabelings consistent, the documented first choice is taken
-//    (inference/relabeling.hpp), also when two dimensions link the same darts (degenerate maps);
-//    (4) when S deletes its hook node and preserves nothing of G's component, κ(G,H) is not
+//    keeps the ids of preserved darts) on S's orbit type from h, the inferred rule, when the
+//    checker accepts it, applied to G at its own hooks gives H up to isomorphism. It may
+//    legitimately differ from S: (1) its L is the whole of G folded on <o> (G is the example,
+//    thesis §7.6), so L is one node only when G is a single <o>-orbit; (2) free darts (loops) of G
+//    on preserved darts become explicit loops the rule demands (thesis §7.2.5; posterior-cut loops
+//    remove them); (3) where loops make several relabelings consistent, the documented first choice
+//    is taken (inference/relabeling.hpp), also when two dimensions link the same darts (degenerate
+//    maps); (4) when S deletes its hook node and preserves nothing of G's component, κ(G,H) is not
 //    connected and nothing is inferred (a named failure: folding needs a connected J).
 //    Tested statement: when G is a single <o>-orbit and G and H have no free dart and no two
 //    dimensions linking a dart to the same neighbour, the inferred rule is S up to rule-scheme
@@ -26,24 +26,24 @@
 
 #include <utility>
 
+#include "checker/scheme_checker.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/fold.hpp"
 #include "inference/fold_check.hpp"
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
+#include "model/core/error.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/signature.hpp"
 #include "model/draw/rule_dot.hpp"
 #include "model/map_io/map_json.hpp"
 #include "model/rule_io/scheme_json.hpp"
-#include "model/core/orbit.hpp"
-#include "model/core/signature.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "proptests/engine_or_discard.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 #include "proptests/library.hpp"
 #include "proptests/scheme_cases.hpp"
-#include "checker/scheme_checker.hpp"
-#include "model/core/error.hpp"
 
 using namespace gmr;
 using namespace gmr::prop;
@@ -64,7 +64,8 @@ Map component_map(const Map& g, Dart d) {
   c.add_darts(comp.size());
   for (size_t k = 0; k < comp.size(); ++k) idx[comp[k]] = static_cast<Dart>(k);
   for (size_t k = 0; k < comp.size(); ++k)
-    for (int i = 0; i <= g.dimension(); ++i) c.set_alpha(i, static_cast<Dart>(k), idx[g.alpha(i, comp[k])]);
+    for (int i = 0; i <= g.dimension(); ++i)
+      c.set_alpha(i, static_cast<Dart>(k), idx[g.alpha(i, comp[k])]);
   return c;
 }
 
@@ -83,7 +84,8 @@ bool is_simple(const Map& g) {
 // The round trip of S on the component of dart 0 of `whole` (see the header), then S and the
 // inferred rule applied to `other` at the same dart when S is the inferred rule's isomorphic
 // original: they agree (isomorphic results) wherever S applies.
-void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole, const Map& other) {
+void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole,
+               const Map& other) {
   RC_PRE(whole.size() > 0u);
   const Map g = component_map(whole, 0);
   // The first dart, from a random offset, where the scheme applies.
@@ -94,9 +96,10 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole
     const Dart cand = static_cast<Dart>((offset + k) % g.size());
     if (scheme::apply(engine, after, {cand}).applied) h = cand;
   }
-  RC_LOG() << "scheme " << s.name << " at " << h << "\nscheme DOT:\n" << draw::to_dot(s)
-           << "before (gmr.gmap, the component of dart 0, darts renumbered):\n" << describe_counterexample(g)
-           << "\nafter (gmr.gmap):\n" << write_map_json(after, {}) << "\n";
+  RC_LOG() << "scheme " << s.name << " at " << h << "\nscheme DOT:\n"
+           << draw::to_dot(s) << "before (gmr.gmap, the component of dart 0, darts renumbered):\n"
+           << describe_counterexample(g) << "\nafter (gmr.gmap):\n"
+           << write_map_json(after, {}) << "\n";
   if (h == kNoDart) {
     RC_TAG("not applicable");
     return;
@@ -111,7 +114,9 @@ void roundtrip(const RuleScheme& s, const SchemeEngine& engine, const Map& whole
   RC_ASSERT(instantiation_mismatch(f, j) == "");
   const InferredRule r = rule_from_fold(f, j);
   RC_TAG(to_string(r.verdict));
-  RC_LOG() << "inferred scheme:\n" << scheme_to_json_text(r.scheme) << "DOT:\n" << draw::to_dot(r.scheme);
+  RC_LOG() << "inferred scheme:\n"
+           << scheme_to_json_text(r.scheme) << "DOT:\n"
+           << draw::to_dot(r.scheme);
   if (!r.accepted()) return;
   std::vector<Dart> hooks;
   for (uint32_t k : r.scheme.hook_nodes()) hooks.push_back(r.left_darts[k][0]);
@@ -147,7 +152,8 @@ TEST(InferenceProps, InferredRuleReappliesToItsExample) {
       if (scheme_library()[k].scheme.hooks.size() == 1u) one_hook[n].push_back(k);
   ASSERT_FALSE(one_hook[2].empty());
   ASSERT_FALSE(one_hook[3].empty());
-  const rc::Gen<MapCase> gen = rc::gen::mapcat(rc::gen::inRange(2, 4), [](int n) { return gen_map_case_of_dim(n, 4); });
+  const rc::Gen<MapCase> gen =
+      rc::gen::mapcat(rc::gen::inRange(2, 4), [](int n) { return gen_map_case_of_dim(n, 4); });
   EXPECT_TRUE(check_property<MapCase>("infer_roundtrip", gen, [&](const MapCase& c) {
     const Map whole = c.build();
     RC_PRE(whole.size() > 0u);
@@ -170,11 +176,15 @@ void random_roundtrip(const SchemeCase& c) {
   RC_PRE(s.hooks.size() == 1u);
   RC_PRE(check_scheme(s, {.embeddings = false}).ok());
   const MapCase m = *gen_map_case_of_dim(c.n, 4), o = *gen_map_case_of_dim(c.n, 4);
-  RC_LOG() << "scheme case " << c.str() << "\n" << scheme_to_json_text(s) << "map " << m.str() << " (component of dart 0), other map " << o.str() << "\n";
+  RC_LOG() << "scheme case " << c.str() << "\n"
+           << scheme_to_json_text(s) << "map " << m.str() << " (component of dart 0), other map "
+           << o.str() << "\n";
   roundtrip(s, *engine, m.build(), o.build());
 }
 
 TEST(InferenceProps, InferredRuleFromRandomSchemes) {
-  EXPECT_TRUE(check_property<SchemeCase>("infer_random_2d", gen_scheme_case_of_dim(2), random_roundtrip));
-  EXPECT_TRUE(check_property<SchemeCase>("infer_copies", gen_copies_scheme_case(), random_roundtrip));
+  EXPECT_TRUE(
+      check_property<SchemeCase>("infer_random_2d", gen_scheme_case_of_dim(2), random_roundtrip));
+  EXPECT_TRUE(
+      check_property<SchemeCase>("infer_copies", gen_copies_scheme_case(), random_roundtrip));
 }

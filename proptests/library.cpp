@@ -22,10 +22,12 @@ const std::vector<LibraryScheme>& scheme_library() {
     const std::string root = gmr::testing::source_path(".");
     std::vector<std::pair<RuleScheme, bool>> all;
     std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(root + "/tools/data/rules")) files.push_back(e.path());
+    for (const auto& e : std::filesystem::directory_iterator(root + "/tools/data/rules"))
+      files.push_back(e.path());
     std::sort(files.begin(), files.end());  // directory order is not portable
     for (const auto& f : files) all.emplace_back(read_scheme_file(f), true);
-    for (auto& s : read_jme_file(root + "/tools/data/jerboa/JerboaTrackingOrbit.jme").rules) all.emplace_back(s, false);
+    for (auto& s : read_jme_file(root + "/tools/data/jerboa/JerboaTrackingOrbit.jme").rules)
+      all.emplace_back(s, false);
     for (auto& [s, standard] : all) {
       std::shared_ptr<const SchemeEngine> e;
       try {
@@ -34,7 +36,8 @@ const std::vector<LibraryScheme>& scheme_library() {
         continue;
       }
       if (!e->not_combinatorial().empty()) continue;
-      out.push_back({s, check_scheme(s, {.embeddings = false}).ok(), standard, e});  // topological properties
+      out.push_back(
+          {s, check_scheme(s, {.embeddings = false}).ok(), standard, e});  // topological properties
     }
     return out;
   }();

@@ -15,8 +15,8 @@ using scheme::SchemeEngine;
 
 struct LibraryScheme {
   RuleScheme scheme;
-  bool accepted = false;  // check_scheme(scheme).ok()
-  bool standard = false;  // from tools/data/rules (not the Jerboa fixture)
+  bool accepted = false;                       // check_scheme(scheme).ok()
+  bool standard = false;                       // from tools/data/rules (not the Jerboa fixture)
   std::shared_ptr<const SchemeEngine> engine;  // prepared once
 };
 

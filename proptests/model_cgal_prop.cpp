@@ -24,9 +24,12 @@ bool cgal_verdict(const Map& g, const Map& h) {
 
 bool cgal_iso(const Map& g, const Map& h) {
   switch (g.dimension()) {
-    case 1: return cgal_verdict<1>(g, h);
-    case 2: return cgal_verdict<2>(g, h);
-    case 3: return cgal_verdict<3>(g, h);
+    case 1:
+      return cgal_verdict<1>(g, h);
+    case 2:
+      return cgal_verdict<2>(g, h);
+    case 3:
+      return cgal_verdict<3>(g, h);
   }
   throw std::logic_error("dimension");
 }
@@ -38,7 +41,8 @@ TEST(ModelCgalProps, SignatureEqualityIsCgalIsomorphism) {
     const Map g = c.build();
     Map m = g;
     Rng rng(c.seed * 1000003 + 11);
-    const Mutation mu = *rc::gen::arbitrary<bool>() ? resew_one_link(m, rng) : mutate_one_link(m, rng);
+    const Mutation mu =
+        *rc::gen::arbitrary<bool>() ? resew_one_link(m, rng) : mutate_one_link(m, rng);
     const Map h = permute_darts(m, *gen_permutation(m.capacity()));
     const bool ours = signature(g) == signature(h);
     const bool theirs = cgal_iso(g, h);

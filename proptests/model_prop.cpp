@@ -7,14 +7,14 @@
 #include <set>
 #include <tuple>
 
+#include "model/core/orbit.hpp"
+#include "model/core/position.hpp"
+#include "model/core/signature.hpp"
+#include "model/core/validity.hpp"
 #include "model/graph/constraints.hpp"
 #include "model/graph/dgraph.hpp"
 #include "model/map_io/map_json.hpp"
 #include "model/map_io/off.hpp"
-#include "model/core/position.hpp"
-#include "model/core/orbit.hpp"
-#include "model/core/signature.hpp"
-#include "model/core/validity.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 
@@ -81,7 +81,8 @@ TEST(ModelProps, ValidityLocatesEveryBrokenConstraint) {
       // The written dart (or its abandoned partner) is named.
       bool named = false;
       for (const auto& v : report.violations)
-        if (v.constraint == Constraint::NonOrientation && v.i == i && (v.at == d || v.at == old)) named = true;
+        if (v.constraint == Constraint::NonOrientation && v.i == i && (v.at == d || v.at == old))
+          named = true;
       RC_ASSERT(named);
     }
   }));
@@ -99,7 +100,8 @@ TEST(ModelProps, OrbitsPartitionTheDarts) {
       for (Dart x : orb) {
         RC_ASSERT(owner[x] == -1);
         owner[x] = k;
-        for (int i : o.dims()) RC_ASSERT(std::find(orb.begin(), orb.end(), g.alpha(i, x)) != orb.end());
+        for (int i : o.dims())
+          RC_ASSERT(std::find(orb.begin(), orb.end(), g.alpha(i, x)) != orb.end());
       }
       ++k;
     }
@@ -153,37 +155,39 @@ TEST(ModelProps, JsonRoundTrip) {
 // --- O-maps (Def. 32) ----------------------------------------------------------------------
 
 TEST(ModelProps, GeneratedOMapsAreValid) {
-  EXPECT_TRUE(check_property<MapCase>("omap_generated_valid", gen_omap_case(), [](const MapCase& c) {
-    const Map g = c.build();
-    RC_TAG(to_string(c.family));
-    RC_ASSERT(g.is_omap());
-    RC_ASSERT(check_validity(g).ok());
-    RC_ASSERT(check_map_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
-  }));
+  EXPECT_TRUE(
+      check_property<MapCase>("omap_generated_valid", gen_omap_case(), [](const MapCase& c) {
+        const Map g = c.build();
+        RC_TAG(to_string(c.family));
+        RC_ASSERT(g.is_omap());
+        RC_ASSERT(check_validity(g).ok());
+        RC_ASSERT(check_map_constraints(to_dgraph(g), g.dimension(), g.kind()).empty());
+      }));
 }
 
 TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
-  EXPECT_TRUE(check_property<MapCase>("omap_signature_json", gen_omap_case(4), [](const MapCase& c) {
-    const Map g = c.build();
-    assert_relabeling_invariant(g);
-    const EmbeddedMap f = read_map_json(write_map_json(g, {}));
-    RC_ASSERT(f.map.is_omap());
-    RC_ASSERT(is_isomorphic(g, f.map));
-    // Swapping the beta_1 images of two darts keeps a valid 2-O-map (beta_1 stays a permutation,
-    // no cycle constraint for n = 2); isomorphic or not, signature equality must agree with
-    // is_isomorphic.
-    if (g.dimension() == 2 && g.size() >= 2) {
-      Map m = g;
-      const auto darts = m.darts();
-      const Dart a = darts[*rc::gen::inRange<size_t>(0, darts.size())];
-      const Dart b = darts[*rc::gen::inRange<size_t>(0, darts.size())];
-      const Dart fa = m.alpha(1, a), fb = m.alpha(1, b);
-      m.set_alpha(1, a, fb);
-      m.set_alpha(1, b, fa);
-      RC_ASSERT(is_valid(m));
-      RC_ASSERT(is_isomorphic(g, m) == (signature(g) == signature(m)));
-    }
-  }));
+  EXPECT_TRUE(
+      check_property<MapCase>("omap_signature_json", gen_omap_case(4), [](const MapCase& c) {
+        const Map g = c.build();
+        assert_relabeling_invariant(g);
+        const EmbeddedMap f = read_map_json(write_map_json(g, {}));
+        RC_ASSERT(f.map.is_omap());
+        RC_ASSERT(is_isomorphic(g, f.map));
+        // Swapping the beta_1 images of two darts keeps a valid 2-O-map (beta_1 stays a
+        // permutation, no cycle constraint for n = 2); isomorphic or not, signature equality must
+        // agree with is_isomorphic.
+        if (g.dimension() == 2 && g.size() >= 2) {
+          Map m = g;
+          const auto darts = m.darts();
+          const Dart a = darts[*rc::gen::inRange<size_t>(0, darts.size())];
+          const Dart b = darts[*rc::gen::inRange<size_t>(0, darts.size())];
+          const Dart fa = m.alpha(1, a), fb = m.alpha(1, b);
+          m.set_alpha(1, a, fb);
+          m.set_alpha(1, b, fa);
+          RC_ASSERT(is_valid(m));
+          RC_ASSERT(is_isomorphic(g, m) == (signature(g) == signature(m)));
+        }
+      }));
 }
 
 // --- OFF round trip --------------------------------------------------------------------------
@@ -193,36 +197,37 @@ TEST(ModelProps, OMapSignatureRelabelAndJsonRoundTrip) {
 // OFF cannot describe (a face through one vertex twice, pinched vertices, non-manifold edges) are
 // refused by the writer or the reader with an Error: discarded, and counted by RC_TAG.
 TEST(ModelProps, OffRoundTrip) {
-  EXPECT_TRUE(check_property<MapCase>("off_roundtrip", gen_map_case_of_dim(2, 6), [](const MapCase& c) {
-    const Map g = c.build();
-    PositionEmbedding pos(kPositionName, OrbitType{1, 2});
-    double k = 0;
-    for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) {
-      pos.set(g, rep, Vec3{k, k * k, 1.0 / (k + 1)});
-      k += 1;
-    }
-    std::string text;
-    try {
-      text = write_off(g, pos);
-    } catch (const Error& e) {
-      RC_TAG("not OFF-writable");
-      RC_DISCARD(e.what());
-    }
-    EmbeddedMap back;
-    try {
-      back = read_off(text, "roundtrip.off");
-    } catch (const Error& e) {
-      RC_TAG("not OFF-readable (pinched)");
-      RC_DISCARD(e.what());
-    }
-    RC_TAG("round trip");
-    RC_ASSERT(is_isomorphic(g, back.map));
-    // Positions: the multiset of vertex positions is the same.
-    std::multiset<Vec3> pg, pb;
-    for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) pg.insert(pos.get(rep));
-    for (Dart rep : orbit_representatives(back.map, OrbitType{1, 2})) {
-      pb.insert(back.position().get(rep));
-    }
-    RC_ASSERT(pg == pb);
-  }));
+  EXPECT_TRUE(
+      check_property<MapCase>("off_roundtrip", gen_map_case_of_dim(2, 6), [](const MapCase& c) {
+        const Map g = c.build();
+        PositionEmbedding pos(kPositionName, OrbitType{1, 2});
+        double k = 0;
+        for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) {
+          pos.set(g, rep, Vec3{k, k * k, 1.0 / (k + 1)});
+          k += 1;
+        }
+        std::string text;
+        try {
+          text = write_off(g, pos);
+        } catch (const Error& e) {
+          RC_TAG("not OFF-writable");
+          RC_DISCARD(e.what());
+        }
+        EmbeddedMap back;
+        try {
+          back = read_off(text, "roundtrip.off");
+        } catch (const Error& e) {
+          RC_TAG("not OFF-readable (pinched)");
+          RC_DISCARD(e.what());
+        }
+        RC_TAG("round trip");
+        RC_ASSERT(is_isomorphic(g, back.map));
+        // Positions: the multiset of vertex positions is the same.
+        std::multiset<Vec3> pg, pb;
+        for (Dart rep : orbit_representatives(g, OrbitType{1, 2})) pg.insert(pos.get(rep));
+        for (Dart rep : orbit_representatives(back.map, OrbitType{1, 2})) {
+          pb.insert(back.position().get(rep));
+        }
+        RC_ASSERT(pg == pb);
+      }));
 }

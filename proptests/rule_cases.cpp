@@ -2,11 +2,11 @@
 
 #include <map>
 
-#include "model/testing/rule_family.hpp"
 #include "model/draw/rule_dot.hpp"
-#include "model/testing/random_maps.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "model/scheme/scheme_instantiation.hpp"
+#include "model/testing/random_maps.hpp"
+#include "model/testing/rule_family.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 
@@ -20,20 +20,26 @@ using namespace gmr::testing;
 
 namespace {
 
-constexpr RuleFamily kAll[] = {RuleFamily::Small,     RuleFamily::SmallOMap,     RuleFamily::FromMaps,
-                               RuleFamily::FromMapsOMap, RuleFamily::Component, RuleFamily::ComponentOMap,
+constexpr RuleFamily kAll[] = {RuleFamily::Small,         RuleFamily::SmallOMap,
+                               RuleFamily::FromMaps,      RuleFamily::FromMapsOMap,
+                               RuleFamily::Component,     RuleFamily::ComponentOMap,
                                RuleFamily::SchemeInstance};
 
 // Dimensions a family is drawn in.
 std::pair<int, int> dims_of(RuleFamily f) {
   switch (f) {
-    case RuleFamily::Small: return {1, 3};
-    case RuleFamily::SmallOMap: return {2, 3};
+    case RuleFamily::Small:
+      return {1, 3};
+    case RuleFamily::SmallOMap:
+      return {2, 3};
     case RuleFamily::FromMaps:
-    case RuleFamily::Component: return {1, 2};
+    case RuleFamily::Component:
+      return {1, 2};
     case RuleFamily::FromMapsOMap:
-    case RuleFamily::ComponentOMap: return {2, 2};
-    case RuleFamily::SchemeInstance: return {2, 3};
+    case RuleFamily::ComponentOMap:
+      return {2, 2};
+    case RuleFamily::SchemeInstance:
+      return {2, 3};
   }
   return {2, 2};
 }
@@ -61,25 +67,34 @@ Rule scheme_instance(Rng& rng, int n, size_t size) {
 
 const char* to_string(RuleFamily f) {
   switch (f) {
-    case RuleFamily::Small: return "small";
-    case RuleFamily::SmallOMap: return "small-omap";
-    case RuleFamily::FromMaps: return "from-maps";
-    case RuleFamily::FromMapsOMap: return "from-maps-omap";
-    case RuleFamily::Component: return "component";
-    case RuleFamily::ComponentOMap: return "component-omap";
-    case RuleFamily::SchemeInstance: return "scheme-instance";
+    case RuleFamily::Small:
+      return "small";
+    case RuleFamily::SmallOMap:
+      return "small-omap";
+    case RuleFamily::FromMaps:
+      return "from-maps";
+    case RuleFamily::FromMapsOMap:
+      return "from-maps-omap";
+    case RuleFamily::Component:
+      return "component";
+    case RuleFamily::ComponentOMap:
+      return "component-omap";
+    case RuleFamily::SchemeInstance:
+      return "scheme-instance";
   }
   return "?";
 }
 
 MapKind kind_of(RuleFamily f) {
-  return f == RuleFamily::SmallOMap || f == RuleFamily::FromMapsOMap || f == RuleFamily::ComponentOMap
+  return f == RuleFamily::SmallOMap || f == RuleFamily::FromMapsOMap ||
+                 f == RuleFamily::ComponentOMap
              ? MapKind::OMap
              : MapKind::GMap;
 }
 
 bool consistent_by_construction(RuleFamily f) {
-  return f == RuleFamily::Component || f == RuleFamily::ComponentOMap || f == RuleFamily::SchemeInstance;
+  return f == RuleFamily::Component || f == RuleFamily::ComponentOMap ||
+         f == RuleFamily::SchemeInstance;
 }
 
 const MapFamily& small_maps(int n, MapKind kind) {
@@ -110,7 +125,9 @@ Rule RuleCase::build() const {
 
 std::string RuleCase::str() const { return "RuleCase{" + corpus_line() + "}"; }
 
-std::string RuleCase::corpus_line() const { return CaseLine{to_string(family), n, size, seed}.str(); }
+std::string RuleCase::corpus_line() const {
+  return CaseLine{to_string(family), n, size, seed}.str();
+}
 
 std::optional<RuleCase> RuleCase::parse(const std::string& line) {
   const auto l = CaseLine::parse(line);
@@ -127,22 +144,28 @@ std::optional<RuleCase> RuleCase::parse(const std::string& line) {
 rc::Gen<RuleCase> gen_rule_case(const std::vector<RuleFamily>& families) {
   return rc::gen::mapcat(rc::gen::elementOf(families), [](RuleFamily f) {
     const auto [lo, hi] = dims_of(f);
-    return rc::gen::apply([f](int n, size_t size, uint64_t seed) { return RuleCase{f, n, size, seed}; },
-                          rc::gen::inRange(lo, hi + 1), rc::gen::inRange<size_t>(1, 4),
-                          rc::gen::inRange<uint64_t>(0, 1u << 20));
+    return rc::gen::apply(
+        [f](int n, size_t size, uint64_t seed) {
+          return RuleCase{f, n, size, seed};
+        },
+        rc::gen::inRange(lo, hi + 1), rc::gen::inRange<size_t>(1, 4),
+        rc::gen::inRange<uint64_t>(0, 1u << 20));
   });
 }
 
 rc::Gen<RuleCase> gen_arbitrary_rule_case() {
-  return gen_rule_case({RuleFamily::Small, RuleFamily::SmallOMap, RuleFamily::FromMaps, RuleFamily::FromMapsOMap});
+  return gen_rule_case(
+      {RuleFamily::Small, RuleFamily::SmallOMap, RuleFamily::FromMaps, RuleFamily::FromMapsOMap});
 }
 
 rc::Gen<RuleCase> gen_consistent_rule_case() {
-  return gen_rule_case({RuleFamily::Component, RuleFamily::ComponentOMap, RuleFamily::SchemeInstance});
+  return gen_rule_case(
+      {RuleFamily::Component, RuleFamily::ComponentOMap, RuleFamily::SchemeInstance});
 }
 
 std::string describe_rule(const Rule& r) {
-  return "--- rule (gmr.rule) ---\n" + rule_to_json(r).dump(2) + "\n--- diagram (DOT) ---\n" + to_dot(r);
+  return "--- rule (gmr.rule) ---\n" + rule_to_json(r).dump(2) + "\n--- diagram (DOT) ---\n" +
+         to_dot(r);
 }
 
 }  // namespace gmr::prop

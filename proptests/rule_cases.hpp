@@ -20,14 +20,22 @@
 #include <string>
 
 #include "checker/semantic.hpp"
-#include "model/rewrite/rule.hpp"
 #include "model/graph/map_family.hpp"
+#include "model/rewrite/rule.hpp"
 
 namespace gmr::prop {
 using graph::MapFamily;
 using rewrite::Rule;
 
-enum class RuleFamily { Small, SmallOMap, FromMaps, FromMapsOMap, Component, ComponentOMap, SchemeInstance };
+enum class RuleFamily {
+  Small,
+  SmallOMap,
+  FromMaps,
+  FromMapsOMap,
+  Component,
+  ComponentOMap,
+  SchemeInstance
+};
 const char* to_string(RuleFamily f);
 MapKind kind_of(RuleFamily f);
 bool consistent_by_construction(RuleFamily f);
@@ -51,6 +59,8 @@ rc::Gen<RuleCase> gen_arbitrary_rule_case();
 rc::Gen<RuleCase> gen_consistent_rule_case();
 
 std::string describe_rule(const Rule& r);
-inline void showValue(const RuleCase& c, std::ostream& os) { os << c.str() << "\n" << describe_rule(c.build()); }
+inline void showValue(const RuleCase& c, std::ostream& os) {
+  os << c.str() << "\n" << describe_rule(c.build());
+}
 
 }  // namespace gmr::prop

@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "model/draw/rule_dot.hpp"
-#include "model/testing/random_schemes.hpp"
 #include "model/rule_io/scheme_json.hpp"
+#include "model/testing/random_schemes.hpp"
 #include "proptests/case_line.hpp"
 #include "proptests/library.hpp"
 
@@ -16,10 +16,14 @@ using namespace gmr::testing;
 
 const char* to_string(SchemeFamily f) {
   switch (f) {
-    case SchemeFamily::Random: return "random";
-    case SchemeFamily::LibraryMutant: return "library-mutant";
-    case SchemeFamily::Library: return "library";
-    case SchemeFamily::Copies: return "copies";
+    case SchemeFamily::Random:
+      return "random";
+    case SchemeFamily::LibraryMutant:
+      return "library-mutant";
+    case SchemeFamily::Library:
+      return "library";
+    case SchemeFamily::Copies:
+      return "copies";
   }
   return "?";
 }
@@ -43,14 +47,18 @@ RuleScheme SchemeCase::build() const {
 
 std::string SchemeCase::str() const { return "SchemeCase{" + corpus_line() + "}"; }
 
-std::string SchemeCase::corpus_line() const { return CaseLine{to_string(family), n, size, seed}.str(); }
+std::string SchemeCase::corpus_line() const {
+  return CaseLine{to_string(family), n, size, seed}.str();
+}
 
 std::optional<SchemeCase> SchemeCase::parse(const std::string& line) {
   const auto l = CaseLine::parse(line);
   if (!l || l->n < 1 || l->n > 3) return std::nullopt;
-  for (SchemeFamily f : {SchemeFamily::Random, SchemeFamily::LibraryMutant, SchemeFamily::Library, SchemeFamily::Copies})
+  for (SchemeFamily f : {SchemeFamily::Random, SchemeFamily::LibraryMutant, SchemeFamily::Library,
+                         SchemeFamily::Copies})
     if (l->family == to_string(f)) {
-      if ((f == SchemeFamily::LibraryMutant || f == SchemeFamily::Library) && l->n < 2) return std::nullopt;
+      if ((f == SchemeFamily::LibraryMutant || f == SchemeFamily::Library) && l->n < 2)
+        return std::nullopt;
       return SchemeCase{f, l->n, l->size, l->seed};
     }
   return std::nullopt;
@@ -59,19 +67,26 @@ std::optional<SchemeCase> SchemeCase::parse(const std::string& line) {
 rc::Gen<SchemeCase> gen_scheme_case_of_dim(int n) {
   std::vector<SchemeFamily> fams{SchemeFamily::Random, SchemeFamily::Copies};
   if (n >= 2) fams.insert(fams.end(), {SchemeFamily::LibraryMutant, SchemeFamily::Library});
-  return rc::gen::apply([n](SchemeFamily f, size_t size, uint64_t seed) { return SchemeCase{f, n, size, seed}; },
-                        rc::gen::elementOf(fams), rc::gen::inRange<size_t>(1, 4),
-                        rc::gen::inRange<uint64_t>(0, 1u << 20));
+  return rc::gen::apply(
+      [n](SchemeFamily f, size_t size, uint64_t seed) {
+        return SchemeCase{f, n, size, seed};
+      },
+      rc::gen::elementOf(fams), rc::gen::inRange<size_t>(1, 4),
+      rc::gen::inRange<uint64_t>(0, 1u << 20));
 }
 
 rc::Gen<SchemeCase> gen_copies_scheme_case() {
   return rc::gen::apply(
-      [](int n, size_t size, uint64_t seed) { return SchemeCase{SchemeFamily::Copies, n, size, seed}; },
-      rc::gen::inRange(1, 4), rc::gen::inRange<size_t>(1, 4), rc::gen::inRange<uint64_t>(0, 1u << 20));
+      [](int n, size_t size, uint64_t seed) {
+        return SchemeCase{SchemeFamily::Copies, n, size, seed};
+      },
+      rc::gen::inRange(1, 4), rc::gen::inRange<size_t>(1, 4),
+      rc::gen::inRange<uint64_t>(0, 1u << 20));
 }
 
 std::string describe_scheme(const RuleScheme& s) {
-  return "--- scheme (gmr.rule) ---\n" + scheme_to_json_text(s) + "\n--- diagram (DOT) ---\n" + to_dot(s);
+  return "--- scheme (gmr.rule) ---\n" + scheme_to_json_text(s) + "\n--- diagram (DOT) ---\n" +
+         to_dot(s);
 }
 
 }  // namespace gmr::prop

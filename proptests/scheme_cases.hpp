@@ -38,6 +38,8 @@ rc::Gen<SchemeCase> gen_scheme_case_of_dim(int n);
 rc::Gen<SchemeCase> gen_copies_scheme_case();
 
 std::string describe_scheme(const RuleScheme& s);
-inline void showValue(const SchemeCase& c, std::ostream& os) { os << c.str() << "\n" << describe_scheme(c.build()); }
+inline void showValue(const SchemeCase& c, std::ostream& os) {
+  os << c.str() << "\n" << describe_scheme(c.build());
+}
 
 }  // namespace gmr::prop

@@ -10,9 +10,9 @@
 #include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/core/error.hpp"
+#include "model/core/validity.hpp"
 #include "model/scheme/scheme_engine.hpp"
 #include "model/scheme/tests/scheme_dpo_compare.hpp"
-#include "model/core/validity.hpp"
 #include "proptests/generators.hpp"
 #include "proptests/harness.hpp"
 #include "proptests/library.hpp"
@@ -33,7 +33,8 @@ void engine_dpo_property(const RuleScheme& s, bool accepted, size_t max_map_size
   RC_PRE(g.size() > 0u);
   const auto darts = g.darts();
   std::vector<Dart> hooks;
-  for (size_t h = 0; h < s.hooks.size(); ++h) hooks.push_back(darts[*rc::gen::inRange<size_t>(0, darts.size())]);
+  for (size_t h = 0; h < s.hooks.size(); ++h)
+    hooks.push_back(darts[*rc::gen::inRange<size_t>(0, darts.size())]);
   RC_LOG() << "map " << mc.str() << ", hooks";
   for (Dart h : hooks) RC_LOG() << " " << h;
   RC_LOG() << "\n";
@@ -75,26 +76,30 @@ TEST(SchemeProps, LibraryIsLoaded) {
 }
 
 TEST(SchemeProps, EngineEqualsDpoAndAcceptedSchemesPreserveGMaps2D) {
-  EXPECT_TRUE(check_property<SchemeCase>("scheme_engine_dpo_2d", gen_scheme_case_of_dim(2), scheme_case_property));
+  EXPECT_TRUE(check_property<SchemeCase>("scheme_engine_dpo_2d", gen_scheme_case_of_dim(2),
+                                         scheme_case_property));
 }
 
 TEST(SchemeProps, EngineEqualsDpoAndAcceptedSchemesPreserveGMaps3D) {
-  EXPECT_TRUE(check_property<SchemeCase>("scheme_engine_dpo_3d", gen_scheme_case_of_dim(3), scheme_case_property));
+  EXPECT_TRUE(check_property<SchemeCase>("scheme_engine_dpo_3d", gen_scheme_case_of_dim(3),
+                                         scheme_case_property));
 }
 
 TEST(SchemeProps, EngineEqualsDpoOnRandom1DSchemes) {
-  EXPECT_TRUE(check_property<SchemeCase>("scheme_engine_dpo_1d", gen_scheme_case_of_dim(1), scheme_case_property));
+  EXPECT_TRUE(check_property<SchemeCase>("scheme_engine_dpo_1d", gen_scheme_case_of_dim(1),
+                                         scheme_case_property));
 }
 
 // Schemes consistent by construction are accepted by the checker, and their applications give
 // valid G-maps (with the engine == DPO property on the way).
 TEST(SchemeProps, ConsistentByConstructionSchemesAreAcceptedAndPreserve) {
-  EXPECT_TRUE(check_property<SchemeCase>("scheme_valid_accepted", gen_copies_scheme_case(), [](const SchemeCase& c) {
-    const RuleScheme s = c.build();
-    RC_ASSERT(engine_usable(s));
-    const auto rep = check_scheme(s);
-    if (!rep.ok()) RC_LOG() << to_text(rep) << "\n";
-    RC_ASSERT(rep.ok());
-    engine_dpo_property(s, true, c.n == 3 ? 2 : 4);
-  }));
+  EXPECT_TRUE(check_property<SchemeCase>("scheme_valid_accepted", gen_copies_scheme_case(),
+                                         [](const SchemeCase& c) {
+                                           const RuleScheme s = c.build();
+                                           RC_ASSERT(engine_usable(s));
+                                           const auto rep = check_scheme(s);
+                                           if (!rep.ok()) RC_LOG() << to_text(rep) << "\n";
+                                           RC_ASSERT(rep.ok());
+                                           engine_dpo_property(s, true, c.n == 3 ? 2 : 4);
+                                         }));
 }

@@ -3,7 +3,8 @@
 # downloaded). Used by tools/demo.sh and tools/test.sh.
 set -euo pipefail
 pkgs=(cmake g++ make ninja-build ccache lld libz3-dev librapidcheck-dev libgtest-dev libgmock-dev graphviz
-      libgraphviz-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev libbenchmark-dev libcgal-dev libcgal-demo pkg-config)
+      libgraphviz-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev libbenchmark-dev libcgal-dev libcgal-demo pkg-config
+      clang-format)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -5,6 +5,9 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/tools/setup.sh"
+# The C++ sources as .clang-format says (tools/format.sh formats them).
+echo "== gmr tests: formatting =="
+"$root/tools/format.sh" --check
 # ccache keys on paths relative to the checkout, so a fresh clone reuses the cache. With debug
 # information (the sanitizer build) ccache would also key on the working directory, that is on the
 # checkout's path: NOHASHDIR turns that off (the debug information then names the directory of the

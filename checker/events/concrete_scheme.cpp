@@ -30,7 +30,8 @@ GraphScheme side_of(const DGraph& d) {
 
 scheme::RuleScheme scheme_of_concrete_rule(const rewrite::Rule& r) {
   if (r.kind() != MapKind::GMap)
-    throw Error(ErrorCode::Usage, "rule schemes (and their events) rewrite G-maps; this rule rewrites O-maps",
+    throw Error(ErrorCode::Usage,
+                "rule schemes (and their events) rewrite G-maps; this rule rewrites O-maps",
                 "rule " + r.name());
   scheme::RuleScheme s;
   s.name = r.name();

@@ -5,9 +5,9 @@
 // (Gaide et al. 2023 §3: a pattern orbit is then made of explicit arcs only).
 //
 // Nodes keep their names (preserved nodes share a name, as in the concrete rule); an i-link of the
-// D-graph (the arcs a -i-> b and b -i-> a, or one i-loop) is one explicit arc. Hooks: the first node,
-// in L order, of every connected component of L (the engine propagates the match from them along
-// explicit arcs). A rule without L nodes has no hook (it only creates).
+// D-graph (the arcs a -i-> b and b -i-> a, or one i-loop) is one explicit arc. Hooks: the first
+// node, in L order, of every connected component of L (the engine propagates the match from them
+// along explicit arcs). A rule without L nodes has no hook (it only creates).
 //
 // Throws Error(Usage) for an O-map rule (rule schemes rewrite G-maps).
 #pragma once

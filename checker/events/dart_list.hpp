@@ -21,7 +21,9 @@ class DartList {
 
   DartList() = default;
   DartList(std::initializer_list<Dart> ds) { append(ds.begin(), ds.end()); }
-  DartList(const std::vector<Dart>& ds) { append(ds.begin(), ds.end()); }  // NOLINT: implicit, as a vector
+  DartList(const std::vector<Dart>& ds) {
+    append(ds.begin(), ds.end());
+  }  // NOLINT: implicit, as a vector
   DartList(const DartList& o) { append(o.begin(), o.end()); }
   DartList(DartList&& o) noexcept : size_(o.size_), heap_(std::move(o.heap_)) {
     std::copy(o.small_, o.small_ + kInline, small_);

@@ -52,17 +52,22 @@ std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const Map& h
       continue;
     }
     const Dart hn = hname[d];
-    if (g_to[gn] == kNoDart) g_to[gn] = hn;
-    else if (g_to[gn] != hn) g_many[gn] = 1;
-    if (h_from[hn] == kNoDart) h_from[hn] = gn;
-    else if (h_from[hn] != gn) h_many[hn] = 1;
+    if (g_to[gn] == kNoDart)
+      g_to[gn] = hn;
+    else if (g_to[gn] != hn)
+      g_many[gn] = 1;
+    if (h_from[hn] == kNoDart)
+      h_from[hn] = gn;
+    else if (h_from[hn] != gn)
+      h_many[hn] = 1;
     for (size_t p = 0; p < o.size(); ++p)
       if (before.links[p][d] != h.alpha(o[p], d)) g_changed[gn] = 1;
   }
   // The (G-orbit, H-orbit) pairs of the preserved darts of split G-orbits and merged H-orbits.
   std::vector<std::pair<Dart, Dart>> pairs;
   for (Dart d = 0; d < gcap; ++d)
-    if (alive_g(d) && alive_h(d) && (g_many[gname[d]] || h_many[hname[d]])) pairs.emplace_back(gname[d], hname[d]);
+    if (alive_g(d) && alive_h(d) && (g_many[gname[d]] || h_many[hname[d]]))
+      pairs.emplace_back(gname[d], hname[d]);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   std::vector<OrbitEvent> out;
@@ -94,8 +99,11 @@ std::vector<OrbitEvent> dynamic_events(const OrbitSnapshot& before, const Map& h
     if (g_to[d] == kNoDart) {
       out.push_back({OrbitEventKind::Deletion, om, {d}, {}, EventStatus::Observed});
     } else if (!g_many[d] && !h_many[g_to[d]] && (g_changed[d] || g_listed[d])) {
-      out.push_back({g_changed[d] ? OrbitEventKind::Modification : OrbitEventKind::NonModification, om, {d},
-                     {g_to[d]}, EventStatus::Observed});
+      out.push_back({g_changed[d] ? OrbitEventKind::Modification : OrbitEventKind::NonModification,
+                     om,
+                     {d},
+                     {g_to[d]},
+                     EventStatus::Observed});
     }
   }
   for (Dart d = 0; d < hcap; ++d)

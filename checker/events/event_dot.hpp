@@ -12,6 +12,7 @@
 
 namespace gmr::events {
 
-std::vector<draw::DotHighlight> dot_highlights(const scheme::RuleScheme& s, const OrbitTypeEvents& t);
+std::vector<draw::DotHighlight> dot_highlights(const scheme::RuleScheme& s,
+                                               const OrbitTypeEvents& t);
 
 }  // namespace gmr::events

@@ -48,9 +48,15 @@ std::string describe(const RuleScheme& s, const OrbitTypeEvents& t, const Patter
   }
   const auto l = orbit_names(s, t, Side::L, e.left), r = orbit_names(s, t, Side::R, e.right);
   switch (e.kind) {
-    case PatternEventKind::Creation: text += " of " + join(r, ", "); break;
-    case PatternEventKind::Deletion: text += " of " + join(l, ", "); break;
-    default: text += " of " + join(l, ", ") + " -> " + join(r, ", "); break;
+    case PatternEventKind::Creation:
+      text += " of " + join(r, ", ");
+      break;
+    case PatternEventKind::Deletion:
+      text += " of " + join(l, ", ");
+      break;
+    default:
+      text += " of " + join(l, ", ") + " -> " + join(r, ", ");
+      break;
   }
   text += std::string(", ") + to_string(e.certainty);
   if (e.certainty == Certainty::Possible) {
@@ -141,8 +147,11 @@ ordered_json event_log_to_json(const RuleScheme& s, const StaticEvents& st, cons
     o["traversed"] = l.traversed;
     ordered_json evs = ordered_json::array();
     for (const auto& e : l.events)
-      evs.push_back({{"event", to_string(e.kind)}, {"status", to_string(e.status)}, {"before", e.before.vector()},
-                     {"after", e.after.vector()}, {"text", e.describe()}});
+      evs.push_back({{"event", to_string(e.kind)},
+                     {"status", to_string(e.status)},
+                     {"before", e.before.vector()},
+                     {"after", e.after.vector()},
+                     {"text", e.describe()}});
     o["events"] = evs;
     ordered_json cs = ordered_json::array();
     for (const auto& c : l.checks)
@@ -157,7 +166,8 @@ ordered_json event_log_to_json(const RuleScheme& s, const StaticEvents& st, cons
   return j;
 }
 
-ordered_json event_logs_to_json(const RuleScheme& s, const StaticEvents& st, const std::vector<EventLog>& logs) {
+ordered_json event_logs_to_json(const RuleScheme& s, const StaticEvents& st,
+                                const std::vector<EventLog>& logs) {
   ordered_json j;
   j["format"] = kEventsFormat;
   j["version"] = kEventsVersion;
@@ -176,7 +186,8 @@ std::string event_log_to_text(const EventLog& log) {
     for (const auto& c : l.checks) confirmed += c.different;
     os << l.orbit.str() << " (" << l.checks.size() << " pair" << (l.checks.size() == 1 ? "" : "s")
        << " checked, " << confirmed << " different; " << l.traversed << " darts traversed)\n";
-    for (const auto& e : l.events) os << "  " << e.describe() << " [" << to_string(e.status) << "]\n";
+    for (const auto& e : l.events)
+      os << "  " << e.describe() << " [" << to_string(e.status) << "]\n";
   }
   return os.str();
 }

@@ -4,15 +4,15 @@
 //    "orbits": [{"orbit": "<1>", "left": [pattern orbit], "right": [...], "events": [...]}]}
 //   {"format": "gmr.events", "version": 1, "kind": "log", "rule": ..., "hooks": [...],
 //    "orbits": [{"orbit": "<1>", "traversed": t, "events": [...], "checks": [...]}]}
-//   {"format": "gmr.events", "version": 1, "kind": "log-set", "rule": ..., "applications": [log, ...]}
+//   {"format": "gmr.events", "version": 1, "kind": "log-set", "rule": ..., "applications": [log,
+//   ...]}
 //     the logs of repeated applications (apply everywhere), in order; log k names the darts of the
 //     map after the applications before it.
 // Positions k of implicit events are counted from 1, as the paper's "k-th implicit link".
 #pragma once
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "checker/events/event_log.hpp"
 #include "checker/events/static_events.hpp"
@@ -25,7 +25,8 @@ inline constexpr int kEventsVersion = 1;
 nlohmann::ordered_json static_events_to_json(const scheme::RuleScheme& s, const StaticEvents& st);
 std::string static_events_to_text(const scheme::RuleScheme& s, const StaticEvents& st);
 
-nlohmann::ordered_json event_log_to_json(const scheme::RuleScheme& s, const StaticEvents& st, const EventLog& log);
+nlohmann::ordered_json event_log_to_json(const scheme::RuleScheme& s, const StaticEvents& st,
+                                         const EventLog& log);
 std::string event_log_to_text(const EventLog& log);
 nlohmann::ordered_json event_logs_to_json(const scheme::RuleScheme& s, const StaticEvents& st,
                                           const std::vector<EventLog>& logs);

@@ -57,16 +57,28 @@ Scratch& scratch() {
 // and orbit index b, `table` being the match (L, on G) or the comatch (R, on H).
 class InstanceNamer {
  public:
-  InstanceNamer(const Map& g, const OrbitGraph& O, const std::vector<Dart>& table, size_t nodes, Scratch& sc)
-      : g_(g), O_(O), table_(table), nodes_(nodes), s_(O.size()), parent_(sc.parent), low_(sc.low),
-        comps_(sc.comps), slot_comp_(sc.slot_comp), stack_(sc.stack), visited_(sc.visited) {}
+  InstanceNamer(const Map& g, const OrbitGraph& O, const std::vector<Dart>& table, size_t nodes,
+                Scratch& sc)
+      : g_(g),
+        O_(O),
+        table_(table),
+        nodes_(nodes),
+        s_(O.size()),
+        parent_(sc.parent),
+        low_(sc.low),
+        comps_(sc.comps),
+        slot_comp_(sc.slot_comp),
+        stack_(sc.stack),
+        visited_(sc.visited) {}
 
   void names(const PatternOrbits& p, size_t& traversed, std::vector<Dart>& out) {
     out.assign(nodes_ * s_, kNoDart);
     comps_.clear();
     for (uint32_t c = 0; c < p.size(); ++c) {
-      if (p.complete[c]) name_complete(p, c, out);
-      else list_components(p, c);
+      if (p.complete[c])
+        name_complete(p, c, out);
+      else
+        list_components(p, c);
     }
     if (!comps_.empty()) name_by_traversal(p, out, traversed);
   }
@@ -110,7 +122,8 @@ class InstanceNamer {
         comps_.push_back({table_[m0 * s_ + b], kNoDart});
       }
     for (uint32_t m : p.nodes[c])
-      for (uint32_t b = 0; b < s_; ++b) slot_comp_[m * s_ + b] = slot_comp_[m0 * s_ + find(parent_, b)];
+      for (uint32_t b = 0; b < s_; ++b)
+        slot_comp_[m * s_ + b] = slot_comp_[m0 * s_ + find(parent_, b)];
   }
 
   // One traversal per orbit of the map holding components of incomplete pattern orbits (of any
@@ -122,7 +135,8 @@ class InstanceNamer {
     for (size_t i = 0; i < comps_.size(); ++i) {
       if (comps_[i].name != kNoDart) continue;
       visited_.clear();
-      visit_orbit_marked(g_, p.orbit, comps_[i].rep, seen.id(), stack_, [&](Dart x) { visited_.push_back(x); });
+      visit_orbit_marked(g_, p.orbit, comps_[i].rep, seen.id(), stack_,
+                         [&](Dart x) { visited_.push_back(x); });
       const Dart low = *std::min_element(visited_.begin(), visited_.end());
       for (size_t j = i; j < comps_.size(); ++j)
         if (comps_[j].name == kNoDart && seen.test(comps_[j].rep)) comps_[j].name = low;
@@ -142,8 +156,8 @@ class InstanceNamer {
   size_t nodes_, s_;
   std::vector<uint32_t>& parent_;
   std::vector<Dart>& low_;
-  std::vector<Component>& comps_;     // components of the incomplete pattern orbits
-  std::vector<uint32_t>& slot_comp_;  // slot -> its component (incomplete pattern orbits only)
+  std::vector<Component>& comps_;       // components of the incomplete pattern orbits
+  std::vector<uint32_t>& slot_comp_;    // slot -> its component (incomplete pattern orbits only)
   std::vector<Dart>&stack_, &visited_;  // traversal buffers, reused across orbits
 };
 
@@ -199,12 +213,15 @@ class Recorder {
     std::sort(v.begin(), v.end());
     size_t w = 0;
     for (size_t k = 0; k < v.size(); ++k) {
-      if (w > 0 && v[w - 1].first == v[k].first) v[w - 1].second = v[w - 1].second || v[k].second;
-      else v[w++] = v[k];
+      if (w > 0 && v[w - 1].first == v[k].first)
+        v[w - 1].second = v[w - 1].second || v[k].second;
+      else
+        v[w++] = v[k];
     }
     v.resize(w);
   }
-  static const std::pair<Dart, bool>* lookup(const std::vector<std::pair<Dart, bool>>& v, Dart name) {
+  static const std::pair<Dart, bool>* lookup(const std::vector<std::pair<Dart, bool>>& v,
+                                             Dart name) {
     auto it = std::lower_bound(v.begin(), v.end(), std::make_pair(name, false));
     return it != v.end() && it->first == name ? &*it : nullptr;
   }
@@ -253,9 +270,11 @@ class Recorder {
           const Dart nb = sp ? hname[l_slot(rb, b2)] : gname[l_slot(p.b, b2)];
           const bool different = na != nb;
           if (!certain)
-            log.checks.push_back({ei, sp ? 'H' : 'G', M_[l_slot(p.a, b)], M_[l_slot(p.b, b2)], different});
+            log.checks.push_back(
+                {ei, sp ? 'H' : 'G', M_[l_slot(p.a, b)], M_[l_slot(p.b, b2)], different});
           if (!different) continue;
-          (sp ? split : merge).emplace_back(sp ? gname[l_slot(p.a, b)] : hname[l_slot(ra, b)], certain);
+          (sp ? split : merge)
+              .emplace_back(sp ? gname[l_slot(p.a, b)] : hname[l_slot(ra, b)], certain);
         }
       }
     }
@@ -289,7 +308,11 @@ class Recorder {
     std::sort(into.begin(), into.end());
     into.erase(std::unique(into.begin(), into.end()), into.end());
     for (auto [hn, certain] : merge) {
-      OrbitEvent ev{OrbitEventKind::Merge, om, {}, {hn}, certain ? EventStatus::Certain : EventStatus::Confirmed};
+      OrbitEvent ev{OrbitEventKind::Merge,
+                    om,
+                    {},
+                    {hn},
+                    certain ? EventStatus::Certain : EventStatus::Confirmed};
       for (auto it = std::lower_bound(into.begin(), into.end(), std::make_pair(hn, Dart(0)));
            it != into.end() && it->first == hn; ++it)
         ev.before.push_back(it->second);
@@ -311,21 +334,31 @@ class Recorder {
       std::sort(hs.begin(), hs.end());
       hs.erase(std::unique(hs.begin(), hs.end()), hs.end());
       if (const auto* sp = lookup(split, gn)) {
-        log.events.push_back({OrbitEventKind::Split, om, {gn}, hs, sp->second ? EventStatus::Certain : EventStatus::Confirmed});
+        log.events.push_back({OrbitEventKind::Split,
+                              om,
+                              {gn},
+                              hs,
+                              sp->second ? EventStatus::Certain : EventStatus::Confirmed});
         continue;
       }
       if (lookup(merge, hs.front())) continue;  // part of a merge
-      log.events.push_back({changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification, om, {gn},
-                            {hs.front()}, fl || changed == nm ? EventStatus::Refuted : EventStatus::Certain});
+      log.events.push_back(
+          {changed ? OrbitEventKind::Modification : OrbitEventKind::NonModification,
+           om,
+           {gn},
+           {hs.front()},
+           fl || changed == nm ? EventStatus::Refuted : EventStatus::Certain});
     }
   }
 
   const RuleScheme& s_;
   const StaticEvents& st_;
-  const OrbitGraph* O_ = nullptr;  // the hook orbit graph, alive from before_rewrite to after_rewrite
+  const OrbitGraph* O_ =
+      nullptr;  // the hook orbit graph, alive from before_rewrite to after_rewrite
   size_t ns_ = 0;
   int dims_ = 0;
-  const std::vector<Dart>* match_ = nullptr;  // the match, alive from before_rewrite to after_rewrite
+  const std::vector<Dart>* match_ =
+      nullptr;  // the match, alive from before_rewrite to after_rewrite
   std::vector<Dart> old_;
   const std::vector<Dart>* T_ = nullptr;  // the comatch, after the rewrite
   std::vector<OrbitTypeLog> logs_;
@@ -348,19 +381,22 @@ EventRecorder::EventRecorder(const RuleScheme& s, const StaticEvents& analysis,
   for (const auto& t : analysis.orbits)
     if (t.left.class_of.size() != s.left.size() || t.right.class_of.size() != s.right.size() ||
         analysis.right_of.size() != s.left.size())
-      throw Error(ErrorCode::Usage, "the static events do not match the scheme's nodes", "scheme " + s.name);
+      throw Error(ErrorCode::Usage, "the static events do not match the scheme's nodes",
+                  "scheme " + s.name);
 }
 
 EventRecorder::~EventRecorder() = default;
 
 // Merges are checked on G, before the rewrite; `also` (embedding propagation) sees both phases.
-void EventRecorder::before_rewrite(const Map& before, const SchemeApplication& res, const OrbitGraph& O) {
+void EventRecorder::before_rewrite(const Map& before, const SchemeApplication& res,
+                                   const OrbitGraph& O) {
   impl_->rec.before(before, O, res);
   if (also_) also_->before_rewrite(before, res, O);
 }
 
 // Splits are checked on H, after it; the hook orbit O is still alive here.
-void EventRecorder::after_rewrite(const Map& after, const SchemeApplication& res, const OrbitGraph& O) {
+void EventRecorder::after_rewrite(const Map& after, const SchemeApplication& res,
+                                  const OrbitGraph& O) {
   EventLog log;
   log.rule = s_.name;
   // Hook k at orbit dart 0: the reference hook starts the hook orbit, and the orbit isomorphism of

@@ -26,8 +26,8 @@
 // G- or H-orbit of an incomplete pattern orbit (the whole component for <0,..,n>), however many
 // instance components of however many pattern orbits it holds.
 #pragma once
-#include <string>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "checker/events/orbit_event.hpp"
@@ -46,8 +46,8 @@ struct PairCheck {
 
 struct OrbitTypeLog {
   OrbitType orbit;
-  // Creations and deletions (in the order of the pattern events and of the instances), merges (by name),
-  // then splits, modifications and non-modifications by G-orbit name.
+  // Creations and deletions (in the order of the pattern events and of the instances), merges (by
+  // name), then splits, modifications and non-modifications by G-orbit name.
   std::vector<OrbitEvent> events;
   std::vector<PairCheck> checks;
   size_t traversed = 0;  // darts visited by the traversals of incomplete instances
@@ -68,10 +68,13 @@ struct EventLog {
 // analysis must outlive the recorder.
 class EventRecorder : public scheme::ApplicationObserver {
  public:
-  EventRecorder(const scheme::RuleScheme& s, const StaticEvents& analysis, scheme::ApplicationObserver* also = nullptr);
+  EventRecorder(const scheme::RuleScheme& s, const StaticEvents& analysis,
+                scheme::ApplicationObserver* also = nullptr);
   ~EventRecorder() override;
-  void before_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
-  void after_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  void before_rewrite(const Map& g, const scheme::SchemeApplication& app,
+                      const scheme::OrbitGraph& O) override;
+  void after_rewrite(const Map& g, const scheme::SchemeApplication& app,
+                     const scheme::OrbitGraph& O) override;
   std::vector<EventLog>& logs() { return logs_; }
 
  private:

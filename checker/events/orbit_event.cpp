@@ -6,22 +6,32 @@ namespace gmr::events {
 
 const char* to_string(OrbitEventKind k) {
   switch (k) {
-    case OrbitEventKind::Creation: return "creation";
-    case OrbitEventKind::Deletion: return "deletion";
-    case OrbitEventKind::Split: return "split";
-    case OrbitEventKind::Merge: return "merge";
-    case OrbitEventKind::Modification: return "modification";
-    case OrbitEventKind::NonModification: return "non-modification";
+    case OrbitEventKind::Creation:
+      return "creation";
+    case OrbitEventKind::Deletion:
+      return "deletion";
+    case OrbitEventKind::Split:
+      return "split";
+    case OrbitEventKind::Merge:
+      return "merge";
+    case OrbitEventKind::Modification:
+      return "modification";
+    case OrbitEventKind::NonModification:
+      return "non-modification";
   }
   return "?";
 }
 
 const char* to_string(EventStatus s) {
   switch (s) {
-    case EventStatus::Certain: return "certain";
-    case EventStatus::Confirmed: return "confirmed";
-    case EventStatus::Refuted: return "refuted";
-    case EventStatus::Observed: return "observed";
+    case EventStatus::Certain:
+      return "certain";
+    case EventStatus::Confirmed:
+      return "confirmed";
+    case EventStatus::Refuted:
+      return "refuted";
+    case EventStatus::Observed:
+      return "observed";
   }
   return "?";
 }
@@ -46,15 +56,18 @@ std::string names(char side, DimMask m, const DartList& ds, bool braces) {
 
 std::string OrbitEvent::describe() const {
   switch (kind) {
-    case OrbitEventKind::Creation: return "Creation " + names('H', orbit, after, false);
-    case OrbitEventKind::Deletion: return "Deletion " + names('G', orbit, before, false);
+    case OrbitEventKind::Creation:
+      return "Creation " + names('H', orbit, after, false);
+    case OrbitEventKind::Deletion:
+      return "Deletion " + names('G', orbit, before, false);
     case OrbitEventKind::Split:
       return "Split " + names('G', orbit, before, false) + " -> " + names('H', orbit, after, true);
     case OrbitEventKind::Merge:
       return "Merge " + names('G', orbit, before, true) + " -> " + names('H', orbit, after, false);
     case OrbitEventKind::Modification:
       return "Modif " + names('G', orbit, before, false) + " -> " + names('H', orbit, after, false);
-    case OrbitEventKind::NonModification: return "No modif " + names('H', orbit, after, false);
+    case OrbitEventKind::NonModification:
+      return "No modif " + names('H', orbit, after, false);
   }
   return "?";
 }

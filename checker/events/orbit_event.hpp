@@ -27,17 +27,17 @@ const char* to_string(OrbitEventKind k);
 enum class EventStatus {
   Certain,    // decided by the static analysis alone
   Confirmed,  // a possible split or merge, confirmed on its instance pairs
-  Refuted,    // a (non-)modification where a possible split or merge was not confirmed, or where the
-              // static verdict, modification, was refuted by the links (a loop rewritten into itself)
-  Observed,   // found by comparing all orbits (the dynamic detector)
+  Refuted,  // a (non-)modification where a possible split or merge was not confirmed, or where the
+            // static verdict, modification, was refuted by the links (a loop rewritten into itself)
+  Observed,  // found by comparing all orbits (the dynamic detector)
 };
 const char* to_string(EventStatus s);
 
 struct OrbitEvent {
   OrbitEventKind kind = OrbitEventKind::Modification;
-  DimMask orbit = 0;          // the orbit type's dimensions (a mask: no allocation per event)
-  DartList before;  // G-orbits (lowest ids, increasing); empty for a creation
-  DartList after;   // H-orbits (lowest ids, increasing); empty for a deletion
+  DimMask orbit = 0;  // the orbit type's dimensions (a mask: no allocation per event)
+  DartList before;    // G-orbits (lowest ids, increasing); empty for a creation
+  DartList after;     // H-orbits (lowest ids, increasing); empty for a deletion
   EventStatus status = EventStatus::Observed;
 
   // The event without its status, for comparisons.

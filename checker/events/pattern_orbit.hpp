@@ -1,8 +1,8 @@
-// Orbits inside the patterns of a rule scheme (Gaide et al. 2023, §2.2): X<o>(n), for a side X (L or
-// R) and an orbit type <o>, is the set of nodes of X reachable from n through explicit arcs labelled
-// in <o>, with those arcs and the nodes' implicit links labelled in <o>. Implicit links never join
-// two nodes, so the pattern orbits of one side are the connected components of its explicit
-// <o>-arcs.
+// Orbits inside the patterns of a rule scheme (Gaide et al. 2023, §2.2): X<o>(n), for a side X (L
+// or R) and an orbit type <o>, is the set of nodes of X reachable from n through explicit arcs
+// labelled in <o>, with those arcs and the nodes' implicit links labelled in <o>. Implicit links
+// never join two nodes, so the pattern orbits of one side are the connected components of its
+// explicit <o>-arcs.
 //
 // Completeness (§2.2): X<o>(n) is complete when every node m of it has, for every i in <o>, an
 // explicit i-arc (a loop counts) or a label position k with λ_k(m) = i. An instance of a complete
@@ -25,10 +25,10 @@ using graph::Side;
 // The pattern orbits of one side for one orbit type.
 struct PatternOrbits {
   Side side = Side::L;
-  DimMask orbit = 0;                        // the analysed orbit type <o>
-  std::vector<uint32_t> class_of;           // node index -> pattern orbit index
-  std::vector<std::vector<uint32_t>> nodes; // pattern orbit -> its nodes (increasing)
-  std::vector<bool> complete;               // pattern orbit -> completeness
+  DimMask orbit = 0;                         // the analysed orbit type <o>
+  std::vector<uint32_t> class_of;            // node index -> pattern orbit index
+  std::vector<std::vector<uint32_t>> nodes;  // pattern orbit -> its nodes (increasing)
+  std::vector<bool> complete;                // pattern orbit -> completeness
   // Label positions k whose dimension λ_k(m) lies in <o> for some node m of the pattern orbit
   // (the positions along which its instance spans the hook orbit).
   std::vector<std::vector<uint32_t>> positions;

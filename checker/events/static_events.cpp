@@ -13,14 +13,22 @@ using scheme::RuleScheme;
 
 const char* to_string(PatternEventKind k) {
   switch (k) {
-    case PatternEventKind::Creation: return "creation";
-    case PatternEventKind::Deletion: return "deletion";
-    case PatternEventKind::ExplicitSplit: return "explicit split";
-    case PatternEventKind::ImplicitSplit: return "implicit split";
-    case PatternEventKind::ExplicitMerge: return "explicit merge";
-    case PatternEventKind::ImplicitMerge: return "implicit merge";
-    case PatternEventKind::Modification: return "modification";
-    case PatternEventKind::NonModification: return "non-modification";
+    case PatternEventKind::Creation:
+      return "creation";
+    case PatternEventKind::Deletion:
+      return "deletion";
+    case PatternEventKind::ExplicitSplit:
+      return "explicit split";
+    case PatternEventKind::ImplicitSplit:
+      return "implicit split";
+    case PatternEventKind::ExplicitMerge:
+      return "explicit merge";
+    case PatternEventKind::ImplicitMerge:
+      return "implicit merge";
+    case PatternEventKind::Modification:
+      return "modification";
+    case PatternEventKind::NonModification:
+      return "non-modification";
   }
   return "?";
 }
@@ -50,10 +58,12 @@ std::vector<OrbitType> all_orbit_types(int n) {
   return out;
 }
 
-std::string pattern_orbit_name(const RuleScheme& s, const OrbitTypeEvents& t, Side side, uint32_t c) {
+std::string pattern_orbit_name(const RuleScheme& s, const OrbitTypeEvents& t, Side side,
+                               uint32_t c) {
   const PatternOrbits& p = side == Side::L ? t.left : t.right;
   const GraphScheme& g = side == Side::L ? s.left : s.right;
-  return std::string(to_string(side)) + t.orbit.str() + "(" + g.nodes[p.nodes[c].front()].name + ")";
+  return std::string(to_string(side)) + t.orbit.str() + "(" + g.nodes[p.nodes[c].front()].name +
+         ")";
 }
 
 namespace {
@@ -66,8 +76,8 @@ int label_at(const GraphScheme& g, uint32_t m, size_t k) {
 }
 
 // The explicit <o>-arcs of the given nodes of one side, as (name, name, dim) with names ordered.
-std::multiset<std::tuple<std::string, std::string, int>> arcs_in(const GraphScheme& g, DimMask o,
-                                                                  const std::vector<uint32_t>& nodes) {
+std::multiset<std::tuple<std::string, std::string, int>> arcs_in(
+    const GraphScheme& g, DimMask o, const std::vector<uint32_t>& nodes) {
   std::multiset<std::tuple<std::string, std::string, int>> out;
   for (const auto& e : g.arcs) {
     if (!in(o, e.dim)) continue;
@@ -106,18 +116,21 @@ class Analysis {
     for (uint32_t c = 0; c < t_.right.size(); ++c) {
       bool created = true;
       for (uint32_t m : t_.right.nodes[c]) created = created && !s_.left_of(m);
-      if (created) t_.events.push_back({PatternEventKind::Creation, Certainty::Certain, {}, {c}, {}, {}});
+      if (created)
+        t_.events.push_back({PatternEventKind::Creation, Certainty::Certain, {}, {c}, {}, {}});
     }
     for (uint32_t c = 0; c < t_.left.size(); ++c) {
       bool deleted = true;
       for (uint32_t m : t_.left.nodes[c]) deleted = deleted && !s_.right_of(m);
-      if (deleted) t_.events.push_back({PatternEventKind::Deletion, Certainty::Certain, {c}, {}, {}, {}});
+      if (deleted)
+        t_.events.push_back({PatternEventKind::Deletion, Certainty::Certain, {c}, {}, {}, {}});
     }
   }
 
   // Positions k with: some node of `from` (side X) has λ^X_k in <o>, no node of `to` (side Y) has.
   std::vector<uint32_t> lost_positions(const GraphScheme& x, const std::vector<uint32_t>& from,
-                                       const GraphScheme& y, const std::vector<uint32_t>& to) const {
+                                       const GraphScheme& y,
+                                       const std::vector<uint32_t>& to) const {
     std::vector<uint32_t> out;
     for (uint32_t k = 0; k < arity_; ++k) {
       bool before = false, after = false;
@@ -250,7 +263,8 @@ StaticEvents analyse(const RuleScheme& s, const std::vector<OrbitType>& types) {
   StaticEvents out;
   out.rule = s.name;
   out.dimension = s.dimension;
-  for (uint32_t v = 0; v < s.left.size(); ++v) out.right_of.push_back(s.right_of(v).value_or(StaticEvents::kDeletedNode));
+  for (uint32_t v = 0; v < s.left.size(); ++v)
+    out.right_of.push_back(s.right_of(v).value_or(StaticEvents::kDeletedNode));
   const std::vector<OrbitType> ts = types.empty() ? all_orbit_types(s.dimension) : types;
   for (const OrbitType& o : ts) {
     if (o.has_hole()) throw Error(ErrorCode::Range, "an analysed orbit type has no `_`", o.str());

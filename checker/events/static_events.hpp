@@ -21,10 +21,10 @@
 //  * explicit and implicit merges (Def. 3.3.1a/b): the same with L and R exchanged. An explicit
 //    merge is certain when one of the merged L pattern orbits is complete (Prop. 3.3.1.1).
 //  * otherwise (an L pattern orbit with preserved nodes and no flag): non-modification when its R
-//    pattern orbit has the same nodes, the same explicit <o>-arcs and, at every node, the same label
-//    value at every position whose value is in <o> on either side (Def. 3.4.2, compared on the
-//    positions that matter for <o>: the paper's example n0 <0,1> -> <0,_> is not modified on <0>);
-//    else modification (§3.4.3, the residual class). Both are static.
+//    pattern orbit has the same nodes, the same explicit <o>-arcs and, at every node, the same
+//    label value at every position whose value is in <o> on either side (Def. 3.4.2, compared on
+//    the positions that matter for <o>: the paper's example n0 <0,1> -> <0,_> is not modified on
+//    <0>); else modification (§3.4.3, the residual class). Both are static.
 // Splits are confirmed on H (after the rewrite), merges on G (before it); the paper says "on G" for
 // both (Props. 3.2.1, 3.3.1), which cannot confirm a split.
 #pragma once
@@ -94,11 +94,12 @@ struct StaticEvents {
 std::vector<OrbitType> all_orbit_types(int n);
 
 // The static events of `s` for each orbit type of `types` (all of them when empty). Throws
-// gmr::Error(Schema) for a malformed scheme (RuleScheme::validate_structure) and Error(Range) for an
-// orbit type with `_` or a dimension above the scheme's.
+// gmr::Error(Schema) for a malformed scheme (RuleScheme::validate_structure) and Error(Range) for
+// an orbit type with `_` or a dimension above the scheme's.
 StaticEvents analyse(const scheme::RuleScheme& s, const std::vector<OrbitType>& types = {});
 
 // "L<0,1>(n0)": a pattern orbit named by its first node.
-std::string pattern_orbit_name(const scheme::RuleScheme& s, const OrbitTypeEvents& t, Side side, uint32_t c);
+std::string pattern_orbit_name(const scheme::RuleScheme& s, const OrbitTypeEvents& t, Side side,
+                               uint32_t c);
 
 }  // namespace gmr::events

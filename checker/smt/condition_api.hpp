@@ -130,8 +130,8 @@ struct SchemeGraph {
 
 struct SchemeView {
   std::string name;
-  int n = 0;                       // the scheme rewrites n-G-maps
-  std::vector<int> orbit;          // <o>
+  int n = 0;               // the scheme rewrites n-G-maps
+  std::vector<int> orbit;  // <o>
   SchemeGraph left, right;
   std::vector<std::string> hooks;  // L node names; the first is the reference hook
 
@@ -171,15 +171,15 @@ struct gmr_scheme_condition {
 };
 }
 
-#define GMR_SCHEME_CONDITION_PLUGIN(NAME, DESCRIPTION, FN)               \
-  extern "C" const gmr_scheme_condition* gmr_scheme_condition_v1() {     \
-    static const gmr_scheme_condition c{NAME, DESCRIPTION, FN};          \
-    return &c;                                                           \
+#define GMR_SCHEME_CONDITION_PLUGIN(NAME, DESCRIPTION, FN)           \
+  extern "C" const gmr_scheme_condition* gmr_scheme_condition_v1() { \
+    static const gmr_scheme_condition c{NAME, DESCRIPTION, FN};      \
+    return &c;                                                       \
   }
 
 // Defines the entry symbol gmr_condition_v1 returning {name, description, fn}.
-#define GMR_CONDITION_PLUGIN(NAME, DESCRIPTION, FN)                     \
-  extern "C" const gmr_condition* gmr_condition_v1() {                  \
-    static const gmr_condition c{NAME, DESCRIPTION, FN};                \
-    return &c;                                                          \
+#define GMR_CONDITION_PLUGIN(NAME, DESCRIPTION, FN)      \
+  extern "C" const gmr_condition* gmr_condition_v1() {   \
+    static const gmr_condition c{NAME, DESCRIPTION, FN}; \
+    return &c;                                           \
   }

@@ -10,7 +10,8 @@ bool thesis_conditions(const Rule& r, const ThesisParts& parts) {
   if (!checker::check_combinatorial(r, d)) return false;
   const MapSpec spec = r.spec();
   for (int i : spec.labels())
-    if (!(parts.dangling ? checker::check_incident_arcs(r, i, d) : checker::check_weak_incident_arcs(r, i, d)))
+    if (!(parts.dangling ? checker::check_incident_arcs(r, i, d)
+                         : checker::check_weak_incident_arcs(r, i, d)))
       return false;
   if (parts.orientation)
     for (int i : spec.labels())
@@ -19,14 +20,16 @@ bool thesis_conditions(const Rule& r, const ThesisParts& parts) {
   if (pairs.empty()) return true;
   const Rule c = parts.completion ? checker::complete_for_model(r) : r;
   for (auto [i, j] : pairs)
-    if (!(parts.completion ? checker::check_cycle(c, i, j, d) : checker::check_cycle_as_written(c, i, j, d)))
+    if (!(parts.completion ? checker::check_cycle(c, i, j, d)
+                           : checker::check_cycle_as_written(c, i, j, d)))
       return false;
   return true;
 }
 
 const std::vector<BuiltinCondition>& builtin_conditions() {
   static const std::vector<BuiltinCondition> all = {
-      {"thesis", "Theorems 1-3 for the rule's model: combinatorial, I_r, O_r, C_r on the model completion",
+      {"thesis",
+       "Theorems 1-3 for the rule's model: combinatorial, I_r, O_r, C_r on the model completion",
        [](const Rule& r) { return checker::check_rule(r).ok(); }},
       {"thesis-per-constraint", "Theorems 1-3 with C_r on the ij-completion only (no O-completion)",
        [](const Rule& r) { return checker::check_rule(r, false).ok(); }},

@@ -11,15 +11,15 @@ namespace {
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-size_t nodes_of(const Rule& r) {
-  return r.left().num_nodes() + r.added_nodes().size();
-}
+size_t nodes_of(const Rule& r) { return r.left().num_nodes() + r.added_nodes().size(); }
 }  // namespace
 
 ValidationReport validate_condition(const std::string& name, const ConditionEvaluator& evaluate,
                                     const ValidationOptions& opt) {
   if (opt.shards == 0 || opt.shard >= opt.shards)
-    throw Error(ErrorCode::Usage, "shard " + std::to_string(opt.shard) + " of " + std::to_string(opt.shards), "--shard");
+    throw Error(ErrorCode::Usage,
+                "shard " + std::to_string(opt.shard) + " of " + std::to_string(opt.shards),
+                "--shard");
   const auto t0 = std::chrono::steady_clock::now();
   ValidationReport rep;
   rep.condition = name;
@@ -53,7 +53,8 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
   std::optional<SmtSession> session;
   std::optional<graph::MapFamily> family;
   if (opt.engine == Engine::Smt)
-    session.emplace(MapSpec{opt.n, opt.kind}, opt.bound, static_cast<unsigned>(opt.max_nodes + (opt.random ? 2 : 0)), eo);
+    session.emplace(MapSpec{opt.n, opt.kind}, opt.bound,
+                    static_cast<unsigned>(opt.max_nodes + (opt.random ? 2 : 0)), eo);
   else
     family.emplace(graph::map_family(opt.n, opt.kind, opt.bound));
   auto last_progress = std::chrono::steady_clock::now();
@@ -65,7 +66,8 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
       break;
     }
     const Rule& r = rules[k];
-    const VerifyResult v = session ? session->verify(r) : verify_enum(r, *family, Semantics::Consistency);
+    const VerifyResult v =
+        session ? session->verify(r) : verify_enum(r, *family, Semantics::Consistency);
     ++rep.checked;
     (holds[k] ? rep.holds : rep.fails)++;
     if (!v.applicable) {
@@ -74,13 +76,17 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
       ++rep.unsound;
       const auto& cur = rep.smallest_unsound;
       if (!cur || nodes_of(r) < nodes_of(cur->rule) ||
-          (nodes_of(r) == nodes_of(cur->rule) && v.counterexample->G.size() < cur->counterexample->G.size()))
+          (nodes_of(r) == nodes_of(cur->rule) &&
+           v.counterexample->G.size() < cur->counterexample->G.size()))
         rep.smallest_unsound = ValidationWitness{r, index[k], v.counterexample};
     } else if (!holds[k] && v.preserves) {
       ++rep.incomplete;
-      if (!rep.smallest_incomplete) rep.smallest_incomplete = ValidationWitness{r, index[k], std::nullopt};
+      if (!rep.smallest_incomplete)
+        rep.smallest_incomplete = ValidationWitness{r, index[k], std::nullopt};
     }
-    if (opt.progress && std::chrono::duration<double>(std::chrono::steady_clock::now() - last_progress).count() > 0.5) {
+    if (opt.progress &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_progress).count() >
+            0.5) {
       opt.progress(k + 1, rules.size());
       last_progress = std::chrono::steady_clock::now();
     }

@@ -28,12 +28,12 @@ namespace gmr::smt {
 struct ValidationOptions {
   int n = 1;
   MapKind kind = MapKind::GMap;
-  std::vector<int> labels;     // labels carrying arcs in the family
+  std::vector<int> labels;  // labels carrying arcs in the family
   int max_nodes = 2;
   unsigned bound = 4;
   Engine engine = Engine::Smt;
   unsigned shard = 0, shards = 1;
-  double time_limit = 0;       // seconds; 0: none
+  double time_limit = 0;  // seconds; 0: none
   // Random larger rules after the family: `random` rules of max_nodes+1 or max_nodes+2 nodes
   // (rule_space.hpp random_rule) from generator seed `seed`; their indices follow the family's.
   size_t random = 0;
@@ -47,17 +47,17 @@ struct ValidationOptions {
 
 struct ValidationWitness {
   Rule rule;
-  size_t index = 0;                       // in the family
+  size_t index = 0;                              // in the family
   std::optional<Counterexample> counterexample;  // unsound: the breaking match
 };
 
 struct ValidationReport {
   std::string condition;
   ValidationOptions options;
-  size_t rules = 0;        // of the shard
-  size_t checked = 0;      // verified before the time limit
+  size_t rules = 0;    // of the shard
+  size_t checked = 0;  // verified before the time limit
   size_t holds = 0, fails = 0, vacuous = 0, unsound = 0, incomplete = 0;
-  int nodes_covered = 0;   // every rule of the shard with at most this many nodes was checked
+  int nodes_covered = 0;  // every rule of the shard with at most this many nodes was checked
   bool time_limit_hit = false;
   std::optional<ValidationWitness> smallest_unsound, smallest_incomplete;
   double seconds = 0, condition_seconds = 0;

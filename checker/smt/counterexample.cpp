@@ -36,7 +36,8 @@ nlohmann::ordered_json to_json(const Rule& r, unsigned bound, const Counterexamp
   j["engine"] = to_string(c.engine);
   j["bound"] = bound;
   j["G"] = io::map_to_json(c.G);
-  j["gluing_fails"] = c.gluing_fails;  // the match fails the gluing condition (consistency semantics; no H)
+  j["gluing_fails"] =
+      c.gluing_fails;  // the match fails the gluing condition (consistency semantics; no H)
   nlohmann::ordered_json m = nlohmann::ordered_json::object();
   for (Node v : r.left().nodes()) m[r.left().name(v)] = graph::dart_of(c.match.node[v]);
   j["match"] = m;
@@ -47,7 +48,9 @@ nlohmann::ordered_json to_json(const Rule& r, unsigned bound, const Counterexamp
   for (ArcId a : c.H.arc_slots()) {
     if (!c.H.arc_alive(a)) continue;
     const auto& arc = c.H.arc(a);
-    h["arcs"].push_back({{"source", c.H.node_str(arc.src)}, {"target", c.H.node_str(arc.tgt)}, {"label", arc.label}});
+    h["arcs"].push_back({{"source", c.H.node_str(arc.src)},
+                         {"target", c.H.node_str(arc.tgt)},
+                         {"label", arc.label}});
   }
   j["H"] = h;
   j["violations"] = nlohmann::ordered_json::array();
@@ -70,17 +73,20 @@ std::string to_dot(const Rule& r, const Counterexample& c) {
   opt.name = "counterexample";
   std::string dot = draw::to_dot(c.G, opt);
   const auto bad = offending_darts(c);
-  std::string extra = "  // matched darts light blue (xlabel: L node), darts where H breaks a constraint red\n";
+  std::string extra =
+      "  // matched darts light blue (xlabel: L node), darts where H breaks a constraint red\n";
   std::set<Dart> matched;
   for (Node v : r.left().nodes()) {
     const Dart d = graph::dart_of(c.match.node[v]);
     matched.insert(d);
     const bool b = std::find(bad.begin(), bad.end(), d) != bad.end();
-    extra += "  " + std::to_string(d) + " [style=filled, fillcolor=\"" + (b ? "#ff6b6b" : "#a6cee3") +
-             "\", xlabel=" + nlohmann::json(r.left().name(v)).dump() + "];\n";
+    extra += "  " + std::to_string(d) + " [style=filled, fillcolor=\"" +
+             (b ? "#ff6b6b" : "#a6cee3") + "\", xlabel=" + nlohmann::json(r.left().name(v)).dump() +
+             "];\n";
   }
   for (Dart d : bad)
-    if (!matched.count(d)) extra += "  " + std::to_string(d) + " [style=filled, fillcolor=\"#ff6b6b\"];\n";
+    if (!matched.count(d))
+      extra += "  " + std::to_string(d) + " [style=filled, fillcolor=\"#ff6b6b\"];\n";
   dot.insert(dot.rfind('}'), extra);
   return dot;
 }

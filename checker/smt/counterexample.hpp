@@ -7,9 +7,8 @@
 //  * `to_dot(Counterexample)`: G drawn by the map renderer (model/draw/map_dot.hpp), the matched
 //    darts filled light blue and labelled by their L node, the offending darts filled red.
 #pragma once
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "checker/smt/rule_verifier.hpp"
 #include "checker/smt/scheme_verifier.hpp"

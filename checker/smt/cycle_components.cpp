@@ -16,7 +16,8 @@ bool listed(const std::vector<int>& labels, int l) {
 }
 }  // namespace
 
-std::vector<std::vector<std::string>> rule_components(const Rule& r, const std::vector<int>& labels) {
+std::vector<std::vector<std::string>> rule_components(const Rule& r,
+                                                      const std::vector<int>& labels) {
   // The rule's nodes by name: L nodes, then the added ones.
   std::vector<std::string> names;
   std::map<std::string, size_t> index;
@@ -51,14 +52,16 @@ std::vector<std::vector<std::string>> rule_components(const Rule& r, const std::
   return out;
 }
 
-Rule restrict_rule(const Rule& r, const std::vector<std::string>& nodes, const std::vector<int>& labels) {
+Rule restrict_rule(const Rule& r, const std::vector<std::string>& nodes,
+                   const std::vector<int>& labels) {
   DGraph L, R;
   HandleVector<Node, std::optional<Node>> left(r.left().num_nodes()), right(r.right().num_nodes());
   for (const std::string& name : nodes) {
     if (auto v = r.left().find(name)) left[*v] = L.add_node(name);
     if (auto w = r.right().find(name)) right[*w] = R.add_node(name);
   }
-  auto copy_arcs = [&](const DGraph& from, const HandleVector<Node, std::optional<Node>>& to, DGraph& into) {
+  auto copy_arcs = [&](const DGraph& from, const HandleVector<Node, std::optional<Node>>& to,
+                       DGraph& into) {
     for (ArcId a : from.arc_slots()) {
       if (!from.arc_alive(a) || !listed(labels, from.arc(a).label)) continue;
       const auto s = to[from.arc(a).src], t = to[from.arc(a).tgt];

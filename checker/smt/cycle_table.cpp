@@ -37,8 +37,8 @@ std::vector<uint64_t> partial_injections(const std::vector<size_t>& at, size_t k
 }
 
 // The pattern as a rule (nodes a, b, c, ... in order; arcs on `labels`).
-Rule pattern_rule(const MapSpec& spec, const std::vector<int>& status, const std::vector<int>& labels,
-                  const std::vector<uint64_t>& arcs) {
+Rule pattern_rule(const MapSpec& spec, const std::vector<int>& status,
+                  const std::vector<int>& labels, const std::vector<uint64_t>& arcs) {
   const size_t k = status.size();
   DGraph L, R;
   std::vector<Node> left(k, graph::kNoNode), right(k, graph::kNoNode);
@@ -63,7 +63,8 @@ bool theorems12_on(const Rule& r, int i, const MapSpec& spec, const ThesisParts&
   const bool incident = parts.dangling ? checker::check_incident_arcs(r, i, d)
                                        : checker::check_weak_incident_arcs(r, i, d);
   if (!incident) return false;
-  return !parts.orientation || !spec.is_involutive_dim(i) || checker::check_non_orientation(r, i, d);
+  return !parts.orientation || !spec.is_involutive_dim(i) ||
+         checker::check_non_orientation(r, i, d);
 }
 }  // namespace
 
@@ -74,7 +75,8 @@ CycleTable cycle_table(const MapSpec& spec, const std::vector<int>& rule_labels,
   table.max_nodes = max_nodes;
   const std::vector<int> all = cycle_labels(spec);
   for (int l : all)
-    if (std::find(rule_labels.begin(), rule_labels.end(), l) != rule_labels.end()) table.labels.push_back(l);
+    if (std::find(rule_labels.begin(), rule_labels.end(), l) != rule_labels.end())
+      table.labels.push_back(l);
   const size_t nl = table.labels.size();
   for (int k = 1; k <= max_nodes; ++k) {
     std::vector<int> status(static_cast<size_t>(k));
@@ -91,7 +93,8 @@ CycleTable cycle_table(const MapSpec& spec, const std::vector<int>& rule_labels,
         if (status[y] != 2) ln.push_back(y);
         if (status[y] != 1) rn.push_back(y);
       }
-      const auto pl = partial_injections(ln, status.size()), pr = partial_injections(rn, status.size());
+      const auto pl = partial_injections(ln, status.size()),
+                 pr = partial_injections(rn, status.size());
       // A cycle label without arcs in the family must hold with none (an added node fails w-I_r).
       const Rule bare = pattern_rule(spec, status, table.labels, std::vector<uint64_t>(2 * nl, 0));
       for (int l : all)
@@ -107,7 +110,8 @@ CycleTable cycle_table(const MapSpec& spec, const std::vector<int>& rule_labels,
             std::vector<uint64_t> arcs(2 * nl, 0);
             arcs[l] = a;
             arcs[nl + l] = b;
-            if (theorems12_on(pattern_rule(spec, status, table.labels, arcs), table.labels[l], spec, parts))
+            if (theorems12_on(pattern_rule(spec, status, table.labels, arcs), table.labels[l], spec,
+                              parts))
               per_label[l].emplace_back(a, b);
           }
       for (const auto& v : per_label)
@@ -133,13 +137,15 @@ CycleTable cycle_table(const MapSpec& spec, const std::vector<int>& rule_labels,
   return table;
 }
 
-ComponentPattern component_pattern(const Rule& r, std::vector<std::string> nodes, const std::vector<int>& labels) {
+ComponentPattern component_pattern(const Rule& r, std::vector<std::string> nodes,
+                                   const std::vector<int>& labels) {
   auto status = [&](const std::string& name) {
     if (!r.left().find(name)) return 2;
     return r.right().find(name) ? 0 : 1;
   };
-  std::stable_sort(nodes.begin(), nodes.end(),
-                   [&](const std::string& x, const std::string& y) { return status(x) < status(y); });
+  std::stable_sort(nodes.begin(), nodes.end(), [&](const std::string& x, const std::string& y) {
+    return status(x) < status(y);
+  });
   const size_t k = nodes.size(), nl = labels.size();
   ComponentPattern p;
   for (const auto& name : nodes) p.status.push_back(status(name));
@@ -153,7 +159,8 @@ ComponentPattern component_pattern(const Rule& r, std::vector<std::string> nodes
       const auto y = std::find(nodes.begin(), nodes.end(), g.name(g.arc(a).tgt));
       if (l == labels.end() || x == nodes.end() || y == nodes.end()) continue;
       p.arcs[(right ? nl : 0) + static_cast<size_t>(l - labels.begin())] |=
-          uint64_t{1} << (static_cast<size_t>(x - nodes.begin()) * k + static_cast<size_t>(y - nodes.begin()));
+          uint64_t{1} << (static_cast<size_t>(x - nodes.begin()) * k +
+                          static_cast<size_t>(y - nodes.begin()));
     }
   }
   return p;

@@ -24,9 +24,9 @@
 namespace gmr::smt {
 
 struct ComponentPattern {
-  std::vector<int> status;      // per node: 0 preserved, 1 deleted, 2 added (nondecreasing)
-  std::vector<uint64_t> arcs;   // [side * labels + l]: bit x * k + y is the arc x -> y (side 0 = L)
-  bool holds = false;           // C_r on the pattern (the checker)
+  std::vector<int> status;     // per node: 0 preserved, 1 deleted, 2 added (nondecreasing)
+  std::vector<uint64_t> arcs;  // [side * labels + l]: bit x * k + y is the arc x -> y (side 0 = L)
+  bool holds = false;          // C_r on the pattern (the checker)
   size_t nodes() const { return status.size(); }
   bool arc(bool right, size_t l, size_t labels, size_t x, size_t y) const {
     return (arcs[(right ? labels : 0) + l] >> (x * nodes() + y)) & 1u;
@@ -58,7 +58,9 @@ size_t pattern_variables(size_t k, size_t labels);
 // the family inside a cube therefore has that verdict, or is not a component satisfying Theorems
 // 1-2 (then C_r does not read it).
 std::vector<PatternCube> verdict_cubes(const CycleTable& table, bool verdict);
-inline std::vector<PatternCube> failing_cubes(const CycleTable& table) { return verdict_cubes(table, false); }
+inline std::vector<PatternCube> failing_cubes(const CycleTable& table) {
+  return verdict_cubes(table, false);
+}
 
 // The pattern of a set of nodes of a rule (a component): the nodes in the family's status order
 // (stable on the given order), their statuses and their arcs on `labels` (holds left false).

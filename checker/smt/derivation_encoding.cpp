@@ -7,14 +7,15 @@
 namespace gmr::smt {
 using graph::ArcId;
 using graph::DGraph;
-using graph::Node;
 using graph::ElemStatus;
+using graph::Node;
 
 DerivationEncoding::DerivationEncoding(const MapEncoding& map, const Rule& rule, bool fixed_match)
     : map_(map), rule_(rule), added_index_(rule.right().num_nodes(), -1) {
   z3::context& c = map_.ctx();
   for (Node v : rule_.left().nodes())
-    m_.push_back(fixed_match ? map_.dart(v.index()) : c.constant(("m_" + rule_.left().name(v)).c_str(), map_.sort()));
+    m_.push_back(fixed_match ? map_.dart(v.index())
+                             : c.constant(("m_" + rule_.left().name(v)).c_str(), map_.sort()));
   for (Node r : rule_.added_nodes()) {
     added_index_[r] = static_cast<int>(added_.size());
     added_.push_back(r);
@@ -86,7 +87,8 @@ std::vector<DerivationEncoding::Candidate> DerivationEncoding::out_arcs(unsigned
   return out_arcs(map_.dart(x), x < map_.capacity(), i);
 }
 
-std::vector<DerivationEncoding::Candidate> DerivationEncoding::out_arcs(const z3::expr& X, bool g_dart, int i) const {
+std::vector<DerivationEncoding::Candidate> DerivationEncoding::out_arcs(const z3::expr& X,
+                                                                        bool g_dart, int i) const {
   z3::context& c = map_.ctx();
   std::vector<Candidate> out;
   if (g_dart) {
@@ -109,11 +111,13 @@ std::vector<DerivationEncoding::Candidate> DerivationEncoding::in_arcs(unsigned 
   return in_arcs(map_.dart(x), x < map_.capacity(), i);
 }
 
-std::vector<DerivationEncoding::Candidate> DerivationEncoding::in_arcs(const z3::expr& X, bool g_dart, int i) const {
+std::vector<DerivationEncoding::Candidate> DerivationEncoding::in_arcs(const z3::expr& X,
+                                                                       bool g_dart, int i) const {
   z3::context& c = map_.ctx();
   std::vector<Candidate> in;
   if (g_dart) {
-    // G's i-arc entering x (from alpha_i^-1(x)); a deleted L-arc u -i-> w is matched onto it iff m(w) = x.
+    // G's i-arc entering x (from alpha_i^-1(x)); a deleted L-arc u -i-> w is matched onto it iff
+    // m(w) = x.
     z3::expr_vector removed(c);
     const DGraph& L = rule_.left();
     for (ArcId a : L.arc_slots())
@@ -171,7 +175,8 @@ z3::expr DerivationEncoding::breaks_model_local() const {
   // The nodes of H a rewrite touches: images of the preserved nodes and the added nodes.
   std::vector<std::pair<z3::expr, bool>> image;
   for (Node v : rule_.preserved_nodes()) image.emplace_back(m_[v], true);
-  for (unsigned a = 0; a < added_.size(); ++a) image.emplace_back(map_.dart(map_.capacity() + a), false);
+  for (unsigned a = 0; a < added_.size(); ++a)
+    image.emplace_back(map_.dart(map_.capacity() + a), false);
   z3::expr_vector any(map_.ctx());
   const MapSpec& s = map_.spec();
   for (const auto& [X, g_dart] : image) {

@@ -6,7 +6,8 @@
 //               a dart). With `fixed_match` (symmetry breaking) the k-th node of L is sent to dart
 //               k: every match is one of these up to a renaming of the darts.
 //   dangling    the gluing condition on a mono: every G-arc incident to the image of a deleted node
-//               (its outgoing i-arc and its incoming i-arc, from alpha_i^-1) is the image of an L-arc.
+//               (its outgoing i-arc and its incoming i-arc, from alpha_i^-1) is the image of an
+//               L-arc.
 //   H           the nodes of H are the live darts (active, not the image of a deleted node) and one
 //               numeral k + a per added node a; for every H node x and label i, the candidate
 //               outgoing i-arcs are G's arc x -> alpha_i(x) unless it is the image of a deleted
@@ -18,9 +19,9 @@
 //               and C are exact; where it fails somewhere the violation is true anyway. Hence
 //               `breaks_model()` holds iff H is not a map of the model (Def. 32).
 #pragma once
-#include <vector>
-
 #include <z3++.h>
+
+#include <vector>
 
 #include "checker/smt/map_encoding.hpp"
 #include "model/graph/constraints.hpp"
@@ -76,10 +77,10 @@ class DerivationEncoding {
 
   const MapEncoding& map_;
   const Rule& rule_;
-  HandleVector<graph::Node, z3::expr> m_;        // L node -> its image
-  std::vector<graph::Node> added_;                // the added R nodes
+  HandleVector<graph::Node, z3::expr> m_;       // L node -> its image
+  std::vector<graph::Node> added_;              // the added R nodes
   HandleVector<graph::Node, int> added_index_;  // R node -> index among added (or -1)
-  std::vector<z3::func_decl> h_;        // per label
+  std::vector<z3::func_decl> h_;                // per label
 };
 
 }  // namespace gmr::smt

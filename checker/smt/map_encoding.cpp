@@ -17,8 +17,8 @@ z3::sort make_sort(z3::context& c, DartSort s, unsigned values) {
 }
 }  // namespace
 
-MapEncoding::MapEncoding(z3::context& ctx, MapSpec spec, unsigned capacity, unsigned extra, DartSort sort,
-                         const std::string& prefix)
+MapEncoding::MapEncoding(z3::context& ctx, MapSpec spec, unsigned capacity, unsigned extra,
+                         DartSort sort, const std::string& prefix)
     : ctx_(ctx),
       spec_(spec),
       capacity_(capacity),
@@ -71,7 +71,8 @@ z3::expr_vector MapEncoding::constraints() const {
         here.push_back(alpha(i, b) == d);
       }
     }
-    for (auto [i, j] : spec_.cycle_pairs()) here.push_back(alpha(j, alpha(i, alpha(j, alpha(i, d)))) == d);
+    for (auto [i, j] : spec_.cycle_pairs())
+      here.push_back(alpha(j, alpha(i, alpha(j, alpha(i, d)))) == d);
     out.push_back(z3::implies(active(v), z3::mk_and(here)));
   }
   return out;

@@ -13,10 +13,10 @@
 //   C(i,j)       alpha_j(alpha_i(alpha_j(alpha_i(d)))) = d for the model's cycle pairs.
 // Loops are fixed points (a free dart is an i-loop).
 #pragma once
+#include <z3++.h>
+
 #include <string>
 #include <vector>
-
-#include <z3++.h>
 
 #include "model/core/map_spec.hpp"
 

@@ -9,8 +9,8 @@
 namespace gmr::smt {
 using graph::DGraph;
 using graph::Node;
-using graph::PartialInjection;
 using graph::partial_injections;
+using graph::PartialInjection;
 
 namespace {
 size_t pinj_count(size_t m) {
@@ -19,8 +19,8 @@ size_t pinj_count(size_t m) {
 }
 }  // namespace
 
-rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, const std::vector<int>& labels,
-                          const std::string& name) {
+rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes,
+                          const std::vector<int>& labels, const std::string& name) {
   // rng() % k: portable (std::uniform_int_distribution is not specified bit for bit).
   auto below = [&](size_t k) { return static_cast<size_t>(rng() % k); };
   std::vector<int> st(static_cast<size_t>(nodes));
@@ -30,7 +30,8 @@ rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, 
     if (st[x] != 2) ln.push_back(x);
     if (st[x] != 1) rn.push_back(x);
   }
-  // A random partial injection on m nodes: a random permutation, each pair kept with probability 1/2.
+  // A random partial injection on m nodes: a random permutation, each pair kept with probability
+  // 1/2.
   auto pinj = [&](size_t m) {
     std::vector<Node> perm(m);
     for (size_t k = 0; k < m; ++k) perm[k] = Node(static_cast<uint32_t>(k));
@@ -59,7 +60,8 @@ std::string rule_text(const rewrite::Rule& r) {
     s += ";";
     for (graph::ArcId a : g.arc_slots())
       if (g.arc_alive(a))
-        s += " " + g.name(g.arc(a).src) + "-" + std::to_string(g.arc(a).label) + "->" + g.name(g.arc(a).tgt);
+        s += " " + g.name(g.arc(a).src) + "-" + std::to_string(g.arc(a).label) + "->" +
+             g.name(g.arc(a).tgt);
     s += "}";
   }
   return s;

@@ -22,13 +22,14 @@ size_t for_each_rule(int n, MapKind kind, int max_nodes, const std::vector<int>&
 // The number of rules of the family with exactly `nodes` nodes (without building them).
 size_t count_rules(int nodes, size_t labels);
 
-// The rule in one line: "L {a b; a-0->b} => R {a b; b-0->a}" (node names; arcs source-label->target).
+// The rule in one line: "L {a b; a-0->b} => R {a b; b-0->a}" (node names; arcs
+// source-label->target).
 std::string rule_text(const rewrite::Rule& r);
 
 // One random rule of exactly `nodes` nodes in the same shape (each node preserved, deleted or
 // added uniformly; per label a uniformly drawn partial injection on each side), named `name`.
 // Deterministic for a given generator state (std::mt19937_64, portable draws).
-rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes, const std::vector<int>& labels,
-                          const std::string& name);
+rewrite::Rule random_rule(std::mt19937_64& rng, int n, MapKind kind, int nodes,
+                          const std::vector<int>& labels, const std::string& name);
 
 }  // namespace gmr::smt

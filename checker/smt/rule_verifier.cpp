@@ -5,8 +5,8 @@
 
 #include "checker/semantic.hpp"
 #include "checker/smt/derivation_encoding.hpp"
-#include "model/graph/map_family.hpp"
 #include "model/core/error.hpp"
+#include "model/graph/map_family.hpp"
 #include "model/rewrite/dpo.hpp"
 
 namespace gmr::smt {
@@ -20,17 +20,19 @@ double since(std::chrono::steady_clock::time_point t0) {
 }
 unsigned numeral(const z3::expr& e) {
   unsigned v = 0;
-  if (!e.is_numeral_u(v)) throw std::logic_error("SMT model: a dart is not a numeral: " + e.to_string());
+  if (!e.is_numeral_u(v))
+    throw std::logic_error("SMT model: a dart is not a numeral: " + e.to_string());
   return v;
 }
 }  // namespace
 
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e) {
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes,
+                                     Engine e) {
   return replay(r, G, nodes, e, Semantics::Preservation);
 }
 
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e,
-                                     Semantics sem) {
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes,
+                                     Engine e, Semantics sem) {
   const DGraph Gd = graph::to_dgraph(G);
   auto m = rewrite::match_from_nodes(r.left(), Gd, nodes);
   if (!m) return std::nullopt;
@@ -75,7 +77,8 @@ VerifyResult verify_on(z3::context& ctx, const MapEncoding& map, z3::solver* sha
     if (with_violation) {
       for (const auto& e : der.h_definitions()) v.push_back(e);
       const z3::expr breaks = opt.local_violations ? der.breaks_model_local() : der.breaks_model();
-      v.push_back(consistency ? (!der.dangling_condition() || breaks) : (der.dangling_condition() && breaks));
+      v.push_back(consistency ? (!der.dangling_condition() || breaks)
+                              : (der.dangling_condition() && breaks));
     } else if (!consistency) {
       v.push_back(der.dangling_condition());
     }
@@ -116,11 +119,15 @@ VerifyResult verify_on(z3::context& ctx, const MapEncoding& map, z3::solver* sha
     Map G(r.dimension(), r.kind());
     G.add_darts(size);
     for (int i : r.spec().labels())
-      for (unsigned d = 0; d < size; ++d) G.set_alpha(i, d, numeral(model->eval(map.alpha(i, map.dart(d)), true)));
+      for (unsigned d = 0; d < size; ++d)
+        G.set_alpha(i, d, numeral(model->eval(map.alpha(i, map.dart(d)), true)));
     rewrite::NodeMap nodes;  // the model matches L node v on a dart of G: its node in to_dgraph(G)
-    for (Node v : r.left().nodes()) nodes.push_back(graph::node_of(numeral(model->eval(der.match(v), true))));
+    for (Node v : r.left().nodes())
+      nodes.push_back(graph::node_of(numeral(model->eval(der.match(v), true))));
     auto c = replay(r, G, nodes, Engine::Smt, opt.semantics);
-    if (!c) throw std::logic_error("SMT counterexample of rule " + r.name() + " does not replay (encoding error)");
+    if (!c)
+      throw std::logic_error("SMT counterexample of rule " + r.name() +
+                             " does not replay (encoding error)");
     res.preserves = false;
     res.applicable = true;
     res.counterexample = std::move(c);
@@ -152,10 +159,12 @@ unsigned SmtSession::bound() const { return s_->map.capacity(); }
 
 VerifyResult SmtSession::verify(const Rule& r, bool applicable_check) {
   if (r.spec() != s_->map.spec())
-    throw Error(ErrorCode::Usage, "the rule and the session have different models", "rule " + r.name());
+    throw Error(ErrorCode::Usage, "the rule and the session have different models",
+                "rule " + r.name());
   // The added nodes are numerals after the darts: the dart sort was sized for max_added of them.
   if (r.added_nodes().size() > s_->max_added)
-    throw Error(ErrorCode::Usage, "the rule adds more nodes than the session reserved", "rule " + r.name());
+    throw Error(ErrorCode::Usage, "the rule adds more nodes than the session reserved",
+                "rule " + r.name());
   return verify_on(s_->ctx, s_->map, &s_->solver, r, s_->opt, applicable_check);
 }
 
@@ -163,7 +172,8 @@ VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& op
   return verify_smt(r, bound, opt, true);
 }
 
-VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& opt, bool applicable_check) {
+VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& opt,
+                        bool applicable_check) {
   z3::context ctx;
   MapEncoding map(ctx, r.spec(), bound, static_cast<unsigned>(r.added_nodes().size()), opt.sort);
   return verify_on(ctx, map, nullptr, r, opt, applicable_check);

@@ -44,24 +44,25 @@ enum class Semantics { Preservation, Consistency };
 
 struct EncodingOptions {
   DartSort sort = DartSort::BitVec;  // measured: docs/verify.md
-  bool fixed_match = true;   // symmetry breaking: the k-th node of L on dart k
-  bool incremental = true;   // one solver, push/pop per bound; false: a fresh solver per bound
+  bool fixed_match = true;           // symmetry breaking: the k-th node of L on dart k
+  bool incremental = true;  // one solver, push/pop per bound; false: a fresh solver per bound
   Semantics semantics = Semantics::Preservation;
-  bool local_violations = true;  // look for violations at the touched nodes only (derivation_encoding.hpp)
+  bool local_violations =
+      true;  // look for violations at the touched nodes only (derivation_encoding.hpp)
 };
 
 struct Counterexample {
   Map G{0};
-  Match match;              // L node -> dart of G (as nodes of to_dgraph(G))
+  Match match;                // L node -> dart of G (as nodes of to_dgraph(G))
   bool gluing_fails = false;  // Consistency: the match fails the gluing condition (no H)
-  DGraph H;                 // the result of the derivation (rewriting construction)
+  DGraph H;                   // the result of the derivation (rewriting construction)
   std::vector<ConstraintViolation> violations;  // of H (check_map_constraints)
   Engine engine = Engine::Smt;
 };
 
 struct VerifyResult {
   Engine engine = Engine::Smt;
-  unsigned bound = 0;       // maps of at most `bound` darts
+  unsigned bound = 0;  // maps of at most `bound` darts
   bool preserves = true;
   bool applicable = false;  // some application within the bound
   std::optional<Counterexample> counterexample;
@@ -88,18 +89,21 @@ class SmtSession {
 
 VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& opt = {});
 // applicable_check = false skips the applicability query (verdict only).
-VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& opt, bool applicable_check);
+VerifyResult verify_smt(const Rule& r, unsigned bound, const EncodingOptions& opt,
+                        bool applicable_check);
 VerifyResult verify_enum(const Rule& r, unsigned bound, Semantics sem = Semantics::Preservation);
 // On a family computed once (graph::map_family of the rule's model).
 VerifyResult verify_enum(const Rule& r, const graph::MapFamily& family, Semantics sem);
-inline VerifyResult verify(const Rule& r, unsigned bound, Engine e, const EncodingOptions& opt = {}) {
+inline VerifyResult verify(const Rule& r, unsigned bound, Engine e,
+                           const EncodingOptions& opt = {}) {
   return e == Engine::Smt ? verify_smt(r, bound, opt) : verify_enum(r, bound, opt.semantics);
 }
 
 // Replays (G, node map) through the concrete derivation; nullopt when the node map is not a match
 // satisfying the gluing condition or when H is a map of the model.
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e);
-std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes, Engine e,
-                                     Semantics sem);
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes,
+                                     Engine e);
+std::optional<Counterexample> replay(const Rule& r, const Map& G, const rewrite::NodeMap& nodes,
+                                     Engine e, Semantics sem);
 
 }  // namespace gmr::smt

@@ -10,9 +10,12 @@ using graph::Side;
 namespace {
 condition::Status status(ElemStatus s) {
   switch (s) {
-    case ElemStatus::Preserved: return condition::Status::Preserved;
-    case ElemStatus::Deleted: return condition::Status::Deleted;
-    default: return condition::Status::Added;
+    case ElemStatus::Preserved:
+      return condition::Status::Preserved;
+    case ElemStatus::Deleted:
+      return condition::Status::Deleted;
+    default:
+      return condition::Status::Added;
   }
 }
 
@@ -27,7 +30,8 @@ condition::Graph side(const rewrite::Rule& r, Side which) {
   }
   for (ArcId a : g.arc_slots())
     if (g.arc_alive(a))
-      out.arcs.push_back({g.arc(a).src.index(), g.arc(a).tgt.index(), g.arc(a).label, status(r.arc_status(which, a))});
+      out.arcs.push_back({g.arc(a).src.index(), g.arc(a).tgt.index(), g.arc(a).label,
+                          status(r.arc_status(which, a))});
   return out;
 }
 }  // namespace

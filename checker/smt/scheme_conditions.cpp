@@ -49,7 +49,8 @@ const SchemeCondition* find_builtin_scheme_condition(const std::string& name) {
   return nullptr;
 }
 
-std::vector<bool> evaluate_scheme_condition(const SchemeCondition& c, const std::vector<RuleScheme>& schemes) {
+std::vector<bool> evaluate_scheme_condition(const SchemeCondition& c,
+                                            const std::vector<RuleScheme>& schemes) {
   std::vector<bool> holds;
   for (const RuleScheme& s : schemes) holds.push_back(c.holds(s));
   return holds;
@@ -75,12 +76,14 @@ SchemeFamilyVerdicts verify_scheme_family(const std::vector<RuleScheme>& schemes
   EncodingOptions eo;
   eo.semantics = Semantics::Consistency;
   out.results.reserve(schemes.size());
-  for (const RuleScheme& s : schemes) out.results.push_back(verify_scheme(s, bound, Engine::Smt, 0, eo));
+  for (const RuleScheme& s : schemes)
+    out.results.push_back(verify_scheme(s, bound, Engine::Smt, 0, eo));
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 
-SchemeValidationReport classify_scheme_condition(const std::string& name, const std::vector<bool>& holds,
+SchemeValidationReport classify_scheme_condition(const std::string& name,
+                                                 const std::vector<bool>& holds,
                                                  const std::vector<RuleScheme>& schemes,
                                                  const SchemeFamilyVerdicts& verdicts) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -103,7 +106,8 @@ SchemeValidationReport classify_scheme_condition(const std::string& name, const 
       if (!rep.first_incomplete) rep.first_incomplete = schemes[k];
     }
   }
-  rep.seconds = verdicts.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  rep.seconds = verdicts.seconds +
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return rep;
 }
 

@@ -63,10 +63,12 @@ struct SchemeFamilyVerdicts {
   double seconds = 0;
 };
 SchemeFamilyVerdicts verify_scheme_family(const std::vector<RuleScheme>& schemes, unsigned bound);
-SchemeValidationReport classify_scheme_condition(const std::string& name, const std::vector<bool>& holds,
+SchemeValidationReport classify_scheme_condition(const std::string& name,
+                                                 const std::vector<bool>& holds,
                                                  const std::vector<RuleScheme>& schemes,
                                                  const SchemeFamilyVerdicts& verdicts);
-std::vector<bool> evaluate_scheme_condition(const SchemeCondition& c, const std::vector<RuleScheme>& schemes);
+std::vector<bool> evaluate_scheme_condition(const SchemeCondition& c,
+                                            const std::vector<RuleScheme>& schemes);
 // The same with the condition's verdicts given (holds[k] for schemes[k]: a plug-in's, evaluated in
 // its guarded child, condition_plugin.hpp).
 SchemeValidationReport validate_scheme_condition(const std::string& name,

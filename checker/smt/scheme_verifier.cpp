@@ -75,8 +75,8 @@ std::vector<OrbitGraph> hook_orbits(const OrbitType& o, unsigned max_darts) {
   return out;
 }
 
-SchemeVerifyResult verify_scheme(const RuleScheme& s, unsigned bound, Engine e, unsigned orbit_bound,
-                                 const EncodingOptions& opt) {
+SchemeVerifyResult verify_scheme(const RuleScheme& s, unsigned bound, Engine e,
+                                 unsigned orbit_bound, const EncodingOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   s.validate_structure();
   SchemeVerifyResult res;

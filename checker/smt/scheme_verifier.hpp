@@ -9,9 +9,9 @@
 //
 // `hook_orbits(<o>, k)`: every orbit graph with 1..k darts up to isomorphism: one involution per
 // position of <o> (a fixed point is a loop), connected, and alpha_j alpha_i alpha_j alpha_i = id
-// for positions whose dimensions differ by at least 2 (the cycle constraint of the maps it lives in).
-// Brute force over involutions, pruned by the cycle constraint: fine up to 8 darts for |<o>| <= 2
-// and 7 darts for |<o>| = 3.
+// for positions whose dimensions differ by at least 2 (the cycle constraint of the maps it lives
+// in). Brute force over involutions, pruned by the cycle constraint: fine up to 8 darts for |<o>|
+// <= 2 and 7 darts for |<o>| = 3.
 #pragma once
 #include <optional>
 #include <vector>
@@ -27,20 +27,20 @@ using scheme::RuleScheme;
 std::vector<OrbitGraph> hook_orbits(const OrbitType& o, unsigned max_darts);
 
 struct SchemeVerifyResult {
-  unsigned bound = 0;          // maps of at most `bound` darts
-  unsigned orbit_bound = 0;    // hook orbits of at most this many darts
-  size_t orbits = 0;           // orbit graphs instantiated
-  size_t applicable = 0;       // instantiated rules with an application within the bound
+  unsigned bound = 0;        // maps of at most `bound` darts
+  unsigned orbit_bound = 0;  // hook orbits of at most this many darts
+  size_t orbits = 0;         // orbit graphs instantiated
+  size_t applicable = 0;     // instantiated rules with an application within the bound
   bool preserves = true;
-  std::optional<OrbitGraph> orbit;         // the orbit of the counterexample
-  std::optional<Rule> instance;            // its instantiated rule
-  std::optional<VerifyResult> result;      // the concrete verdict with the counterexample
+  std::optional<OrbitGraph> orbit;     // the orbit of the counterexample
+  std::optional<Rule> instance;        // its instantiated rule
+  std::optional<VerifyResult> result;  // the concrete verdict with the counterexample
   double seconds = 0;
 };
 
 // orbit_bound 0: the bound (complete for maps of at most `bound` darts); smaller: only the hook
 // orbits of at most orbit_bound darts (said so in the output).
-SchemeVerifyResult verify_scheme(const RuleScheme& s, unsigned bound, Engine e, unsigned orbit_bound = 0,
-                                 const EncodingOptions& opt = {});
+SchemeVerifyResult verify_scheme(const RuleScheme& s, unsigned bound, Engine e,
+                                 unsigned orbit_bound = 0, const EncodingOptions& opt = {});
 
 }  // namespace gmr::smt

@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-
 namespace gmr::smt {
 
 namespace {
@@ -135,7 +134,8 @@ z3::expr SymbolicCycle::lemma(const z3::model& m, unsigned mask, bool verdict) c
       if (used[y]) continue;
       bool ordered = true;  // slots below y hold no higher status, slots above no lower one
       for (size_t j = 0; j < i; ++j)
-        if ((to[j] < y && status[j] > status[i]) || (to[j] > y && status[j] < status[i])) ordered = false;
+        if ((to[j] < y && status[j] > status[i]) || (to[j] > y && status[j] < status[i]))
+          ordered = false;
       if (!ordered) continue;
       used[y] = true;
       to.push_back(y);
@@ -185,7 +185,8 @@ z3::expr_vector SymbolicCycle::cube_lemmas(const CycleTable& table,
     for (bool right : {false, true})
       for (size_t l = 0; l < nl; ++l)
         for (size_t x = 0; x < k; ++x)
-          for (size_t y = 0; y < k; ++y) var.push_back(rule_.arc(right, table.labels[l], slot[x], slot[y]));
+          for (size_t y = 0; y < k; ++y)
+            var.push_back(rule_.arc(right, table.labels[l], slot[x], slot[y]));
     for (const PatternCube& cube : cubes) {
       if (cube.nodes != k) continue;
       z3::expr_vector clause(c);

@@ -10,8 +10,8 @@
 #include "checker/rule_check.hpp"
 #include "checker/smt/counterexample.hpp"
 #include "checker/smt/cycle_components.hpp"
-#include "checker/smt/rule_space.hpp"
 #include "checker/smt/cycle_table.hpp"
+#include "checker/smt/rule_space.hpp"
 #include "checker/smt/symbolic_cycle.hpp"
 #include "checker/smt/symbolic_derivation.hpp"
 #include "model/core/error.hpp"
@@ -201,15 +201,15 @@ z3::solver query_solver(z3::context& ctx, const ValidationOptions& o) {
 // Sound: no rule satisfying the condition has a breaking match within the bounds.
 void decide_sound(z3::context& ctx, SymbolicReport& rep, const ThesisParts& parts,
                   const ExtraCondition& extra, const CondSpec& cs, const CycleTable& table,
-                  const std::vector<PatternCube>& cubes,
-                  const std::function<bool()>& out_of_time) {
+                  const std::vector<PatternCube>& cubes, const std::function<bool()>& out_of_time) {
   const auto t0 = std::chrono::steady_clock::now();
   const ValidationOptions& o = rep.options;
   Query q(ctx, query_solver(ctx, o), o, "", parts, extra, cs, &rep.cycle_lemmas);
   q.out_of_time = out_of_time;
   // The tabulated failing components as cubes (cycle_table.hpp): valid here, where Theorems 1-2
   // hold; no oracle call for components of at most table.max_nodes nodes.
-  if (!q.cycle_label_set.empty()) q.solver.add(q.cycle.cube_lemmas(table, cubes, q.ctx.bool_val(true)));
+  if (!q.cycle_label_set.empty())
+    q.solver.add(q.cycle.cube_lemmas(table, cubes, q.ctx.bool_val(true)));
   q.solver.add(q.der.h_definitions());
   q.solver.add(q.whole());
   q.solver.add(q.der.breaks_consistency());
@@ -235,7 +235,8 @@ void decide_sound(z3::context& ctx, SymbolicReport& rep, const ThesisParts& part
         const z3::model model = q.solver.get_model();
         const Rule r = q.rule.extract(model, "unsound");
         rewrite::NodeMap nodes;
-        for (Node v : r.left().nodes()) nodes.push_back(graph::node_of(v.index()));  // slot x on dart x
+        for (Node v : r.left().nodes())
+          nodes.push_back(graph::node_of(v.index()));  // slot x on dart x
         auto c = replay(r, q.map_of(model), nodes, Engine::Smt, Semantics::Consistency);
         if (!c)
           throw std::logic_error("symbolic counterexample does not replay (encoding error): " +
@@ -271,7 +272,8 @@ std::vector<int> free_labels(const MapSpec& spec) {
   const std::vector<int> cyc = cycle_labels(spec);
   std::vector<int> out;
   for (int i : spec.labels())
-    if (spec.is_involutive_dim(i) && std::find(cyc.begin(), cyc.end(), i) == cyc.end()) out.push_back(i);
+    if (spec.is_involutive_dim(i) && std::find(cyc.begin(), cyc.end(), i) == cyc.end())
+      out.push_back(i);
   return out;
 }
 
@@ -293,8 +295,10 @@ z3::expr free_label_target(Query& q, const MapEncoding& M, const Map& G, int i, 
   z3::expr target = M.dart(d);
   if (d < static_cast<Dart>(slots))
     for (int y = 0; y < slots && static_cast<size_t>(y) < G.size(); ++y) {
-      target = z3::ite(r.arc(false, i, y, static_cast<int>(d)), M.dart(static_cast<unsigned>(y)), target);
-      target = z3::ite(r.arc(false, i, static_cast<int>(d), y), M.dart(static_cast<unsigned>(y)), target);
+      target = z3::ite(r.arc(false, i, y, static_cast<int>(d)), M.dart(static_cast<unsigned>(y)),
+                       target);
+      target = z3::ite(r.arc(false, i, static_cast<int>(d), y), M.dart(static_cast<unsigned>(y)),
+                       target);
     }
   return z3::ite(z3::mk_and(realizable), target, M.dart(G.alpha(i, d)));
 }
@@ -434,7 +438,8 @@ SymbolicReport validate_symbolic(const std::string& condition, const ThesisParts
   std::vector<PatternCube> cubes, holding_cubes;
   if (!spec.cycle_pairs().empty() && opt.cycle_table_nodes > 0) {
     const auto t0 = std::chrono::steady_clock::now();
-    table = cycle_table(spec, opt.labels, std::min(opt.max_nodes, opt.cycle_table_nodes), parts, cs.reading);
+    table = cycle_table(spec, opt.labels, std::min(opt.max_nodes, opt.cycle_table_nodes), parts,
+                        cs.reading);
     cubes = failing_cubes(table);
     holding_cubes = verdict_cubes(table, true);
     rep.cycle_table_seconds = since(t0);

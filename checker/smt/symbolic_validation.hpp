@@ -58,10 +58,10 @@ struct SymbolicReport {
   size_t rules = 0;           // of the family the verdicts cover (rule_space.hpp count)
   bool sound_decided = false, complete_decided = false;  // false: the time limit hit first
   std::optional<ValidationWitness> smallest_unsound, smallest_incomplete;
-  size_t refinements = 0;  // maps added to the completeness query
-  size_t cycle_lemmas = 0; // verdicts of the concrete cycle checker added to the queries
+  size_t refinements = 0;     // maps added to the completeness query
+  size_t cycle_lemmas = 0;    // verdicts of the concrete cycle checker added to the queries
   size_t cycle_patterns = 0;  // component patterns tabulated before solving (cycle_table.hpp)
-  size_t cycle_cubes = 0;     // cubes of the table: failing (both queries) and holding (completeness)
+  size_t cycle_cubes = 0;  // cubes of the table: failing (both queries) and holding (completeness)
   double cycle_table_seconds = 0;
   double sound_seconds = 0, complete_seconds = 0;
   bool sound() const { return sound_decided && !smallest_unsound; }

@@ -1,8 +1,9 @@
 // Checker diagnostics overlaid on rule diagrams (checker/dot_overlay.hpp): the offending nodes of a
 // rejected rule are filled and labelled with the diagnostic code; an accepted rule has none.
+#include "checker/dot_overlay.hpp"
+
 #include <gtest/gtest.h>
 
-#include "checker/dot_overlay.hpp"
 #include "checker/rule_check.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "model/rule_io/scheme_json.hpp"

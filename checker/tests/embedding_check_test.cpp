@@ -21,7 +21,9 @@ std::filesystem::path root() {
   return std::filesystem::path(s ? s : ".");
 }
 
-CheckReport check_file(const std::filesystem::path& p) { return check_scheme(io::read_scheme_file(p)); }
+CheckReport check_file(const std::filesystem::path& p) {
+  return check_scheme(io::read_scheme_file(p));
+}
 
 const Diagnostic* find(const CheckReport& r, const std::string& code) {
   for (const auto& d : r.diagnostics)
@@ -32,8 +34,8 @@ const Diagnostic* find(const CheckReport& r, const std::string& code) {
 }  // namespace
 
 TEST(EmbeddingCheck, SubdivisionSchemesAreAccepted) {
-  for (const char* f : {"quad_subdivision", "loop_subdivision", "sqrt3_subdivision", "doo_sabin_subdivision",
-                        "vertex_insertion", "face_triangulation"}) {
+  for (const char* f : {"quad_subdivision", "loop_subdivision", "sqrt3_subdivision",
+                        "doo_sabin_subdivision", "vertex_insertion", "face_triangulation"}) {
     const CheckReport r = check_file(root() / "tools/data/rules" / (std::string(f) + ".json"));
     EXPECT_TRUE(r.holds("embeddings")) << f;
     EXPECT_TRUE(r.ok()) << f;
@@ -41,7 +43,8 @@ TEST(EmbeddingCheck, SubdivisionSchemesAreAccepted) {
 }
 
 TEST(EmbeddingCheck, TwoTermsInOneClass) {
-  const CheckReport r = check_file(root() / "checker/tests/data/embeddings/edge_point_two_terms.json");
+  const CheckReport r =
+      check_file(root() / "checker/tests/data/embeddings/edge_point_two_terms.json");
   EXPECT_FALSE(r.holds("embeddings"));
   const Diagnostic* d = find(r, "E-orbit-terms");
   ASSERT_NE(d, nullptr);
@@ -49,7 +52,8 @@ TEST(EmbeddingCheck, TwoTermsInOneClass) {
 }
 
 TEST(EmbeddingCheck, AddedOrbitWithoutValue) {
-  const CheckReport r = check_file(root() / "checker/tests/data/embeddings/face_point_without_value.json");
+  const CheckReport r =
+      check_file(root() / "checker/tests/data/embeddings/face_point_without_value.json");
   const Diagnostic* d = find(r, "E-no-value");
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->nodes, (std::vector<std::string>{"n3"}));
@@ -77,7 +81,8 @@ TEST(EmbeddingCheck, TypeErrorsNameTheColumn) {
   const CheckReport r = check_scheme(bad);
   const Diagnostic* d = find(r, "E-expression");
   ASSERT_NE(d, nullptr);
-  EXPECT_NE(d->message.find("column 1: the expression is an affine combination of mass 2"), std::string::npos)
+  EXPECT_NE(d->message.find("column 1: the expression is an affine combination of mass 2"),
+            std::string::npos)
       << d->message;
   // Without expression the added vertex has no value.
   EXPECT_NE(find(check_scheme(s), "E-no-value"), nullptr);

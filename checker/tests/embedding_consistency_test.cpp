@@ -29,9 +29,11 @@ EmbeddedMap random_embedded_map(Rng& rng) {
   EmbeddedMap m;
   m.map = random_glued_polygons(rng, opt);
   EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
-  for (Dart r : orbit_representatives(m.map, OrbitType{1, 2})) pos.values.set(m.map, r, {unit(rng), unit(rng), unit(rng)});
+  for (Dart r : orbit_representatives(m.map, OrbitType{1, 2}))
+    pos.values.set(m.map, r, {unit(rng), unit(rng), unit(rng)});
   EmbeddingField col = EmbeddingField::numeric("colour", OrbitType{0, 1});
-  for (Dart r : orbit_representatives(m.map, OrbitType{0, 1})) col.values.set(m.map, r, {unit(rng), unit(rng), unit(rng)});
+  for (Dart r : orbit_representatives(m.map, OrbitType{0, 1}))
+    col.values.set(m.map, r, {unit(rng), unit(rng), unit(rng)});
   m.fields.push_back(std::move(pos));
   m.fields.push_back(std::move(col));
   return m;
@@ -43,10 +45,14 @@ void add_random_expressions(Rng& rng, scheme::RuleScheme& s) {
   const std::vector<std::string> positions = {h + ".position", "middle(<0>_position(" + h + "))",
                                               h + ".position + vector(0, 0, 1)",
                                               "middle(<0,1>_position(" + h + "))"};
-  const std::vector<std::string> colours = {h + ".colour", "colour(0.5, 0.5, 0.5)", "clamp(2 * " + h + ".colour)"};
+  const std::vector<std::string> colours = {h + ".colour", "colour(0.5, 0.5, 0.5)",
+                                            "clamp(2 * " + h + ".colour)"};
   for (auto& n : s.right.nodes) {
-    if (chance(rng, 50)) n.expressions.push_back({"position", positions[uniform(rng, 0, positions.size() - 1)], {}, {}});
-    if (chance(rng, 50)) n.expressions.push_back({"colour", colours[uniform(rng, 0, colours.size() - 1)], {}, {}});
+    if (chance(rng, 50))
+      n.expressions.push_back(
+          {"position", positions[uniform(rng, 0, positions.size() - 1)], {}, {}});
+    if (chance(rng, 50))
+      n.expressions.push_back({"colour", colours[uniform(rng, 0, colours.size() - 1)], {}, {}});
   }
 }
 
@@ -75,13 +81,15 @@ TEST(EmbeddingConsistency, AcceptedSchemesGiveConsistentResults) {
       continue;
     }
     ++applied;
-    EXPECT_EQ(p.issue_count(), 0u) << "seed " << seed << ": " << p.issues()[0].code << " " << p.issues()[0].message;
+    EXPECT_EQ(p.issue_count(), 0u)
+        << "seed " << seed << ": " << p.issues()[0].code << " " << p.issues()[0].message;
     for (const auto& f : m.fields) {
       const auto issues = f.values.check(m.map);
-      EXPECT_TRUE(issues.empty()) << "seed " << seed << ", embedding " << f.name() << ": " << issues[0].problem;
+      EXPECT_TRUE(issues.empty()) << "seed " << seed << ", embedding " << f.name() << ": "
+                                  << issues[0].problem;
     }
   }
-  std::cout << "[ property ] " << accepted << " schemes accepted, " << applied << " consistent applications checked, "
-            << overlaps << " overlaps (dynamic)\n";
+  std::cout << "[ property ] " << accepted << " schemes accepted, " << applied
+            << " consistent applications checked, " << overlaps << " overlaps (dynamic)\n";
   EXPECT_GT(applied, 20u);
 }

@@ -19,9 +19,9 @@
 
 #include "checker/check_format.hpp"
 #include "checker/rule_check.hpp"
-#include "model/testing/rule_family.hpp"
 #include "checker/semantic.hpp"
 #include "model/rule_io/rule_json.hpp"
+#include "model/testing/rule_family.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -33,7 +33,8 @@ using namespace gmr::checker;
 namespace {
 
 struct Stats {
-  size_t rules = 0, agree_ok = 0, agree_fail = 0, unsound = 0, incomplete = 0, vacuous_ok = 0, vacuous_fail = 0;
+  size_t rules = 0, agree_ok = 0, agree_fail = 0, unsound = 0, incomplete = 0, vacuous_ok = 0,
+         vacuous_fail = 0;
   std::vector<std::string> examples;
   bool model_completion = true;
   void add(const Rule& r, const MapFamily& fam) {
@@ -54,16 +55,19 @@ struct Stats {
       ex = "UNSOUND " + ex + "  semantics: " + to_text(*v.witness, r, fam);
     } else {
       ++incomplete;
-      ex = "INCOMPLETE " + ex + "  semantics: preserves on " + std::to_string(v.applications) + " applications";
+      ex = "INCOMPLETE " + ex + "  semantics: preserves on " + std::to_string(v.applications) +
+           " applications";
     }
     if (examples.size() < 8) examples.push_back(ex);
   }
   std::string summary(const std::string& what) const {
     char buf[512];
     std::snprintf(buf, sizeof buf,
-                  "%s: %zu rules; agree ok %zu, agree fail %zu, unsound %zu, incomplete %zu, vacuous (checker ok %zu, "
+                  "%s: %zu rules; agree ok %zu, agree fail %zu, unsound %zu, incomplete %zu, "
+                  "vacuous (checker ok %zu, "
                   "checker fail %zu)",
-                  what.c_str(), rules, agree_ok, agree_fail, unsound, incomplete, vacuous_ok, vacuous_fail);
+                  what.c_str(), rules, agree_ok, agree_fail, unsound, incomplete, vacuous_ok,
+                  vacuous_fail);
     return buf;
   }
 };
@@ -76,7 +80,8 @@ void report(const Stats& s, const std::string& what) {
 
 // Every rule of at most 2 nodes with arcs of `labels` against every map of at most 4 darts of the
 // model (`model` names it in the report): no unsound and no incomplete verdict of the checker.
-void expect_equivalent_up_to_2_nodes(int n, MapKind kind, const std::vector<int>& labels, const std::string& model) {
+void expect_equivalent_up_to_2_nodes(int n, MapKind kind, const std::vector<int>& labels,
+                                     const std::string& model) {
   const MapFamily fam = map_family(n, kind, 4);
   Stats s;
   for_each_small_rule(n, kind, 2, labels, [&](const Rule& r) {
@@ -108,7 +113,8 @@ TEST(Equivalence, AllRulesUpTo2Nodes_2OMaps) {
 TEST(Equivalence, MapFamilySizes) {
   for (size_t k = 1; k <= 6; ++k)
     std::printf("connected 2-G-maps with %zu darts: %zu; 2-O-maps: %zu; 1-G-maps: %zu\n", k,
-                connected_maps(2, MapKind::GMap, k).size(), connected_maps(2, MapKind::OMap, k).size(),
+                connected_maps(2, MapKind::GMap, k).size(),
+                connected_maps(2, MapKind::OMap, k).size(),
                 connected_maps(1, MapKind::GMap, k).size());
 }
 
@@ -132,14 +138,16 @@ TEST(Equivalence, PerConstraintCycleConditionIsIncompleteOnGMaps) {
 
 TEST(Equivalence, RandomLargerRules) {
   std::mt19937_64 rng(20240603);
-  for (auto [n, kind, darts] : {std::tuple{1, MapKind::GMap, size_t{6}}, std::tuple{2, MapKind::GMap, size_t{5}},
-                               std::tuple{2, MapKind::OMap, size_t{5}}, std::tuple{3, MapKind::GMap, size_t{4}},
-                               std::tuple{3, MapKind::OMap, size_t{4}}}) {
+  for (auto [n, kind, darts] :
+       {std::tuple{1, MapKind::GMap, size_t{6}}, std::tuple{2, MapKind::GMap, size_t{5}},
+        std::tuple{2, MapKind::OMap, size_t{5}}, std::tuple{3, MapKind::GMap, size_t{4}},
+        std::tuple{3, MapKind::OMap, size_t{4}}}) {
     const MapFamily fam = map_family(n, kind, darts);
     Stats s;
     for (int k = 0; k < 3000; ++k) s.add(random_rule_from_maps(rng, fam, 5), fam);
-    report(s, std::string("random rules <= 5+2 nodes, ") + std::to_string(n) + "-" + to_string(kind) + ", maps <= " +
-                  std::to_string(darts) + " darts (" + std::to_string(fam.maps.size()) + " maps)");
+    report(s, std::string("random rules <= 5+2 nodes, ") + std::to_string(n) + "-" +
+                  to_string(kind) + ", maps <= " + std::to_string(darts) + " darts (" +
+                  std::to_string(fam.maps.size()) + " maps)");
     EXPECT_EQ(s.unsound, 0u);
     EXPECT_EQ(s.incomplete, 0u);
   }

@@ -1,8 +1,8 @@
 // Worked examples of the thesis (Ch. 3 examples and figures) that are concrete rules, loaded from
 // checker/tests/data/*.json (gmr.rule), checked statically and — where the rule is applicable to
 // small maps — against the semantics. The rule-scheme, rewriting-system and product fixtures are in
-// model/words/tests/word_scheme_test.cpp (F8, F9, F10), model/words/tests/word_rewriting_test.cpp (F14)
-// and model/graph/tests/graph_product_test.cpp (F15).
+// model/words/tests/word_scheme_test.cpp (F8, F9, F10), model/words/tests/word_rewriting_test.cpp
+// (F14) and model/graph/tests/graph_product_test.cpp (F15).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -12,11 +12,11 @@
 #include "checker/rule_check.hpp"
 #include "checker/semantic.hpp"
 #include "model/core/builders.hpp"
-#include "model/rewrite/dpo.hpp"
 #include "model/core/orbit.hpp"
-#include "model/rule_io/rule_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/rewrite/dpo.hpp"
+#include "model/rule_io/rule_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;
@@ -27,7 +27,9 @@ using namespace gmr::checker;
 
 namespace {
 
-std::string data(const std::string& name) { return gmr::testing::source_path("checker/tests/data/" + name + ".json"); }
+std::string data(const std::string& name) {
+  return gmr::testing::source_path("checker/tests/data/" + name + ".json");
+}
 
 Rule load(const std::string& name) { return read_rule_file(data(name)); }
 
@@ -39,7 +41,8 @@ bool O(const Rule& r, int i) { return check_non_orientation(r, i, diags); }
 bool C(const Rule& r, int i, int j) { return check_cycle(r, i, j, diags); }
 
 // Applies r on g through the match "node name -> dart" given by name_to_dart, both ways.
-Map apply_both(const Rule& r, const Map& g, const std::function<Dart(const std::string&)>& name_to_dart) {
+Map apply_both(const Rule& r, const Map& g,
+               const std::function<Dart(const std::string&)>& name_to_dart) {
   std::vector<Dart> m;
   for (Node v : r.left().nodes()) m.push_back(name_to_dart(r.left().name(v)));
   MapDerivation a = apply(r, g, m, Construction::Rewriting),
@@ -49,7 +52,9 @@ Map apply_both(const Rule& r, const Map& g, const std::function<Dart(const std::
 }
 
 // The match of fixture rules whose node names end with their dart ("a3" -> dart 3).
-Dart dart_by_index(const std::string& node) { return static_cast<Dart>(std::stoul(node.substr(1))); }
+Dart dart_by_index(const std::string& node) {
+  return static_cast<Dart>(std::stoul(node.substr(1)));
+}
 
 Map isolated_face(size_t k) {  // 2k darts, numbering of the fixture generator
   Map g(2);
@@ -61,7 +66,8 @@ Map isolated_face(size_t k) {  // 2k darts, numbering of the fixture generator
 
 // The fixture rule `name`, accepted by the checker, applied to the isolated face of k sides
 // (matched by dart index): a valid map of `darts` darts and `cells` i-cells (i = 0..2).
-void expect_on_isolated_face(const std::string& name, size_t k, size_t darts, const std::vector<size_t>& cells) {
+void expect_on_isolated_face(const std::string& name, size_t k, size_t darts,
+                             const std::vector<size_t>& cells) {
   const Rule r = load(name);
   const CheckReport rep = check_rule(r);
   EXPECT_TRUE(rep.ok()) << to_text(rep);
@@ -122,7 +128,9 @@ TEST(Fixtures, F4_Fig318_CycleCondition) {
   // optimal, and C_r(1,3) fails through R's unpaired f-1-c, e-1-b and the rewired c, e.
   bool fecb = false;
   for (const auto& p : optimal_paths(r, graph::Side::L, 1, 3))
-    if (r.left().name(p.source) == "f" && r.left().name(p.target) == "b" && p.word == std::vector<int>{1, 3, 1}) fecb = true;
+    if (r.left().name(p.source) == "f" && r.left().name(p.target) == "b" &&
+        p.word == std::vector<int>{1, 3, 1})
+      fecb = true;
   EXPECT_TRUE(fecb) << "the (1,3)-optimal path fecb of Ex. 39";
   std::vector<Diagnostic> d;
   EXPECT_FALSE(check_cycle(r, 1, 3, d));
@@ -213,16 +221,19 @@ TEST(Fixtures, F13_IntermediateQuadRuleViolatesC02) {
   const Map h = apply_both(r, isolated_face(4), dart_by_index);
   EXPECT_TRUE(is_valid(h));
   EXPECT_EQ(h.size(), 32u);
-  // A face of the cube: match a_k along the face of dart 0 (a0 = 0, a1 = alpha0(a0), a2 = alpha1(a1)...).
+  // A face of the cube: match a_k along the face of dart 0 (a0 = 0, a1 = alpha0(a0), a2 =
+  // alpha1(a1)...).
   const Map cube = make_cube(2);
   std::vector<Dart> face{0};
   while (face.size() < 8) face.push_back(cube.alpha(face.size() % 2 == 1 ? 0 : 1, face.back()));
   ASSERT_EQ(cube.alpha(1, face[7]), face[0]);
-  const Map hc = apply_both(r, cube, [&](const std::string& s) { return face[std::stoul(s.substr(1))]; });
+  const Map hc =
+      apply_both(r, cube, [&](const std::string& s) { return face[std::stoul(s.substr(1))]; });
   const auto rep = check_validity(hc);
   EXPECT_FALSE(rep.ok());
   bool c02 = false;
-  for (const auto& v : rep.violations) c02 = c02 || (v.constraint == Constraint::Cycle && v.i == 0 && v.j == 2);
+  for (const auto& v : rep.violations)
+    c02 = c02 || (v.constraint == Constraint::Cycle && v.i == 0 && v.j == 2);
   EXPECT_TRUE(c02);
 }
 

@@ -1,12 +1,13 @@
 // The rule-scheme checker: reference schemes, each diagnostic code, the identity rule that the
 // literal Algorithm 3 rejects, the Jerboa fixture.
+#include "checker/scheme_checker.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <map>
 
 #include "checker/check_format.hpp"
-#include "checker/scheme_checker.hpp"
 #include "model/rule_io/jme_import.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"
 #include "model/testing/source_tree.hpp"
@@ -75,7 +76,7 @@ TEST(SchemeChecker, IncidentArcs) {
   r.left.add_node("x", OrbitType::parse("<0,_>"));
   r.left.add_arc("n0", "x", 1);
   rep = check_scheme(r);
-  EXPECT_EQ(rep.count("I-deleted-node"), 1u) << to_text(rep);   // x has no 2-arc
+  EXPECT_EQ(rep.count("I-deleted-node"), 1u) << to_text(rep);    // x has no 2-arc
   EXPECT_EQ(rep.count("I-preserved-node"), 1u) << to_text(rep);  // n0 loses its 1-arc
 }
 
@@ -187,7 +188,8 @@ TEST(SchemeChecker, DefinitionVersusLiteralAlgorithm3) {
 }
 
 TEST(SchemeChecker, JerboaFixtureAllRulesChecked) {
-  JmeModeler m = read_jme_file(gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"));
+  JmeModeler m =
+      read_jme_file(gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"));
   ASSERT_EQ(m.rules.size(), 50u);
   size_t accepted = 0;
   std::map<std::string, bool> verdict;

@@ -1,6 +1,6 @@
-// The library of standard operations (tools/data/rules/*.json): every file reads, is accepted by the
-// scheme checker, and applies on the builders' objects with the expected cell counts and a valid
-// result.
+// The library of standard operations (tools/data/rules/*.json): every file reads, is accepted by
+// the scheme checker, and applies on the builders' objects with the expected cell counts and a
+// valid result.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -13,10 +13,10 @@
 #include "checker/scheme_checker.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
-#include "model/scheme/scheme_engine.hpp"
-#include "model/rule_io/scheme_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/rule_io/scheme_json.hpp"
+#include "model/scheme/scheme_engine.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;
@@ -46,8 +46,8 @@ Outcome apply_ok(const std::string& rule, const Map& g, const std::vector<Dart>&
 using Cells = std::vector<size_t>;
 
 // apply_ok, with a result of `darts` darts and `cells` i-cells (i = 0..n).
-Outcome expect_outcome(const std::string& rule, const Map& g, const std::vector<Dart>& hooks, size_t darts,
-                       const Cells& cells) {
+Outcome expect_outcome(const std::string& rule, const Map& g, const std::vector<Dart>& hooks,
+                       size_t darts, const Cells& cells) {
   Outcome o = apply_ok(rule, g, hooks);
   EXPECT_EQ(o.darts, darts) << rule;
   EXPECT_EQ(o.cells, cells) << rule;
@@ -76,7 +76,8 @@ TEST(SchemeLibrary, EveryFileIsReadAndAccepted) {
     EXPECT_TRUE(SchemeEngine(r).not_combinatorial().empty());
   }
   EXPECT_EQ(count, 16u);
-  EXPECT_EQ(strict_rejects, (std::set<std::string>{"face_extrusion", "face_triangulation", "sew3", "unsew3"}));
+  EXPECT_EQ(strict_rejects,
+            (std::set<std::string>{"face_extrusion", "face_triangulation", "sew3", "unsew3"}));
 }
 
 TEST(SchemeLibrary, VertexInsertion) {
@@ -106,7 +107,8 @@ TEST(SchemeLibrary, Triangulations) {
 
 TEST(SchemeLibrary, Subdivisions) {
   expect_outcome("quad_subdivision", make_cube(2), {0}, 192u, Cells{26, 48, 24});
-  const Outcome qt = expect_outcome("quad_subdivision", make_torus(4, 3), {0}, 384u, Cells{48, 96, 48});
+  const Outcome qt =
+      expect_outcome("quad_subdivision", make_torus(4, 3), {0}, 384u, Cells{48, 96, 48});
   EXPECT_EQ(euler_characteristic(qt.map), 0);
   expect_outcome("quad_subdivision", make_grid(2, 2), {0}, 128u, Cells{25, 40, 16});
   expect_outcome("loop_subdivision", make_tetrahedron(2), {0}, 96u, Cells{10, 24, 16});

@@ -9,9 +9,9 @@
 
 #include "checker/scheme_checker.hpp"
 #include "model/core/builders.hpp"
+#include "model/core/validity.hpp"
 #include "model/rule_io/jme_import.hpp"
 #include "model/scheme/scheme_engine.hpp"
-#include "model/core/validity.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;
@@ -52,7 +52,8 @@ std::optional<Witness> find_witness(const RuleScheme& s) {
 }  // namespace
 
 TEST(SchemeWitness, RejectedJerboaRules) {
-  JmeModeler m = read_jme_file(gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"));
+  JmeModeler m =
+      read_jme_file(gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"));
   std::map<std::string, std::optional<Witness>> found;
   SchemeCheckOptions topology;  // witnesses are about the topology
   topology.embeddings = false;
@@ -62,8 +63,8 @@ TEST(SchemeWitness, RejectedJerboaRules) {
     if (!e.not_combinatorial().empty()) continue;  // never applicable (I_S fails)
     found[s.name] = find_witness(s);
     if (found[s.name])
-      std::cout << s.name << ": breaks on " << found[s.name]->object << " at dart " << found[s.name]->hook << ": "
-                << found[s.name]->violation << "\n";
+      std::cout << s.name << ": breaks on " << found[s.name]->object << " at dart "
+                << found[s.name]->hook << ": " << found[s.name]->violation << "\n";
     else
       std::cout << s.name << ": no witness within the bound\n";
   }

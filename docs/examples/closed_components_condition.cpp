@@ -30,8 +30,11 @@ bool closed(const RuleView& r, Side s) {
   return true;
 }
 
-bool closed_components(const RuleView& r) { return closed(r, Side::Left) && closed(r, Side::Right); }
+bool closed_components(const RuleView& r) {
+  return closed(r, Side::Left) && closed(r, Side::Right);
+}
 }  // namespace
 
-GMR_CONDITION_PLUGIN("closed-components", "every node of L and R has one i-arc out and in per label, involutions",
+GMR_CONDITION_PLUGIN("closed-components",
+                     "every node of L and R has one i-arc out and in per label, involutions",
                      closed_components)

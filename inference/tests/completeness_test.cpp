@@ -9,16 +9,16 @@
 // to (b,w) for one node w) or an implicit arc at a position p ((b,v) d-linked to (nb(b,p),v) for
 // all b), positions used at most once (Def. 86: a relabeling is injective), the hook's decoration
 // being <o> itself.
-#include <functional>
-
 #include <gtest/gtest.h>
+
+#include <functional>
 
 #include "inference/dart_mapping.hpp"
 #include "inference/fold.hpp"
 #include "inference/fold_check.hpp"
 #include "inference/infer.hpp"
-#include "model/core/orbit.hpp"
 #include "model/core/builders.hpp"
+#include "model/core/orbit.hpp"
 #include "model/graph/map_family.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/scheme_engine.hpp"
@@ -34,8 +34,8 @@ namespace {
 struct Oracle {
   const Map& g;
   const OrbitType& o;
-  std::vector<Dart> orbit_darts;          // O[b]
-  std::vector<uint32_t> nb;               // nb[b * |o| + p]
+  std::vector<Dart> orbit_darts;  // O[b]
+  std::vector<uint32_t> nb;       // nb[b * |o| + p]
   size_t s = 0;
   std::vector<std::vector<Dart>> blocks;  // blocks[v][b] = dart (b, v); block 0 = O
   std::vector<uint32_t> node_of, index_of;
@@ -82,7 +82,8 @@ struct Oracle {
       if (d > n) return true;
       if (explicit_ok(v, d) && assign(d + 1, used)) return true;
       for (size_t p = 0; p < o.size(); ++p)
-        if (!((used >> p) & 1u) && implicit_ok(v, d, p) && assign(d + 1, used | (DimMask(1) << p))) return true;
+        if (!((used >> p) & 1u) && implicit_ok(v, d, p) && assign(d + 1, used | (DimMask(1) << p)))
+          return true;
       return false;
     };
     return assign(0, 0);
@@ -144,12 +145,14 @@ void check_family(int n, size_t max_darts, size_t& folded, size_t& failed) {
       const JointGraph j = joint_from_map(g);
       for (const OrbitType& o : all_orbit_types(n))
         for (Dart a : g.darts()) {
-          if (g.size() % orbit(g, o, a).size() != 0) continue;  // no scheme can exist; fold must fail
+          if (g.size() % orbit(g, o, a).size() != 0)
+            continue;  // no scheme can exist; fold must fail
           const FoldResult f = fold(j, o, a);
           Oracle oracle(g, o, a);
           const bool exists = oracle.search();
-          EXPECT_EQ(f.ok(), exists) << n << "-G-map of " << k << " darts, " << o.str() << " from dart " << a
-                                    << (f.ok() ? "" : ": " + f.failure.message);
+          EXPECT_EQ(f.ok(), exists)
+              << n << "-G-map of " << k << " darts, " << o.str() << " from dart " << a
+              << (f.ok() ? "" : ": " + f.failure.message);
           if (f.ok()) {
             EXPECT_EQ(instantiation_mismatch(f, j), "");
             ++folded;
@@ -178,7 +181,8 @@ TEST(FoldCompleteness, ExhaustiveOnSmallMaps) {
 // loses no rule.
 TEST(FoldCompleteness, StartsMarkedAfterAFailureFailToo) {
   size_t checked = 0;
-  for (auto [n, max_darts] : {std::pair{1, size_t{6}}, std::pair{2, size_t{6}}, std::pair{3, size_t{4}}})
+  for (auto [n, max_darts] :
+       {std::pair{1, size_t{6}}, std::pair{2, size_t{6}}, std::pair{3, size_t{4}}})
     for (size_t k = 1; k <= max_darts; ++k)
       for (const Map& g : connected_maps(n, MapKind::GMap, k)) {
         const JointGraph j = joint_from_map(g);
@@ -199,11 +203,13 @@ TEST(FoldCompleteness, StartsMarkedAfterAFailureFailToo) {
 }
 
 // The same on joint representations of before/after pairs (κ, several orbit types failing after
-// many nodes): the second quad subdivision and Doo–Sabin steps of a cube, every orbit type and start.
+// many nodes): the second quad subdivision and Doo–Sabin steps of a cube, every orbit type and
+// start.
 TEST(FoldCompleteness, StartsMarkedAfterAFailureFailTooOnJointGraphs) {
   size_t checked = 0;
   for (const char* rule : {"quad_subdivision", "doo_sabin_subdivision"}) {
-    const RuleScheme s = io::read_scheme_file(gmr::testing::source_path("tools/data/rules/" + std::string(rule) + ".json"));
+    const RuleScheme s = io::read_scheme_file(
+        gmr::testing::source_path("tools/data/rules/" + std::string(rule) + ".json"));
     const Map cube = make_cube();
     Map once = cube;
     ASSERT_TRUE(scheme::apply(SchemeEngine(s), once, {0}).applied);

@@ -3,12 +3,13 @@
 // stripped, and the inference must find expressions that reproduce the object after (and, where
 // the thesis says so, the known ones: vertex insertion's midpoint, quad subdivision's edge and
 // face points).
+#include "inference/expression_inference.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <iostream>
 
-#include "inference/expression_inference.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/propagation.hpp"
 #include "model/map_io/off.hpp"
@@ -25,9 +26,7 @@ std::string source(const std::string& rel) {
   return std::string(s ? s : ".") + "/" + rel;
 }
 
-EmbeddedMap load(const std::string& off) {
-  return io::read_off_file(source(off));
-}
+EmbeddedMap load(const std::string& off) { return io::read_off_file(source(off)); }
 
 // The object after: `s` (with its expressions) applied at `hook`.
 EmbeddedMap apply(const scheme::RuleScheme& s, EmbeddedMap m, Dart hook) {
@@ -44,8 +43,8 @@ scheme::RuleScheme without_expressions(scheme::RuleScheme s) {
 }
 
 // Re-applying the inferred scheme to the object before gives the object after's positions.
-void expect_reproduces(const ExpressionInference& inf, const EmbeddedMap& before, const EmbeddedMap& after,
-                       Dart hook) {
+void expect_reproduces(const ExpressionInference& inf, const EmbeddedMap& before,
+                       const EmbeddedMap& after, Dart hook) {
   const EmbeddedMap again = apply(inf.scheme, before, hook);
   const auto& a = again.find("position")->values;
   const auto& b = after.find("position")->values;
@@ -77,7 +76,8 @@ const InferredExpression& node(const ExpressionInference& inf, const std::string
 }  // namespace
 
 TEST(ExpressionInference, VertexInsertionMidpoint) {
-  const scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/vertex_insertion.json"));
+  const scheme::RuleScheme s =
+      io::read_scheme_file(source("tools/data/rules/vertex_insertion.json"));
   const auto [before, after, inf] = infer_on_cube(s);
   EXPECT_EQ(node(inf, "n0").status, Status::Kept);
   ASSERT_EQ(node(inf, "n1").status, Status::Solved);
@@ -107,7 +107,8 @@ TEST(ExpressionInference, CatmullClarkOnTheCubeIsReproducedNotRecovered) {
   // point of interest of n0 gives: the inferred expression reproduces the cube's result with the
   // symmetric points it has (thesis §8.4: inferred expressions are not unique and may differ from
   // the ground truth).
-  const scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
+  const scheme::RuleScheme s =
+      io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
   const auto [before, after, inf] = infer_on_cube(s);
   for (const auto& n : inf.nodes) std::cout << "[ infer    ] " << n.node << ": " << n.code << "\n";
   ASSERT_EQ(node(inf, "n0").status, Status::Solved);
@@ -118,7 +119,8 @@ TEST(ExpressionInference, NoSolutionIsReported) {
   // Face points pushed along the first edge of each face (in the scheme's dart order): no affine
   // combination of the points of interest gives them on the cube.
   scheme::RuleScheme s = io::read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
-  s.right.nodes[3].expressions[0].code = "middle(<0,1>_position(n0)) + 0.1 * (n0@0.position - n0.position)";
+  s.right.nodes[3].expressions[0].code =
+      "middle(<0,1>_position(n0)) + 0.1 * (n0@0.position - n0.position)";
   const auto [before, after, inf] = infer_on_cube(s);
   EXPECT_EQ(node(inf, "n3").status, Status::NoSolution);
   EXPECT_EQ(node(inf, "n1").status, Status::Solved);

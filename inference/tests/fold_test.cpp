@@ -1,15 +1,16 @@
 // Topological folding (thesis Alg. 6): the worked traces of §7.2 and every named failure.
+#include "inference/fold.hpp"
+
 #include <gtest/gtest.h>
 
-#include "inference/fold.hpp"
 #include "inference/infer.hpp"
 #include "inference/tests/inference_support.hpp"
 #include "model/core/builders.hpp"
+#include "model/core/orbit.hpp"
+#include "model/core/signature.hpp"
 #include "model/graph/dgraph.hpp"
 #include "model/map_io/off.hpp"
-#include "model/core/orbit.hpp"
 #include "model/scheme/scheme_instantiation.hpp"
-#include "model/core/signature.hpp"
 
 using namespace gmr;
 using namespace gmr::inference;
@@ -87,7 +88,8 @@ TEST(FoldTrace, OpenBoxOnEdgeOrbitIsInstantiationFailure) {
   size_t tried = 0;
   for (Dart a : box.map.darts()) {
     const Vec3 p = box.position().get(a), q = box.position().get(box.map.alpha(0, a));
-    if (!(p[0] == q[0] && p[1] == q[1] && p[2] == 0 && q[2] == 1)) continue;  // bottom end of a vertical edge
+    if (!(p[0] == q[0] && p[1] == q[1] && p[2] == 0 && q[2] == 1))
+      continue;  // bottom end of a vertical edge
     const FoldResult f = fold(j, ot("<0,2>"), a);
     ASSERT_FALSE(f.ok());
     EXPECT_EQ(f.failure.kind, FoldFailureKind::InstantiationFailure) << f.failure.message;
@@ -150,8 +152,9 @@ TEST(FoldFailures, PartialHookOrbitAndNotConnected) {
   EXPECT_EQ(g.failure.kind, FoldFailureKind::NotConnected);
 }
 
-// App. C: a link of J that the folded scheme does not produce. Dart 3 of a square says its 2-neighbour
-// is dart 0, while dart 0 is 2-free: no undirected scheme instantiates this one-way link.
+// App. C: a link of J that the folded scheme does not produce. Dart 3 of a square says its
+// 2-neighbour is dart 0, while dart 0 is 2-free: no undirected scheme instantiates this one-way
+// link.
 TEST(FoldFailures, NotSpanningOnOneWayLink) {
   JointGraph j = joint_from_map(make_polygon(2));
   j.set_nbr(3, 2, 0);
@@ -166,8 +169,8 @@ TEST(FoldFailures, NotSpanningOnOneWayLink) {
 
 // Thesis §8.2.1: <> always folds, one node per dart.
 TEST(FoldProperties, EmptyOrbitAlwaysFolds) {
-  for (const Map& g : {make_cube(), make_square_pyramid(), make_torus(3, 3), make_polygon(5), make_stacked_cubes(),
-                        read_off_file(data("open_box.off")).map}) {
+  for (const Map& g : {make_cube(), make_square_pyramid(), make_torus(3, 3), make_polygon(5),
+                       make_stacked_cubes(), read_off_file(data("open_box.off")).map}) {
     const JointGraph j = joint_from_map(g);
     for (Dart a : {Dart{0}, static_cast<Dart>(g.size() - 1)}) {
       const FoldResult f = fold(j, ot("<>"), a);
@@ -183,9 +186,14 @@ TEST(FoldProperties, EmptyOrbitAlwaysFolds) {
 // The number of nodes is |G| / |G<o>(a)|.
 TEST(FoldProperties, FoldThenInstantiateGivesBackTheInput) {
   const std::vector<std::pair<const char*, Map>> objects = {
-      {"cube", make_cube()},           {"tetrahedron", make_tetrahedron()},    {"pyramid", make_square_pyramid()},
-      {"torus", make_torus(4, 3)},     {"prism5", make_prism(5)},              {"grid", make_grid(2, 3)},
-      {"stacked", make_stacked_cubes()}, {"open box", read_off_file(data("open_box.off")).map}};
+      {"cube", make_cube()},
+      {"tetrahedron", make_tetrahedron()},
+      {"pyramid", make_square_pyramid()},
+      {"torus", make_torus(4, 3)},
+      {"prism5", make_prism(5)},
+      {"grid", make_grid(2, 3)},
+      {"stacked", make_stacked_cubes()},
+      {"open box", read_off_file(data("open_box.off")).map}};
   for (const auto& [name, g] : objects) {
     const JointGraph j = joint_from_map(g);
     size_t folded = 0;

@@ -11,12 +11,12 @@
 // only. Applied to the first iteration (a 16-gon), it misplaces the apexes while the thirds stay
 // right; and inferred from the pair (iteration 1, iteration 2) the apex has no solution at all
 // (nor, through rounding, the thirds: see the second test).
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "inference/expression_inference.hpp"
 #include "model/core/orbit.hpp"
@@ -38,7 +38,9 @@ std::string source(const std::string& rel) {
   return std::string(s ? s : ".") + "/" + rel;
 }
 
-scheme::RuleScheme koch() { return io::read_scheme_file(source("inference/tests/data/koch_edges.json")); }
+scheme::RuleScheme koch() {
+  return io::read_scheme_file(source("inference/tests/data/koch_edges.json"));
+}
 
 Vec3 operator+(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 Vec3 operator-(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -115,16 +117,14 @@ const InferredExpression& node(const ExpressionInference& inf, const std::string
 void print(const ExpressionInference& inf) {
   for (const auto& n : inf.nodes)
     std::cout << "[ infer    ] " << n.node << ": "
-              << (n.status == Status::Solved       ? n.code + (n.unique ? "  [unique]" : "  [not unique]")
-                  : n.status == Status::Kept       ? "[kept]"
-                  : n.status == Status::Inherited  ? "[inherited (solved class)]"
-                                                   : "[no solution]")
+              << (n.status == Status::Solved ? n.code + (n.unique ? "  [unique]" : "  [not unique]")
+                  : n.status == Status::Kept ? "[kept]"
+                  : n.status == Status::Inherited ? "[inherited (solved class)]"
+                                                  : "[no solution]")
               << "\n";
 }
 
-EmbeddedMap square() {
-  return io::read_off_file(source("inference/tests/data/square_pillow.off"));
-}
+EmbeddedMap square() { return io::read_off_file(source("inference/tests/data/square_pillow.off")); }
 
 TEST(ExpressionInference, VonKochFromTheSquareReproducesTheFirstIteration) {
   const EmbeddedMap sq = square();
@@ -169,10 +169,13 @@ TEST(ExpressionInference, VonKochFailsFromTheSecondIteration) {
   for (Dart d = 0; d < got.map.capacity(); ++d) {
     const Vec3 e = got.fields[0].values.get(d) - sq2.fields[0].values.get(d);
     const double err = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-    if (nd[d] == 3) apex_error = std::max(apex_error, err);
-    else thirds_error = std::max(thirds_error, err);
+    if (nd[d] == 3)
+      apex_error = std::max(apex_error, err);
+    else
+      thirds_error = std::max(thirds_error, err);
   }
-  std::cout << "[ koch     ] second iteration with the expressions inferred from the square: largest error "
+  std::cout << "[ koch     ] second iteration with the expressions inferred from the square: "
+               "largest error "
             << thirds_error << " at kept vertices and thirds, " << apex_error << " at apexes\n";
   EXPECT_LT(thirds_error, 1e-9);
   EXPECT_GT(apex_error, 0.01);

@@ -6,14 +6,14 @@
 // n16 = 1/3 p_v + 2/3 p_s, up to float noise): here every solved weight is checked to be a
 // multiple of 1/3, and the scheme with the inferred expressions, applied to another polycube,
 // must give the Menger positions there too (the expressions agree with the ground truth on cubes).
+#include <gtest/gtest.h>
+
 #include <array>
 #include <iostream>
 #include <map>
 #include <set>
 #include <string>
 #include <utility>
-
-#include <gtest/gtest.h>
 
 #include "inference/dart_mapping.hpp"
 #include "inference/expression_inference.hpp"
@@ -61,7 +61,8 @@ EmbeddedMap polycube_with_positions(const std::vector<Voxel>& voxels, double sca
 
 // `result` (a topology isomorphic to make_polycube(sub) through the darts pair (d, d2)) with the
 // positions of the Menger voxels `sub` at scale 1/3.
-EmbeddedMap with_menger_positions(const Map& result, Dart d, const std::vector<Voxel>& sub, Dart d2) {
+EmbeddedMap with_menger_positions(const Map& result, Dart d, const std::vector<Voxel>& sub,
+                                  Dart d2) {
   const EmbeddedMap target = polycube_with_positions(sub, 1.0 / 3.0);
   const OrbitType all = OrbitType::range(0, 3);
   const auto pairs = orbit_isomorphism(result, all, d, target.map, all, d2);
@@ -86,10 +87,12 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   };
   DartMapping m;
   for (size_t k = 0; k < cubes.size(); ++k)
-    for (Dart i = 0; i < kVoxelDarts; ++i) m.pairs.emplace_back(static_cast<Dart>(k) * kVoxelDarts + i, image_of(k, i));
+    for (Dart i = 0; i < kVoxelDarts; ++i)
+      m.pairs.emplace_back(static_cast<Dart>(k) * kVoxelDarts + i, image_of(k, i));
   InferOptions opt;
   opt.orbit = OrbitType::range(0, 3);
-  const InferenceResult res = infer_rules(joint_from_pair(make_polycube(cubes), make_polycube(sub), m), opt);
+  const InferenceResult res =
+      infer_rules(joint_from_pair(make_polycube(cubes), make_polycube(sub), m), opt);
   ASSERT_EQ(res.rules.size(), 1u) << to_text(res);
   const RuleScheme& menger = res.rules[0].scheme;
   ASSERT_EQ(menger.right.size(), 20u);
@@ -105,12 +108,13 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   size_t solved = 0, unique = 0;
   std::multiset<std::string> codes;
   for (const auto& n : inf.nodes) {
-    const char* status = n.status == Status::Kept ? "kept" : n.status == Status::Inherited ? "inherited (solved class)"
-                         : n.status == Status::NoSolution                                ? "no solution"
-                         : n.unique                                                       ? "unique"
-                                                                                          : "not unique";
-    std::cout << "[ infer    ] " << n.node << ": " << (n.status == Status::Solved ? n.code + "  " : "") << "[" << status
-              << "]\n";
+    const char* status = n.status == Status::Kept         ? "kept"
+                         : n.status == Status::Inherited  ? "inherited (solved class)"
+                         : n.status == Status::NoSolution ? "no solution"
+                         : n.unique                       ? "unique"
+                                                          : "not unique";
+    std::cout << "[ infer    ] " << n.node << ": "
+              << (n.status == Status::Solved ? n.code + "  " : "") << "[" << status << "]\n";
     if (n.status == Status::Solved) codes.insert(n.code);
     EXPECT_NE(n.status, Status::NoSolution) << n.node;
     if (n.status != Status::Solved) continue;
@@ -124,9 +128,10 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   // corner sub-cube, 1/3 p_v + 2/3 p_e, p_f, p_s. Not unique (several points of interest coincide
   // on the example), as the thesis says; the other 17 nodes are kept or in a solved class.
   EXPECT_EQ(solved, 3u);
-  EXPECT_EQ(codes, (std::multiset<std::string>{"(1/3) * n0.position + (2/3) * middle(<0>_position(n0))",
-                                                "(1/3) * n0.position + (2/3) * middle(<0,1>_position(n0))",
-                                                "(1/3) * n0.position + (2/3) * middle(<0,1,2>_position(n0))"}));
+  EXPECT_EQ(codes, (std::multiset<std::string>{
+                       "(1/3) * n0.position + (2/3) * middle(<0>_position(n0))",
+                       "(1/3) * n0.position + (2/3) * middle(<0,1>_position(n0))",
+                       "(1/3) * n0.position + (2/3) * middle(<0,1,2>_position(n0))"}));
   std::cout << "[ infer    ] " << solved << " nodes solved, " << unique << " uniquely\n";
 
   // 4. The inferred expressions reproduce the Menger positions on another polycube (an L-shaped
@@ -141,7 +146,8 @@ TEST(ExpressionInference, MengerLevelOneWeightsAreThirds) {
   const std::vector<Voxel> tri_sub = menger_of(tri);
   Dart corner0 = 0;
   for (size_t k = 0; k < tri_sub.size(); ++k)
-    if (tri_sub[k] == Voxel{2 * corner[0][0], 2 * corner[0][1], 2 * corner[0][2]}) corner0 = static_cast<Dart>(k) * kVoxelDarts;
+    if (tri_sub[k] == Voxel{2 * corner[0][0], 2 * corner[0][1], 2 * corner[0][2]})
+      corner0 = static_cast<Dart>(k) * kVoxelDarts;
   const EmbeddedMap want = with_menger_positions(got.map, 0, tri_sub, corner0);
   const auto& gv = got.fields[0].values;
   const auto& wv = want.fields[0].values;

@@ -46,8 +46,7 @@ RuleScheme infer_menger222() {
 
 // Positions carried from `source` to `target` through the isomorphism that sends dart `t` to `s`
 // (Algorithm 1's BFS labelings from both darts; the words must agree).
-EmbeddedMap carry_positions(const EmbeddedMap& source, Dart s, const Map& target,
-                                  Dart t) {
+EmbeddedMap carry_positions(const EmbeddedMap& source, Dart s, const Map& target, Dart t) {
   EXPECT_EQ(bfs_word(source.map, s), bfs_word(target, t));
   const std::vector<Dart> ls = bfs_labeling(source.map, s), lt = bfs_labeling(target, t);
   EmbeddedMap out;
@@ -98,7 +97,7 @@ TEST(ExpressionInference, MengerPolycube222Positions) {
   auto [topo, app] = scheme::apply(SchemeEngine(m), std::as_const(ex.before), {0});
   ASSERT_TRUE(app.applied) << app.why;
   const EmbeddedMap after = carry_positions(pc::with_positions(ex.after, ex.sub, 0.2),
-                                                  ex.mapping.pairs[0].second, topo, 0);
+                                            ex.mapping.pairs[0].second, topo, 0);
   const ExpressionInference inf = infer_expressions(m, before, {0}, after);
   size_t kept = 0, solved = 0;
   const std::regex fraction(R"(\((-?\d+)/(\d+)\))");

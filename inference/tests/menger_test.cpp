@@ -3,11 +3,11 @@
 // objects are polycubes (model/core/builders.hpp); the preserved darts are the before darts seen in
 // the corner sub-cube at their own corner, with the same local dart (make_polycube lays every voxel
 // out identically, 48 darts each). Each node stands for 96 darts, the hook orbit being both cubes
-// (the thesis' "48 darts per node" holds for one cube only). The inferred rule, applied to another polycube, gives the
-// polycube of its Menger voxels (signatures).
-#include <map>
-
+// (the thesis' "48 darts per node" holds for one cube only). The inferred rule, applied to another
+// polycube, gives the polycube of its Menger voxels (signatures).
 #include <gtest/gtest.h>
+
+#include <map>
 
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
@@ -45,7 +45,8 @@ TEST(RuleInference, MengerLevelOneFromTwoGluedCubes) {
     for (Dart i = 0; i < kVoxelDarts; ++i) {
       const Voxel s{3 * cubes[k][0] + 2 * corner[i][0], 3 * cubes[k][1] + 2 * corner[i][1],
                     3 * cubes[k][2] + 2 * corner[i][2]};
-      m.pairs.emplace_back(static_cast<Dart>(k) * kVoxelDarts + i, voxel_index.at(s) * kVoxelDarts + i);
+      m.pairs.emplace_back(static_cast<Dart>(k) * kVoxelDarts + i,
+                           voxel_index.at(s) * kVoxelDarts + i);
     }
   const JointGraph j = joint_from_pair(before, after, m);
   InferOptions opt;

@@ -9,8 +9,8 @@
 
 #include "inference/dart_mapping.hpp"
 #include "model/core/builders.hpp"
-#include "model/core/orbit.hpp"
 #include "model/core/embedded_map.hpp"
+#include "model/core/orbit.hpp"
 
 namespace gmr::inference::test::polycube {
 
@@ -34,15 +34,19 @@ inline std::vector<std::array<int, 3>> local_corners() {
 
 // Every voxel of `cubes` replaced by the voxels of `pattern` (a side x side x side grid): the
 // pattern voxels of cube k at k * |pattern| + i.
-inline std::vector<Voxel> subdivided(const std::vector<Voxel>& cubes, const std::vector<Voxel>& pattern, int side) {
+inline std::vector<Voxel> subdivided(const std::vector<Voxel>& cubes,
+                                     const std::vector<Voxel>& pattern, int side) {
   std::vector<Voxel> out;
   for (const Voxel& c : cubes)
-    for (const Voxel& p : pattern) out.push_back({side * c[0] + p[0], side * c[1] + p[1], side * c[2] + p[2]});
+    for (const Voxel& p : pattern)
+      out.push_back({side * c[0] + p[0], side * c[1] + p[1], side * c[2] + p[2]});
   return out;
 }
 
 // The level-1 Menger voxels of every voxel of `cubes`.
-inline std::vector<Voxel> menger_of(const std::vector<Voxel>& cubes) { return subdivided(cubes, menger_voxels(1), 3); }
+inline std::vector<Voxel> menger_of(const std::vector<Voxel>& cubes) {
+  return subdivided(cubes, menger_voxels(1), 3);
+}
 
 // A subdivision of every voxel of `cubes` by `pattern`, voxels in a side x side x side grid.
 struct PolycubeSubdivision {
@@ -71,7 +75,7 @@ struct PolycubeSubdivision {
 
 // Positions of a polycube (on <1,2,3>): the corner of each dart of voxel v is (v + corner) * scale.
 inline EmbeddedMap with_positions(const Map& polycube, const std::vector<Voxel>& voxels,
-                                        double scale) {
+                                  double scale) {
   EmbeddedMap m;
   m.map = polycube;
   m.fields.push_back(EmbeddingField::numeric("position", OrbitType{1, 2, 3}));

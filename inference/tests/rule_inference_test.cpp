@@ -6,22 +6,22 @@
 
 #include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
-#include "inference/inference_format.hpp"
 #include "inference/dart_mapping.hpp"
 #include "inference/infer.hpp"
+#include "inference/inference_format.hpp"
 #include "inference/prior_cut.hpp"
 #include "inference/rule_from_fold.hpp"
 #include "inference/scheme_isomorphism.hpp"
 #include "inference/tests/inference_support.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
-#include "model/map_io/off.hpp"
-#include "model/scheme/scheme_engine.hpp"
-#include "model/rule_io/scheme_json.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/sew.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/map_io/off.hpp"
+#include "model/rule_io/scheme_json.hpp"
+#include "model/scheme/scheme_engine.hpp"
 
 using namespace gmr;
 using namespace gmr::inference;
@@ -84,7 +84,8 @@ Map sewn_edge() {
 // <0,1,2>, L = n0, R = n0 <_,1,2> and the edge-midpoint node <1,_,2> 0-linked to it.
 TEST(RuleInference, TriangleToHexagonEdgeSplitIsValid) {
   const Map tri = make_polygon(3), hex = make_polygon(6);
-  const JointGraph j = joint_from_pair(tri, hex, read_mapping_file(data("triangle_hexagon_edge_split.json")));
+  const JointGraph j =
+      joint_from_pair(tri, hex, read_mapping_file(data("triangle_hexagon_edge_split.json")));
   EXPECT_EQ(j.size(), 18u);
   const FoldResult f = fold(j, ot("<0,1,2>"), 0);
   ASSERT_TRUE(f.ok()) << f.failure.message;
@@ -109,7 +110,8 @@ TEST(RuleInference, TriangleToHexagonEdgeSplitIsValid) {
 // condition C(0,2) at n1 <_,0,2>), and the driver reports no operation.
 TEST(RuleInference, TriangleToHexagonVertexSplitIsRejectedByTheChecker) {
   const Map tri = make_polygon(3), hex = make_polygon(6);
-  const JointGraph j = joint_from_pair(tri, hex, read_mapping_file(data("triangle_hexagon_vertex_split.json")));
+  const JointGraph j =
+      joint_from_pair(tri, hex, read_mapping_file(data("triangle_hexagon_vertex_split.json")));
   const FoldResult f = fold(j, ot("<0,1,2>"), 0);
   ASSERT_TRUE(f.ok()) << f.failure.message;
   EXPECT_TRUE(instantiates_back(f, j));
@@ -131,8 +133,8 @@ TEST(RuleInference, TriangleToHexagonVertexSplitIsRejectedByTheChecker) {
 
 // Quad subdivision inferred from the cube (48 darts) and its subdivision (192 darts, built by the
 // library scheme and the engine, identity mapping on dart ids): the rule is the library's up to
-// rule-scheme isomorphism, and applied to a torus and to a mesh read from OFF it agrees (signatures)
-// with the library scheme's result.
+// rule-scheme isomorphism, and applied to a torus and to a mesh read from OFF it agrees
+// (signatures) with the library scheme's result.
 TEST(RuleInference, QuadSubdivisionFromCubeIsTheLibraryScheme) {
   const RuleScheme lib = read_scheme_file(rule_file("quad_subdivision"));
   const Map cube = make_cube();
@@ -173,7 +175,8 @@ TEST(RuleInference, AllOrbitTypesOnQuadSubdivision) {
     lib_like += schemes_isomorphic(r.scheme, lib);
     EXPECT_TRUE(r.check.ok());
     EXPECT_TRUE(is_isomorphic(apply_at_own_hooks(cube, r), sub)) << r.orbit.str();
-    for (size_t l = k + 1; l < res.rules.size(); ++l) EXPECT_FALSE(schemes_isomorphic(r.scheme, res.rules[l].scheme));
+    for (size_t l = k + 1; l < res.rules.size(); ++l)
+      EXPECT_FALSE(schemes_isomorphic(r.scheme, res.rules[l].scheme));
   }
   EXPECT_EQ(lib_like, 1u);
   // <> folds into one node per dart: 48 L nodes, 192 R nodes.
@@ -219,7 +222,8 @@ TEST(DartMapping, FileErrorsAreLocated) {
   EXPECT_THROW(parse_mapping(R"({"format":"gmr.mapping","version":1,"pairs":[[0]]})"), Error);
   EXPECT_THROW(parse_mapping(R"({"format":"gmr.map","version":1})"), Error);
   try {
-    joint_from_pair(tri, hex, parse_mapping(R"({"format":"gmr.mapping","version":1,"pairs":[[0,0],[1,0]]})"));
+    joint_from_pair(tri, hex,
+                    parse_mapping(R"({"format":"gmr.mapping","version":1,"pairs":[[0,0],[1,0]]})"));
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.location(), "pairs[1]");
@@ -236,9 +240,12 @@ TEST(DartMapping, OrbitPairsExpandByOrbitIsomorphism) {
       "orbits":[{"before":0,"after":3,"orbit":"<0,1>","after_orbit":"<0,1>"}]})");
   const auto pairs = expand_mapping(a, b, m);
   ASSERT_EQ(pairs.size(), 8u);
-  for (auto [x, y] : pairs) EXPECT_EQ(b.alpha(0, y), [&] {
-      for (auto [x2, y2] : pairs) if (x2 == a.alpha(0, x)) return y2;
-      return kNoDart; }());
+  for (auto [x, y] : pairs)
+    EXPECT_EQ(b.alpha(0, y), [&] {
+      for (auto [x2, y2] : pairs)
+        if (x2 == a.alpha(0, x)) return y2;
+      return kNoDart;
+    }());
   EXPECT_THROW(expand_mapping(make_polygon(3), make_polygon(6), m), Error);
   const std::string text = mapping_to_json_text(m);
   EXPECT_EQ(parse_mapping(text).orbits.size(), 1u);
@@ -266,7 +273,8 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       {"quad_subdivision", make_polygon(4), 0, make_cube()},
       {"edge_triangulation", make_tetrahedron(), 0, make_prism(5)},
       {"doo_sabin_subdivision", make_cube(), 0, make_prism(5)},
-      {"sqrt3_subdivision", make_tetrahedron(), 0, make_square_pyramid()},  // not all triangles: still applies
+      {"sqrt3_subdivision", make_tetrahedron(), 0,
+       make_square_pyramid()},  // not all triangles: still applies
       {"face_triangulation", make_polygon(5), 1u << 2, make_polygon(7)},
       {"face_extrusion", make_polygon(4), 1u << 2, make_polygon(3)},
       {"vertex_insertion", make_free_edge(), 1u << 1, make_free_edge()},
@@ -302,7 +310,8 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
       opt.rule.cut_loops = 0;
       const InferenceResult prior = infer_rules(cut, opt);
       ASSERT_EQ(prior.rules.size(), 1u) << to_text(prior);
-      EXPECT_TRUE(schemes_isomorphic(prior.rules[0].scheme, lib)) << scheme_to_json_text(prior.rules[0].scheme);
+      EXPECT_TRUE(schemes_isomorphic(prior.rules[0].scheme, lib))
+          << scheme_to_json_text(prior.rules[0].scheme);
       const InferenceResult raw = infer_rules(j, opt);
       ASSERT_EQ(raw.rules.size(), 1u);
       EXPECT_FALSE(schemes_isomorphic(raw.rules[0].scheme, lib));
@@ -313,8 +322,9 @@ TEST(RuleInference, LibrarySchemesAreRecoveredFromTheirExamples) {
 // Powell–Sabin 6-split (thesis §7.4, a Jerboa rule inferred from an example): the after object is
 // built by applying library operations in sequence — vertex insertion on each edge of a triangle,
 // then face triangulation of the resulting hexagon (6 -> 36 darts). Inferred on <0,1,2>, the rule
-// has 6 R nodes; it is the library's barycentric "edge triangulation" up to rule-scheme isomorphism,
-// and applied to a unit square, a quad grid and a tetrahedron it agrees with it (signatures).
+// has 6 R nodes; it is the library's barycentric "edge triangulation" up to rule-scheme
+// isomorphism, and applied to a unit square, a quad grid and a tetrahedron it agrees with it
+// (signatures).
 TEST(RuleInference, PowellSabinSixSplitFromLibraryOperationsInSequence) {
   const RuleScheme vi = read_scheme_file(rule_file("vertex_insertion"));
   const RuleScheme ft = read_scheme_file(rule_file("face_triangulation"));
@@ -379,7 +389,8 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
   EXPECT_EQ(j.size(), 6u);
   const InferenceResult local = infer_on(j, ot("<0,2>"));
   ASSERT_EQ(local.rules.size(), 1u) << to_text(local);
-  EXPECT_TRUE(schemes_isomorphic(local.rules[0].scheme, vi)) << scheme_to_json_text(local.rules[0].scheme);
+  EXPECT_TRUE(schemes_isomorphic(local.rules[0].scheme, vi))
+      << scheme_to_json_text(local.rules[0].scheme);
   // A mapped dart outside the selection is refused.
   DartMapping bad = m;
   bad.pairs.emplace_back(2, 2);
@@ -388,9 +399,10 @@ TEST(RuleInference, SelectionInfersALocalOperation) {
 
 // Doo–Sabin iterations 1, 2, 3, each inferred directly from iteration 0 (thesis §7.4.3): the after
 // object is the cube subdivided k times by the library's Doo–Sabin scheme
-// (tools/data/rules/doo_sabin_subdivision.json); the engine keeps the ids of preserved darts, so the identity mapping relates
-// iteration 0 and iteration k. R has 4, 16, 64 nodes on the closed cube; iteration 1 is the scheme
-// itself; applied to a tetrahedron, the inferred iteration-k rule equals k Doo–Sabin steps.
+// (tools/data/rules/doo_sabin_subdivision.json); the engine keeps the ids of preserved darts, so
+// the identity mapping relates iteration 0 and iteration k. R has 4, 16, 64 nodes on the closed
+// cube; iteration 1 is the scheme itself; applied to a tetrahedron, the inferred iteration-k rule
+// equals k Doo–Sabin steps.
 TEST(RuleInference, DooSabinIterationsFromIterationZero) {
   const RuleScheme ds = read_scheme_file(rule_file("doo_sabin_subdivision"));
   ASSERT_TRUE(check_scheme(ds).ok());
@@ -416,9 +428,9 @@ TEST(RuleInference, DooSabinIterationsFromIterationZero) {
 
 // Kobbelt √3 (thesis §7.4.2, a single-step rule with edge flips): inferred from a tetrahedron
 // (24 -> 72 darts) subdivided by the library's √3 scheme (tools/data/rules/sqrt3_subdivision.json):
-// L1 + R3, the library scheme itself (rule-scheme isomorphism); applied to a closed triangle mesh (the cube with every face
-// triangulated by the library's face triangulation) it triples the face count, and agrees with the
-// scheme (signatures).
+// L1 + R3, the library scheme itself (rule-scheme isomorphism); applied to a closed triangle mesh
+// (the cube with every face triangulated by the library's face triangulation) it triples the face
+// count, and agrees with the scheme (signatures).
 TEST(RuleInference, KobbeltSqrt3FromATetrahedron) {
   const RuleScheme s3 = read_scheme_file(rule_file("sqrt3_subdivision"));
   ASSERT_TRUE(check_scheme(s3).ok());
@@ -473,11 +485,12 @@ InferenceResult infer_on(const RuleScheme& lib, const HookedExample& e, DimMask 
 }  // namespace
 
 // The sewing operations (thesis Fig. 3.19a): sew2 and sew3 have two hooks, so the joint graph of
-// two free cells sewn has one L component per hook (n0, n1, the second hooked at its full-decoration
-// node); unsew2/unsew3 one hook, L connected by the sewn link. The examples are the smallest: two
-// free edges (n = 2) and two triangles (n = 3, 3-free), so the preserved darts carry loops of the
-// dimensions outside the orbit and the sewing dimension (1 for edges, 2 for faces); the library
-// leaves those out, so they are cut (posterior cut), and without the cut they stay explicit.
+// two free cells sewn has one L component per hook (n0, n1, the second hooked at its
+// full-decoration node); unsew2/unsew3 one hook, L connected by the sewn link. The examples are the
+// smallest: two free edges (n = 2) and two triangles (n = 3, 3-free), so the preserved darts carry
+// loops of the dimensions outside the orbit and the sewing dimension (1 for edges, 2 for faces);
+// the library leaves those out, so they are cut (posterior cut), and without the cut they stay
+// explicit.
 TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
   struct Case {
     const char* rule;
@@ -516,7 +529,8 @@ TEST(RuleInference, SewingSchemesAreRecoveredFromTwoCellsSewn) {
 namespace {
 // A local example (thesis §7.1.2): the hook's <o>-orbit, the darts 1-linked to it (when
 // with_neighbours) and, after, the preserved ones among them plus the created darts.
-HookedExample local_example(const Map& before, const RuleScheme& lib, Dart hook, const OrbitType& o, bool with_neighbours) {
+HookedExample local_example(const Map& before, const RuleScheme& lib, Dart hook, const OrbitType& o,
+                            bool with_neighbours) {
   auto [after, app] = scheme::apply(SchemeEngine(lib), std::as_const(before), {hook});
   EXPECT_TRUE(app.applied) << app.why;
   std::vector<Dart> sel = orbit(before, o, hook);

@@ -1,9 +1,10 @@
 // Rule-scheme isomorphism (thesis Def. 90, Alg. 7).
-#include <algorithm>
+#include "inference/scheme_isomorphism.hpp"
 
 #include <gtest/gtest.h>
 
-#include "inference/scheme_isomorphism.hpp"
+#include <algorithm>
+
 #include "inference/tests/inference_support.hpp"
 #include "model/rule_io/scheme_json.hpp"
 
@@ -32,9 +33,15 @@ RuleScheme shuffled(const RuleScheme& s) {
 }  // namespace
 
 TEST(SchemeIsomorphism, LibrarySchemesAgainstThemselvesAndEachOther) {
-  const std::vector<std::string> names = {"quad_subdivision", "loop_subdivision", "vertex_insertion",
-                                          "vertex_insertion_folded_2", "face_triangulation", "sew2", "unsew2",
-                                          "edge_deletion", "dual_vertex_insertion"};
+  const std::vector<std::string> names = {"quad_subdivision",
+                                          "loop_subdivision",
+                                          "vertex_insertion",
+                                          "vertex_insertion_folded_2",
+                                          "face_triangulation",
+                                          "sew2",
+                                          "unsew2",
+                                          "edge_deletion",
+                                          "dual_vertex_insertion"};
   std::vector<RuleScheme> lib;
   for (const auto& n : names) lib.push_back(read_scheme_file(rule_file(n)));
   for (size_t a = 0; a < lib.size(); ++a) {

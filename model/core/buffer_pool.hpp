@@ -3,10 +3,10 @@
 // A whole-map rewrite writes tables as large as the map (the map's own link arrays and embedding
 // slots, orbit indices, classes, memoised values), and fresh memory is paid page by page on first
 // touch (a page fault per 4 KiB; several microseconds each on a virtual machine, where this is most
-// of a subdivision's time: docs/embeddings.md "Performance"). Applying a scheme again and again would
-// pay it at every call. Small maps pay it too: each application's tables, freed to malloc, leave
-// the top of the heap free, glibc gives it back to the system (brk, with a TLB flush) and the next
-// application faults the same pages in again, which made a subdivision of a 20-face mesh ten
+// of a subdivision's time: docs/embeddings.md "Performance"). Applying a scheme again and again
+// would pay it at every call. Small maps pay it too: each application's tables, freed to malloc,
+// leave the top of the heap free, glibc gives it back to the system (brk, with a TLB flush) and the
+// next application faults the same pages in again, which made a subdivision of a 20-face mesh ten
 // times slower than its work (docs/embeddings.md "Performance"). So:
 //  * take_buffer / give_buffer: a per-thread pool of vectors per element type and per kind of
 //    storage (from one page, 4 KiB, of storage; at most 32 per pool, the smallest dropped first);
@@ -37,8 +37,8 @@ namespace gmr {
 
 namespace detail {
 constexpr size_t kPoolMinBytes = size_t(1) << 12;  // a page
-constexpr size_t kPoolMaxBuffers = 32;              // per pool (element type and storage kind)
-constexpr size_t kPoolMaxSlack = 2;                 // capacity handed out / capacity needed
+constexpr size_t kPoolMaxBuffers = 32;             // per pool (element type and storage kind)
+constexpr size_t kPoolMaxSlack = 2;                // capacity handed out / capacity needed
 // Set when the thread's pool is destroyed (a trivially destructible thread_local, readable until
 // the thread ends): a map destroyed later (a static one, or a thread_local made before the pool)
 // then frees its arrays instead of giving them to a pool that no longer exists.
@@ -73,7 +73,9 @@ std::vector<T> take_buffer(size_t min_capacity = 0, bool keep_contents = false) 
   auto& p = *pool;
   size_t best = p.size();
   for (size_t k = 0; k < p.size(); ++k)
-    if (p[k].capacity() >= min_capacity && (best == p.size() || p[k].capacity() < p[best].capacity())) best = k;
+    if (p[k].capacity() >= min_capacity &&
+        (best == p.size() || p[k].capacity() < p[best].capacity()))
+      best = k;
   const size_t needed = std::max(min_capacity, detail::kPoolMinBytes / sizeof(T));
   if (best == p.size() || p[best].capacity() > detail::kPoolMaxSlack * needed) return {};
   std::vector<T> v = std::move(p[best]);
@@ -90,7 +92,9 @@ void give_buffer(std::vector<T>&& v) {
   auto& p = *pool;
   p.push_back(std::move(v));
   if (p.size() > detail::kPoolMaxBuffers) {
-    auto smallest = std::min_element(p.begin(), p.end(), [](const auto& a, const auto& b) { return a.capacity() < b.capacity(); });
+    auto smallest = std::min_element(p.begin(), p.end(), [](const auto& a, const auto& b) {
+      return a.capacity() < b.capacity();
+    });
     p.erase(smallest);
   }
 }

@@ -10,7 +10,7 @@
 namespace gmr {
 
 Map surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t num_vertices,
-                        const SurfaceOptions& opt, std::vector<uint32_t>* vertex_of_dart) {
+                       const SurfaceOptions& opt, std::vector<uint32_t>* vertex_of_dart) {
   if (opt.n < 2) throw Error(ErrorCode::Range, "a surface needs a G-map of dimension >= 2");
   Map g(opt.n);
   size_t total = 0;
@@ -20,10 +20,13 @@ Map surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t n
     if (face.size() < 3) throw Error(ErrorCode::Schema, "a face needs at least 3 vertices", where);
     for (size_t p = 0; p < face.size(); ++p) {
       if (face[p] >= num_vertices)
-        throw Error(ErrorCode::Schema, "vertex index " + std::to_string(face[p]) + " out of range (" +
-                                           std::to_string(num_vertices) + " vertices)", where);
+        throw Error(ErrorCode::Schema,
+                    "vertex index " + std::to_string(face[p]) + " out of range (" +
+                        std::to_string(num_vertices) + " vertices)",
+                    where);
       if (face[p] == face[(p + 1) % face.size()])
-        throw Error(ErrorCode::Schema, "degenerate edge: vertex " + std::to_string(face[p]) + " repeated", where);
+        throw Error(ErrorCode::Schema,
+                    "degenerate edge: vertex " + std::to_string(face[p]) + " repeated", where);
     }
     total += 2 * face.size();
   }
@@ -31,7 +34,10 @@ Map surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t n
   std::vector<uint32_t> vert;
   vert.reserve(total);
   // Edge (u,v), u<v  ->  the face sides using it: (dart at u, dart at v, face).
-  struct Side { Dart at_u, at_v; size_t face; };
+  struct Side {
+    Dart at_u, at_v;
+    size_t face;
+  };
   std::unordered_map<uint64_t, std::vector<Side>> sides;
   sides.reserve(total / 2);
   for (size_t f = 0; f < faces.size(); ++f) {
@@ -55,9 +61,10 @@ Map surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t n
     if (list.size() > 2) {
       std::string fs;
       for (const auto& s : list) fs += (fs.empty() ? "" : ", ") + std::to_string(s.face);
-      throw Error(ErrorCode::NonManifold,
-                  "non-manifold edge: used by " + std::to_string(list.size()) + " faces (" + fs + ")",
-                  "edge (" + std::to_string(key >> 32) + "," + std::to_string(key & 0xffffffffu) + ")");
+      throw Error(
+          ErrorCode::NonManifold,
+          "non-manifold edge: used by " + std::to_string(list.size()) + " faces (" + fs + ")",
+          "edge (" + std::to_string(key >> 32) + "," + std::to_string(key & 0xffffffffu) + ")");
     }
     if (list.size() == 2) {
       g.link(2, list[0].at_u, list[1].at_u);
@@ -119,7 +126,8 @@ static const std::vector<std::vector<uint32_t>> kCubeFaces = {
 Map make_cube(int n) { return surface_from_faces(kCubeFaces, 8, with_n(n)); }
 
 Map make_square_pyramid(int n) {
-  return surface_from_faces({{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}, 5, with_n(n));
+  return surface_from_faces({{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}, 5,
+                            with_n(n));
 }
 
 Map make_prism(size_t k, int n) {
@@ -139,7 +147,8 @@ Map make_grid(size_t w, size_t h, int n) {
   std::vector<std::vector<uint32_t>> faces;
   auto id = [&](size_t x, size_t y) { return static_cast<uint32_t>(y * (w + 1) + x); };
   for (size_t y = 0; y < h; ++y)
-    for (size_t x = 0; x < w; ++x) faces.push_back({id(x, y), id(x + 1, y), id(x + 1, y + 1), id(x, y + 1)});
+    for (size_t x = 0; x < w; ++x)
+      faces.push_back({id(x, y), id(x + 1, y), id(x + 1, y + 1), id(x, y + 1)});
   return surface_from_faces(faces, (w + 1) * (h + 1), with_n(n));
 }
 
@@ -149,7 +158,8 @@ Map make_torus(size_t w, size_t h, int n) {
   faces.reserve(w * h);
   auto id = [&](size_t x, size_t y) { return static_cast<uint32_t>((y % h) * w + (x % w)); };
   for (size_t y = 0; y < h; ++y)
-    for (size_t x = 0; x < w; ++x) faces.push_back({id(x, y), id(x + 1, y), id(x + 1, y + 1), id(x, y + 1)});
+    for (size_t x = 0; x < w; ++x)
+      faces.push_back({id(x, y), id(x + 1, y), id(x + 1, y + 1), id(x, y + 1)});
   return surface_from_faces(faces, w * h, with_n(n));
 }
 
@@ -165,8 +175,9 @@ Map make_polycube(const std::vector<Voxel>& voxels) {
   for (size_t k = 0; k < voxels.size(); ++k) {
     const Voxel& vx = voxels[k];
     if (!seen.emplace(vx, k).second)
-      throw Error(ErrorCode::Schema, "duplicate voxel (" + std::to_string(vx[0]) + "," +
-                                         std::to_string(vx[1]) + "," + std::to_string(vx[2]) + ")",
+      throw Error(ErrorCode::Schema,
+                  "duplicate voxel (" + std::to_string(vx[0]) + "," + std::to_string(vx[1]) + "," +
+                      std::to_string(vx[2]) + ")",
                   "voxel " + std::to_string(k));
     std::vector<uint32_t> corner_of;
     Map cube = surface_from_faces(kCubeFaces, 8, with_n(3), &corner_of);
@@ -174,7 +185,8 @@ Map make_polycube(const std::vector<Voxel>& voxels) {
     for (int i = 0; i <= 2; ++i)
       for (Dart d = 0; d < cube.capacity(); ++d) g.set_alpha(i, base + d, base + cube.alpha(i, d));
     auto pos = [&](uint32_t c) {
-      return std::array<int, 3>{2 * (vx[0] + int(c & 1)), 2 * (vx[1] + int((c >> 1) & 1)), 2 * (vx[2] + int((c >> 2) & 1))};
+      return std::array<int, 3>{2 * (vx[0] + int(c & 1)), 2 * (vx[1] + int((c >> 1) & 1)),
+                                2 * (vx[2] + int((c >> 2) & 1))};
     };
     for (Dart d = 0; d < cube.capacity(); ++d) {
       // Face centre = mean of the face's 4 corners: the <0,1>-orbit has 8 darts, 2 per corner.
@@ -238,10 +250,12 @@ Map orient(const Map& g, Dart d, bool keep_boundary) {
       const Dart w = g.alpha(i, v);
       if (w == v && keep_boundary && i == 2) continue;  // boundary: beta_2(v) = v below
       if (w == v)
-        throw Error(ErrorCode::InvalidMap, "cannot orient: dart is " + std::to_string(i) + "-free (open object)",
+        throw Error(ErrorCode::InvalidMap,
+                    "cannot orient: dart is " + std::to_string(i) + "-free (open object)",
                     "dart " + std::to_string(v));
       auto [it, fresh] = parity.emplace(w, 1 - parity[v]);
-      if (fresh) queue.push_back(w);
+      if (fresh)
+        queue.push_back(w);
       else if (it->second == parity[v])
         throw Error(ErrorCode::InvalidMap, "cannot orient: the object is not orientable",
                     "darts " + std::to_string(v) + ", " + std::to_string(w));
@@ -259,15 +273,17 @@ Map orient(const Map& g, Dart d, bool keep_boundary) {
       // A 2-free dart stays 2-free: alpha_2(alpha_0(d)) = alpha_0(d) then, since alpha_0 alpha_2
       // is an involution (cycle constraint), so the boundary is a beta_2 loop.
       const bool free_i = i == 2 && g.alpha(i, even[k]) == even[k];
-      o.set_alpha(i, static_cast<Dart>(k), free_i ? static_cast<Dart>(k) : index.at(g.alpha(i, g.alpha(0, even[k]))));
+      o.set_alpha(i, static_cast<Dart>(k),
+                  free_i ? static_cast<Dart>(k) : index.at(g.alpha(i, g.alpha(0, even[k]))));
     }
   return o;
 }
 
 Map lift(const Map& g, int n) {
   if (n < g.dimension() || n >= kMaxDim)
-    throw Error(ErrorCode::Usage, "cannot lift a " + std::to_string(g.dimension()) + "-map to dimension " +
-                                      std::to_string(n) + " (expected " + std::to_string(g.dimension()) + ".." +
+    throw Error(ErrorCode::Usage, "cannot lift a " + std::to_string(g.dimension()) +
+                                      "-map to dimension " + std::to_string(n) + " (expected " +
+                                      std::to_string(g.dimension()) + ".." +
                                       std::to_string(kMaxDim - 1) + ")");
   Map out(n, g.kind());
   out.add_darts(g.capacity());

@@ -20,14 +20,15 @@ struct SurfaceOptions {
 };
 // vertex_of_dart (optional output): for every dart, the index of its vertex in the face list.
 Map surface_from_faces(const std::vector<std::vector<uint32_t>>& faces, size_t num_vertices,
-                        const SurfaceOptions& opt = {}, std::vector<uint32_t>* vertex_of_dart = nullptr);
+                       const SurfaceOptions& opt = {},
+                       std::vector<uint32_t>* vertex_of_dart = nullptr);
 
-Map make_free_edge(int n = 2);            // 2 darts, 0-linked
-Map make_polygon(size_t k, int n = 2);    // 2k darts: one open face
-Map make_tetrahedron(int n = 2);          // closed surface, 24 darts
-Map make_cube(int n = 2);                 // closed surface, 48 darts
-Map make_square_pyramid(int n = 2);       // closed surface, 32 darts
-Map make_prism(size_t k, int n = 2);      // closed surface over a k-gon
+Map make_free_edge(int n = 2);                 // 2 darts, 0-linked
+Map make_polygon(size_t k, int n = 2);         // 2k darts: one open face
+Map make_tetrahedron(int n = 2);               // closed surface, 24 darts
+Map make_cube(int n = 2);                      // closed surface, 48 darts
+Map make_square_pyramid(int n = 2);            // closed surface, 32 darts
+Map make_prism(size_t k, int n = 2);           // closed surface over a k-gon
 Map make_grid(size_t w, size_t h, int n = 2);  // open w x h grid of quads, 8wh darts
 
 // Two cubes (3-G-map volumes) 3-sewn along a face: 96 darts (inference paper, §3.3).
@@ -41,8 +42,8 @@ Map make_polycube(const std::vector<Voxel>& voxels);
 std::vector<Voxel> menger_voxels(int level);
 // One iteration of the (l, m, k)-Menger operation on a unit cube (Menger polycubes, Richaume et al.
 // 2019, cited by the inference paper §9.2.2): the (2l+1) x (2m+1) x (2k+1) grid without the voxels
-// having at least two odd coordinates, i.e. l, m, k unit holes through the cube along the three axes,
-// one unit apart. (1, 1, 1) is menger_voxels(1); (2, 2, 2) has 81 voxels.
+// having at least two odd coordinates, i.e. l, m, k unit holes through the cube along the three
+// axes, one unit apart. (1, 1, 1) is menger_voxels(1); (2, 2, 2) has 81 voxels.
 std::vector<Voxel> menger_polycube_voxels(int l, int m, int k);
 
 // A closed orientable surface of genus 1 (a torus) as a grid of w x h quads with wrap-around.

@@ -31,7 +31,7 @@ struct ConstraintViolation {
   // The dart (map) or the node's index (D-graph, graph::Node::index) where the local constraint
   // fails; `path` names darts or node indices alike.
   uint32_t at{};
-  int i = -1, j = -1;  // dimension(s)
+  int i = -1, j = -1;            // dimension(s)
   std::vector<uint32_t> path{};  // the offending darts or nodes (a path from `at` for C)
   std::string message{};  // what is broken: "no outgoing 2-arc", "alpha_2 is not an involution..."
 };

@@ -41,7 +41,8 @@ std::optional<std::string> numeric_value_problem(const nlohmann::json& v, int& a
     arity = 1;
     return std::nullopt;
   }
-  if (v.is_array() && v.size() == 3 && exact_number(v[0]) && exact_number(v[1]) && exact_number(v[2])) {
+  if (v.is_array() && v.size() == 3 && exact_number(v[0]) && exact_number(v[1]) &&
+      exact_number(v[2])) {
     arity = 3;
     return std::nullopt;
   }
@@ -49,7 +50,8 @@ std::optional<std::string> numeric_value_problem(const nlohmann::json& v, int& a
 }
 
 EmbeddingField EmbeddingField::numeric(std::string name, OrbitType orbit, int arity) {
-  if (arity != 1 && arity != 3) throw Error(ErrorCode::Usage, "a numeric embedding has arity 1 or 3");
+  if (arity != 1 && arity != 3)
+    throw Error(ErrorCode::Usage, "a numeric embedding has arity 1 or 3");
   EmbeddingField f{arity, Embedding<Vec3>(std::move(name), std::move(orbit)), std::nullopt, false};
   return f;
 }
@@ -62,7 +64,8 @@ nlohmann::json EmbeddingField::value_json(Dart d) const {
   if (!is_numeric()) return json->get(d);
   const Vec3& x = values.get(d);
   if (arity == 1) return number_json(x[0], integral);
-  return nlohmann::json::array({number_json(x[0], integral), number_json(x[1], integral), number_json(x[2], integral)});
+  return nlohmann::json::array(
+      {number_json(x[0], integral), number_json(x[1], integral), number_json(x[2], integral)});
 }
 
 std::vector<EmbeddingIssue> EmbeddingField::check(const Map& g) const {
@@ -88,13 +91,15 @@ bool EmbeddedMap::has_position() const {
 
 const Embedding<Vec3>& EmbeddedMap::position() const {
   const EmbeddingField* f = find(kPositionName);
-  if (!f) throw Error(ErrorCode::Schema, "the map has no \"position\" embedding (vertex coordinates)");
+  if (!f)
+    throw Error(ErrorCode::Schema, "the map has no \"position\" embedding (vertex coordinates)");
   if (f->arity == 3) return f->values;
   for (Dart rep : orbit_representatives(map, f->orbit())) {
     if (!f->has(rep)) continue;
     const nlohmann::json v = f->value_json(rep);
     if (auto problem = position_value_problem(v))
-      throw Error(ErrorCode::Schema, *problem, "embedding '" + f->name() + "', dart " + std::to_string(rep));
+      throw Error(ErrorCode::Schema, *problem,
+                  "embedding '" + f->name() + "', dart " + std::to_string(rep));
   }
   throw Error(ErrorCode::Schema, "the \"position\" embedding does not hold [x, y, z] values");
 }
@@ -104,12 +109,15 @@ Embedding<Vec3>& EmbeddedMap::position() {
 }
 
 EmbeddingField& EmbeddedMap::add_numeric(std::string name, OrbitType orbit, int arity) {
-  if (find(name)) throw Error(ErrorCode::Usage, "the map already has an embedding \"" + name + "\"");
+  if (find(name))
+    throw Error(ErrorCode::Usage, "the map already has an embedding \"" + name + "\"");
   fields.push_back(EmbeddingField::numeric(std::move(name), std::move(orbit), arity));
   return fields.back();
 }
 
-Embedding<Vec3>& EmbeddedMap::add_position() { return add_numeric(kPositionName, vertex_orbit_type(map)).values; }
+Embedding<Vec3>& EmbeddedMap::add_position() {
+  return add_numeric(kPositionName, vertex_orbit_type(map)).values;
+}
 
 EmbeddingField field_from_json(const Map& g, std::string name, OrbitType orbit,
                                const std::vector<std::pair<Dart, nlohmann::json>>& values) {
@@ -129,11 +137,13 @@ EmbeddingField field_from_json(const Map& g, std::string name, OrbitType orbit,
     for (const auto& [d, v] : values) f.json->set(g, d, v);
     return f;
   }
-  EmbeddingField f = EmbeddingField::numeric(std::move(name), std::move(orbit), arity == 0 ? 3 : arity);
+  EmbeddingField f =
+      EmbeddingField::numeric(std::move(name), std::move(orbit), arity == 0 ? 3 : arity);
   f.integral = integral && !values.empty();
   for (const auto& [d, v] : values)
-    f.values.set(g, d, f.arity == 1 ? Vec3{v.get<double>(), 0, 0}
-                                     : Vec3{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()});
+    f.values.set(g, d,
+                 f.arity == 1 ? Vec3{v.get<double>(), 0, 0}
+                              : Vec3{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()});
   return f;
 }
 

@@ -9,12 +9,11 @@
 // triples) keeps the whole embedding as JSON, written back unchanged and not evaluated by rule
 // expressions. Per-dart flags (Damiand & Nivoliers 2022 §3) are the embedding "flag" on <>.
 #pragma once
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "model/core/embedding.hpp"
 #include "model/core/map.hpp"
@@ -28,7 +27,7 @@ inline constexpr const char* kPositionName = "position";
 
 // One named embedding of an EmbeddedMap.
 struct EmbeddingField {
-  int arity = 3;          // 1: numbers, 3: triples, 0: JSON values (`json` holds them)
+  int arity = 3;           // 1: numbers, 3: triples, 0: JSON values (`json` holds them)
   Embedding<Vec3> values;  // the numbers (first component) or triples; empty when arity is 0
   std::optional<JsonEmbedding> json;  // arity 0 only: the values as read
   // Every number read from the file was an integer: integral values are written back as integers.

@@ -30,7 +30,8 @@ class Embedding {
  public:
   static constexpr uint32_t kNoValue = UINT32_MAX;
 
-  Embedding(std::string name, OrbitType orbit_type) : name_(std::move(name)), orbit_(std::move(orbit_type)) {}
+  Embedding(std::string name, OrbitType orbit_type)
+      : name_(std::move(name)), orbit_(std::move(orbit_type)) {}
   // The slot table and the values go back to the thread's buffer pool (buffer_pool.hpp).
   ~Embedding() {
     give_buffer(std::move(slot_));
@@ -82,7 +83,8 @@ class Embedding {
   }
   // The values from slot n on dropped (appended for a rewrite that did not happen).
   void truncate_values(size_t n) {
-    if (n < values_.size()) values_.erase(values_.begin() + static_cast<std::ptrdiff_t>(n), values_.end());
+    if (n < values_.size())
+      values_.erase(values_.begin() + static_cast<std::ptrdiff_t>(n), values_.end());
   }
   uint32_t slot(Dart d) const { return d < slot_.size() ? slot_[d] : kNoValue; }
   // The slot table (slot(d) for d below its size) and the values, for readers that hold them
@@ -120,7 +122,9 @@ class Embedding {
   const T& value(uint32_t s) const { return values_[s]; }
   size_t num_values() const { return values_.size(); }
   const T& get(Dart d) const {
-    if (!has(d)) throw Error(ErrorCode::Range, "embedding '" + name_ + "' has no value", "dart " + std::to_string(d));
+    if (!has(d))
+      throw Error(ErrorCode::Range, "embedding '" + name_ + "' has no value",
+                  "dart " + std::to_string(d));
     return values_[slot_[d]];
   }
 
@@ -152,7 +156,8 @@ class Embedding {
  private:
   void grow(const Map& g) {
     if (slot_.size() >= g.capacity()) return;
-    if (slot_.capacity() < g.capacity()) regrow(slot_, std::max<size_t>(g.capacity(), 2 * slot_.size()));
+    if (slot_.capacity() < g.capacity())
+      regrow(slot_, std::max<size_t>(g.capacity(), 2 * slot_.size()));
     slot_.resize(g.capacity(), kNoValue);
   }
   // v with room for n elements: a pooled or fresh (huge-page) array, the old one pooled.

@@ -15,7 +15,9 @@ void advise_huge_pages(const void* data, size_t bytes) {
   const auto begin = reinterpret_cast<uintptr_t>(data);
   const uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1);
   const uintptr_t last = (begin + bytes) & ~(kHuge - 1);
-  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // a hint: failure is harmless
+  if (last > first)
+    madvise(reinterpret_cast<void*>(first), last - first,
+            MADV_HUGEPAGE);  // a hint: failure is harmless
 #else
   (void)data;
   (void)bytes;

@@ -2,11 +2,11 @@
 //
 // The first write to a fresh 4 KiB page costs a page fault; on a virtual machine that is several
 // microseconds, and a map growing by millions of darts takes tens of thousands of them (the
-// profile of the subdivision benchmark, docs/embeddings.md "Performance"). Where the system's policy
-// is `madvise` (the usual default), an anonymous range advised with MADV_HUGEPAGE is faulted in
-// 2 MiB pages instead: 512 times fewer faults. Only the 2 MiB-aligned part of a range of at least
-// 4 MiB is advised; elsewhere (other systems, smaller ranges) this does nothing. The advice is a
-// hint: contents and semantics are unchanged.
+// profile of the subdivision benchmark, docs/embeddings.md "Performance"). Where the system's
+// policy is `madvise` (the usual default), an anonymous range advised with MADV_HUGEPAGE is faulted
+// in 2 MiB pages instead: 512 times fewer faults. Only the 2 MiB-aligned part of a range of at
+// least 4 MiB is advised; elsewhere (other systems, smaller ranges) this does nothing. The advice
+// is a hint: contents and semantics are unchanged.
 #pragma once
 #include <algorithm>
 #include <cstddef>

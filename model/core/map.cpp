@@ -18,7 +18,8 @@ void Bitset::resize(size_t n) {
   const size_t words = (n + 63) / 64;
   if (words > words_.capacity()) grow(std::max(words, 2 * words_.size()));
   words_.resize(words, 0);
-  if (n < size_ && n % 64 != 0) words_.back() &= (uint64_t(1) << (n % 64)) - 1;  // bits past n read 0 when regrown
+  if (n < size_ && n % 64 != 0)
+    words_.back() &= (uint64_t(1) << (n % 64)) - 1;  // bits past n read 0 when regrown
   size_ = n;
 }
 
@@ -40,8 +41,8 @@ size_t Bitset::count() const {
 
 Map::Map(int n, MapKind kind) : n_(n), kind_(kind) {
   if (n < 0 || n >= kMaxDim)
-    throw Error(ErrorCode::Range, "dimension " + std::to_string(n) + " outside 0.." +
-                                      std::to_string(kMaxDim - 1));
+    throw Error(ErrorCode::Range,
+                "dimension " + std::to_string(n) + " outside 0.." + std::to_string(kMaxDim - 1));
   if (kind == MapKind::OMap && n < 1)
     throw Error(ErrorCode::Range, "an n-O-map needs n >= 1 (dimensions 1..n)");
   link_.resize(static_cast<size_t>(n) + 1);
@@ -73,7 +74,8 @@ void Map::grown_links(std::vector<Dart>& l, size_t n) {
 
 void Map::resize_for_overwrite(size_t k) {
   if (capacity_ != 0)
-    throw Error(ErrorCode::Usage, "resize_for_overwrite of a map that has darts", "capacity " + std::to_string(capacity_));
+    throw Error(ErrorCode::Usage, "resize_for_overwrite of a map that has darts",
+                "capacity " + std::to_string(capacity_));
   if (k >= kNoDart)
     throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")");
   for (int i = lowest_dim(); i <= n_; ++i) {
@@ -114,10 +116,12 @@ void Map::shrink_capacity(Dart first) {
 }
 
 void Map::refuse_unfilled_links(Dart first, int i) {
-  const size_t given = link_[i].size() - std::min<size_t>(link_[i].size(), first), wanted = capacity_ - first;
+  const size_t given = link_[i].size() - std::min<size_t>(link_[i].size(), first),
+               wanted = capacity_ - first;
   shrink_capacity(first);
-  throw Error(ErrorCode::Usage, "adding " + std::to_string(wanted) + " linked darts, " + std::to_string(given) + " " +
-                                    std::to_string(i) + "-links were given",
+  throw Error(ErrorCode::Usage,
+              "adding " + std::to_string(wanted) + " linked darts, " + std::to_string(given) + " " +
+                  std::to_string(i) + "-links were given",
               "dart " + std::to_string(first));
 }
 
@@ -140,7 +144,9 @@ Dart Map::add_dart() {
 }
 
 void Map::remove_dart(Dart d) {
-  if (!alive(d)) throw Error(ErrorCode::Range, "remove of a dart that does not exist", "dart " + std::to_string(d));
+  if (!alive(d))
+    throw Error(ErrorCode::Range, "remove of a dart that does not exist",
+                "dart " + std::to_string(d));
   for (int i = lowest_dim(); i <= n_; ++i) {
     auto& l = link_[i];
     const Dart e = l[d];
@@ -185,8 +191,10 @@ size_t Map::count_links(int i) const {
   size_t loops = 0, arcs = 0;
   const auto& l = link_[i];
   for_each_dart([&](Dart d) {
-    if (l[d] == d) ++loops;
-    else ++arcs;
+    if (l[d] == d)
+      ++loops;
+    else
+      ++arcs;
   });
   return is_involutive_dim(i) ? loops + arcs / 2 : loops + arcs;
 }

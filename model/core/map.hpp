@@ -29,7 +29,6 @@ namespace gmr {
 using Dart = uint32_t;
 inline constexpr Dart kNoDart = UINT32_MAX;
 
-
 // A bitset over dart indices; grows with the map.
 class Bitset {
  public:

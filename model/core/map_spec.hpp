@@ -28,7 +28,8 @@ struct MapSpec {
     for (int i = lowest_dim(); i <= n; ++i) out.push_back(i);
     return out;
   }
-  // The pairs (i, j), i + 2 <= j, on which the cycle constraint C(i,j) holds, in lexicographic order.
+  // The pairs (i, j), i + 2 <= j, on which the cycle constraint C(i,j) holds, in lexicographic
+  // order.
   std::vector<std::pair<int, int>> cycle_pairs() const {
     std::vector<std::pair<int, int>> out;
     for (int i = lowest_dim(); i <= n; ++i)

@@ -9,11 +9,13 @@ namespace gmr {
 void require_orbit_type(const Map& g, const OrbitType& o) {
   for (int i : o.dims()) {
     if (i == OrbitType::kHole)
-      throw Error(ErrorCode::Usage, "orbit type " + o.str() + " has '_' where a set of dimensions is expected");
+      throw Error(ErrorCode::Usage,
+                  "orbit type " + o.str() + " has '_' where a set of dimensions is expected");
     if (!g.has_dim(i))
       throw Error(ErrorCode::Range, "dimension " + std::to_string(i) + " of orbit type " + o.str() +
-                                        " is not a dimension of this " + std::to_string(g.dimension()) +
-                                        "-" + (g.is_omap() ? "O-map" : "G-map"));
+                                        " is not a dimension of this " +
+                                        std::to_string(g.dimension()) + "-" +
+                                        (g.is_omap() ? "O-map" : "G-map"));
   }
 }
 
@@ -64,7 +66,8 @@ OrbitType cell_type(const Map& g, int i) {
     throw Error(ErrorCode::Range, "cell dimension " + std::to_string(i) + " outside 0.." +
                                       std::to_string(g.dimension()));
   if (g.is_omap() && i == 0)
-    throw Error(ErrorCode::Usage, "O-map vertices are not an orbit of a set of dimensions; use omap_vertex");
+    throw Error(ErrorCode::Usage,
+                "O-map vertices are not an orbit of a set of dimensions; use omap_vertex");
   std::vector<int> dims;
   for (int d = g.lowest_dim(); d <= g.dimension(); ++d)
     if (d != i) dims.push_back(d);
@@ -74,7 +77,8 @@ OrbitType cell_type(const Map& g, int i) {
 // O-map vertex traversal: neighbours of v are beta_k(beta_1(v)) for k = 2..n. Each such
 // composition is a permutation, so forward reachability gives the orbit.
 template <class F>
-static size_t visit_omap_vertex_marked(const Map& g, Dart d, int m, std::vector<Dart>& stack, F&& f) {
+static size_t visit_omap_vertex_marked(const Map& g, Dart d, int m, std::vector<Dart>& stack,
+                                       F&& f) {
   size_t count = 0;
   stack.clear();
   stack.push_back(d);
@@ -135,10 +139,13 @@ long long euler_characteristic(const Map& g) {
   return chi;
 }
 
-size_t count_components(const Map& g) { return for_each_orbit(g, g.dims_mask(), [](Dart) {}); }
+size_t count_components(const Map& g) {
+  return for_each_orbit(g, g.dims_mask(), [](Dart) {});
+}
 
 std::vector<Dart> free_darts(const Map& g, int i) {
-  if (!g.has_dim(i)) throw Error(ErrorCode::Range, "dimension " + std::to_string(i) + " not in map");
+  if (!g.has_dim(i))
+    throw Error(ErrorCode::Range, "dimension " + std::to_string(i) + " not in map");
   std::vector<Dart> out;
   g.for_each_dart([&](Dart d) {
     if (g.is_free(i, d)) out.push_back(d);
@@ -174,16 +181,17 @@ size_t count_boundary_cells(const Map& g) {
 }
 
 std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const Map& g,
-                                                                     const OrbitType& o, Dart d,
-                                                                     const Map& g2,
-                                                                     const OrbitType& o2, Dart d2,
-                                                                     OrbitIsoConflict* conflict) {
+                                                                    const OrbitType& o, Dart d,
+                                                                    const Map& g2,
+                                                                    const OrbitType& o2, Dart d2,
+                                                                    OrbitIsoConflict* conflict) {
   require_orbit_type(g, o);
   require_orbit_type(g2, o2);
   require_dart(g, d);
   require_dart(g2, d2);
   if (o.size() != o2.size())
-    throw Error(ErrorCode::Usage, "relabeling " + o.str() + " -> " + o2.str() + " changes the number of dimensions");
+    throw Error(ErrorCode::Usage,
+                "relabeling " + o.str() + " -> " + o2.str() + " changes the number of dimensions");
   std::unordered_map<Dart, Dart> mapd{{d, d2}}, mapr{{d2, d}};
   std::vector<std::pair<Dart, Dart>> pairs{{d, d2}};
   for (size_t head = 0; head < pairs.size(); ++head) {

@@ -1,8 +1,8 @@
 // Orbits (thesis Def. 56, Algorithm 4) and orbit isomorphism up to a relabeling (Algorithm 5).
 //
-// The <o>-orbit of a dart d is the set of darts reachable from d through links whose dimension is in
-// <o>. For an O-map, beta_1 is a permutation of a finite set, so forward reachability along beta_1
-// already gives the whole cycle; the traversal never needs beta_1^{-1}.
+// The <o>-orbit of a dart d is the set of darts reachable from d through links whose dimension is
+// in <o>. For an O-map, beta_1 is a permutation of a finite set, so forward reachability along
+// beta_1 already gives the whole cycle; the traversal never needs beta_1^{-1}.
 #pragma once
 #include <optional>
 #include <utility>
@@ -52,9 +52,12 @@ size_t visit_orbit_raw(const Dart* const* link, int k, uint64_t* words, Dart cap
       next = w;
     }
     u = v;
-    if (next != kNoDart) v = next;
-    else if (top) v = stack[--top];
-    else break;
+    if (next != kNoDart)
+      v = next;
+    else if (top)
+      v = stack[--top];
+    else
+      break;
   }
   return count;
 }
@@ -142,10 +145,14 @@ size_t visit_orbit_marked(const Map& g, DimMask mask, Dart d, int m, std::vector
   uint64_t* const words = g.marker_bits(m).data();
   const Dart cap = g.capacity();
   switch (k) {
-    case 1: return detail::visit_orbit_raw<1>(link, k, words, cap, d, stack, f);
-    case 2: return detail::visit_orbit_raw2(link, words, cap, d, stack, f);
-    case 3: return detail::visit_orbit_raw<3>(link, k, words, cap, d, stack, f);
-    default: return detail::visit_orbit_raw<0>(link, k, words, cap, d, stack, f);
+    case 1:
+      return detail::visit_orbit_raw<1>(link, k, words, cap, d, stack, f);
+    case 2:
+      return detail::visit_orbit_raw2(link, words, cap, d, stack, f);
+    case 3:
+      return detail::visit_orbit_raw<3>(link, k, words, cap, d, stack, f);
+    default:
+      return detail::visit_orbit_raw<0>(link, k, words, cap, d, stack, f);
   }
 }
 
@@ -204,7 +211,8 @@ size_t count_components(const Map& g);
 std::vector<Dart> omap_vertex(const Map& g, Dart d);
 
 // Boundary detection. A dart is i-free if it carries an i-loop; the boundary of an n-G-map is the
-// set of n-free darts (an O-map of this library has no boundary: its n-loops, if any, are reported).
+// set of n-free darts (an O-map of this library has no boundary: its n-loops, if any, are
+// reported).
 std::vector<Dart> free_darts(const Map& g, int i);
 bool is_closed(const Map& g);  // no n-free dart
 // Number of boundary (n-1)-cells: orbits of type <0..n-2> among n-free darts (the boundary's faces
@@ -212,8 +220,8 @@ bool is_closed(const Map& g);  // no n-free dart
 size_t count_boundary_cells(const Map& g);
 
 // Algorithm 5: isomorphism of the <o>-orbit of d in g with the <o2>-orbit of d2 in g2, where
-// dimension o[p] corresponds to o2[p] (positional relabeling). Returns the dart pairs (x, x') in BFS
-// order (positions p in increasing order at each dart), or nullopt when the orbits are not
+// dimension o[p] corresponds to o2[p] (positional relabeling). Returns the dart pairs (x, x') in
+// BFS order (positions p in increasing order at each dart), or nullopt when the orbits are not
 // isomorphic. o and o2 must have equal sizes and no `_`. An already-mapped dart is not enqueued
 // again. Cost O(|orbit| · |o|) expected (hash maps).
 // When not isomorphic and `conflict` is given, it receives the first pair (x, x2) of the joint BFS
@@ -222,10 +230,8 @@ size_t count_boundary_cells(const Map& g);
 struct OrbitIsoConflict {
   Dart x = kNoDart, x2 = kNoDart, earlier = kNoDart;
 };
-std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(const Map& g,
-                                                                     const OrbitType& o, Dart d,
-                                                                     const Map& g2,
-                                                                     const OrbitType& o2, Dart d2,
-                                                                     OrbitIsoConflict* conflict = nullptr);
+std::optional<std::vector<std::pair<Dart, Dart>>> orbit_isomorphism(
+    const Map& g, const OrbitType& o, Dart d, const Map& g2, const OrbitType& o2, Dart d2,
+    OrbitIsoConflict* conflict = nullptr);
 
 }  // namespace gmr

@@ -12,8 +12,7 @@ OrbitType OrbitType::parse(std::string_view text) {
     while (p < text.size() && std::isspace(static_cast<unsigned char>(text[p]))) ++p;
   };
   auto fail = [&](const std::string& what) -> Error {
-    return Error(ErrorCode::Parse,
-                 "bad orbit type \"" + std::string(text) + "\": " + what,
+    return Error(ErrorCode::Parse, "bad orbit type \"" + std::string(text) + "\": " + what,
                  "character " + std::to_string(p));
   };
   skip();

@@ -1,9 +1,9 @@
 #include "model/core/sew.hpp"
 
+#include <unordered_map>
+
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
-
-#include <unordered_map>
 
 namespace gmr {
 
@@ -15,9 +15,11 @@ OrbitType sew_orbit_type(const Map& g, int i) {
 }
 
 static void require_gmap_dim(const Map& g, int i) {
-  if (g.is_omap()) throw Error(ErrorCode::Usage, "sewing is implemented for G-maps only (O-map sew: not yet)");
+  if (g.is_omap())
+    throw Error(ErrorCode::Usage, "sewing is implemented for G-maps only (O-map sew: not yet)");
   if (!g.has_dim(i))
-    throw Error(ErrorCode::Range, "sew dimension " + std::to_string(i) + " outside 0.." + std::to_string(g.dimension()));
+    throw Error(ErrorCode::Range, "sew dimension " + std::to_string(i) + " outside 0.." +
+                                      std::to_string(g.dimension()));
 }
 
 bool is_sewable(const Map& g, int i, Dart d1, Dart d2, std::string* why) {
@@ -31,11 +33,13 @@ bool is_sewable(const Map& g, int i, Dart d1, Dart d2, std::string* why) {
   const OrbitType o = sew_orbit_type(g, i);
   auto pairs = orbit_isomorphism(g, o, d1, g, o, d2);
   if (!pairs)
-    return fail("the " + o.str() + "-orbits of darts " + std::to_string(d1) + " and " + std::to_string(d2) +
-                " are not isomorphic");
+    return fail("the " + o.str() + "-orbits of darts " + std::to_string(d1) + " and " +
+                std::to_string(d2) + " are not isomorphic");
   for (auto [x, y] : *pairs) {
-    if (!g.is_free(i, x)) return fail("dart " + std::to_string(x) + " is not " + std::to_string(i) + "-free");
-    if (!g.is_free(i, y)) return fail("dart " + std::to_string(y) + " is not " + std::to_string(i) + "-free");
+    if (!g.is_free(i, x))
+      return fail("dart " + std::to_string(x) + " is not " + std::to_string(i) + "-free");
+    if (!g.is_free(i, y))
+      return fail("dart " + std::to_string(y) + " is not " + std::to_string(i) + "-free");
   }
   // Overlapping orbits (sewing an orbit onto itself): each dart must get one partner, symmetric.
   std::unordered_map<Dart, Dart> to;
@@ -45,7 +49,8 @@ bool is_sewable(const Map& g, int i, Dart d1, Dart d2, std::string* why) {
       return fresh || it->second == b;
     };
     if (!check(x, y) || !check(y, x))
-      return fail("dart " + std::to_string(x) + " would get two " + std::to_string(i) + "-partners");
+      return fail("dart " + std::to_string(x) + " would get two " + std::to_string(i) +
+                  "-partners");
   }
   return true;
 }
@@ -64,8 +69,10 @@ void unsew(Map& g, int i, Dart d) {
   require_gmap_dim(g, i);
   if (!g.alive(d)) throw Error(ErrorCode::Sew, "no such dart", "dart " + std::to_string(d));
   if (g.is_free(i, d))
-    throw Error(ErrorCode::Sew, std::to_string(i) + "-unsew refused: dart is already " + std::to_string(i) + "-free",
-                "dart " + std::to_string(d));
+    throw Error(
+        ErrorCode::Sew,
+        std::to_string(i) + "-unsew refused: dart is already " + std::to_string(i) + "-free",
+        "dart " + std::to_string(d));
   for (Dart x : orbit(g, sew_orbit_type(g, i), d)) g.unlink(i, x);
 }
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "model/core/word_comparison.hpp"
 #include "model/core/orbit.hpp"
+#include "model/core/word_comparison.hpp"
 
 namespace gmr {
 

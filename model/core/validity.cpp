@@ -79,10 +79,14 @@ bool valid_in_one_pass(const Map& g) {
   for (int i = lo; i <= n; ++i)
     if (!g.is_involutive_dim(i)) return false;
   switch (n - lo + 1) {
-    case 2: return dense_gmap_is_valid<2>(g, lo);
-    case 3: return dense_gmap_is_valid<3>(g, lo);
-    case 4: return dense_gmap_is_valid<4>(g, lo);
-    default: return false;
+    case 2:
+      return dense_gmap_is_valid<2>(g, lo);
+    case 3:
+      return dense_gmap_is_valid<3>(g, lo);
+    case 4:
+      return dense_gmap_is_valid<4>(g, lo);
+    default:
+      return false;
   }
 }
 
@@ -93,8 +97,10 @@ ValidityReport check_validity(const Map& g, size_t limit) {
   if (valid_in_one_pass(g)) return r;
   // `make` builds the violation (its path and message) only when it is stored.
   auto add = [&](auto make) {
-    if (r.violations.size() < limit) r.violations.push_back(make());
-    else ++r.truncated;
+    if (r.violations.size() < limit)
+      r.violations.push_back(make());
+    else
+      ++r.truncated;
   };
   const int lo = g.lowest_dim(), n = g.dimension();
   const Dart cap = g.capacity();
@@ -127,11 +133,13 @@ ValidityReport check_validity(const Map& g, size_t limit) {
     if (dense && invol) {
       for (Dart d = 0; d < cap; ++d) {
         const Dart e = l[d];
-        if (e >= cap || l[e] != d) [[unlikely]] report(d);
+        if (e >= cap || l[e] != d) [[unlikely]]
+          report(d);
       }
     } else if (dense) {
       for (Dart d = 0; d < cap; ++d)
-        if (l[d] >= cap) [[unlikely]] report(d);
+        if (l[d] >= cap) [[unlikely]]
+          report(d);
     } else {
       g.for_each_dart(report);
     }
@@ -140,14 +148,17 @@ ValidityReport check_validity(const Map& g, size_t limit) {
       std::vector<Dart> from(g.capacity(), kNoDart);
       g.for_each_dart([&](Dart d) {
         const Dart e = l[d];
-        if (from[e] != kNoDart) add([&] { return not_permutation(e, i, from[e], d); });
-        else from[e] = d;
+        if (from[e] != kNoDart)
+          add([&] { return not_permutation(e, i, from[e], d); });
+        else
+          from[e] = d;
       });
     }
   }
   for (const auto& pair : g.spec().cycle_pairs()) {
     {
-      const int i = pair.first, j = pair.second;  // named, not bound: the lambda below captures them
+      const int i = pair.first,
+                j = pair.second;  // named, not bound: the lambda below captures them
       if (!dim_ok[i] || !dim_ok[j]) continue;
       const Dart* const li = g.links(i).data();
       const Dart* const lj = g.links(j).data();

@@ -11,13 +11,16 @@ namespace gmr {
 class WordComparison {
  public:
   // `best` may be null (nothing to compare with); `out` (may be null) receives every letter.
-  WordComparison(const std::vector<uint32_t>* best, std::vector<uint32_t>* out) : best_(best), out_(out) {}
+  WordComparison(const std::vector<uint32_t>* best, std::vector<uint32_t>* out)
+      : best_(best), out_(out) {}
 
   void emit(uint32_t x) {
     if (out_) out_->push_back(x);
     if (best_ && cmp_ == 0) {
-      if (pos_ >= best_->size()) cmp_ = 1;
-      else if (x != (*best_)[pos_]) cmp_ = x < (*best_)[pos_] ? -1 : 1;
+      if (pos_ >= best_->size())
+        cmp_ = 1;
+      else if (x != (*best_)[pos_])
+        cmp_ = x < (*best_)[pos_] ? -1 : 1;
     }
     ++pos_;
   }

@@ -5,16 +5,19 @@
 namespace gmr::draw {
 
 std::string dimension_colour(int i) {
-  static const char* const kColours[] = {"black", "red", "blue", "green", "orange", "purple", "brown", "cyan"};
+  static const char* const kColours[] = {"black",  "red",    "blue",  "green",
+                                         "orange", "purple", "brown", "cyan"};
   return i >= 0 && i < 8 ? kColours[i] : "gray";
 }
 
 std::string to_dot(const Map& g, const DotOptions& opt) {
   const bool directed = g.is_omap();
   const std::string arc = directed ? " -> " : " -- ";
-  std::string out = std::string(directed ? "digraph " : "graph ") + nlohmann::json(opt.name).dump() + " {\n";
+  std::string out =
+      std::string(directed ? "digraph " : "graph ") + nlohmann::json(opt.name).dump() + " {\n";
   out += "  // gmr " + std::to_string(g.dimension()) + "-" + (directed ? "O-map" : "G-map") + ", " +
-         std::to_string(g.size()) + " darts; colours per dimension: 0 black, 1 red, 2 blue, 3 green, 4 orange, "
+         std::to_string(g.size()) +
+         " darts; colours per dimension: 0 black, 1 red, 2 blue, 3 green, 4 orange, "
          "5 purple, 6 brown, 7 cyan, 8+ gray\n";
   out += "  node [shape=circle, fontsize=10, width=0.35, fixedsize=true];\n";
   g.for_each_dart([&](Dart d) { out += "  " + std::to_string(d) + ";\n"; });

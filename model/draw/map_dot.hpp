@@ -13,8 +13,8 @@
 namespace gmr::draw {
 
 struct DotOptions {
-  bool loops = false;          // draw i-loops of free darts
-  std::string name = "gmap";   // graph name
+  bool loops = false;         // draw i-loops of free darts
+  std::string name = "gmap";  // graph name
 };
 
 // The colour of dimension i ("black", "red", ...).

@@ -2,8 +2,8 @@
 
 #include <graphviz/gvc.h>
 
-#include "model/map_io/atomic_write.hpp"
 #include "model/core/error.hpp"
+#include "model/map_io/atomic_write.hpp"
 
 namespace gmr::draw {
 using namespace gmr::io;
@@ -63,15 +63,18 @@ std::string render_dot(std::string_view dot, ImageFormat format, const std::stri
   if (!s.gvc) throw Error(ErrorCode::Io, "cannot create a Graphviz context");
   const std::string text(dot);
   s.graph = agmemread(text.c_str());
-  if (!s.graph) throw Error(ErrorCode::Parse, "Graphviz rejected the DOT text: " + trimmed(captured()));
+  if (!s.graph)
+    throw Error(ErrorCode::Parse, "Graphviz rejected the DOT text: " + trimmed(captured()));
   if (gvLayout(s.gvc, s.graph, engine.c_str()) != 0)
-    throw Error(ErrorCode::Usage, "Graphviz layout with engine \"" + engine + "\" failed: " + trimmed(captured()));
+    throw Error(ErrorCode::Usage,
+                "Graphviz layout with engine \"" + engine + "\" failed: " + trimmed(captured()));
   s.laid_out = true;
   char* data = nullptr;
   unsigned int length = 0;
   if (gvRenderData(s.gvc, s.graph, to_string(format), &data, &length) != 0 || !data) {
     if (data) gvFreeRenderData(data);
-    throw Error(ErrorCode::Io, std::string("Graphviz could not render ") + to_string(format) + ": " + trimmed(captured()));
+    throw Error(ErrorCode::Io, std::string("Graphviz could not render ") + to_string(format) +
+                                   ": " + trimmed(captured()));
   }
   std::string out(data, length);
   gvFreeRenderData(data);

@@ -1,7 +1,6 @@
 #include "model/draw/rule_dot.hpp"
 
 #include <algorithm>
-
 #include <nlohmann/json.hpp>
 
 #include "model/draw/map_dot.hpp"
@@ -18,20 +17,26 @@ std::string quote(const std::string& s) { return nlohmann::json(s).dump(); }
 std::string node_id(Side side, size_t v) { return to_string(side) + std::to_string(v); }
 std::string node_id(Side side, Node v) { return node_id(side, v.index()); }
 
-std::string graph_header(const std::string& kind, const std::string& name, const RuleDotOptions& opt, int n) {
-  std::string out = "digraph " + quote(opt.name.empty() ? (name.empty() ? std::string("rule") : name) : opt.name) + " {\n";
+std::string graph_header(const std::string& kind, const std::string& name,
+                         const RuleDotOptions& opt, int n) {
+  std::string out =
+      "digraph " +
+      quote(opt.name.empty() ? (name.empty() ? std::string("rule") : name) : opt.name) + " {\n";
   out += "  // gmr " + kind + " " + quote(name) + ", dimension " + std::to_string(n) +
-         "; arcs coloured per dimension: 0 black, 1 red, 2 blue, 3 green, 4 orange, 5 purple, 6 brown, 7 cyan, "
-         "8+ gray; deleted nodes dashed, added nodes bold, hooks double-bordered, kappa arcs pink dashed\n";
+         "; arcs coloured per dimension: 0 black, 1 red, 2 blue, 3 green, 4 orange, 5 purple, 6 "
+         "brown, 7 cyan, "
+         "8+ gray; deleted nodes dashed, added nodes bold, hooks double-bordered, kappa arcs pink "
+         "dashed\n";
   out += "  compound=true;\n  node [fontsize=10];\n  edge [arrowsize=0.6];\n";
   return out;
 }
 
 // A node statement: role, hook, highlights. A highlighted node is filled, its tooltip lists
-// "code: message" lines, and a note node (shape=note, the codes) is attached to it by a dotted edge:
-// Graphviz places xlabels poorly in clusters, a note stays next to its node.
-std::string node_stmt(const std::string& id, const std::string& label, Side side, const std::string& name,
-                      ElemStatus role, bool hook, const std::vector<DotHighlight>& hl) {
+// "code: message" lines, and a note node (shape=note, the codes) is attached to it by a dotted
+// edge: Graphviz places xlabels poorly in clusters, a note stays next to its node.
+std::string node_stmt(const std::string& id, const std::string& label, Side side,
+                      const std::string& name, ElemStatus role, bool hook,
+                      const std::vector<DotHighlight>& hl) {
   std::vector<std::string> style;
   std::string a = "label=" + quote(label);
   if (role == ElemStatus::Deleted) style.push_back("dashed");
@@ -45,7 +50,9 @@ std::string node_stmt(const std::string& id, const std::string& label, Side side
     error = error || h.error;
     if (!h.code.empty() && ("\n" + codes + "\n").find("\n" + h.code + "\n") == std::string::npos)
       codes += (codes.empty() ? "" : "\n") + h.code;
-    const std::string line = h.code.empty() ? h.message : h.message.empty() ? h.code : h.code + ": " + h.message;
+    const std::string line = h.code.empty()      ? h.message
+                             : h.message.empty() ? h.code
+                                                 : h.code + ": " + h.message;
     messages += (messages.empty() ? "" : "\n") + line;
   }
   std::string note;
@@ -54,8 +61,10 @@ std::string node_stmt(const std::string& id, const std::string& label, Side side
     a += std::string(", fillcolor=\"") + (error ? kDotErrorFill : kDotWarningFill) + "\"";
     a += ", tooltip=" + quote(messages);
     if (!codes.empty())
-      note = "    " + id + "_note [shape=note, fontsize=8, fontcolor=darkred, color=gray, label=" + quote(codes) +
-             "];\n    " + id + " -> " + id + "_note [style=dotted, color=gray, dir=none, arrowhead=none];\n";
+      note = "    " + id +
+             "_note [shape=note, fontsize=8, fontcolor=darkred, color=gray, label=" + quote(codes) +
+             "];\n    " + id + " -> " + id +
+             "_note [style=dotted, color=gray, dir=none, arrowhead=none];\n";
   }
   if (!style.empty()) {
     std::string st;
@@ -73,21 +82,23 @@ std::string arc_attrs(int dim, bool changed) {
 }
 
 std::string cluster_open(Side side) {
-  return std::string("  subgraph cluster_") + to_string(side) + " {\n    label=\"" + to_string(side) +
-         "\";\n    color=gray;\n";
+  return std::string("  subgraph cluster_") + to_string(side) + " {\n    label=\"" +
+         to_string(side) + "\";\n    color=gray;\n";
 }
 
 }  // namespace
 
 std::string to_dot(const Rule& r, const RuleDotOptions& opt) {
-  std::string out = graph_header(std::string("concrete ") + (r.kind() == MapKind::OMap ? "O-map" : "G-map") + " rule",
-                                 r.name(), opt, r.dimension());
+  std::string out = graph_header(
+      std::string("concrete ") + (r.kind() == MapKind::OMap ? "O-map" : "G-map") + " rule",
+      r.name(), opt, r.dimension());
   out += "  node [shape=circle, width=0.4];\n";
   for (Side side : kSides) {
     const DGraph& g = r.side(side);
     out += cluster_open(side);
     for (Node v : g.nodes())
-      out += node_stmt(node_id(side, v), g.node_str(v), side, g.name(v), r.node_status(side, v), false, opt.highlights);
+      out += node_stmt(node_id(side, v), g.node_str(v), side, g.name(v), r.node_status(side, v),
+                       false, opt.highlights);
     // Opposite arcs of one label are drawn as one undirected edge; the others are directed.
     HandleVector<ArcId, bool> drawn(g.num_arc_slots(), false);
     for (ArcId a : g.arc_slots()) {
@@ -109,15 +120,18 @@ std::string to_dot(const Rule& r, const RuleDotOptions& opt) {
         }
       }
       if (paired) attrs += ", dir=none";
-      out += "    " + node_id(side, arc.src) + " -> " + node_id(side, arc.tgt) + " [" + attrs + "];\n";
+      out +=
+          "    " + node_id(side, arc.src) + " -> " + node_id(side, arc.tgt) + " [" + attrs + "];\n";
     }
     out += "  }\n";
   }
   if (opt.kappa)
     for (Node v : r.left().nodes())
       if (auto w = r.right_of(v))
-        out += "  " + node_id(Side::L, v) + " -> " + node_id(Side::R, *w) + " [color=" + kDotKappaColour +
-               ", style=dashed, constraint=false, label=<&kappa;>, fontcolor=" + kDotKappaColour + "];\n";
+        out += "  " + node_id(Side::L, v) + " -> " + node_id(Side::R, *w) +
+               " [color=" + kDotKappaColour +
+               ", style=dashed, constraint=false, label=<&kappa;>, fontcolor=" + kDotKappaColour +
+               "];\n";
   out += "}\n";
   return out;
 }
@@ -134,8 +148,8 @@ std::string to_dot(const RuleScheme& s, const RuleDotOptions& opt) {
     out += cluster_open(side);
     for (uint32_t v = 0; v < g.size(); ++v) {
       const NodeRole role = right ? s.role_right(v) : s.role_left(v);
-      out += node_stmt(node_id(side, v), node_label_text(g.nodes[v]), side, g.nodes[v].name, role, !right && hook[v],
-                       opt.highlights);
+      out += node_stmt(node_id(side, v), node_label_text(g.nodes[v]), side, g.nodes[v].name, role,
+                       !right && hook[v], opt.highlights);
     }
     const GraphScheme& other = right ? s.left : s.right;
     for (const SchemeArc& arc : g.arcs) {
@@ -146,7 +160,8 @@ std::string to_dot(const RuleScheme& s, const RuleDotOptions& opt) {
         kept = std::any_of(other.arcs.begin(), other.arcs.end(), [&](const SchemeArc& x) {
           return x.dim == arc.dim && ((x.a == *oa && x.b == *ob) || (x.a == *ob && x.b == *oa));
         });
-      out += "    " + node_id(side, arc.a) + " -> " + node_id(side, arc.b) + " [" + arc_attrs(arc.dim, !kept) + "];\n";
+      out += "    " + node_id(side, arc.a) + " -> " + node_id(side, arc.b) + " [" +
+             arc_attrs(arc.dim, !kept) + "];\n";
     }
     out += "  }\n";
   }

@@ -15,8 +15,9 @@
 //
 // Diagnostics overlay: each DotHighlight names a node (by side and name) and a text; the node is
 // filled (errors light red, warnings light orange), gets "code: message" lines as tooltip (shown by
-// SVG viewers), and a note node "<id>_note" (shape=note) listing the codes is attached to it. The conversion from checker reports is in
-// checker/dot_overlay.hpp (the model does not depend on the checker).
+// SVG viewers), and a note node "<id>_note" (shape=note) listing the codes is attached to it. The
+// conversion from checker reports is in checker/dot_overlay.hpp (the model does not depend on the
+// checker).
 #pragma once
 #include <optional>
 #include <string>
@@ -32,10 +33,10 @@ using scheme::RuleScheme;
 
 struct DotHighlight {
   std::optional<Side> side;  // nullopt: a node of that name on either side
-  std::string node;     // node name
-  std::string code;     // short text shown in the note next to the node, e.g. "I-added-node"
-  std::string message;  // tooltip
-  bool error = true;    // false: warning colour
+  std::string node;          // node name
+  std::string code;          // short text shown in the note next to the node, e.g. "I-added-node"
+  std::string message;       // tooltip
+  bool error = true;         // false: warning colour
 };
 
 struct RuleDotOptions {

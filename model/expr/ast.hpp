@@ -20,8 +20,8 @@
 namespace gmr::expr {
 
 struct NodeRef {
-  std::string base;        // a rule node name or a comprehension variable
-  std::vector<int> path;   // dimensions followed, in order
+  std::string base;       // a rule node name or a comprehension variable
+  std::vector<int> path;  // dimensions followed, in order
   size_t column = 0;
   // Resolved by the type checker: the left node index, or the comprehension variable's depth.
   bool is_variable = false;
@@ -29,10 +29,39 @@ struct NodeRef {
 };
 
 // The functions of the language (type_check.cpp resolves the names, including synonyms).
-enum class Function : uint8_t { None, Point, Vector, Colour, Middle, Sum, Count, Cos, Sin, Sqrt, Abs, Dot, Cross, Norm, Clamp };
+enum class Function : uint8_t {
+  None,
+  Point,
+  Vector,
+  Colour,
+  Middle,
+  Sum,
+  Count,
+  Cos,
+  Sin,
+  Sqrt,
+  Abs,
+  Dot,
+  Cross,
+  Norm,
+  Clamp
+};
 
 struct Expr {
-  enum class Op { Number, Constant, Value, Collect, Comprehension, Call, Neg, Add, Sub, Mul, Div, Let };
+  enum class Op {
+    Number,
+    Constant,
+    Value,
+    Collect,
+    Comprehension,
+    Call,
+    Neg,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Let
+  };
   Op op = Op::Number;
   size_t column = 0;  // 1-based column of the expression's first character
   double number = 0;  // Number
@@ -44,13 +73,13 @@ struct Expr {
   // Comprehension over a word walk [e | x, k in (@i@j...)*(ref)]: x = ref w^k for k = 0, 1, ...
   // until x is ref again (a cycle: the word is a permutation of the darts), k bound as a scalar.
   std::vector<int> word;
-  std::string index;  // the name of k (walks only)
+  std::string index;                        // the name of k (walks only)
   std::vector<std::unique_ptr<Expr>> args;  // operands, call arguments, comprehension body
 
   // Filled by the type checker.
   StaticType type;
-  int embedding = -1;  // Value/Collect: index of the embedding in the declarations
-  int let_index = -1;  // Constant naming a let variable: its depth
+  int embedding = -1;                  // Value/Collect: index of the embedding in the declarations
+  int let_index = -1;                  // Constant naming a let variable: its depth
   Function function = Function::None;  // Call
   // Collect and Comprehension: the masks of <o> and of the classes told apart (<c>, or the
   // collected embedding's orbit <o_pi> for a collect).

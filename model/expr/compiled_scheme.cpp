@@ -16,11 +16,16 @@ std::vector<EmbeddingSignature> embedding_signatures(const scheme::RuleScheme& s
   for (const auto& d : s.embeddings) {
     const std::string where = "rule " + s.name + ", embedding " + d.name;
     const auto t = parse_value_type(d.type);
-    if (!t) throw Error(ErrorCode::Schema, "unknown value type '" + d.type + "' (point, vector, scalar, colour)", where);
-    if (d.orbit.has_hole()) throw Error(ErrorCode::Schema, "an embedding's orbit type has no `_`", where);
+    if (!t)
+      throw Error(ErrorCode::Schema,
+                  "unknown value type '" + d.type + "' (point, vector, scalar, colour)", where);
+    if (d.orbit.has_hole())
+      throw Error(ErrorCode::Schema, "an embedding's orbit type has no `_`", where);
     for (int x : d.orbit.dims())
       if (x < 0 || x > s.dimension)
-        throw Error(ErrorCode::Schema, "orbit type " + d.orbit.str() + " outside 0.." + std::to_string(s.dimension), where);
+        throw Error(ErrorCode::Schema,
+                    "orbit type " + d.orbit.str() + " outside 0.." + std::to_string(s.dimension),
+                    where);
     for (const auto& o : out)
       if (o.name == d.name) throw Error(ErrorCode::Schema, "embedding declared twice", where);
     out.push_back({d.name, d.orbit, *t});
@@ -28,7 +33,8 @@ std::vector<EmbeddingSignature> embedding_signatures(const scheme::RuleScheme& s
   return out;
 }
 
-CheckContext check_context(const scheme::RuleScheme& s, const std::vector<EmbeddingSignature>& sigs) {
+CheckContext check_context(const scheme::RuleScheme& s,
+                           const std::vector<EmbeddingSignature>& sigs) {
   CheckContext c;
   c.dimension = s.dimension;
   for (const auto& n : s.left.nodes) c.nodes.push_back(n.name);
@@ -38,8 +44,9 @@ CheckContext check_context(const scheme::RuleScheme& s, const std::vector<Embedd
   return c;
 }
 
-std::shared_ptr<const Expr> compile_expression(const std::string& code, const EmbeddingSignature& sig,
-                                               CheckContext ctx, const std::string& where) {
+std::shared_ptr<const Expr> compile_expression(const std::string& code,
+                                               const EmbeddingSignature& sig, CheckContext ctx,
+                                               const std::string& where) {
   auto e = parse_expression(code, where);
   ctx.where = where;
   check_expression(*e, ctx, sig.type);
@@ -55,20 +62,24 @@ CompiledScheme compile_scheme(const scheme::RuleScheme& s) {
   for (uint32_t v = 0; v < s.right.size(); ++v) {
     for (const auto& x : s.right.nodes[v].expressions) {
       if (x.code.empty() && !x.unsupported.empty()) continue;  // an untranslated Jerboa expression
-      const std::string where = "rule " + s.name + ", R node " + s.right.nodes[v].name + ", embedding " + x.embedding;
+      const std::string where =
+          "rule " + s.name + ", R node " + s.right.nodes[v].name + ", embedding " + x.embedding;
       size_t k = 0;
       while (k < cs.embeddings.size() && cs.embeddings[k].name != x.embedding) ++k;
       if (k == cs.embeddings.size())
-        throw Error(ErrorCode::Schema, "the embedding '" + x.embedding + "' is not declared by the rule", where);
+        throw Error(ErrorCode::Schema,
+                    "the embedding '" + x.embedding + "' is not declared by the rule", where);
       if (cs.right[k][v])
-        throw Error(ErrorCode::Schema, "two expressions for one embedding on one node (thesis Def. 71, uniqueness)",
+        throw Error(ErrorCode::Schema,
+                    "two expressions for one embedding on one node (thesis Def. 71, uniqueness)",
                     where);
       cs.right[k][v] = compile_expression(x.code, cs.embeddings[k], ctx, where);
     }
   }
   for (uint32_t v = 0; v < s.left.size(); ++v)
     if (!s.left.nodes[v].expressions.empty() && !s.right_of(v))
-      throw Error(ErrorCode::Schema, "an expression on a deleted node (expressions belong to right nodes)",
+      throw Error(ErrorCode::Schema,
+                  "an expression on a deleted node (expressions belong to right nodes)",
                   "rule " + s.name + ", L node " + s.left.nodes[v].name);
   return cs;
 }

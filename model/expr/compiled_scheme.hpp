@@ -29,11 +29,13 @@ struct CompiledScheme {
 // The signatures of a scheme's declarations (Error(Schema) located "rule <name>, embedding <e>").
 std::vector<EmbeddingSignature> embedding_signatures(const scheme::RuleScheme& s);
 // The context expressions of `s` are checked in (left nodes readable).
-CheckContext check_context(const scheme::RuleScheme& s, const std::vector<EmbeddingSignature>& sigs);
+CheckContext check_context(const scheme::RuleScheme& s,
+                           const std::vector<EmbeddingSignature>& sigs);
 
 // Parses and checks one expression of embedding `sig` (in `ctx`); `where` locates errors.
-std::shared_ptr<const Expr> compile_expression(const std::string& code, const EmbeddingSignature& sig,
-                                               CheckContext ctx, const std::string& where);
+std::shared_ptr<const Expr> compile_expression(const std::string& code,
+                                               const EmbeddingSignature& sig, CheckContext ctx,
+                                               const std::string& where);
 
 // Keeps a pointer to `s`, which must outlive the result.
 CompiledScheme compile_scheme(const scheme::RuleScheme& s);

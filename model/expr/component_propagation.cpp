@@ -17,13 +17,14 @@ constexpr uint32_t kNone = UINT32_MAX;
 // Whether e collects or enumerates the orbits of type `dims` somewhere (the orbits the evaluator
 // lists: the classes' orbit lists are kept for them only).
 bool enumerates(const Expr& e, DimMask dims) {
-  if ((e.op == Expr::Op::Collect || e.op == Expr::Op::Comprehension) && e.word.empty() && e.orbit_mask == dims)
+  if ((e.op == Expr::Op::Collect || e.op == Expr::Op::Comprehension) && e.word.empty() &&
+      e.orbit_mask == dims)
     return true;
   for (const auto& a : e.args)
     if (enumerates(*a, dims)) return true;
   return false;
 }
-}
+}  // namespace
 
 // For each field: the R nodes joined by explicit arcs of dimensions in <o_pi> (one kind per
 // connected set V), the dimensions o[p] of V's label positions p with o^v[p] in <o_pi>, and the
@@ -51,7 +52,8 @@ void EmbeddingPropagation::derive_class_kinds() {
     }
     int decl = -1;
     for (size_t e = 0; e < field_of_decl_.size(); ++e)
-      if (field_of_decl_[e] == static_cast<int>(fi) && cs_.has_expressions(e)) decl = static_cast<int>(e);
+      if (field_of_decl_[e] == static_cast<int>(fi) && cs_.has_expressions(e))
+        decl = static_cast<int>(e);
     for (uint32_t root = 0; root < nr; ++root) {
       if (comp[root] != root) continue;
       ClassKind k;
@@ -139,7 +141,8 @@ uint32_t walk_classes(const Walk& w) {
 
 // class_of[b] for every orbit dart: the orbits of the map before under k.dims, numbered in order
 // of their first orbit dart, listed in first_b. Returns their number.
-uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k) {
+uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::ComponentInstance& c,
+                                             ClassKind& k) {
   const size_t sz = c.size();
   k.class_of.reserve(sz);
   std::vector<uint32_t>& class_of = *k.class_of;
@@ -173,7 +176,9 @@ uint32_t EmbeddingPropagation::label_classes(const Map& g, const scheme::Compone
       k.orbit_list->resize(sz);
     }
     // O's links at the kind's positions (the orbit's own tables: no dart index lookup).
-    const Walk w{c.nb[p0], c.nb[p1], sz, class_of.data(), *k.first_b, lists ? k.orbit_list->data() : nullptr, *k.orbit_start};
+    const Walk w{c.nb[p0],        c.nb[p1],   sz,
+                 class_of.data(), *k.first_b, lists ? k.orbit_list->data() : nullptr,
+                 *k.orbit_start};
     return lists ? walk_classes<true>(w) : walk_classes<false>(w);
   }
   for (uint32_t b = 0; b < sz; ++b) {
@@ -203,7 +208,8 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
   const scheme::RuleScheme& s = *cs_.scheme;
   const size_t sz = c.size();
   std::vector<const EmbeddingField*> fields;
-  for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
+  for (int fi : field_of_decl_)
+    fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   // A component that is most of the map is evaluated on its view (component_view.hpp), in memo
   // mode; a small one on the map, without memo tables sized to the whole map.
   const bool on_view = sz * 8 >= g.capacity();
@@ -234,7 +240,8 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
       for (ClassKind& k : kinds) {
         ev.share_orbit_numbers(k.dims, k.class_of->data(), nullptr);
         if (!k.orbit_start->empty())
-          ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start->data(), k.class_of->data());
+          ev.share_orbit_lists(k.dims, k.orbit_list->data(), k.orbit_start->data(),
+                               k.class_of->data());
       }
   // Each computed kind's values appended to its field's value array, class by class from slot
   // k.offset (step 1's buffer is the array itself); every field's appended values dropped again if
@@ -249,7 +256,9 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
         const uint32_t count = counts[ki++];
         if (k.declaration < 0) continue;
         k.offset = static_cast<uint32_t>(E.num_values());
-        E.append_values_by([&](std::vector<Vec3>& values) { evaluate_classes(ev, g, c, k, count, on_view, fields, values); });
+        E.append_values_by([&](std::vector<Vec3>& values) {
+          evaluate_classes(ev, g, c, k, count, on_view, fields, values);
+        });
       }
     }
   } catch (...) {
@@ -260,17 +269,20 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::ComponentI
 
 // Step 1 for one computed kind: the values of its count classes pushed onto out, each evaluated at
 // its first orbit dart (the view's dart, or the map's).
-void EmbeddingPropagation::evaluate_classes(Evaluator& ev, const Map& g, const scheme::ComponentInstance& c,
-                                            const ClassKind& k, uint32_t count, bool on_view,
-                                            const std::vector<const EmbeddingField*>& fields, std::vector<Vec3>& out) {
+void EmbeddingPropagation::evaluate_classes(Evaluator& ev, const Map& g,
+                                            const scheme::ComponentInstance& c, const ClassKind& k,
+                                            uint32_t count, bool on_view,
+                                            const std::vector<const EmbeddingField*>& fields,
+                                            std::vector<Vec3>& out) {
   const scheme::RuleScheme& s = *cs_.scheme;
   const auto e = static_cast<size_t>(k.declaration);
   const Expr& x = *cs_.right[e][k.expression_node];
-  const std::string where =
-      "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name + ", embedding " + cs_.embeddings[e].name;
+  const std::string where = "rule " + s.name + ", R node " + s.right.nodes[k.expression_node].name +
+                            ", embedding " + cs_.embeddings[e].name;
   const ValueType t = cs_.embeddings[e].type;
   auto evaluate = [&](Evaluator& on, const Dart* node_dart) {
-    return k.program ? on.evaluate(*k.program, node_dart, t, where) : on.evaluate(x, node_dart, t, where);
+    return k.program ? on.evaluate(*k.program, node_dart, t, where)
+                     : on.evaluate(x, node_dart, t, where);
   };
   const size_t first = out.size();
   if (on_view && k.program && Evaluator::combines_node_values(*k.program)) {
@@ -306,8 +318,9 @@ void EmbeddingPropagation::evaluate_classes(Evaluator& ev, const Map& g, const s
 // slot of its preserved darts. When they hold different slots, the one taken is the general
 // path's: the first met by the traversal of the orbit of the result from the class's first dart in
 // comatch order (its first node, its first orbit dart).
-void EmbeddingPropagation::inherited_slots(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f,
-                                           ClassKind& k, std::vector<uint32_t>& chosen) {
+void EmbeddingPropagation::inherited_slots(const Map& g, const scheme::ComponentInstance& c,
+                                           EmbeddingField& f, ClassKind& k,
+                                           std::vector<uint32_t>& chosen) {
   constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
   Embedding<Vec3>& E = f.values;
   const size_t sz = c.size();
@@ -315,14 +328,18 @@ void EmbeddingPropagation::inherited_slots(const Map& g, const scheme::Component
   const size_t classes = first_b.size();
   chosen.assign(classes, kNoValue);
   std::vector<bool> mixed(classes, false), reported(classes, false);
-  auto preserved = [&](uint32_t v) { return c.engine->added_rank(v) == scheme::SchemeEngine::kAdded; };
+  auto preserved = [&](uint32_t v) {
+    return c.engine->added_rank(v) == scheme::SchemeEngine::kAdded;
+  };
   for (uint32_t v : k.nodes) {
     if (!preserved(v)) continue;
     for (uint32_t b = 0; b < sz; ++b) {
       const uint32_t sl = E.slot(c.darts[b]), id = (*k.class_of)[b];
       if (sl == kNoValue) continue;
-      if (chosen[id] == kNoValue) chosen[id] = sl;
-      else if (sl != chosen[id]) mixed[id] = true;
+      if (chosen[id] == kNoValue)
+        chosen[id] = sl;
+      else if (sl != chosen[id])
+        mixed[id] = true;
     }
   }
   for (uint32_t id = 0; id < classes; ++id) {
@@ -346,36 +363,43 @@ void EmbeddingPropagation::inherited_slots(const Map& g, const scheme::Component
     if (!preserved(v)) continue;
     for (uint32_t b = 0; b < sz; ++b) {
       const uint32_t sl = E.slot(c.darts[b]), id = (*k.class_of)[b];
-      if (!mixed[id] || reported[id] || sl == kNoValue || detail::same_value(E.value(sl), E.value(chosen[id]))) continue;
+      if (!mixed[id] || reported[id] || sl == kNoValue ||
+          detail::same_value(E.value(sl), E.value(chosen[id])))
+        continue;
       report("E-merge", f, c.darts[b],
-             "the rewrite merges orbits of values " + detail::text(E.value(chosen[id]), f.arity) + " and " +
-                 detail::text(E.value(sl), f.arity) + " and no expression gives the merged orbit a value");
+             "the rewrite merges orbits of values " + detail::text(E.value(chosen[id]), f.arity) +
+                 " and " + detail::text(E.value(sl), f.arity) +
+                 " and no expression gives the merged orbit a value");
       reported[id] = true;
     }
   }
   if (E.num_values() > 0)
     for (uint32_t id = 0; id < classes; ++id)
       if (chosen[id] == kNoValue)
-        report("E-no-value", f, c.comatch(k.nodes[0], first_b[id]),
-               "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
+        report(
+            "E-no-value", f, c.comatch(k.nodes[0], first_b[id]),
+            "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
 }
 
 // Steps 2 and 3: every dart of the result in the component takes the slot of its class, in its
 // node's kind: k.offset + class for a computed kind (its values appended before the rewrite),
-// chosen[class] for an inherited one. Preserved darts are written in place, computed kinds first (the traversal of a
-// mixed inherited class reads them), then each inherited kind; the added darts' slots, rank by
-// rank, are appended to the slot table when it ends where they start.
+// chosen[class] for an inherited one. Preserved darts are written in place, computed kinds first
+// (the traversal of a mixed inherited class reads them), then each inherited kind; the added darts'
+// slots, rank by rank, are appended to the slot table when it ends where they start.
 void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentInstance& c) {
   constexpr uint32_t kNoValue = Embedding<Vec3>::kNoValue;
   const size_t sz = c.size();
   const size_t nr = cs_.scheme->right.size();
-  auto preserved = [&](uint32_t v) { return c.engine->added_rank(v) == scheme::SchemeEngine::kAdded; };
+  auto preserved = [&](uint32_t v) {
+    return c.engine->added_rank(v) == scheme::SchemeEngine::kAdded;
+  };
   for (size_t fi = 0; fi < m_.fields.size(); ++fi) {
     EmbeddingField& f = m_.fields[fi];
     Embedding<Vec3>& E = f.values;
     std::vector<ClassKind>& kinds = kinds_[fi];
     E.reserve_slots(g.capacity());  // the slot table grown once, to the darts after the rewrite
-    if (E.slots().size() < c.base) E.append_slots(c.base - E.slots().size(), [](size_t) { return kNoValue; });
+    if (E.slots().size() < c.base)
+      E.append_slots(c.base - E.slots().size(), [](size_t) { return kNoValue; });
     chosen_.resize(std::max(chosen_.size(), kinds.size()));
     std::vector<uint32_t> kind_of(nr, 0);
     auto slot_of = [&](size_t ki) {
@@ -387,7 +411,8 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::ComponentIn
     auto write_preserved = [&](size_t ki) {
       const auto slot = slot_of(ki);
       for (uint32_t v : kinds[ki].nodes)
-        if (preserved(v)) c.for_each_dart([&](Dart x, uint32_t b) { E.set_slot_unchecked(x, slot(b)); });
+        if (preserved(v))
+          c.for_each_dart([&](Dart x, uint32_t b) { E.set_slot_unchecked(x, slot(b)); });
     };
     for (size_t ki = 0; ki < kinds.size(); ++ki) {
       for (uint32_t v : kinds[ki].nodes) kind_of[v] = static_cast<uint32_t>(ki);

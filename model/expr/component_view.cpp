@@ -23,7 +23,8 @@ void view_component(const Map& g, const scheme::ComponentInstance& c, const Orbi
       continue;
     }
     const Embedding<Vec3>& from = source[k]->values;
-    EmbeddingField& v = view.fields[k].emplace(EmbeddingField::numeric(from.name(), from.orbit_type(), source[k]->arity));
+    EmbeddingField& v = view.fields[k].emplace(
+        EmbeddingField::numeric(from.name(), from.orbit_type(), source[k]->arity));
     v.values.append_slots(sz, [&](size_t b) { return from.slot(c.darts[b]); });
     v.values.append_values(from.values());
   }

@@ -12,8 +12,8 @@
 #include <optional>
 #include <vector>
 
-#include "model/core/map.hpp"
 #include "model/core/embedded_map.hpp"
+#include "model/core/map.hpp"
 #include "model/scheme/component_rewrite.hpp"
 
 namespace gmr::expr {

@@ -33,7 +33,8 @@ bool has_duplicate(const std::vector<uint32_t>& v, std::vector<uint32_t>& buffer
 
 }  // namespace
 
-Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields)
+Evaluator::Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs,
+                     std::vector<const EmbeddingField*> fields)
     : g_(g), sigs_(std::move(sigs)), fields_(std::move(fields)) {
   for (const EmbeddingSignature& s : sigs_) types_.push_back(s.type);
   scratch_.resize(3 * kMaxNesting);  // never resized later: members() holds references into it
@@ -66,7 +67,8 @@ void Evaluator::share_orbit_numbers(DimMask mask, const uint32_t* numbers, const
   ids_.push_back({mask, {}, numbers, index});
 }
 
-void Evaluator::share_orbit_lists(DimMask mask, const uint32_t* list, const uint32_t* start, const uint32_t* numbers) {
+void Evaluator::share_orbit_lists(DimMask mask, const uint32_t* list, const uint32_t* start,
+                                  const uint32_t* numbers) {
   for (auto& o : lists_)
     if (o.mask == mask) return;
   lists_.push_back({mask, list, start, numbers});
@@ -95,7 +97,8 @@ const Evaluator::OrbitIds& Evaluator::orbit_ids(DimMask mask) {
   std::vector<uint32_t>& v = *ids_.back().ids;
   v.assign(g_.capacity(), kNone);
   uint32_t count = 0;
-  visit_all_orbits(g_, mask, [&](Dart) { ++count; }, [&](Dart x) { v[x] = count - 1; });
+  visit_all_orbits(
+      g_, mask, [&](Dart) { ++count; }, [&](Dart x) { v[x] = count - 1; });
   return ids_.back();
 }
 
@@ -107,17 +110,20 @@ Evaluator::CollectMemo* Evaluator::memo_for(const Expr& call, const Expr& collec
   CollectMemo& m = memos_.back();
   m.at.reserve(g_.capacity());
   m.at->assign(g_.capacity(), kNone);
-  m.values.reserve(g_.capacity() / 2);  // at most one per two darts but for loops; pages touched on use
+  m.values.reserve(g_.capacity() /
+                   2);  // at most one per two darts but for loops; pages touched on use
   return &memos_.back();
 }
 
 void Evaluator::fail(const Expr& e, const std::string& msg, Dart d) const {
-  std::string loc = (where_ && !where_->empty() ? *where_ + ", " : std::string()) + "column " + std::to_string(e.column);
+  std::string loc = (where_ && !where_->empty() ? *where_ + ", " : std::string()) + "column " +
+                    std::to_string(e.column);
   if (d != kNoDart) loc += ", dart " + std::to_string(d);
   throw Error(ErrorCode::Schema, msg, loc);
 }
 
-Val Evaluator::evaluate(const Expr& e, const Dart* node_darts, ValueType target, const std::string& where) {
+Val Evaluator::evaluate(const Expr& e, const Dart* node_darts, ValueType target,
+                        const std::string& where) {
   nodes_ = node_darts;
   where_ = &where;
   vars_.clear();
@@ -126,7 +132,8 @@ Val Evaluator::evaluate(const Expr& e, const Dart* node_darts, ValueType target,
   return checked(eval(e), e, target);
 }
 
-Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where) {
+Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType target,
+                        const std::string& where) {
   nodes_ = node_darts;
   where_ = &where;
   vars_.clear();
@@ -141,7 +148,8 @@ Val Evaluator::evaluate(const Program& p, const Dart* node_darts, ValueType targ
 
 // The mass of a point (1) or a vector (0), checked within 1e-9 and made exact.
 inline Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
-  if ((target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(v.w) > 1e-9))
+  if ((target == ValueType::Point && std::fabs(v.w - 1.0) > 1e-9) ||
+      (target == ValueType::Vector && std::fabs(v.w) > 1e-9))
     fail_mass(e, v.w, target);
   if (target == ValueType::Point) v.w = 1.0;
   if (target == ValueType::Vector) v.w = 0.0;
@@ -150,9 +158,12 @@ inline Val Evaluator::checked(Val v, const Expr& e, ValueType target) const {
 
 void Evaluator::fail_mass(const Expr& e, double mass, ValueType target) const {
   if (target == ValueType::Point)
-    fail(e, "the point's weights sum to " + std::to_string(mass) + ", not 1 (an affine combination of points needs weights summing to 1)",
+    fail(e,
+         "the point's weights sum to " + std::to_string(mass) +
+             ", not 1 (an affine combination of points needs weights summing to 1)",
          nodes_ ? nodes_[0] : kNoDart);
-  fail(e, "the vector's weights sum to " + std::to_string(mass) + ", not 0", nodes_ ? nodes_[0] : kNoDart);
+  fail(e, "the vector's weights sum to " + std::to_string(mass) + ", not 0",
+       nodes_ ? nodes_[0] : kNoDart);
 }
 
 Dart Evaluator::dart_of(const NodeRef& r, const Expr& e) {
@@ -175,7 +186,8 @@ inline Dart Evaluator::held_dart_of(const NodeRef& r, const Expr& e) {
 inline Val Evaluator::load(const LoadRef& r) {
   Dart d = r.variable ? vars_[r.index] : nodes_[r.index];
   if (d == kNoDart) dart_of(r.expr->ref, *r.expr);
-  if (memo_on_) {  // the tables held (hold_tables); the same reads without the map's and fields' indirections
+  if (memo_on_) {  // the tables held (hold_tables); the same reads without the map's and fields'
+                   // indirections
     for (uint8_t k = 0; k < r.length; ++k) d = held_links_[r.path[k]][d];
     const HeldField& f = held_fields_[r.embedding];
     if (d < f.size) {
@@ -226,7 +238,8 @@ void Evaluator::members(const Expr& e, MemberSum& out) {
       lets_.pop_back();
       for (int dim : e.word) x = g_.alpha(dim, x);
       k += 1;
-      if (k > static_cast<double>(g_.capacity())) fail(e, "the walk does not come back to its dart", d);
+      if (k > static_cast<double>(g_.capacity()))
+        fail(e, "the walk does not come back to its dart", d);
     } while (x != d);
     return;
   }
@@ -236,13 +249,15 @@ void Evaluator::members(const Expr& e, MemberSum& out) {
   }
   // Scratch lists per nesting depth (comprehension bodies may collect again).
   const size_t depth = vars_.size();
-  if (depth >= kMaxNesting) fail(e, "comprehensions nested more than " + std::to_string(kMaxNesting) + " deep");
+  if (depth >= kMaxNesting)
+    fail(e, "comprehensions nested more than " + std::to_string(kMaxNesting) + " deep");
   std::vector<Dart>& in_orbit = scratch_[3 * depth];
   std::vector<Dart>& in_classes = scratch_[3 * depth + 1];
   std::vector<Dart>& stack = scratch_[3 * depth + 2];
   in_classes.clear();
   LastWalk& last = last_walk_[depth];
-  if (memo_on_ && last.valid && last.mask == mo && last.dart == d && in_orbit.size() <= kSmallOrbit) {
+  if (memo_on_ && last.valid && last.mask == mo && last.dart == d &&
+      in_orbit.size() <= kSmallOrbit) {
     // The same <o>-orbit from the same dart as the previous walk at this depth (Catmull-Clark's
     // vertex point walks one vertex three times): its darts, in order, are still in in_orbit.
     memo_members(e, mc, in_orbit, out);
@@ -310,7 +325,8 @@ bool Evaluator::list_two_dims(DimMask mo, Dart d, std::vector<Dart>& in_orbit) {
   in_orbit.clear();
   in_orbit.push_back(d);
   // One side: from `from` (d, or alpha_a(d) already listed) along `l` then the other link.
-  auto side = [&](Dart from, const Dart* l, const Dart* other) -> int {  // 1 closed, 0 free end, -1 irregular
+  auto side = [&](Dart from, const Dart* l,
+                  const Dart* other) -> int {  // 1 closed, 0 free end, -1 irregular
     for (Dart x = from;;) {
       const Dart y = l[x];
       if (y >= cap || l[y] != x) return -1;
@@ -355,7 +371,8 @@ Val Evaluator::body_value(const Expr& e) {
 // marking each one met. The first darts are kept with the walk: a second comprehension over the
 // same walk and <c> (Loop's count and middle around a vertex) reuses them. A constant body (count's
 // [0 | ...]) is not evaluated per member.
-void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit, MemberSum& out) {
+void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>& in_orbit,
+                             MemberSum& out) {
   const size_t depth = vars_.size();
   LastWalk& last = last_walk_[depth];
   const int kept = last.members[0] == mc ? 0 : last.members[1] == mc ? 1 : -1;
@@ -382,16 +399,20 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
   }
   if (e.op == Expr::Op::Comprehension) {
     const Body& b = bodies_[depth];
-    const bool constant = b.begin ? (b.end - b.begin == 1 && b.begin->op == Instruction::Op::Constant)
-                                  : e.args[0]->op == Expr::Op::Number;
+    const bool constant = b.begin
+                              ? (b.end - b.begin == 1 && b.begin->op == Instruction::Op::Constant)
+                              : e.args[0]->op == Expr::Op::Number;
     if (constant) {
-      const Val v = b.begin ? Val{b.begin->value[0], b.begin->value[1], b.begin->value[2], b.begin->value[3]}
-                            : Val{e.args[0]->number, 0, 0, 0};
-      for (size_t k = 0; k < firsts.size(); ++k) out.push_back(v);  // the sum in member order, as the body's
+      const Val v =
+          b.begin ? Val{b.begin->value[0], b.begin->value[1], b.begin->value[2], b.begin->value[3]}
+                  : Val{e.args[0]->number, 0, 0, 0};
+      for (size_t k = 0; k < firsts.size(); ++k)
+        out.push_back(v);  // the sum in member order, as the body's
       return;
     }
   }
-  if (e.op == Expr::Op::Comprehension && bodies_[depth].begin && bodies_[depth].end - bodies_[depth].begin == 1 &&
+  if (e.op == Expr::Op::Comprehension && bodies_[depth].begin &&
+      bodies_[depth].end - bodies_[depth].begin == 1 &&
       body_of_one_instruction(*bodies_[depth].begin, firsts, out))
     return;
   for (const Dart x : firsts) out.push_back(member_value(e, x));
@@ -399,9 +420,9 @@ void Evaluator::memo_members(const Expr& e, DimMask mc, const std::vector<Dart>&
 
 // Memo mode, a comprehension whose compiled body is one instruction that needs no program run per
 // member: a node value (Loop's [e@0.position | e in ...]), or the memoised barycentre of a collect
-// from the member (Catmull-Clark's [middle(<0,1>_position(f)) | f in ...]) read from its memo table,
-// the member's value computed (and the table filled) the usual way when it is not there yet. The
-// values are member_value's. Returns false for any other body.
+// from the member (Catmull-Clark's [middle(<0,1>_position(f)) | f in ...]) read from its memo
+// table, the member's value computed (and the table filled) the usual way when it is not there yet.
+// The values are member_value's. Returns false for any other body.
 bool Evaluator::body_of_one_instruction(const Instruction& body, const std::vector<Dart>& firsts,
                                         MemberSum& out) {
   const size_t depth = vars_.size();
@@ -431,7 +452,8 @@ bool Evaluator::body_of_one_instruction(const Instruction& body, const std::vect
     Dart d = x;
     for (const int dim : arg.ref.path) d = g_.alpha(dim, d);
     vars_.back() = x;
-    out.push_back(at[d] != kNone ? (*cm->values)[at[d]] : aggregate_into(call, cm, nullptr, nullptr));
+    out.push_back(at[d] != kNone ? (*cm->values)[at[d]]
+                                 : aggregate_into(call, cm, nullptr, nullptr));
   }
   vars_.pop_back();
   return true;
@@ -441,7 +463,8 @@ bool Evaluator::body_of_one_instruction(const Instruction& body, const std::vect
 // pi-orbit. When they hold pairwise different value slots, they are pairwise different pi-orbits
 // (every pi-orbit holds one slot, see the header) and the collect is their values, in order;
 // otherwise (two pieces share a slot) returns false and the caller marks whole pi-orbits.
-bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, MemberSum& out) {
+bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark,
+                                 MemberSum& out) {
   const size_t depth = vars_.size();
   const std::vector<Dart>& in_orbit = scratch_[3 * depth];
   std::vector<Dart>& pieces = scratch_[3 * depth + 1];
@@ -475,7 +498,8 @@ bool Evaluator::collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& 
 
 Val Evaluator::eval(const Expr& e) {
   switch (e.op) {
-    case Expr::Op::Number: return {e.number, 0, 0, 0};
+    case Expr::Op::Number:
+      return {e.number, 0, 0, 0};
     case Expr::Op::Constant:
       if (e.let_index >= 0) return lets_[static_cast<size_t>(e.let_index)];
       return {M_PI, 0, 0, 0};
@@ -485,10 +509,13 @@ Val Evaluator::eval(const Expr& e) {
       lets_.pop_back();
       return v;
     }
-    case Expr::Op::Value: return field_value(e.embedding, dart_of(e.ref, e), e);
+    case Expr::Op::Value:
+      return field_value(e.embedding, dart_of(e.ref, e), e);
     case Expr::Op::Collect:
-    case Expr::Op::Comprehension: fail(e, "a multiset is not a value");
-    case Expr::Op::Neg: return scale(eval(*e.args[0]), -1.0);
+    case Expr::Op::Comprehension:
+      fail(e, "a multiset is not a value");
+    case Expr::Op::Neg:
+      return scale(eval(*e.args[0]), -1.0);
     // Operands evaluated left to right (the order of the errors and of the memo tables' first
     // fills; function arguments would leave it to the compiler).
     case Expr::Op::Add: {
@@ -509,7 +536,8 @@ Val Evaluator::eval(const Expr& e) {
       if (b.x == 0.0) fail(e, "division by zero", nodes_ ? nodes_[0] : kNoDart);
       return scale(a, 1.0 / b.x);
     }
-    case Expr::Op::Call: break;
+    case Expr::Op::Call:
+      break;
   }
   switch (e.function) {
     case Function::Point:
@@ -521,16 +549,20 @@ Val Evaluator::eval(const Expr& e) {
     case Function::Middle:
     case Function::Sum:
     case Function::Count: {
-      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset) return aggregate(e, nullptr, nullptr);
+      if (e.args.size() == 1 && e.args[0]->type.kind == K::Multiset)
+        return aggregate(e, nullptr, nullptr);
       Val acc;
       for (const auto& a : e.args) acc = add(acc, eval(*a));
       if (e.function == Function::Middle && e.args.empty())
         fail(e, "the barycentre of an empty multiset", nodes_ ? nodes_[0] : kNoDart);
       return ops::finish_aggregate(e.function, acc, e.args.size());
     }
-    case Function::Cos: return {std::cos(eval(*e.args[0]).x), 0, 0, 0};
-    case Function::Sin: return {std::sin(eval(*e.args[0]).x), 0, 0, 0};
-    case Function::Abs: return {std::fabs(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Cos:
+      return {std::cos(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Sin:
+      return {std::sin(eval(*e.args[0]).x), 0, 0, 0};
+    case Function::Abs:
+      return {std::fabs(eval(*e.args[0]).x), 0, 0, 0};
     case Function::Sqrt: {
       const double x = eval(*e.args[0]).x;
       if (x < 0) fail(e, "square root of a negative number", nodes_ ? nodes_[0] : kNoDart);
@@ -553,7 +585,8 @@ Val Evaluator::eval(const Expr& e) {
       auto c = [](double v) { return v < 0 ? 0.0 : v > 1 ? 1.0 : v; };
       return {c(a.x), c(a.y), c(a.z), 0};
     }
-    case Function::None: break;
+    case Function::None:
+      break;
   }
   fail(e, "unknown function " + e.name);
 }
@@ -575,7 +608,9 @@ Val Evaluator::aggregate(const Expr& e, const Instruction* body, const Instructi
 
 // aggregate's value computed from the members; kept in the memo table cm when given (the
 // collect's <o>-orbit has no value there yet).
-__attribute__((always_inline)) inline Val Evaluator::aggregate_into(const Expr& e, CollectMemo* cm, const Instruction* body, const Instruction* body_end) {
+__attribute__((always_inline)) inline Val Evaluator::aggregate_into(const Expr& e, CollectMemo* cm,
+                                                                    const Instruction* body,
+                                                                    const Instruction* body_end) {
   const Expr& arg = *e.args[0];
   const size_t depth = vars_.size();
   MemberSum m;
@@ -600,7 +635,8 @@ const Val* Evaluator::Kept::find(const Val* lets, size_t n, size_t stride) const
     const size_t i = k == 0 ? last : (k == last ? 0 : k);  // the last one found first
     const Entry& e = entries[i];
     bool same = e.lets == n;
-    for (size_t q = 0; same && q < n; ++q) same = std::memcmp(&e.key[q], &lets[q * stride], sizeof(Val)) == 0;
+    for (size_t q = 0; same && q < n; ++q)
+      same = std::memcmp(&e.key[q], &lets[q * stride], sizeof(Val)) == 0;
     if (same) {
       last = i;
       return &e.value;
@@ -634,10 +670,18 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
   for (; pc != end; ++pc) {
     const Expr& e = *pc->expr;
     switch (pc->op) {
-      case Op::Constant: *sp++ = {pc->value[0], pc->value[1], pc->value[2], pc->value[3]}; break;
-      case Op::LetGet: *sp++ = lets_[pc->index]; break;
-      case Op::LetBind: lets_.push_back(*--sp); break;
-      case Op::LetDrop: lets_.pop_back(); break;
+      case Op::Constant:
+        *sp++ = {pc->value[0], pc->value[1], pc->value[2], pc->value[3]};
+        break;
+      case Op::LetGet:
+        *sp++ = lets_[pc->index];
+        break;
+      case Op::LetBind:
+        lets_.push_back(*--sp);
+        break;
+      case Op::LetDrop:
+        lets_.pop_back();
+        break;
       case Op::Value: {
         // field_value(dart_of(...)) inlined; their errors on a missing dart or value.
         Dart d = e.ref.is_variable ? vars_[e.ref.index] : nodes_[e.ref.index];
@@ -649,39 +693,79 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
         *sp++ = from_storage(f->values.value(slot), sigs_[static_cast<size_t>(e.embedding)].type);
         break;
       }
-      case Op::Load: *sp++ = load(loads_[pc->index]); break;
+      case Op::Load:
+        *sp++ = load(loads_[pc->index]);
+        break;
       case Op::Combine:
       case Op::CombineLoads: {
-        Val acc = pc->op == Op::Combine ? Val{pc->value[0], pc->value[1], pc->value[2], pc->value[3]} : sp[-1];
+        Val acc = pc->op == Op::Combine
+                      ? Val{pc->value[0], pc->value[1], pc->value[2], pc->value[3]}
+                      : sp[-1];
         const LoadRef* l = loads_ + pc->index;
         for (uint32_t k = 0; k < pc->count; ++k) acc = add(acc, scale(load(l[k]), l[k].weight));
         if (pc->op == Op::Combine) ++sp;
         sp[-1] = acc;
         break;
       }
-      case Op::Accumulate: --sp; sp[-1] = add(sp[-1], scale(sp[0], pc->value[0])); break;
-      case Op::Neg: sp[-1] = ops::neg(sp[-1]); break;
-      case Op::Add: --sp; sp[-1] = add(sp[-1], sp[0]); break;
-      case Op::Sub: --sp; sp[-1] = sub(sp[-1], sp[0]); break;
-      case Op::ScaleLeft: --sp; sp[-1] = scale(sp[0], sp[-1].x); break;
-      case Op::ScaleRight: --sp; sp[-1] = scale(sp[-1], sp[0].x); break;
+      case Op::Accumulate:
+        --sp;
+        sp[-1] = add(sp[-1], scale(sp[0], pc->value[0]));
+        break;
+      case Op::Neg:
+        sp[-1] = ops::neg(sp[-1]);
+        break;
+      case Op::Add:
+        --sp;
+        sp[-1] = add(sp[-1], sp[0]);
+        break;
+      case Op::Sub:
+        --sp;
+        sp[-1] = sub(sp[-1], sp[0]);
+        break;
+      case Op::ScaleLeft:
+        --sp;
+        sp[-1] = scale(sp[0], sp[-1].x);
+        break;
+      case Op::ScaleRight:
+        --sp;
+        sp[-1] = scale(sp[-1], sp[0].x);
+        break;
       case Op::Div:
         --sp;
         if (sp[0].x == 0.0) fail(e, "division by zero", nodes_ ? nodes_[0] : kNoDart);
         sp[-1] = ops::divide(sp[-1], sp[0].x);
         break;
-      case Op::Make: sp -= 2; sp[-1] = ops::make(e.function, sp[-1], sp[0], sp[1]); break;
-      case Op::Cos: sp[-1] = ops::cos(sp[-1]); break;
-      case Op::Sin: sp[-1] = ops::sin(sp[-1]); break;
-      case Op::Abs: sp[-1] = ops::abs(sp[-1]); break;
+      case Op::Make:
+        sp -= 2;
+        sp[-1] = ops::make(e.function, sp[-1], sp[0], sp[1]);
+        break;
+      case Op::Cos:
+        sp[-1] = ops::cos(sp[-1]);
+        break;
+      case Op::Sin:
+        sp[-1] = ops::sin(sp[-1]);
+        break;
+      case Op::Abs:
+        sp[-1] = ops::abs(sp[-1]);
+        break;
       case Op::Sqrt:
         if (sp[-1].x < 0) fail(e, "square root of a negative number", nodes_ ? nodes_[0] : kNoDart);
         sp[-1] = ops::sqrt(sp[-1]);
         break;
-      case Op::Norm: sp[-1] = ops::norm(sp[-1]); break;
-      case Op::Clamp: sp[-1] = ops::clamp(sp[-1]); break;
-      case Op::Dot: --sp; sp[-1] = ops::dot(sp[-1], sp[0]); break;
-      case Op::Cross: --sp; sp[-1] = ops::cross(sp[-1], sp[0]); break;
+      case Op::Norm:
+        sp[-1] = ops::norm(sp[-1]);
+        break;
+      case Op::Clamp:
+        sp[-1] = ops::clamp(sp[-1]);
+        break;
+      case Op::Dot:
+        --sp;
+        sp[-1] = ops::dot(sp[-1], sp[0]);
+        break;
+      case Op::Cross:
+        --sp;
+        sp[-1] = ops::cross(sp[-1], sp[0]);
+        break;
       case Op::AggregateArgs: {
         const size_t n = pc->index;
         Val acc;
@@ -726,7 +810,8 @@ Val Evaluator::run(const Instruction* pc, const Instruction* end) {
         k->keep(lets_.data(), n, sp[-1]);
         break;
       }
-      case Op::Unknown: fail(e, "unknown function " + e.name);
+      case Op::Unknown:
+        fail(e, "unknown function " + e.name);
     }
   }
   return sp[-1];

@@ -10,18 +10,19 @@
 // <o>-orbit each lie in one pi-orbit, and when their value slots are pairwise different they are
 // different pi-orbits — valid because every pi-orbit holds a single slot in the maps this library
 // builds (readers set one slot per orbit; propagation.hpp gives each orbit one slot); only when two
-// pieces share a slot are the pi-orbits marked whole. Run-time errors (a dart without value, an empty multiset's barycentre, a point
-// whose mass is not 1) are Error(Schema) located "<where>, column <c>, dart <d>".
-// An expression is evaluated either as a tree (eval, the general path) or as its compiled program
-// (program.hpp, run): the same operations in the same order, the same members, memos and errors.
+// pieces share a slot are the pi-orbits marked whole. Run-time errors (a dart without value, an
+// empty multiset's barycentre, a point whose mass is not 1) are Error(Schema) located "<where>,
+// column <c>, dart <d>". An expression is evaluated either as a tree (eval, the general path) or as
+// its compiled program (program.hpp, run): the same operations in the same order, the same members,
+// memos and errors.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "model/core/buffer_pool.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/core/map.hpp"
 #include "model/expr/ast.hpp"
-#include "model/core/embedded_map.hpp"
 #include "model/expr/program.hpp"
 #include "model/expr/type_check.hpp"
 #include "model/expr/value_ops.hpp"
@@ -32,14 +33,15 @@ class Evaluator {
  public:
   static constexpr size_t kMaxNesting = 16;
   // fields[k]: the storage of signature k (nullptr when the map does not have it).
-  Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs, std::vector<const EmbeddingField*> fields);
+  Evaluator(const Map& g, std::vector<EmbeddingSignature> sigs,
+            std::vector<const EmbeddingField*> fields);
 
   // The value of `e` (a checked expression) with node n at node_darts[n]; `target` is checked
   // (mass of points and vectors). `where` locates errors.
   Val evaluate(const Expr& e, const Dart* node_darts, ValueType target, const std::string& where);
   // The same with e compiled (program.hpp): the same value, the same errors.
-  Val evaluate(const Program& p, const Dart* node_darts, ValueType target, const std::string& where);
-
+  Val evaluate(const Program& p, const Dart* node_darts, ValueType target,
+               const std::string& where);
 
   // Memo mode: a numbering of the <mask>-orbits the caller already has, used instead of a sweep
   // of the map: the dart x is in the orbit numbered numbers[index[x]] (index: the caller's own
@@ -50,7 +52,8 @@ class Evaluator {
   // order of list_two_dims from list[start[id]], are list[start[id] .. start[id + 1]) (numbers:
   // each dart's orbit id). A walk of such an orbit from that first dart reads them there instead
   // of following the links. The arrays must outlive the memo mode.
-  void share_orbit_lists(DimMask mask, const uint32_t* list, const uint32_t* start, const uint32_t* numbers);
+  void share_orbit_lists(DimMask mask, const uint32_t* list, const uint32_t* start,
+                         const uint32_t* numbers);
 
   // Memoisation of middle/sum/count of a collect (middle(<o>_pi(r)) ...) per <o>-orbit, for the
   // lifetime of the evaluator or until the next call: the value depends only on the orbit, not on
@@ -70,14 +73,16 @@ class Evaluator {
   // appended): n, or the first class that fails (no dart, no value, wrong mass), which evaluate()
   // then reports; 0 when p is not of that form or memo mode is off.
   static bool combines_node_values(const Program& p);
-  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out) const;
+  size_t combine_classes(const Program& p, const Dart* nodes, size_t n, ValueType target,
+                         std::vector<Vec3>& out) const;
   // Memo mode: the values of any program without unresolved node values (Instruction::Op::Value)
   // at the classes whose left node 0 is at nodes[0..n), appended to out, evaluated kLanes classes
   // at a time, instruction by instruction (evaluator_lanes.cpp): run's values bit for bit. Returns
   // the number of classes done: n, or the first class of a batch that fails (an error of run, which
   // evaluate() then reports); 0 when p does not run in lanes or memo mode is off.
   static bool runs_in_lanes(const Program& p);
-  size_t run_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out);
+  size_t run_classes(const Program& p, const Dart* nodes, size_t n, ValueType target,
+                     std::vector<Vec3>& out);
 
   // The dart-free sub-expressions computed so far (program.hpp, Pure) rather than found kept.
   size_t pure_runs() const { return pure_runs_; }
@@ -94,7 +99,8 @@ class Evaluator {
   Val run(const Instruction* pc, const Instruction* end);
   Val aggregate(const Expr& call, const Instruction* body, const Instruction* body_end);
   Val checked(Val v, const Expr& e, ValueType target) const;
-  [[noreturn]] __attribute__((noinline, cold)) void fail_mass(const Expr& e, double mass, ValueType target) const;
+  [[noreturn]] __attribute__((noinline, cold)) void fail_mass(const Expr& e, double mass,
+                                                              ValueType target) const;
   Val body_value(const Expr& e);
   void members(const Expr& e, MemberSum& out);
   bool collect_by_slots(const Expr& e, DimMask mc, const ScopedMarker& mark, MemberSum& out);
@@ -109,8 +115,8 @@ class Evaluator {
   const Map& g_;
   std::vector<EmbeddingSignature> sigs_;
   std::vector<const EmbeddingField*> fields_;
-  std::vector<ValueType> types_;       // sigs_[k].type
-  const LoadRef* loads_ = nullptr;     // the loads of the program run (evaluate)
+  std::vector<ValueType> types_;    // sigs_[k].type
+  const LoadRef* loads_ = nullptr;  // the loads of the program run (evaluate)
   const Dart* nodes_ = nullptr;
   std::vector<Dart> vars_;
   std::vector<Val> lets_;
@@ -126,11 +132,12 @@ class Evaluator {
   };
   static constexpr uint32_t kNone = UINT32_MAX;
   CollectMemo* memo_for(const Expr& call, const Expr& collect);
-  Val aggregate_into(const Expr& call, CollectMemo* cm, const Instruction* body, const Instruction* body_end);
+  Val aggregate_into(const Expr& call, CollectMemo* cm, const Instruction* body,
+                     const Instruction* body_end);
   // Memo mode: the number of the <mask>-orbit of every dart (one sweep of the map, on first use).
   struct OrbitIds {
     DimMask mask;
-    ScratchTable<uint32_t> ids;  // the number of every dart's orbit, or:
+    ScratchTable<uint32_t> ids;         // the number of every dart's orbit, or:
     const uint32_t* numbers = nullptr;  // share_orbit_numbers
     const uint32_t* index = nullptr;
   };
@@ -184,16 +191,18 @@ class Evaluator {
   std::vector<Val> lane_stack_, lane_lets_;
   struct LaneMembers {
     const Expr* comprehension = nullptr;  // its orbit, classes and start (equal ones share)
-    std::vector<Dart> darts;              // the first darts of the members, lane after lane (from start[lane])
+    std::vector<Dart> darts;  // the first darts of the members, lane after lane (from start[lane])
     uint32_t start[kLanes + 1] = {};
-    bool fast = false;                    // every lane's members listed (else aggregate per lane)
+    bool fast = false;  // every lane's members listed (else aggregate per lane)
   };
   LaneMembers lane_members_[2];
   int lane_members_next_ = 0;
-  bool run_lanes(const Program& p, const Dart* nodes, size_t m, ValueType target, std::vector<Vec3>& out);
+  bool run_lanes(const Program& p, const Dart* nodes, size_t m, ValueType target,
+                 std::vector<Vec3>& out);
   bool lane_load(const LoadRef& r, Dart d, Val& v) const;
   const LaneMembers& lane_members(const Expr& comprehension, const Dart* nodes, size_t m);
-  Val lane_scalar(const Instruction* pc, const Instruction* end, const Dart* node, size_t lets, size_t lane, bool aggregate);
+  Val lane_scalar(const Instruction* pc, const Instruction* end, const Dart* node, size_t lets,
+                  size_t lane, bool aggregate);
   // Compiled bodies: the program of the comprehension or walk whose members are enumerated at
   // each depth (nullptr: the tree), and the value stack of the programs.
   struct Body {
@@ -226,7 +235,7 @@ class Evaluator {
   std::vector<Kept> kept_;
   size_t pure_runs_ = 0;
   Kept* kept_for(const Instruction* at);
-  uint64_t program_ = 0;                // the program run (evaluate): its id and code
+  uint64_t program_ = 0;  // the program run (evaluate): its id and code
   const Instruction* code_ = nullptr;
 };
 

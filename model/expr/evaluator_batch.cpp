@@ -50,13 +50,19 @@ size_t Evaluator::combine_classes(const Program& p, const Dart* nodes, size_t n,
     const LoadRef& r = loads[k];
     const HeldField& f = held_fields_[r.embedding];
     Term& term = terms[k];
-    term = {.step = {}, .length = r.length, .slots = f.slots, .size = f.size, .values = f.values, .weight = r.weight};
+    term = {.step = {},
+            .length = r.length,
+            .slots = f.slots,
+            .size = f.size,
+            .values = f.values,
+            .weight = r.weight};
     for (uint8_t s = 0; s < r.length; ++s) term.step[s] = held_links_[r.path[s]];
     affine = affine && f.type != ValueType::Scalar;
     mass = mass + (f.type == ValueType::Point ? 1.0 : 0.0) * r.weight;
   }
   if (!affine) return combine_classes_in_lanes(p, nodes, n, target, out);
-  if ((target == ValueType::Point && std::fabs(mass - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(mass) > 1e-9))
+  if ((target == ValueType::Point && std::fabs(mass - 1.0) > 1e-9) ||
+      (target == ValueType::Vector && std::fabs(mass) > 1e-9))
     return 0;
   // The values written in place (no call in the loop: the sums stay in registers); cut back to the
   // classes done when one fails.
@@ -87,8 +93,8 @@ size_t Evaluator::combine_classes(const Program& p, const Dart* nodes, size_t n,
 }
 
 // combine_classes with the four lanes of run (scalar fields among the terms).
-size_t Evaluator::combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n, ValueType target,
-                                           std::vector<Vec3>& out) const {
+size_t Evaluator::combine_classes_in_lanes(const Program& p, const Dart* nodes, size_t n,
+                                           ValueType target, std::vector<Vec3>& out) const {
   const Instruction& ins = p.code[0];
   const LoadRef* const loads = p.loads.data() + ins.index;
   const Dart cap = g_.capacity();
@@ -103,7 +109,8 @@ size_t Evaluator::combine_classes_in_lanes(const Program& p, const Dart* nodes, 
       if (d >= f.size || f.slots[d] == Embedding<Vec3>::kNoValue) return j;
       acc = ops::add(acc, ops::scale(from_storage(f.values[f.slots[d]], f.type), r.weight));
     }
-    if ((target == ValueType::Point && std::fabs(acc.w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(acc.w) > 1e-9))
+    if ((target == ValueType::Point && std::fabs(acc.w - 1.0) > 1e-9) ||
+        (target == ValueType::Vector && std::fabs(acc.w) > 1e-9))
       return j;
     out.push_back(to_storage(acc));
   }

@@ -40,11 +40,14 @@ bool Evaluator::runs_in_lanes(const Program& p) {
     switch (ins.op) {
       case Op::Value:
       case Op::Unknown:
-      case Op::PureEnd: return false;
+      case Op::PureEnd:
+        return false;
       case Op::LetBind:
         if (++lets > kLaneLets) return false;
         break;
-      case Op::LetDrop: --lets; break;
+      case Op::LetDrop:
+        --lets;
+        break;
       case Op::Load:
         if (!reads_hook(p.loads[ins.index])) return false;
         break;
@@ -53,15 +56,21 @@ bool Evaluator::runs_in_lanes(const Program& p) {
         for (uint32_t k = 0; k < ins.count; ++k)
           if (!reads_hook(p.loads[ins.index + k])) return false;
         break;
-      case Op::AggregateSet: i += ins.index; break;
-      case Op::Pure: i += ins.index + 1; break;
-      default: break;
+      case Op::AggregateSet:
+        i += ins.index;
+        break;
+      case Op::Pure:
+        i += ins.index + 1;
+        break;
+      default:
+        break;
     }
   }
   return !p.code.empty();
 }
 
-size_t Evaluator::run_classes(const Program& p, const Dart* nodes, size_t n, ValueType target, std::vector<Vec3>& out) {
+size_t Evaluator::run_classes(const Program& p, const Dart* nodes, size_t n, ValueType target,
+                              std::vector<Vec3>& out) {
   if (!memo_on_ || !runs_in_lanes(p)) return 0;
   where_ = nullptr;
   loads_ = p.loads.data();
@@ -95,12 +104,14 @@ inline bool Evaluator::lane_load(const LoadRef& r, Dart d, Val& v) const {
 // The members of `comprehension` (from the hook) at each lane: memo_members' first darts. fast is
 // false when a lane's orbit is not a listed one starting at its dart (the lanes then aggregate one
 // by one).
-const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension, const Dart* nodes, size_t m) {
+const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension, const Dart* nodes,
+                                                      size_t m) {
   const Expr& e = comprehension;
   for (const LaneMembers& lm : lane_members_) {
     const Expr* o = lm.comprehension;
-    if (o && o->orbit_mask == e.orbit_mask && o->class_mask == e.class_mask && o->ref.is_variable == e.ref.is_variable &&
-        o->ref.index == e.ref.index && o->ref.path == e.ref.path)
+    if (o && o->orbit_mask == e.orbit_mask && o->class_mask == e.class_mask &&
+        o->ref.is_variable == e.ref.is_variable && o->ref.index == e.ref.index &&
+        o->ref.path == e.ref.path)
       return lm;
   }
   LaneMembers& lm = lane_members_[lane_members_next_];
@@ -149,8 +160,8 @@ const Evaluator::LaneMembers& Evaluator::lane_members(const Expr& comprehension,
 
 // One lane's value by run's own code: the aggregate at pc (aggregate) or the code [pc, end) (run),
 // with the lane's node dart and let values.
-Val Evaluator::lane_scalar(const Instruction* pc, const Instruction* end, const Dart* node, size_t lets, size_t lane,
-                           bool aggregate_at_pc) {
+Val Evaluator::lane_scalar(const Instruction* pc, const Instruction* end, const Dart* node,
+                           size_t lets, size_t lane, bool aggregate_at_pc) {
   nodes_ = node;
   vars_.clear();
   lets_.clear();
@@ -162,7 +173,8 @@ Val Evaluator::lane_scalar(const Instruction* pc, const Instruction* end, const 
 
 // The program at the m classes of nodes[0..m): true and their values appended, or false (nothing
 // appended) when one of them fails.
-bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueType target, std::vector<Vec3>& out) {
+bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueType target,
+                          std::vector<Vec3>& out) {
   Val* const stack = lane_stack_.data();
   Val* const lets = lane_lets_.data();
   auto row = [&](size_t r) { return stack + r * kLanes; };
@@ -190,9 +202,17 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         ++sp;
         break;
       }
-      case Op::LetGet: std::memcpy(top, lets + pc->index * kLanes, m * sizeof(Val)); ++sp; break;
-      case Op::LetBind: std::memcpy(lets + nl++ * kLanes, b, m * sizeof(Val)); --sp; break;
-      case Op::LetDrop: --nl; break;
+      case Op::LetGet:
+        std::memcpy(top, lets + pc->index * kLanes, m * sizeof(Val));
+        ++sp;
+        break;
+      case Op::LetBind:
+        std::memcpy(lets + nl++ * kLanes, b, m * sizeof(Val));
+        --sp;
+        break;
+      case Op::LetDrop:
+        --nl;
+        break;
       case Op::Load: {
         const LoadRef& r = loads_[pc->index];
         for (size_t j = 0; j < m; ++j)
@@ -205,7 +225,9 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         const LoadRef* l = loads_ + pc->index;
         Val* const to = pc->op == Op::Combine ? top : b;
         for (size_t j = 0; j < m; ++j) {
-          Val acc = pc->op == Op::Combine ? Val{pc->value[0], pc->value[1], pc->value[2], pc->value[3]} : b[j];
+          Val acc = pc->op == Op::Combine
+                        ? Val{pc->value[0], pc->value[1], pc->value[2], pc->value[3]}
+                        : b[j];
           for (uint32_t k = 0; k < pc->count; ++k) {
             Val v;
             if (!lane_load(l[k], nodes[j], v)) return false;
@@ -221,11 +243,21 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         binary([w](const Val& x, const Val& y) { return ops::add(x, ops::scale(y, w)); });
         break;
       }
-      case Op::Neg: unary([](const Val& x) { return ops::neg(x); }); break;
-      case Op::Add: binary([](const Val& x, const Val& y) { return ops::add(x, y); }); break;
-      case Op::Sub: binary([](const Val& x, const Val& y) { return ops::sub(x, y); }); break;
-      case Op::ScaleLeft: binary([](const Val& x, const Val& y) { return ops::scale(y, x.x); }); break;
-      case Op::ScaleRight: binary([](const Val& x, const Val& y) { return ops::scale(x, y.x); }); break;
+      case Op::Neg:
+        unary([](const Val& x) { return ops::neg(x); });
+        break;
+      case Op::Add:
+        binary([](const Val& x, const Val& y) { return ops::add(x, y); });
+        break;
+      case Op::Sub:
+        binary([](const Val& x, const Val& y) { return ops::sub(x, y); });
+        break;
+      case Op::ScaleLeft:
+        binary([](const Val& x, const Val& y) { return ops::scale(y, x.x); });
+        break;
+      case Op::ScaleRight:
+        binary([](const Val& x, const Val& y) { return ops::scale(x, y.x); });
+        break;
       case Op::Div:
         for (size_t j = 0; j < m; ++j) {
           if (b[j].x == 0.0) return false;
@@ -239,19 +271,33 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         sp -= 2;
         break;
       }
-      case Op::Cos: unary([](const Val& x) { return ops::cos(x); }); break;
-      case Op::Sin: unary([](const Val& x) { return ops::sin(x); }); break;
-      case Op::Abs: unary([](const Val& x) { return ops::abs(x); }); break;
+      case Op::Cos:
+        unary([](const Val& x) { return ops::cos(x); });
+        break;
+      case Op::Sin:
+        unary([](const Val& x) { return ops::sin(x); });
+        break;
+      case Op::Abs:
+        unary([](const Val& x) { return ops::abs(x); });
+        break;
       case Op::Sqrt:
         for (size_t j = 0; j < m; ++j) {
           if (b[j].x < 0) return false;
           b[j] = ops::sqrt(b[j]);
         }
         break;
-      case Op::Norm: unary([](const Val& x) { return ops::norm(x); }); break;
-      case Op::Clamp: unary([](const Val& x) { return ops::clamp(x); }); break;
-      case Op::Dot: binary([](const Val& x, const Val& y) { return ops::dot(x, y); }); break;
-      case Op::Cross: binary([](const Val& x, const Val& y) { return ops::cross(x, y); }); break;
+      case Op::Norm:
+        unary([](const Val& x) { return ops::norm(x); });
+        break;
+      case Op::Clamp:
+        unary([](const Val& x) { return ops::clamp(x); });
+        break;
+      case Op::Dot:
+        binary([](const Val& x, const Val& y) { return ops::dot(x, y); });
+        break;
+      case Op::Cross:
+        binary([](const Val& x, const Val& y) { return ops::cross(x, y); });
+        break;
       case Op::AggregateArgs: {
         const size_t n = pc->index;
         if (e.function == Function::Middle && n == 0) return false;
@@ -269,8 +315,8 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         const Instruction* const body = pc + 1;
         const bool one_instruction_body =
             arg.op == Expr::Op::Comprehension && pc->index == 1 &&
-            (body->op == Op::Constant ||
-             (body->op == Op::Load && loads_[body->index].variable && loads_[body->index].index == 0));
+            (body->op == Op::Constant || (body->op == Op::Load && loads_[body->index].variable &&
+                                          loads_[body->index].index == 0));
         const LaneMembers* lm = one_instruction_body ? &lane_members(arg, nodes, m) : nullptr;
         if (lm && lm->fast && body->op == Op::Constant) {
           const Val c{body->value[0], body->value[1], body->value[2], body->value[3]};
@@ -316,12 +362,14 @@ bool Evaluator::run_lanes(const Program& p, const Dart* nodes, size_t m, ValueTy
         pc = code_end - 1;
         break;
       }
-      default: return false;  // runs_in_lanes excludes the others
+      default:
+        return false;  // runs_in_lanes excludes the others
     }
   }
   const Val* const v = row(sp - 1);
   for (size_t j = 0; j < m; ++j)
-    if ((target == ValueType::Point && std::fabs(v[j].w - 1.0) > 1e-9) || (target == ValueType::Vector && std::fabs(v[j].w) > 1e-9))
+    if ((target == ValueType::Point && std::fabs(v[j].w - 1.0) > 1e-9) ||
+        (target == ValueType::Vector && std::fabs(v[j].w) > 1e-9))
       return false;
   for (size_t j = 0; j < m; ++j) out.push_back(to_storage(v[j]));
   return true;

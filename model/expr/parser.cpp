@@ -1,7 +1,7 @@
 #include "model/expr/parser.hpp"
 
-#include <cctype>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 
 #include "model/core/error.hpp"
@@ -45,7 +45,8 @@ class Parser {
 
   [[noreturn]] void fail(const std::string& msg, size_t at = SIZE_MAX) const {
     const size_t col = (at == SIZE_MAX ? pos_ : at) + 1;
-    throw Error(ErrorCode::Parse, msg, (where_.empty() ? "" : where_ + ", ") + "column " + std::to_string(col));
+    throw Error(ErrorCode::Parse, msg,
+                (where_.empty() ? "" : where_ + ", ") + "column " + std::to_string(col));
   }
   void skip() {
     while (pos_ < t_.size() && std::isspace(static_cast<unsigned char>(t_[pos_]))) ++pos_;
@@ -62,7 +63,9 @@ class Parser {
   void expect(char c, const char* what) {
     if (!accept(c)) fail(std::string("expected '") + c + "' " + what);
   }
-  static bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+  static bool ident_start(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+  }
   static bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
   std::string ident(const char* what) {
     skip();
@@ -89,16 +92,19 @@ class Parser {
   }
 
   // operand ((c1|c2) operand)*, left-associative: c1 makes op1, c2 makes op2.
-  std::unique_ptr<Expr> left_associative(std::unique_ptr<Expr> (Parser::*operand)(), char c1, Expr::Op op1, char c2,
-                                         Expr::Op op2) {
+  std::unique_ptr<Expr> left_associative(std::unique_ptr<Expr> (Parser::*operand)(), char c1,
+                                         Expr::Op op1, char c2, Expr::Op op2) {
     auto e = (this->*operand)();
     for (;;) {
       skip();
       const size_t at = pos_;
       Expr::Op op;
-      if (accept(c1)) op = op1;
-      else if (accept(c2)) op = op2;
-      else return e;
+      if (accept(c1))
+        op = op1;
+      else if (accept(c2))
+        op = op2;
+      else
+        return e;
       auto n = make(op, at);
       n->column = e->column;
       n->args.push_back(std::move(e));
@@ -107,9 +113,13 @@ class Parser {
     }
   }
   // sum := product (('+'|'-') product)*
-  std::unique_ptr<Expr> sum() { return left_associative(&Parser::product, '+', Expr::Op::Add, '-', Expr::Op::Sub); }
+  std::unique_ptr<Expr> sum() {
+    return left_associative(&Parser::product, '+', Expr::Op::Add, '-', Expr::Op::Sub);
+  }
   // product := unary (('*'|'/') unary)*
-  std::unique_ptr<Expr> product() { return left_associative(&Parser::unary, '*', Expr::Op::Mul, '/', Expr::Op::Div); }
+  std::unique_ptr<Expr> product() {
+    return left_associative(&Parser::unary, '*', Expr::Op::Mul, '/', Expr::Op::Div);
+  }
   std::unique_ptr<Expr> unary() {
     const NestingGuard guard(*this);
     skip();
@@ -158,7 +168,8 @@ class Parser {
     if (r.ec != std::errc()) fail("malformed number");
     pos_ = static_cast<size_t>(r.ptr - t_.data());
     // Java float/double suffixes (Jerboa code: 0.4f).
-    if (pos_ < t_.size() && (t_[pos_] == 'f' || t_[pos_] == 'd' || t_[pos_] == 'F' || t_[pos_] == 'D') &&
+    if (pos_ < t_.size() &&
+        (t_[pos_] == 'f' || t_[pos_] == 'd' || t_[pos_] == 'F' || t_[pos_] == 'D') &&
         (pos_ + 1 >= t_.size() || !ident_char(t_[pos_ + 1])))
       ++pos_;
     auto e = make(Expr::Op::Number, b);
@@ -180,7 +191,8 @@ class Parser {
     if (c == '<') {  // collect <o>_pi(ref)
       auto e = make(Expr::Op::Collect, at);
       e->orbit = orbit_type();
-      if (pos_ >= t_.size() || t_[pos_] != '_') fail("expected '_' and an embedding name after the orbit type");
+      if (pos_ >= t_.size() || t_[pos_] != '_')
+        fail("expected '_' and an embedding name after the orbit type");
       ++pos_;
       e->name = ident("an embedding name");
       expect('(', "after the collected embedding");
@@ -229,7 +241,8 @@ class Parser {
       e->args.push_back(sum());
       skip();
       const size_t kw = pos_;
-      if (pos_ >= t_.size() || !ident_start(t_[pos_]) || ident("'in'") != "in") fail("expected 'in' after the let value", kw);
+      if (pos_ >= t_.size() || !ident_start(t_[pos_]) || ident("'in'") != "in")
+        fail("expected 'in' after the let value", kw);
       e->args.push_back(sum());
       return e;
     }

@@ -44,7 +44,9 @@ class Compiler {
   void emit_plain(const Expr& e) {
     const size_t start = p_.code.size();
     switch (e.op) {
-      case Expr::Op::Number: push(constant(e, {e.number, 0, 0, 0})); return;
+      case Expr::Op::Number:
+        push(constant(e, {e.number, 0, 0, 0}));
+        return;
       case Expr::Op::Constant:
         if (e.let_index >= 0) {
           push(simple(Op::LetGet, e, static_cast<uint32_t>(e.let_index)));
@@ -67,19 +69,32 @@ class Compiler {
         }
         return;
       case Expr::Op::Collect:
-      case Expr::Op::Comprehension: break;  // only under an aggregate (type checker)
-      case Expr::Op::Call: break;
+      case Expr::Op::Comprehension:
+        break;  // only under an aggregate (type checker)
+      case Expr::Op::Call:
+        break;
       default:
         if (fuse_ && combination(e)) return;
         break;
     }
     switch (e.op) {
-      case Expr::Op::Neg: unary(e, Op::Neg, start); return;
-      case Expr::Op::Add: binary(e, Op::Add, start); return;
-      case Expr::Op::Sub: binary(e, Op::Sub, start); return;
-      case Expr::Op::Mul: binary(e, e.args[0]->type.kind == K::Scalar ? Op::ScaleLeft : Op::ScaleRight, start); return;
-      case Expr::Op::Div: binary(e, Op::Div, start); return;
-      default: break;
+      case Expr::Op::Neg:
+        unary(e, Op::Neg, start);
+        return;
+      case Expr::Op::Add:
+        binary(e, Op::Add, start);
+        return;
+      case Expr::Op::Sub:
+        binary(e, Op::Sub, start);
+        return;
+      case Expr::Op::Mul:
+        binary(e, e.args[0]->type.kind == K::Scalar ? Op::ScaleLeft : Op::ScaleRight, start);
+        return;
+      case Expr::Op::Div:
+        binary(e, Op::Div, start);
+        return;
+      default:
+        break;
     }
     switch (e.function) {
       case Function::Point:
@@ -96,17 +111,35 @@ class Compiler {
           return;
         }
         for (const auto& a : e.args) emit(*a);
-        finish(e, simple(Op::AggregateArgs, e, static_cast<uint32_t>(e.args.size())), e.args.size(), start);
+        finish(e, simple(Op::AggregateArgs, e, static_cast<uint32_t>(e.args.size())), e.args.size(),
+               start);
         return;
-      case Function::Cos: unary(e, Op::Cos, start); return;
-      case Function::Sin: unary(e, Op::Sin, start); return;
-      case Function::Abs: unary(e, Op::Abs, start); return;
-      case Function::Sqrt: unary(e, Op::Sqrt, start); return;
-      case Function::Norm: unary(e, Op::Norm, start); return;
-      case Function::Clamp: unary(e, Op::Clamp, start); return;
-      case Function::Dot: binary(e, Op::Dot, start); return;
-      case Function::Cross: binary(e, Op::Cross, start); return;
-      case Function::None: break;
+      case Function::Cos:
+        unary(e, Op::Cos, start);
+        return;
+      case Function::Sin:
+        unary(e, Op::Sin, start);
+        return;
+      case Function::Abs:
+        unary(e, Op::Abs, start);
+        return;
+      case Function::Sqrt:
+        unary(e, Op::Sqrt, start);
+        return;
+      case Function::Norm:
+        unary(e, Op::Norm, start);
+        return;
+      case Function::Clamp:
+        unary(e, Op::Clamp, start);
+        return;
+      case Function::Dot:
+        binary(e, Op::Dot, start);
+        return;
+      case Function::Cross:
+        binary(e, Op::Cross, start);
+        return;
+      case Function::None:
+        break;
     }
     push(simple(Op::Unknown, e));  // not for checked expressions; the run fails on it
   }
@@ -130,8 +163,9 @@ class Compiler {
   // An instruction that pops `n` values and pushes one; folded when its operands are constants
   // that the run would not reject (division by zero, square root of a negative number).
   void finish(const Expr& e, const Instruction& i, size_t n, size_t start) {
-    if (p_.code.size() - start == n && std::all_of(p_.code.begin() + static_cast<long>(start), p_.code.end(),
-                                                   [](const Instruction& x) { return x.op == Op::Constant; })) {
+    if (p_.code.size() - start == n &&
+        std::all_of(p_.code.begin() + static_cast<long>(start), p_.code.end(),
+                    [](const Instruction& x) { return x.op == Op::Constant; })) {
       Val v[3];
       for (size_t k = 0; k < n; ++k) v[k] = value_of(p_.code[start + k]);
       std::optional<Val> r = fold(e, i, v, n);
@@ -157,32 +191,46 @@ class Compiler {
   }
   static std::optional<Val> fold(const Expr& e, const Instruction& i, const Val* v, size_t n) {
     switch (i.op) {
-      case Op::Neg: return ops::neg(v[0]);
-      case Op::Add: return ops::add(v[0], v[1]);
-      case Op::Sub: return ops::sub(v[0], v[1]);
-      case Op::ScaleLeft: return ops::scale(v[1], v[0].x);
-      case Op::ScaleRight: return ops::scale(v[0], v[1].x);
+      case Op::Neg:
+        return ops::neg(v[0]);
+      case Op::Add:
+        return ops::add(v[0], v[1]);
+      case Op::Sub:
+        return ops::sub(v[0], v[1]);
+      case Op::ScaleLeft:
+        return ops::scale(v[1], v[0].x);
+      case Op::ScaleRight:
+        return ops::scale(v[0], v[1].x);
       case Op::Div:
         if (v[1].x == 0.0) return std::nullopt;
         return ops::divide(v[0], v[1].x);
-      case Op::Make: return ops::make(e.function, v[0], v[1], v[2]);
-      case Op::Cos: return ops::cos(v[0]);
-      case Op::Sin: return ops::sin(v[0]);
-      case Op::Abs: return ops::abs(v[0]);
+      case Op::Make:
+        return ops::make(e.function, v[0], v[1], v[2]);
+      case Op::Cos:
+        return ops::cos(v[0]);
+      case Op::Sin:
+        return ops::sin(v[0]);
+      case Op::Abs:
+        return ops::abs(v[0]);
       case Op::Sqrt:
         if (v[0].x < 0) return std::nullopt;
         return ops::sqrt(v[0]);
-      case Op::Norm: return ops::norm(v[0]);
-      case Op::Clamp: return ops::clamp(v[0]);
-      case Op::Dot: return ops::dot(v[0], v[1]);
-      case Op::Cross: return ops::cross(v[0], v[1]);
+      case Op::Norm:
+        return ops::norm(v[0]);
+      case Op::Clamp:
+        return ops::clamp(v[0]);
+      case Op::Dot:
+        return ops::dot(v[0], v[1]);
+      case Op::Cross:
+        return ops::cross(v[0], v[1]);
       case Op::AggregateArgs: {
         if (n == 0 && e.function == Function::Middle) return std::nullopt;
         Val acc;
         for (size_t k = 0; k < n; ++k) acc = ops::add(acc, v[k]);
         return ops::finish_aggregate(e.function, acc, n);
       }
-      default: return std::nullopt;
+      default:
+        return std::nullopt;
     }
   }
   // The multiset's members are enumerated by the evaluator; a comprehension's or a walk's body is
@@ -242,7 +290,9 @@ class Compiler {
         decompose(*e.args[0], w, terms, offset);
         decompose(*e.args[1], -w, terms, offset);
         return;
-      case Expr::Op::Neg: decompose(*e.args[0], -w, terms, offset); return;
+      case Expr::Op::Neg:
+        decompose(*e.args[0], -w, terms, offset);
+        return;
       case Expr::Op::Mul:
         if (e.args[0]->type.kind == K::Scalar)
           if (const std::optional<Val> k = constant_of(*e.args[0])) {
@@ -267,7 +317,8 @@ class Compiler {
           return;
         }
         break;
-      default: break;
+      default:
+        break;
     }
     terms.push_back({w, &e, false});
   }
@@ -279,13 +330,16 @@ class Compiler {
     std::vector<Term> terms;
     Val offset;
     decompose(e, 1.0, terms, offset);
-    if (std::count_if(terms.begin(), terms.end(), [](const Term& t) { return t.load; }) < 2) return false;
+    if (std::count_if(terms.begin(), terms.end(), [](const Term& t) { return t.load; }) < 2)
+      return false;
     p_.fused = true;
     for (size_t k = 0; k < terms.size();) {
       const bool first = k == 0;
       if (terms[k].load) {
-        Instruction i = simple(first ? Op::Combine : Op::CombineLoads, e, static_cast<uint32_t>(p_.loads.size()));
-        for (; k < terms.size() && terms[k].load; ++k) p_.loads.push_back(load_of(*terms[k].e, terms[k].weight));
+        Instruction i = simple(first ? Op::Combine : Op::CombineLoads, e,
+                               static_cast<uint32_t>(p_.loads.size()));
+        for (; k < terms.size() && terms[k].load; ++k)
+          p_.loads.push_back(load_of(*terms[k].e, terms[k].weight));
         i.count = static_cast<uint32_t>(p_.loads.size() - i.index);
         if (first) {
           const Instruction c = constant(e, offset);
@@ -311,11 +365,13 @@ class Compiler {
     switch (e.op) {
       case Expr::Op::Value:
       case Expr::Op::Collect:
-      case Expr::Op::Comprehension: return false;
+      case Expr::Op::Comprehension:
+        return false;
       case Expr::Op::Call:
         if (e.function == Function::None) return false;
         break;
-      default: break;
+      default:
+        break;
     }
     return std::all_of(e.args.begin(), e.args.end(), [](const auto& a) { return dart_free(*a); });
   }

@@ -49,23 +49,33 @@ struct LoadRef {
 
 struct Instruction {
   enum class Op : uint8_t {
-    Constant,       // push value
-    LetGet,         // push the let variable `index`
-    LetBind,        // pop into a new let variable
-    LetDrop,        // drop the innermost let variable
-    Value,          // push the embedding value at the referenced dart (expr->ref)
-    Load,           // push the value of loads[index]
-    Combine,        // push offset (value) + sum of weight * value over loads[index, index + count)
-    CombineLoads,   // top += sum of weight * value over loads[index, index + count)
-    Accumulate,     // pop v; top += value[0] * v
-    Neg, Add, Sub,
-    ScaleLeft,      // scalar * value (the scalar pushed first)
-    ScaleRight,     // value * scalar
-    Div,            // value / scalar
-    Make,           // point, vector or colour of three scalars (expr->function)
-    Cos, Sin, Abs, Sqrt, Dot, Cross, Norm, Clamp,
+    Constant,      // push value
+    LetGet,        // push the let variable `index`
+    LetBind,       // pop into a new let variable
+    LetDrop,       // drop the innermost let variable
+    Value,         // push the embedding value at the referenced dart (expr->ref)
+    Load,          // push the value of loads[index]
+    Combine,       // push offset (value) + sum of weight * value over loads[index, index + count)
+    CombineLoads,  // top += sum of weight * value over loads[index, index + count)
+    Accumulate,    // pop v; top += value[0] * v
+    Neg,
+    Add,
+    Sub,
+    ScaleLeft,   // scalar * value (the scalar pushed first)
+    ScaleRight,  // value * scalar
+    Div,         // value / scalar
+    Make,        // point, vector or colour of three scalars (expr->function)
+    Cos,
+    Sin,
+    Abs,
+    Sqrt,
+    Dot,
+    Cross,
+    Norm,
+    Clamp,
     AggregateArgs,  // middle/sum/count of the `index` values on top of the stack
-    AggregateSet,   // middle/sum/count of the multiset expr->args[0]; body: the next `index` instructions
+    AggregateSet,   // middle/sum/count of the multiset expr->args[0]; body: the next `index`
+                    // instructions
     Pure,           // a dart-free sub-expression of `index` instructions follows (see below)
     PureEnd,        // its end; `index`: its length
     Unknown,        // an unknown function (fails)
@@ -83,7 +93,7 @@ struct Program {
   std::vector<LoadRef> loads;  // Load, Combine, CombineLoads
   bool fused = false;          // has a fused combination (values equal the tree's up to rounding)
   uint64_t id = 0;             // unique per compile_program call (the evaluator's kept results)
-  size_t max_stack = 0;  // values on the stack at most, nested bodies included
+  size_t max_stack = 0;        // values on the stack at most, nested bodies included
 };
 
 // The program of a checked expression; nullopt when its stack would exceed `stack_limit` values

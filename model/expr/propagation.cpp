@@ -22,8 +22,10 @@ void unite(std::vector<uint32_t>& p, uint32_t a, uint32_t b) {
   a = find_root(p, a);
   b = find_root(p, b);
   if (a == b) return;
-  if (a < b) p[b] = a;
-  else p[a] = b;
+  if (a < b)
+    p[b] = a;
+  else
+    p[a] = b;
 }
 
 }  // namespace
@@ -40,7 +42,8 @@ bool same_value(const Vec3& a, const Vec3& b) {
 
 std::string text(const Vec3& v, int arity) {
   if (arity == 1) return std::to_string(v[0]);
-  return "(" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ")";
+  return "(" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) +
+         ")";
 }
 
 }  // namespace detail
@@ -62,9 +65,13 @@ void require_numeric_embeddings(const EmbeddedMap& m) {
       const std::string where = "embedding '" + f.name() + "', dart " + std::to_string(rep);
       int a = 0;
       if (numeric_value_problem(v, a))
-        throw Error(ErrorCode::Schema,
-                    "rule applications carry numeric embeddings only (a number or [x, y, z]); found " + v.dump(), where);
-      if (arity != 0 && a != arity) throw Error(ErrorCode::Schema, "the embedding mixes numbers and triples", where);
+        throw Error(
+            ErrorCode::Schema,
+            "rule applications carry numeric embeddings only (a number or [x, y, z]); found " +
+                v.dump(),
+            where);
+      if (arity != 0 && a != arity)
+        throw Error(ErrorCode::Schema, "the embedding mixes numbers and triples", where);
       arity = a;
     }
   }
@@ -72,7 +79,8 @@ void require_numeric_embeddings(const EmbeddedMap& m) {
 
 }  // namespace
 
-EmbeddingPropagation::EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m) : cs_(cs), m_(m) {
+EmbeddingPropagation::EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m)
+    : cs_(cs), m_(m) {
   require_numeric_embeddings(m);
   for (const auto& sig : cs.embeddings) {
     const int arity_wanted = arity(sig.type);
@@ -83,12 +91,13 @@ EmbeddingPropagation::EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap
     }
     if (!(f->orbit() == sig.orbit))
       throw Error(ErrorCode::Schema,
-                  "the rule declares '" + sig.name + "' on " + sig.orbit.str() + ", the map has it on " + f->orbit().str(),
+                  "the rule declares '" + sig.name + "' on " + sig.orbit.str() +
+                      ", the map has it on " + f->orbit().str(),
                   "embedding " + sig.name);
     if (f->values.num_values() > 0 && f->arity != arity_wanted)
       throw Error(ErrorCode::Schema,
-                  "the rule declares '" + sig.name + "' as " + to_string(sig.type) + " values, the map holds " +
-                      (f->arity == 1 ? "numbers" : "triples"),
+                  "the rule declares '" + sig.name + "' as " + to_string(sig.type) +
+                      " values, the map holds " + (f->arity == 1 ? "numbers" : "triples"),
                   "embedding " + sig.name);
     f->arity = arity_wanted;
     field_of_decl_.push_back(static_cast<int>(f - m.fields.data()));
@@ -96,7 +105,8 @@ EmbeddingPropagation::EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap
   for (const auto& f : m.fields) require_orbit_type(m.map, f.orbit());
 }
 
-void EmbeddingPropagation::report(std::string code, const EmbeddingField& f, Dart d, std::string message) {
+void EmbeddingPropagation::report(std::string code, const EmbeddingField& f, Dart d,
+                                  std::string message) {
   ++issue_count_;
   if (issues_.size() < 100) issues_.push_back({std::move(code), f.name(), d, std::move(message)});
 }
@@ -107,7 +117,8 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::SchemeAppl
   const size_t sz = O.size(), nr = s.right.size(), nl = s.left.size();
   pending_.assign(m_.fields.size(), {});
   std::vector<const EmbeddingField*> fields;
-  for (int fi : field_of_decl_) fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
+  for (int fi : field_of_decl_)
+    fields.push_back(fi < 0 ? nullptr : &m_.fields[static_cast<size_t>(fi)]);
   Evaluator ev(g, cs_.embeddings, fields);
   // An application covering much of the map reads the same collects from many places.
   ev.memoise_collects(sz * 8 >= g.capacity());
@@ -123,7 +134,8 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::SchemeAppl
       for (size_t p = 0; p < label.size(); ++p)
         if (label[p] != OrbitType::kHole && (mask >> label[p] & 1u))
           for (uint32_t b = 0; b < sz; ++b)
-            unite(parent_, static_cast<uint32_t>(v * sz + b), static_cast<uint32_t>(v * sz + O.neighbor(b, p)));
+            unite(parent_, static_cast<uint32_t>(v * sz + b),
+                  static_cast<uint32_t>(v * sz + O.neighbor(b, p)));
     }
     for (const auto& a : s.right.arcs)
       if (mask >> a.dim & 1u)
@@ -137,7 +149,8 @@ void EmbeddingPropagation::before_rewrite(const Map& g, const scheme::SchemeAppl
     for (uint32_t v = 0; v < nr; ++v) {
       const auto& x = cs_.right[e][v];
       if (!x) continue;
-      const std::string where = "rule " + s.name + ", R node " + s.right.nodes[v].name + ", embedding " + cs_.embeddings[e].name;
+      const std::string where = "rule " + s.name + ", R node " + s.right.nodes[v].name +
+                                ", embedding " + cs_.embeddings[e].name;
       for (uint32_t b = 0; b < sz; ++b) {
         const uint32_t r = find_root(parent_, static_cast<uint32_t>(v * sz + b));
         if (done[r]) continue;
@@ -162,7 +175,8 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::SchemeAppli
     // Added darts start without value (their indices may be reused ones).
     for (uint32_t v = 0; v < nr; ++v)
       if (!s.left_of(v))
-        for (uint32_t b = 0; b < sz; ++b) E.set_slot(g, app.comatch[v * sz + b], Embedding<Vec3>::kNoValue);
+        for (uint32_t b = 0; b < sz; ++b)
+          E.set_slot(g, app.comatch[v * sz + b], Embedding<Vec3>::kNoValue);
     ScopedMarker vis(g);
     touched_.clear();
     touched_all_ = false;
@@ -186,8 +200,8 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::SchemeAppli
         const Vec3& old = E.get(x);
         if (!same_value(old, p.value))
           report("E-overlap", f, x,
-                 "the orbit receives two values, " + text(old, f.arity) + " and " + text(p.value, f.arity) +
-                     " (from R node " + s.right.nodes[p.v].name + ")");
+                 "the orbit receives two values, " + text(old, f.arity) + " and " +
+                     text(p.value, f.arity) + " (from R node " + s.right.nodes[p.v].name + ")");
         continue;
       }
       const uint32_t slot = E.add_value(p.value);
@@ -213,7 +227,8 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::SchemeAppli
         } else if (sy != slot && !reported && !same_value(E.value(sy), E.value(slot))) {
           report("E-merge", f, y,
                  "the rewrite merges orbits of values " + text(E.value(slot), f.arity) + " and " +
-                     text(E.value(sy), f.arity) + " and no expression gives the merged orbit a value");
+                     text(E.value(sy), f.arity) +
+                     " and no expression gives the merged orbit a value");
           reported = true;
         }
       }
@@ -221,7 +236,9 @@ void EmbeddingPropagation::after_rewrite(const Map& g, const scheme::SchemeAppli
         // Reported when the map carries this embedding at all (a map without any value of it is
         // not embedded for it, and stays so).
         if (E.num_values() > 0)
-          report("E-no-value", f, x, "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
+          report(
+              "E-no-value", f, x,
+              "a new " + f.orbit().str() + "-orbit has no value: no expression, no preserved dart");
         continue;
       }
       // One slot for the whole orbit (the evaluator's collects rely on it, evaluator.hpp).

@@ -11,9 +11,10 @@
 // Problems are reported, not thrown (the map is already rewritten): an orbit that receives two
 // different values (E-overlap, thesis Def. 84, compared on values with a relative tolerance of
 // 1e-9), an orbit merging preserved darts of different values without an expression (E-merge), an
-// orbit of added darts without value (E-no-value). Embeddings of the map the scheme does not declare
-// are propagated by steps 2–3 only. A declared embedding the map lacks is left out (the map is not
-// embedded for it; expressions reading it from another embedding's expression fail at evaluation).
+// orbit of added darts without value (E-no-value). Embeddings of the map the scheme does not
+// declare are propagated by steps 2–3 only. A declared embedding the map lacks is left out (the map
+// is not embedded for it; expressions reading it from another embedding's expression fail at
+// evaluation).
 //
 // Whole components (model/scheme/component_rewrite.hpp: L is the hook alone, labelled with every
 // dimension): every link of the rewritten component comes from the instantiated R, so the classes
@@ -35,9 +36,9 @@
 #include <vector>
 
 #include "model/core/buffer_pool.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/component_view.hpp"
-#include "model/core/embedded_map.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/component_rewrite.hpp"
@@ -68,8 +69,10 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   // holds JSON values (rule applications carry numeric embeddings only).
   EmbeddingPropagation(const CompiledScheme& cs, EmbeddedMap& m);
 
-  void before_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
-  void after_rewrite(const Map& g, const scheme::SchemeApplication& app, const scheme::OrbitGraph& O) override;
+  void before_rewrite(const Map& g, const scheme::SchemeApplication& app,
+                      const scheme::OrbitGraph& O) override;
+  void after_rewrite(const Map& g, const scheme::SchemeApplication& app,
+                     const scheme::OrbitGraph& O) override;
   // The same for one whole component (component_propagation.cpp).
   void before_rewrite(const Map& g, const scheme::ComponentInstance& c) override;
   void after_rewrite(const Map& g, const scheme::ComponentInstance& c) override;
@@ -88,10 +91,10 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   // dimensions of the map before whose orbits are the B's, and the expression evaluated for it.
   struct ClassKind {
     std::vector<uint32_t> nodes;
-    DimMask dims = 0;                // as a set of dimensions of the map before
-    std::vector<size_t> positions;   // the same as positions of O (o[p] in dims)
-    int declaration = -1;            // the expression's embedding declaration, or -1 (inherited)
-    uint32_t expression_node = 0;    // its R node
+    DimMask dims = 0;                 // as a set of dimensions of the map before
+    std::vector<size_t> positions;    // the same as positions of O (o[p] in dims)
+    int declaration = -1;             // the expression's embedding declaration, or -1 (inherited)
+    uint32_t expression_node = 0;     // its R node
     ScratchTable<uint32_t> class_of;  // per orbit dart b: the class (computed before the rewrite)
     ScratchTable<uint32_t> first_b;   // per class: its first orbit dart
     // Kinds of two positions whose orbits an expression enumerates (listed): the orbit darts of
@@ -105,24 +108,24 @@ class EmbeddingPropagation : public scheme::ApplicationObserver, public scheme::
   };
   void derive_class_kinds();
   uint32_t label_classes(const Map& g, const scheme::ComponentInstance& c, ClassKind& k);
-  void evaluate_classes(Evaluator& ev, const Map& g, const scheme::ComponentInstance& c, const ClassKind& k,
-                        uint32_t count, bool on_view, const std::vector<const EmbeddingField*>& fields,
-                        std::vector<Vec3>& out);
-  void inherited_slots(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f, ClassKind& k,
-                       std::vector<uint32_t>& chosen);
+  void evaluate_classes(Evaluator& ev, const Map& g, const scheme::ComponentInstance& c,
+                        const ClassKind& k, uint32_t count, bool on_view,
+                        const std::vector<const EmbeddingField*>& fields, std::vector<Vec3>& out);
+  void inherited_slots(const Map& g, const scheme::ComponentInstance& c, EmbeddingField& f,
+                       ClassKind& k, std::vector<uint32_t>& chosen);
   std::vector<std::vector<ClassKind>> kinds_;  // per field, in order of expression node
   bool kinds_derived_ = false;
 
   const CompiledScheme& cs_;
   EmbeddedMap& m_;
-  std::vector<int> field_of_decl_;               // declaration -> field index
-  std::vector<std::vector<Pending>> pending_;    // per field
+  std::vector<int> field_of_decl_;             // declaration -> field index
+  std::vector<std::vector<Pending>> pending_;  // per field
   std::vector<PropagationIssue> issues_;
   size_t issue_count_ = 0, evaluations_ = 0;
   std::vector<uint32_t> parent_;
   std::vector<Dart> stack_, touched_, orbit_darts_;
   std::vector<std::vector<uint32_t>> chosen_;  // per kind without expression: its classes' slots
-  ComponentView view_;  // the component evaluated (whole components, component_view.hpp)
+  ComponentView view_;        // the component evaluated (whole components, component_view.hpp)
   bool touched_all_ = false;  // more darts marked than touched_ lists: clear the marker whole
 };
 

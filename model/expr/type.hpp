@@ -31,7 +31,9 @@ struct StaticType {
   std::optional<double> mass;      // of an affine value (or a multiset's elements), when known
   std::optional<double> constant;  // of a scalar, when known statically
 
-  static StaticType scalar(std::optional<double> c = {}) { return {Kind::Scalar, Kind::Scalar, {}, c}; }
+  static StaticType scalar(std::optional<double> c = {}) {
+    return {Kind::Scalar, Kind::Scalar, {}, c};
+  }
   static StaticType affine(std::optional<double> m) { return {Kind::Affine, Kind::Scalar, m, {}}; }
   static StaticType colour() { return {Kind::Colour, Kind::Scalar, {}, {}}; }
   static StaticType multiset(const StaticType& e) { return {Kind::Multiset, e.kind, e.mass, {}}; }

@@ -22,7 +22,8 @@ class Checker {
  private:
   [[noreturn]] void fail(const Expr& e, const std::string& msg) const { fail_at(e.column, msg); }
   [[noreturn]] void fail_at(size_t col, const std::string& msg) const {
-    throw Error(ErrorCode::Schema, msg, (c_.where.empty() ? "" : c_.where + ", ") + "column " + std::to_string(col));
+    throw Error(ErrorCode::Schema, msg,
+                (c_.where.empty() ? "" : c_.where + ", ") + "column " + std::to_string(col));
   }
 
   void resolve(NodeRef& r) {
@@ -35,9 +36,10 @@ class Checker {
     const auto it = std::find(c_.nodes.begin(), c_.nodes.end(), r.base);
     if (it == c_.nodes.end()) {
       if (std::find(c_.right_only.begin(), c_.right_only.end(), r.base) != c_.right_only.end())
-        fail_at(r.column, "node " + r.base +
-                              " is added by the rule: expressions read the object before the rewrite, "
-                              "through left nodes only");
+        fail_at(r.column,
+                "node " + r.base +
+                    " is added by the rule: expressions read the object before the rewrite, "
+                    "through left nodes only");
       fail_at(r.column, "unknown node " + r.base);
     }
     r.is_variable = false;
@@ -47,7 +49,8 @@ class Checker {
   void check_path(const NodeRef& r) const {
     for (int d : r.path)
       if (d < 0 || d > c_.dimension)
-        fail_at(r.column, "dimension " + std::to_string(d) + " outside 0.." + std::to_string(c_.dimension));
+        fail_at(r.column,
+                "dimension " + std::to_string(d) + " outside 0.." + std::to_string(c_.dimension));
   }
   void check_orbit(const Expr& e, const OrbitType& o) const {
     for (int d : o.dims())
@@ -60,14 +63,18 @@ class Checker {
       if (c_.embeddings[k].name == e.name) return static_cast<int>(k);
     std::string known;
     for (const auto& s : c_.embeddings) known += (known.empty() ? "" : ", ") + s.name;
-    fail(e, "unknown embedding '" + e.name + "' (declared: " + (known.empty() ? "none" : known) + ")");
+    fail(e,
+         "unknown embedding '" + e.name + "' (declared: " + (known.empty() ? "none" : known) + ")");
   }
 
   static bool is_value(const StaticType& t) { return t.kind != K::Multiset; }
 
   StaticType arith(Expr& e) {
     StaticType a = check(*e.args[0]), b = check(*e.args[1]);
-    const char* sym = e.op == Expr::Op::Add ? "+" : e.op == Expr::Op::Sub ? "-" : e.op == Expr::Op::Mul ? "*" : "/";
+    const char* sym = e.op == Expr::Op::Add   ? "+"
+                      : e.op == Expr::Op::Sub ? "-"
+                      : e.op == Expr::Op::Mul ? "*"
+                                              : "/";
     auto bad = [&]() -> StaticType {
       fail(e, std::string("no operator ") + a.str() + " " + sym + " " + b.str());
     };
@@ -76,7 +83,8 @@ class Checker {
       if (a.kind != b.kind) bad();
       if (a.kind == K::Scalar) {
         std::optional<double> c;
-        if (a.constant && b.constant) c = e.op == Expr::Op::Add ? *a.constant + *b.constant : *a.constant - *b.constant;
+        if (a.constant && b.constant)
+          c = e.op == Expr::Op::Add ? *a.constant + *b.constant : *a.constant - *b.constant;
         return StaticType::scalar(c);
       }
       if (a.kind == K::Colour) return StaticType::colour();
@@ -118,7 +126,8 @@ class Checker {
     if (f == "point") return Function::Point;
     if (f == "vector") return Function::Vector;
     if (f == "colour" || f == "color") return Function::Colour;
-    if (f == "middle" || f == "barycenter" || f == "barycentre" || f == "center" || f == "mix") return Function::Middle;
+    if (f == "middle" || f == "barycenter" || f == "barycentre" || f == "center" || f == "mix")
+      return Function::Middle;
     if (f == "sum") return Function::Sum;
     if (f == "count") return Function::Count;
     if (f == "cos") return Function::Cos;
@@ -139,11 +148,13 @@ class Checker {
     for (auto& a : e.args) t.push_back(check(*a));
     auto arity = [&](size_t n) {
       if (t.size() != n)
-        fail(e, f + " takes " + std::to_string(n) + " argument(s), " + std::to_string(t.size()) + " given");
+        fail(e, f + " takes " + std::to_string(n) + " argument(s), " + std::to_string(t.size()) +
+                    " given");
     };
     auto scalars = [&]() {
       for (size_t k = 0; k < t.size(); ++k)
-        if (t[k].kind != K::Scalar) fail(*e.args[k], f + " expects a scalar here, found " + t[k].str());
+        if (t[k].kind != K::Scalar)
+          fail(*e.args[k], f + " expects a scalar here, found " + t[k].str());
     };
     auto constant1 = [&](double (*fn)(double)) -> std::optional<double> {
       if (t[0].constant) return fn(*t[0].constant);
@@ -158,7 +169,8 @@ class Checker {
     }
     if (f == "middle" || f == "barycenter" || f == "barycentre" || f == "center" || f == "mix") {
       if (t.size() == 1) {
-        if (t[0].kind != K::Multiset) fail(e, f + " of one argument takes a multiset (a collect), found " + t[0].str());
+        if (t[0].kind != K::Multiset)
+          fail(e, f + " of one argument takes a multiset (a collect), found " + t[0].str());
         return t[0].element_type();
       }
       if (t.size() < 2) fail(e, f + " takes a multiset or at least two values");
@@ -167,8 +179,10 @@ class Checker {
           fail(*e.args[k], f + " mixes " + t[0].str() + " and " + t[k].str());
       if (t[0].kind == K::Affine) {
         std::optional<double> m = 0.0;
-        for (const auto& x : t) m = (m && x.mass) ? std::optional<double>(*m + *x.mass) : std::nullopt;
-        return StaticType::affine(m ? std::optional<double>(*m / static_cast<double>(t.size())) : std::nullopt);
+        for (const auto& x : t)
+          m = (m && x.mass) ? std::optional<double>(*m + *x.mass) : std::nullopt;
+        return StaticType::affine(m ? std::optional<double>(*m / static_cast<double>(t.size()))
+                                    : std::nullopt);
       }
       return t[0].kind == K::Scalar ? StaticType::scalar() : StaticType::colour();
     }
@@ -187,8 +201,8 @@ class Checker {
     if (f == "cos" || f == "sin" || f == "sqrt" || f == "abs") {
       arity(1);
       scalars();
-      double (*fn)(double) = f == "cos" ? static_cast<double (*)(double)>(std::cos)
-                             : f == "sin" ? static_cast<double (*)(double)>(std::sin)
+      double (*fn)(double) = f == "cos"    ? static_cast<double (*)(double)>(std::cos)
+                             : f == "sin"  ? static_cast<double (*)(double)>(std::sin)
                              : f == "sqrt" ? static_cast<double (*)(double)>(std::sqrt)
                                            : static_cast<double (*)(double)>(std::fabs);
       return StaticType::scalar(constant1(fn));
@@ -216,7 +230,8 @@ class Checker {
 
   StaticType infer(Expr& e) {
     switch (e.op) {
-      case Expr::Op::Number: return StaticType::scalar(e.number);
+      case Expr::Op::Number:
+        return StaticType::scalar(e.number);
       case Expr::Op::Constant:
         for (size_t k = lets_.size(); k-- > 0;)
           if (lets_[k].first == e.name) {
@@ -236,14 +251,16 @@ class Checker {
         e.embedding = embedding(e);
         e.orbit_mask = e.orbit.mask();
         e.class_mask = c_.embeddings[static_cast<size_t>(e.embedding)].orbit.mask();
-        return StaticType::multiset(StaticType::of(c_.embeddings[static_cast<size_t>(e.embedding)].type));
+        return StaticType::multiset(
+            StaticType::of(c_.embeddings[static_cast<size_t>(e.embedding)].type));
       }
       case Expr::Op::Comprehension: {
         check_orbit(e, e.orbit);
         check_orbit(e, e.classes);
         for (int d : e.word)
           if (d < 0 || d > c_.dimension)
-            fail(e, "dimension " + std::to_string(d) + " outside 0.." + std::to_string(c_.dimension));
+            fail(e,
+                 "dimension " + std::to_string(d) + " outside 0.." + std::to_string(c_.dimension));
         resolve(e.ref);
         e.orbit_mask = e.orbit.mask();
         e.class_mask = e.classes.mask();
@@ -252,10 +269,12 @@ class Checker {
         const StaticType body = check(*e.args[0]);
         if (!e.word.empty()) lets_.pop_back();
         vars_.pop_back();
-        if (!is_value(body)) fail(*e.args[0], "a comprehension's body must be a value, found " + body.str());
+        if (!is_value(body))
+          fail(*e.args[0], "a comprehension's body must be a value, found " + body.str());
         return StaticType::multiset(body);
       }
-      case Expr::Op::Call: return call(e);
+      case Expr::Op::Call:
+        return call(e);
       case Expr::Op::Let: {
         const StaticType v = check(*e.args[0]);
         if (!is_value(v)) fail(*e.args[0], "a let variable names a value, not a " + v.str());
@@ -267,14 +286,17 @@ class Checker {
       case Expr::Op::Neg: {
         const StaticType a = check(*e.args[0]);
         if (a.kind == K::Multiset) fail(e, "no operator -" + a.str());
-        if (a.kind == K::Scalar) return StaticType::scalar(a.constant ? std::optional<double>(-*a.constant) : std::nullopt);
+        if (a.kind == K::Scalar)
+          return StaticType::scalar(a.constant ? std::optional<double>(-*a.constant)
+                                               : std::nullopt);
         if (a.kind == K::Colour) return StaticType::colour();
         return StaticType::affine(a.mass ? std::optional<double>(-*a.mass) : std::nullopt);
       }
       case Expr::Op::Add:
       case Expr::Op::Sub:
       case Expr::Op::Mul:
-      case Expr::Op::Div: return arith(e);
+      case Expr::Op::Div:
+        return arith(e);
     }
     fail(e, "unknown expression");
   }
@@ -294,15 +316,17 @@ StaticType check_expression(Expr& e, const CheckContext& ctx, ValueType target) 
   if (ok && t.kind == K::Affine && t.mass) ok = std::fabs(*t.mass - *want.mass) < 1e-12;
   if (!ok)
     throw Error(ErrorCode::Schema,
-                std::string("the expression is ") + (t.str()[0] == 'a' ? "an " : "a ") + t.str() + ", the embedding holds " + to_string(target) + " values",
+                std::string("the expression is ") + (t.str()[0] == 'a' ? "an " : "a ") + t.str() +
+                    ", the embedding holds " + to_string(target) + " values",
                 (ctx.where.empty() ? "" : ctx.where + ", ") + "column " + std::to_string(e.column));
   return t;
 }
 
 const std::vector<std::string>& function_names() {
   static const std::vector<std::string> names = {
-      "point", "vector", "colour", "color", "middle", "barycenter", "barycentre", "center", "mix", "sum",
-      "count", "cos",    "sin",    "sqrt",  "abs",    "dot",        "cross",      "norm",   "clamp", "pi"};
+      "point",  "vector", "colour", "color", "middle", "barycenter", "barycentre",
+      "center", "mix",    "sum",    "count", "cos",    "sin",        "sqrt",
+      "abs",    "dot",    "cross",  "norm",  "clamp",  "pi"};
   return names;
 }
 

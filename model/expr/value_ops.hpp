@@ -35,14 +35,18 @@ namespace ops {
 inline Val sub(const Val& a, const Val& b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w}; }
 inline Val scale(const Val& a, double k) { return {a.x * k, a.y * k, a.z * k, a.w * k}; }
 inline Val neg(const Val& a) { return scale(a, -1.0); }
-inline Val divide(const Val& a, double k) { return scale(a, 1.0 / k); }  // k != 0 (checked by the caller)
+inline Val divide(const Val& a, double k) {
+  return scale(a, 1.0 / k);
+}  // k != 0 (checked by the caller)
 inline Val make(Function f, const Val& x, const Val& y, const Val& z) {
   return {x.x, y.x, z.x, f == Function::Point ? 1.0 : 0.0};
 }
 inline Val cos(const Val& a) { return {std::cos(a.x), 0, 0, 0}; }
 inline Val sin(const Val& a) { return {std::sin(a.x), 0, 0, 0}; }
 inline Val abs(const Val& a) { return {std::fabs(a.x), 0, 0, 0}; }
-inline Val sqrt(const Val& a) { return {std::sqrt(a.x), 0, 0, 0}; }  // a.x >= 0 (checked by the caller)
+inline Val sqrt(const Val& a) {
+  return {std::sqrt(a.x), 0, 0, 0};
+}  // a.x >= 0 (checked by the caller)
 inline Val dot(const Val& a, const Val& b) { return {a.x * b.x + a.y * b.y + a.z * b.z, 0, 0, 0}; }
 inline Val cross(const Val& a, const Val& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x, 0};

@@ -18,8 +18,8 @@ std::vector<uint32_t> indices(const std::vector<Node>& nodes) {
 
 std::string to_text(const ConstraintViolation& v, const DGraph& g) {
   std::string s = std::string(to_text(v.constraint)) + " " +
-                  condition_text(symbol(v.constraint), v.i, v.j) + " at node " + g.node_str(Node(v.at)) +
-                  ": " + v.message;
+                  condition_text(symbol(v.constraint), v.i, v.j) + " at node " +
+                  g.node_str(Node(v.at)) + ": " + v.message;
   if (!v.path.empty()) {
     s += " [path";
     for (uint32_t x : v.path) s += " " + g.node_str(Node(x));
@@ -94,7 +94,8 @@ std::vector<ConstraintViolation> check_cycle(const DGraph& g, Node v, int i, int
   if (dfs(v, 0)) return {};
   std::string l = std::to_string(i) + std::to_string(j);
   std::string what = longest.size() == 5 ? "no " + l + l + "-path from this node returns to it"
-                                         : "the " + l + l + "-path stops after " + std::to_string(longest.size() - 1) + " arcs";
+                                         : "the " + l + l + "-path stops after " +
+                                               std::to_string(longest.size() - 1) + " arcs";
   return {{.constraint = Constraint::Cycle,
            .at = v.index(),
            .i = i,

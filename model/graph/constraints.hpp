@@ -1,6 +1,7 @@
 // The three local constraints of the thesis on a D-graph (Defs. 29–31), checkable per node and per
-// label, each violation a ConstraintViolation located at a node (model/core/constraint_violation.hpp;
-// its message says what is wrong, its path holds the offending arcs' ends or ijij-path).
+// label, each violation a ConstraintViolation located at a node
+// (model/core/constraint_violation.hpp; its message says what is wrong, its path holds the
+// offending arcs' ends or ijij-path).
 //   I_G(i): v is the source of a unique i-arc and the target of a unique i-arc;
 //   O_G(i): every i-arc incident to v has a reverse;
 //   C_G(i,j): v is the source of an ijij-cycle.

@@ -13,8 +13,8 @@ Node DGraph::add_node(std::string name) {
 
 ArcId DGraph::add_arc(Node src, Node tgt, int label) {
   if (src.index() >= num_nodes() || tgt.index() >= num_nodes())
-    throw Error(ErrorCode::Range, "arc between unknown nodes " + std::to_string(src.index()) + " and " +
-                                      std::to_string(tgt.index()));
+    throw Error(ErrorCode::Range, "arc between unknown nodes " + std::to_string(src.index()) +
+                                      " and " + std::to_string(tgt.index()));
   const ArcId id(static_cast<uint32_t>(arcs_.size()));
   arcs_.push_back({src, tgt, label});
   arc_alive_.push_back(true);
@@ -101,7 +101,8 @@ Map to_map(const DGraph& dg, int n, MapKind kind) {
   }
   for (ArcId a : dg.arc_slots())
     if (dg.arc_alive(a) && !g.has_dim(dg.arc(a).label))
-      throw Error(ErrorCode::Range, "label " + std::to_string(dg.arc(a).label) + " outside the map's dimensions",
+      throw Error(ErrorCode::Range,
+                  "label " + std::to_string(dg.arc(a).label) + " outside the map's dimensions",
                   "arc " + dg.node_str(dg.arc(a).src) + " -> " + dg.node_str(dg.arc(a).tgt));
   return g;
 }

@@ -1,6 +1,6 @@
 // The status of a node or arc of a rule with respect to its interface L∩R (thesis §2.2 and
-// Def. 36 for concrete rules, Def. 46 for rule schemes), and the side of a rule an element lives on.
-// Shared by concrete rules (gmr::rewrite), rule schemes (gmr::scheme) and the checker.
+// Def. 36 for concrete rules, Def. 46 for rule schemes), and the side of a rule an element lives
+// on. Shared by concrete rules (gmr::rewrite), rule schemes (gmr::scheme) and the checker.
 #pragma once
 #include <cstdint>
 
@@ -11,9 +11,12 @@ enum class ElemStatus : uint8_t { Preserved, Deleted, Added };
 
 inline const char* to_string(ElemStatus s) {
   switch (s) {
-    case ElemStatus::Preserved: return "preserved";
-    case ElemStatus::Deleted: return "deleted";
-    case ElemStatus::Added: return "added";
+    case ElemStatus::Preserved:
+      return "preserved";
+    case ElemStatus::Deleted:
+      return "deleted";
+    case ElemStatus::Added:
+      return "added";
   }
   return "?";
 }

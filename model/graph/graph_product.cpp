@@ -11,7 +11,9 @@ namespace {
 
 size_t index_of(const Alphabet& sigma, int i, const char* where) {
   const auto it = std::find(sigma.begin(), sigma.end(), i);
-  if (it == sigma.end()) throw Error(ErrorCode::Schema, "label " + std::to_string(i) + " is not in the alphabet Σ", where);
+  if (it == sigma.end())
+    throw Error(ErrorCode::Schema, "label " + std::to_string(i) + " is not in the alphabet Σ",
+                where);
   return static_cast<size_t>(it - sigma.begin());
 }
 
@@ -57,7 +59,9 @@ DGraph delta(const Alphabet& sigma, int i) {
   return terminal(rest);
 }
 
-DGraph delete_arcs(const DGraph& P, const Alphabet& sigma, int i) { return product(P, delta(sigma, i), sigma); }
+DGraph delete_arcs(const DGraph& P, const Alphabet& sigma, int i) {
+  return product(P, delta(sigma, i), sigma);
+}
 
 int pair_label(const Alphabet& sigma, int i, int j) {
   return static_cast<int>(index_of(sigma, i, "pair") * sigma.size() + index_of(sigma, j, "pair"));
@@ -65,7 +69,8 @@ int pair_label(const Alphabet& sigma, int i, int j) {
 
 std::pair<int, int> label_pair(const Alphabet& sigma, int code) {
   const size_t k = sigma.size();
-  if (code < 0 || static_cast<size_t>(code) >= k * k) throw Error(ErrorCode::Range, "not a pair label: " + std::to_string(code), "pair");
+  if (code < 0 || static_cast<size_t>(code) >= k * k)
+    throw Error(ErrorCode::Range, "not a pair label: " + std::to_string(code), "pair");
   return {sigma[static_cast<size_t>(code) / k], sigma[static_cast<size_t>(code) % k]};
 }
 
@@ -91,7 +96,8 @@ DGraph relabeling_graph(const Alphabet& sigma, const Relabeling& rel) {
   for (size_t k = 0; k < rel.size(); ++k)
     for (size_t l = k + 1; l < rel.size(); ++l)
       if (rel[k].first == rel[l].first)
-        throw Error(ErrorCode::Schema, "relabeling gives two images to " + std::to_string(rel[k].first), "ℜ");
+        throw Error(ErrorCode::Schema,
+                    "relabeling gives two images to " + std::to_string(rel[k].first), "ℜ");
   DGraph g;
   const Node v = g.add_node("*");
   for (auto [i, j] : rel) g.add_arc(v, v, pair_label(sigma, i, j));
@@ -99,7 +105,9 @@ DGraph relabeling_graph(const Alphabet& sigma, const Relabeling& rel) {
 }
 
 DGraph project_second(const DGraph& G, const Alphabet& sigma) {
-  return map_arcs(G, [&](DGraph& out, const Arc& a) { out.add_arc(a.src, a.tgt, label_pair(sigma, a.label).second); });
+  return map_arcs(G, [&](DGraph& out, const Arc& a) {
+    out.add_arc(a.src, a.tgt, label_pair(sigma, a.label).second);
+  });
 }
 
 DGraph relabel_literal(const DGraph& P, const Alphabet& sigma, const Relabeling& rel) {

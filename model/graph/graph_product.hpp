@@ -19,7 +19,7 @@
 
 namespace gmr::graph {
 
-using Alphabet = std::vector<int>;                  // Σ, distinct labels
+using Alphabet = std::vector<int>;                    // Σ, distinct labels
 using Relabeling = std::vector<std::pair<int, int>>;  // ℜ ⊆ Σ²
 
 // P ×_Σ Π. Throws Error(Schema) when an arc label of P or Π is not in Σ (an empty Σ accepts every

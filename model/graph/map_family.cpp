@@ -14,7 +14,8 @@ std::vector<Map> connected_maps(int n, MapKind kind, size_t k) {
   if (k == 0) return {};
   const MapSpec spec{n, kind};
   const int lo = spec.lowest_dim();
-  if (n < lo || n >= kMaxDim) throw Error(ErrorCode::Range, "dimension out of range", "n=" + std::to_string(n));
+  if (n < lo || n >= kMaxDim)
+    throw Error(ErrorCode::Range, "dimension out of range", "n=" + std::to_string(n));
   const auto inv = involutions(k);
   const auto perm = kind == MapKind::OMap ? permutations(k) : std::vector<DartPermutation>{};
   std::vector<const DartPermutation*> chosen(static_cast<size_t>(n + 1), nullptr);
@@ -74,7 +75,8 @@ MapFamily map_family(int n, MapKind kind, size_t max_darts) {
       }
   };
   rec(0, 1, 0);
-  std::stable_sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(all.begin(), all.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [s, g] : all) {
     f.graphs.push_back(to_dgraph(g));
     f.maps.push_back(std::move(g));

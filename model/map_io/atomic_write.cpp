@@ -68,7 +68,8 @@ class PendingTemporary {
 
 // Creates "<dir>/.<name>.tmp.<pid>.<k>" with O_EXCL (mode 0666 before umask, like a plain
 // ofstream), retrying on a name clash.
-int create_temp(const std::filesystem::path& path, std::filesystem::path& tmp, PendingTemporary& pending) {
+int create_temp(const std::filesystem::path& path, std::filesystem::path& tmp,
+                PendingTemporary& pending) {
   static std::atomic<unsigned> counter{0};
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
   for (int attempt = 0; attempt < 100; ++attempt) {
@@ -79,12 +80,13 @@ int create_temp(const std::filesystem::path& path, std::filesystem::path& tmp, P
     if (fd >= 0) return fd;
     pending.disarm();
     if (errno != EEXIST)
-      throw Error(ErrorCode::Io, "cannot create a temporary file in " + dir.string() + ": " + errno_text(errno),
+      throw Error(ErrorCode::Io,
+                  "cannot create a temporary file in " + dir.string() + ": " + errno_text(errno),
                   path.string());
   }
-  throw Error(ErrorCode::Io, "cannot find a free temporary file name in " + dir.string(), path.string());
+  throw Error(ErrorCode::Io, "cannot find a free temporary file name in " + dir.string(),
+              path.string());
 }
-
 
 // Writes all of `content` to `fd`; false with errno set on failure.
 bool write_all(int fd, std::string_view content) {
@@ -106,13 +108,15 @@ bool write_all(int fd, std::string_view content) {
 // place, since renaming over it would replace the special file by a regular one.
 void write_special(const std::filesystem::path& path, std::string_view content) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) throw Error(ErrorCode::Io, "cannot open for writing: " + errno_text(errno), path.string());
+  if (fd < 0)
+    throw Error(ErrorCode::Io, "cannot open for writing: " + errno_text(errno), path.string());
   if (!write_all(fd, content)) {
     const int err = errno;
     ::close(fd);
     throw Error(ErrorCode::Io, "write failed: " + errno_text(err), path.string());
   }
-  if (::close(fd) != 0) throw Error(ErrorCode::Io, "close failed: " + errno_text(errno), path.string());
+  if (::close(fd) != 0)
+    throw Error(ErrorCode::Io, "close failed: " + errno_text(errno), path.string());
 }
 
 // The file a write to `path` lands in: symbolic links are followed (the link stays a link and
@@ -123,7 +127,8 @@ std::filesystem::path resolve_links(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::is_symlink(std::filesystem::symlink_status(p, ec))) return p;
     const std::filesystem::path target = std::filesystem::read_symlink(p, ec);
-    if (ec) throw Error(ErrorCode::Io, "cannot read the symbolic link: " + ec.message(), path.string());
+    if (ec)
+      throw Error(ErrorCode::Io, "cannot read the symbolic link: " + ec.message(), path.string());
     p = target.is_absolute() ? target : p.parent_path() / target;
   }
   throw Error(ErrorCode::Io, "too many levels of symbolic links", path.string());
@@ -139,10 +144,12 @@ void remove_temporaries_on_signal() {
 void write_file_atomic(const std::filesystem::path& requested, std::string_view content) {
   if (requested.empty()) throw Error(ErrorCode::Io, "empty output path");
   const std::filesystem::path path = resolve_links(requested);
-  if (!path.has_filename()) throw Error(ErrorCode::Io, "output path names a directory", requested.string());
+  if (!path.has_filename())
+    throw Error(ErrorCode::Io, "output path names a directory", requested.string());
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) {
-    if (S_ISDIR(st.st_mode)) throw Error(ErrorCode::Io, "output path names a directory", requested.string());
+    if (S_ISDIR(st.st_mode))
+      throw Error(ErrorCode::Io, "output path names a directory", requested.string());
     if (!S_ISREG(st.st_mode)) return write_special(path, content);
   }
   std::filesystem::path tmp;
@@ -163,7 +170,8 @@ void write_file_atomic(const std::filesystem::path& requested, std::string_view 
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());
-    throw Error(ErrorCode::Io, "cannot rename the temporary file into place: " + errno_text(err), requested.string());
+    throw Error(ErrorCode::Io, "cannot rename the temporary file into place: " + errno_text(err),
+                requested.string());
   }
 }
 

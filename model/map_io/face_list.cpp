@@ -12,11 +12,13 @@ namespace gmr::io {
 
 FaceList face_list_from_map(const Map& g, const PositionEmbedding& pos) {
   if (g.is_omap() || g.dimension() != 2)
-    throw Error(ErrorCode::Usage, std::string("a face list needs a 2-G-map, not a ") + std::to_string(g.dimension()) +
-                                      "-" + (g.is_omap() ? "O-map" : "G-map"));
+    throw Error(ErrorCode::Usage, std::string("a face list needs a 2-G-map, not a ") +
+                                      std::to_string(g.dimension()) + "-" +
+                                      (g.is_omap() ? "O-map" : "G-map"));
   const ValidityReport report = check_validity(g, 1);
   if (!report.ok())
-    throw Error(ErrorCode::InvalidMap, "the map is not a valid 2-G-map: " + to_text(report.violations.front()),
+    throw Error(ErrorCode::InvalidMap,
+                "the map is not a valid 2-G-map: " + to_text(report.violations.front()),
                 "dart " + std::to_string(report.violations.front().at));
   FaceList fl;
   const Dart cap = g.capacity();
@@ -62,15 +64,18 @@ FaceList face_list_from_map(const Map& g, const PositionEmbedding& pos) {
       d = g.alpha(1, e);
     } while (d != start);
     if (face.size() < 3)
-      throw Error(ErrorCode::Schema, "face with " + std::to_string(face.size()) + " side(s); a polygon needs at least 3",
-                  "dart " + std::to_string(rep));
+      throw Error(
+          ErrorCode::Schema,
+          "face with " + std::to_string(face.size()) + " side(s); a polygon needs at least 3",
+          "dart " + std::to_string(rep));
     // Faithfulness: a face list names vertices, so a face through one vertex twice, or two edges
     // joining the same two vertices, would be read back as another map (found by the OFF round-
     // trip property, proptests/model_prop.cpp). Refused instead of written wrong.
     std::vector<uint32_t> sorted = face;
     std::sort(sorted.begin(), sorted.end());
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-      throw Error(ErrorCode::NonManifold, "a face passes twice through one vertex; a face list cannot describe it",
+      throw Error(ErrorCode::NonManifold,
+                  "a face passes twice through one vertex; a face list cannot describe it",
                   "dart " + std::to_string(rep));
     fl.faces.push_back(std::move(face));
   }
@@ -81,8 +86,8 @@ FaceList face_list_from_map(const Map& g, const PositionEmbedding& pos) {
     const auto [it, fresh] = edge_of.emplace(std::minmax(a, b), rep);
     if (!fresh)
       throw Error(ErrorCode::NonManifold,
-                  "two edges join the same two vertices (darts " + std::to_string(it->second) + " and " +
-                      std::to_string(rep) + "); a face list would merge them",
+                  "two edges join the same two vertices (darts " + std::to_string(it->second) +
+                      " and " + std::to_string(rep) + "); a face list would merge them",
                   "dart " + std::to_string(rep));
   }
   fl.num_edges = count_orbits(g, OrbitType{0, 2});
@@ -98,14 +103,17 @@ EmbeddedMap map_from_face_list(const FaceList& fl, const SurfaceOptions& opt) {
   return m;
 }
 
-EmbeddedMap map_from_file_faces(const FaceList& fl, const FaceLines& file, const SurfaceOptions& opt) {
+EmbeddedMap map_from_file_faces(const FaceList& fl, const FaceLines& file,
+                                const SurfaceOptions& opt) {
   uint64_t darts = 0;  // two darts per face corner
   for (const auto& face : fl.faces) darts += 2 * face.size();
   check_dart_limit(darts, file.source);
   const std::string& source = file.source;
   const std::vector<size_t>& face_lines = file.face_lines;
   const std::vector<size_t>& vertex_lines = file.vertex_lines;
-  auto where = [&](size_t line) { return (source.empty() ? "line " : source + ":") + std::to_string(line); };
+  auto where = [&](size_t line) {
+    return (source.empty() ? "line " : source + ":") + std::to_string(line);
+  };
   try {
     return map_from_face_list(fl, opt);
   } catch (const Error& e) {
@@ -113,7 +121,8 @@ EmbeddedMap map_from_file_faces(const FaceList& fl, const FaceLines& file, const
     unsigned long u = 0, v = 0;
     int used = 0;
     const std::string& loc = e.location();
-    if (std::sscanf(loc.c_str(), "edge (%lu,%lu)%n", &u, &v, &used) == 2 && used == static_cast<int>(loc.size())) {
+    if (std::sscanf(loc.c_str(), "edge (%lu,%lu)%n", &u, &v, &used) == 2 &&
+        used == static_cast<int>(loc.size())) {
       std::vector<size_t> lines;
       for (size_t f = 0; f < fl.faces.size(); ++f) {
         const auto& face = fl.faces[f];
@@ -130,11 +139,11 @@ EmbeddedMap map_from_file_faces(const FaceList& fl, const FaceLines& file, const
       const size_t at = lines.size() > 2 ? lines[2] : (lines.empty() ? 1 : lines.back());
       throw Error(e.code(), e.message() + " on " + loc + ", faces at lines " + list, where(at));
     }
-    if (std::sscanf(loc.c_str(), "vertex %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
-        u < vertex_lines.size())
+    if (std::sscanf(loc.c_str(), "vertex %lu%n", &u, &used) == 1 &&
+        used == static_cast<int>(loc.size()) && u < vertex_lines.size())
       throw Error(e.code(), e.message() + " (" + loc + ")", where(vertex_lines[u]));
-    if (std::sscanf(loc.c_str(), "face %lu%n", &u, &used) == 1 && used == static_cast<int>(loc.size()) &&
-        u < face_lines.size())
+    if (std::sscanf(loc.c_str(), "face %lu%n", &u, &used) == 1 &&
+        used == static_cast<int>(loc.size()) && u < face_lines.size())
       throw Error(e.code(), e.message(), where(face_lines[u]));
     throw Error(e.code(), e.message(), source.empty() ? loc : source + ": " + loc);
   }

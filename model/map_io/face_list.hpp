@@ -49,6 +49,7 @@ struct FaceLines {
 // map_from_face_list for a face list read from a file (OFF, OBJ): the builder's errors are
 // located "<source>:<line>" at the offending face or vertex, a non-manifold edge naming the lines
 // of all its faces.
-EmbeddedMap map_from_file_faces(const FaceList& fl, const FaceLines& file, const SurfaceOptions& opt = {});
+EmbeddedMap map_from_file_faces(const FaceList& fl, const FaceLines& file,
+                                const SurfaceOptions& opt = {});
 
 }  // namespace gmr::io

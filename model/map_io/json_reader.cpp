@@ -46,12 +46,14 @@ class DomBuilder : public nlohmann::json_sax<nlohmann::json> {
   bool key(string_t& k) override {
     Frame& top = stack_.back();
     if (top.node->contains(k))
-      throw Error(ErrorCode::Parse, "duplicate member \"" + k + "\" (JSON objects name each member once)",
+      throw Error(ErrorCode::Parse,
+                  "duplicate member \"" + k + "\" (JSON objects name each member once)",
                   located(top.path + json_path_key(k)));
     top.key = std::move(k);
     return true;
   }
-  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
+  bool parse_error(std::size_t position, const std::string&,
+                   const nlohmann::detail::exception& e) override {
     // nlohmann's message: "[json.exception.<kind>.<id>] [parse error at line 3, column 5: ]<what>".
     std::string what = e.what();
     const size_t bracket = what.find("] ");
@@ -63,7 +65,8 @@ class DomBuilder : public nlohmann::json_sax<nlohmann::json> {
     }
     // position is the 1-based offset of the last character read.
     const std::string loc = line_column(text_, position > 0 ? position - 1 : 0);
-    throw Error(ErrorCode::Parse, "malformed JSON: " + what, source_.empty() ? "line " + loc : source_ + ":" + loc);
+    throw Error(ErrorCode::Parse, "malformed JSON: " + what,
+                source_.empty() ? "line " + loc : source_ + ":" + loc);
   }
 
  private:
@@ -73,14 +76,18 @@ class DomBuilder : public nlohmann::json_sax<nlohmann::json> {
     std::string key;  // pending member name (objects)
   };
 
-  std::string located(const std::string& path) const { return source_.empty() ? path : source_ + ":" + path; }
+  std::string located(const std::string& path) const {
+    return source_.empty() ? path : source_ + ":" + path;
+  }
   std::string next_path() const {
     if (stack_.empty()) return "$";
     const Frame& top = stack_.back();
     return top.node->is_array() ? top.path + "[" + std::to_string(top.node->size()) + "]"
                                 : top.path + json_path_key(top.key);
   }
-  bool fail_here(const std::string& message) const { throw Error(ErrorCode::Parse, message, located(next_path())); }
+  bool fail_here(const std::string& message) const {
+    throw Error(ErrorCode::Parse, message, located(next_path()));
+  }
 
   nlohmann::json* place(nlohmann::json&& v) {
     if (stack_.empty()) {
@@ -102,7 +109,8 @@ class DomBuilder : public nlohmann::json_sax<nlohmann::json> {
   }
   bool open(nlohmann::json&& container) {
     if (stack_.size() >= kMaxJsonDepth)
-      fail_here("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels of arrays and objects");
+      fail_here("nesting deeper than " + std::to_string(kMaxJsonDepth) +
+                " levels of arrays and objects");
     std::string path = next_path();
     nlohmann::json* node = place(std::move(container));
     stack_.push_back(Frame{node, std::move(path), {}});
@@ -137,15 +145,22 @@ std::string json_path_key(std::string_view key) {
 
 std::string describe_json(const nlohmann::json& v) {
   switch (v.type()) {
-    case nlohmann::json::value_t::object: return "an object";
-    case nlohmann::json::value_t::array: return "an array";
-    case nlohmann::json::value_t::string: return "the string " + v.dump();
-    case nlohmann::json::value_t::boolean: return v.get<bool>() ? "true" : "false";
-    case nlohmann::json::value_t::null: return "null";
+    case nlohmann::json::value_t::object:
+      return "an object";
+    case nlohmann::json::value_t::array:
+      return "an array";
+    case nlohmann::json::value_t::string:
+      return "the string " + v.dump();
+    case nlohmann::json::value_t::boolean:
+      return v.get<bool>() ? "true" : "false";
+    case nlohmann::json::value_t::null:
+      return "null";
     case nlohmann::json::value_t::number_integer:
     case nlohmann::json::value_t::number_unsigned:
-    case nlohmann::json::value_t::number_float: return "the number " + v.dump();
-    default: return "a " + std::string(v.type_name());
+    case nlohmann::json::value_t::number_float:
+      return "the number " + v.dump();
+    default:
+      return "a " + std::string(v.type_name());
   }
 }
 
@@ -153,7 +168,9 @@ std::string JsonAt::location_of(const std::string& path) const {
   return source_.empty() ? path : source_ + ":" + path;
 }
 
-void JsonAt::fail(const std::string& message, ErrorCode code) const { fail_at(path_, message, code); }
+void JsonAt::fail(const std::string& message, ErrorCode code) const {
+  fail_at(path_, message, code);
+}
 
 void JsonAt::fail_at(const std::string& path, const std::string& message, ErrorCode code) const {
   throw Error(code, message, location_of(path));
@@ -189,7 +206,8 @@ void JsonAt::allow_only(std::initializer_list<std::string_view> keys) const {
     if (std::find(keys.begin(), keys.end(), it.key()) == keys.end()) {
       std::string known;
       for (auto k : keys) known += (known.empty() ? "" : ", ") + std::string(k);
-      fail_at(child_path(it.key()), "unknown member \"" + it.key() + "\" (expected: " + known + ")");
+      fail_at(child_path(it.key()),
+              "unknown member \"" + it.key() + "\" (expected: " + known + ")");
     }
   }
 }
@@ -217,7 +235,8 @@ int64_t JsonAt::as_int(int64_t lo, int64_t hi) const {
       fail("expected an integer" + range + ", found " + v_->dump());
     return static_cast<int64_t>(u);
   }
-  if (!v_->is_number_integer()) fail("expected an integer" + range + ", found " + describe_json(*v_));
+  if (!v_->is_number_integer())
+    fail("expected an integer" + range + ", found " + describe_json(*v_));
   const int64_t x = v_->get<int64_t>();
   if (x < lo || x > hi) fail("expected an integer" + range + ", found " + v_->dump());
   return x;
@@ -241,8 +260,10 @@ int JsonAt::check_header(std::string_view format, int max_version) const {
   if (!f.value().is_string() || f.value().get<std::string>() != format)
     f.fail("expected \"" + std::string(format) + "\", found " + describe_json(f.value()));
   const JsonAt v = (*this)["version"];
-  if (!v.value().is_number_integer() || v.value().get<int64_t>() < 1 || v.value().get<int64_t>() > max_version)
-    v.fail("unsupported version " + v.value().dump() + " (this reader knows 1.." + std::to_string(max_version) + ")");
+  if (!v.value().is_number_integer() || v.value().get<int64_t>() < 1 ||
+      v.value().get<int64_t>() > max_version)
+    v.fail("unsupported version " + v.value().dump() + " (this reader knows 1.." +
+           std::to_string(max_version) + ")");
   return static_cast<int>(v.value().get<int64_t>());
 }
 

@@ -10,11 +10,10 @@
 #pragma once
 #include <cstdint>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "model/core/error.hpp"
 
@@ -52,8 +51,8 @@ class JsonAt {
   // --- objects ---
   void require_object() const;
   bool has(std::string_view key) const;
-  JsonAt operator[](std::string_view key) const;            // required member
-  std::optional<JsonAt> get(std::string_view key) const;    // optional member (absent or null)
+  JsonAt operator[](std::string_view key) const;          // required member
+  std::optional<JsonAt> get(std::string_view key) const;  // optional member (absent or null)
   // Rejects any member not in `keys`, naming the first unknown one (in document order).
   void allow_only(std::initializer_list<std::string_view> keys) const;
 

@@ -9,7 +9,8 @@ namespace {
 constexpr size_t kInlineWidth = 100;
 
 bool scalar_array(const nlohmann::ordered_json& v) {
-  return v.is_array() && std::all_of(v.begin(), v.end(), [](const auto& x) { return !x.is_structured(); });
+  return v.is_array() &&
+         std::all_of(v.begin(), v.end(), [](const auto& x) { return !x.is_structured(); });
 }
 
 void write(const nlohmann::ordered_json& v, int indent, std::string& out) {

@@ -3,9 +3,8 @@
 // objects and arrays are broken over indented lines, except that arrays of scalars (dart arrays of
 // any length) and values whose compact form fits in 100 characters stay on one line.
 #pragma once
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace gmr::io {
 

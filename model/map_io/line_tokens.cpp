@@ -3,7 +3,8 @@
 namespace gmr::io {
 
 std::vector<std::string_view> line_tokens(std::string_view line) {
-  if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+  if (const size_t hash = line.find('#'); hash != std::string_view::npos)
+    line = line.substr(0, hash);
   auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; };
   std::vector<std::string_view> tokens;
   size_t p = 0;

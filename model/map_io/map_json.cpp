@@ -2,9 +2,9 @@
 
 #include <charconv>
 
+#include "model/core/orbit.hpp"
 #include "model/map_io/atomic_write.hpp"
 #include "model/map_io/json_writer.hpp"
-#include "model/core/orbit.hpp"
 #include "model/map_io/read_file.hpp"
 #include "model/map_io/read_limits.hpp"
 
@@ -28,14 +28,16 @@ void check_link_arrays(const JsonAt& alpha, const Map& g, Dart n_darts) {
   for (auto it = alpha.value().begin(); it != alpha.value().end(); ++it) {
     int dim = -1;
     if (!parse_dim_key(it.key(), dim) || !g.has_dim(dim))
-      alpha.fail_at(alpha.child_path(it.key()),
-                    "\"" + it.key() + "\" is not a dimension of this " + to_string(g.kind()) + " (expected " + dims + ")");
+      alpha.fail_at(alpha.child_path(it.key()), "\"" + it.key() + "\" is not a dimension of this " +
+                                                    to_string(g.kind()) + " (expected " + dims +
+                                                    ")");
   }
   for (int i = lo; i <= n; ++i) {
     const JsonAt links = alpha[std::to_string(i)];
     const size_t count = links.array_size();
     if (count != n_darts)
-      links.fail("expected " + std::to_string(n_darts) + " entries (one per dart), found " + std::to_string(count));
+      links.fail("expected " + std::to_string(n_darts) + " entries (one per dart), found " +
+                 std::to_string(count));
   }
 }
 
@@ -46,12 +48,14 @@ void read_links(const JsonAt& alpha, Map& g, Dart n_darts) {
     for (Dart d = 0; d < n_darts; ++d) {
       const nlohmann::json& t = arr[d];
       if (!t.is_number_integer() && !t.is_number_unsigned())
-        links.fail_at(links.child_path(d), "expected a dart index (an integer), found " + describe_json(t));
+        links.fail_at(links.child_path(d),
+                      "expected a dart index (an integer), found " + describe_json(t));
       if (!t.is_number_unsigned() || t.get<uint64_t>() >= n_darts) {
         const std::string what = t.dump();
         links.fail_at(links.child_path(d), "dart index " + what + " out of range: the map has " +
                                                std::to_string(n_darts) + " darts (0.." +
-                                               std::to_string(static_cast<int64_t>(n_darts) - 1) + ")");
+                                               std::to_string(static_cast<int64_t>(n_darts) - 1) +
+                                               ")");
       }
       g.set_alpha(i, d, static_cast<Dart>(t.get<uint64_t>()));
     }
@@ -75,7 +79,8 @@ EmbeddingField read_embedding(const JsonAt& at, const Map& g, Dart n_darts) {
   std::vector<std::pair<Dart, nlohmann::json>> read;
   const JsonAt values = at["values"];
   const size_t count = values.array_size();
-  std::vector<uint32_t> entry_of(n_darts, UINT32_MAX);  // which entry gave the value of a dart's orbit
+  std::vector<uint32_t> entry_of(n_darts,
+                                 UINT32_MAX);  // which entry gave the value of a dart's orbit
   for (size_t k = 0; k < count; ++k) {
     const JsonAt entry = values[k];
     entry.require_object();
@@ -92,8 +97,8 @@ EmbeddingField read_embedding(const JsonAt& at, const Map& g, Dart n_darts) {
     const std::vector<Dart> darts = orbit(g, type, d);
     for (Dart e : darts) {
       if (entry_of[e] != UINT32_MAX)
-        entry.fail("the " + type.str() + "-orbit of dart " + std::to_string(d) + " already has a value (" +
-                   values.child_path(entry_of[e]) + ")");
+        entry.fail("the " + type.str() + "-orbit of dart " + std::to_string(d) +
+                   " already has a value (" + values.child_path(entry_of[e]) + ")");
     }
     for (Dart e : darts) entry_of[e] = static_cast<uint32_t>(k);
     read.emplace_back(d, value_at.value());
@@ -108,9 +113,11 @@ EmbeddedMap map_from_json(const JsonAt& doc) {
   doc.allow_only({"format", "version", "kind", "dimension", "darts", "alpha", "embeddings"});
   const JsonAt kind_at = doc["kind"];
   const std::string kind_text = kind_at.as_string();
-  if (kind_text != "gmap" && kind_text != "omap") kind_at.fail("expected \"gmap\" or \"omap\", found \"" + kind_text + "\"");
+  if (kind_text != "gmap" && kind_text != "omap")
+    kind_at.fail("expected \"gmap\" or \"omap\", found \"" + kind_text + "\"");
   const MapKind kind = kind_text == "gmap" ? MapKind::GMap : MapKind::OMap;
-  const auto n = static_cast<int>(doc["dimension"].as_int(MapSpec{0, kind}.lowest_dim(), kMaxDim - 1));
+  const auto n =
+      static_cast<int>(doc["dimension"].as_int(MapSpec{0, kind}.lowest_dim(), kMaxDim - 1));
   const auto n_darts = static_cast<Dart>(doc["darts"].as_int(0, static_cast<int64_t>(kNoDart) - 1));
   EmbeddedMap f(Map(n, kind));
   check_dart_limit(n_darts, doc["darts"].location());
@@ -155,7 +162,8 @@ nlohmann::ordered_json map_to_json(const Map& g, const std::vector<EmbeddingFiel
     g.for_each_dart([&](Dart d) {
       const Dart t = g.alpha(i, d);
       if (!g.alive(t))
-        throw Error(ErrorCode::InvalidMap, "cannot write a link to a dart that does not exist (" + std::to_string(t) + ")",
+        throw Error(ErrorCode::InvalidMap,
+                    "cannot write a link to a dart that does not exist (" + std::to_string(t) + ")",
                     "dart " + std::to_string(d));
       arr.push_back(index[t]);
     });

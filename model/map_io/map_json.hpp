@@ -12,30 +12,31 @@
 //     },                                 // dart is a loop (t_d == d)
 //     "embeddings": [                    // optional
 //       {"name": "position", "orbit": "<1,2>",
-//        "values": [{"dart": d, "value": <any JSON>}, ...]}   // one entry per orbit that has a value
+//        "values": [{"dart": d, "value": <any JSON>}, ...]}   // one entry per orbit that has a
+//        value
 //     ]
 //   }
 //
 // Reading validates everything and throws the first problem as Error(Parse) (malformed JSON,
 // located "<file>:<line>:<column>") or Error(Schema) located by JSON path ("<file>:$.alpha.1[7]"):
-// wrong format tag or version, unknown or missing members, wrong types, a dimension key the map does
-// not have, an array whose length is not N, a dart index outside 0..N-1 (in "alpha" or in
+// wrong format tag or version, unknown or missing members, wrong types, a dimension key the map
+// does not have, an array whose length is not N, a dart index outside 0..N-1 (in "alpha" or in
 // "values"), a malformed or foreign orbit type, a duplicate embedding name, two values for one
 // orbit. Values are typed on reading (EmbeddedMap, embedded_map.hpp): numbers and triples as
-// numbers, anything else kept as JSON. Whether the links form a valid G-map is *not* checked: the map is returned as written and
-// check_validity (validity.hpp) reports its violations. Values of an embedding are stored once per
-// orbit (Embedding::set on the orbit of the given dart), which is also why a second value for the
-// same orbit is rejected; orbits without a value are allowed (Embedding::check reports them).
+// numbers, anything else kept as JSON. Whether the links form a valid G-map is *not* checked: the
+// map is returned as written and check_validity (validity.hpp) reports its violations. Values of an
+// embedding are stored once per orbit (Embedding::set on the orbit of the given dart), which is
+// also why a second value for the same orbit is rejected; orbits without a value are allowed
+// (Embedding::check reports them).
 //
 // Writing numbers the live darts densely in increasing index order (a map with deleted darts is
 // compacted) and writes one value per orbit that has one, at the orbit's smallest dart. Files are
 // written atomically.
 #pragma once
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "model/core/embedded_map.hpp"
 #include "model/map_io/json_reader.hpp"

@@ -19,7 +19,8 @@
 
 namespace gmr::io {
 
-FaceList parse_obj(std::string_view text, const std::string& source = {}, FaceLines* lines = nullptr);
+FaceList parse_obj(std::string_view text, const std::string& source = {},
+                   FaceLines* lines = nullptr);
 EmbeddedMap read_obj(std::string_view text, const std::string& source = {});
 
 std::string write_obj(const FaceList& fl);

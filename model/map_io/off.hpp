@@ -25,14 +25,15 @@
 #include <string>
 #include <string_view>
 
-#include "model/map_io/face_list.hpp"
 #include "model/core/position.hpp"
+#include "model/map_io/face_list.hpp"
 
 namespace gmr::io {
 
 // The face list of an OFF text, without building a map (errors located "<source>:<line>").
 // `face_lines` (optional) receives the 1-based line of every face.
-FaceList parse_off(std::string_view text, const std::string& source = {}, std::vector<size_t>* face_lines = nullptr,
+FaceList parse_off(std::string_view text, const std::string& source = {},
+                   std::vector<size_t>* face_lines = nullptr,
                    std::vector<size_t>* vertex_lines = nullptr);
 
 EmbeddedMap read_off(std::string_view text, const std::string& source = {});
@@ -48,7 +49,7 @@ std::string format_coordinate(double x);
 // The vertex and face lines of a face list, as OFF and OBJ write them: per vertex, `vertex_tag`
 // then its coordinates; per face, `face_tag` (or, when empty, its number of vertices) then its
 // vertex indices counted from `index_base`.
-std::string face_list_lines(const FaceList& fl, const std::string& vertex_tag, const std::string& face_tag,
-                            uint32_t index_base);
+std::string face_list_lines(const FaceList& fl, const std::string& vertex_tag,
+                            const std::string& face_tag, uint32_t index_base);
 
 }  // namespace gmr::io

@@ -37,7 +37,8 @@ std::string read_text_file(const std::filesystem::path& path) {
     if (!ec && size > limit) throw too_large(std::to_string(size));
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ErrorCode::Io, std::string("cannot open: ") + std::strerror(errno), path.string());
+  if (!in)
+    throw Error(ErrorCode::Io, std::string("cannot open: ") + std::strerror(errno), path.string());
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw Error(ErrorCode::Io, "read failed", path.string());
   return text;

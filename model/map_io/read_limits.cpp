@@ -15,7 +15,8 @@ uint64_t from_environment(const char* name, uint64_t fallback) {
   char* end = nullptr;
   const unsigned long long v = std::strtoull(text, &end, 10);
   if (*end != '\0' || text[0] == '-')
-    throw Error(ErrorCode::Usage, std::string("expected a non-negative integer, found \"") + text + "\"", name);
+    throw Error(ErrorCode::Usage,
+                std::string("expected a non-negative integer, found \"") + text + "\"", name);
   return v;
 }
 
@@ -31,8 +32,8 @@ void check_dart_limit(uint64_t darts, const std::string& where) {
   const uint64_t limit = read_limits().max_darts;
   if (darts > limit)
     throw Error(ErrorCode::Range,
-                "the input needs " + std::to_string(darts) + " darts, above the limit of " + std::to_string(limit) +
-                    " (set GMR_MAX_DARTS to raise it)",
+                "the input needs " + std::to_string(darts) + " darts, above the limit of " +
+                    std::to_string(limit) + " (set GMR_MAX_DARTS to raise it)",
                 where);
 }
 

@@ -23,7 +23,8 @@ std::vector<Voxel> voxels_from_json(const JsonAt& at) {
   constexpr int64_t kLimit = int64_t(1) << 20;
   for (size_t k = 0; k < count; ++k) {
     const JsonAt v = list[k];
-    if (v.array_size() != 3) v.fail("expected a voxel [x, y, z], found " + std::to_string(v.array_size()) + " values");
+    if (v.array_size() != 3)
+      v.fail("expected a voxel [x, y, z], found " + std::to_string(v.array_size()) + " values");
     Voxel vx{};
     for (size_t a = 0; a < 3; ++a) vx[a] = static_cast<int>(v[a].as_int(-kLimit, kLimit));
     if (auto [it, fresh] = seen.emplace(vx, k); !fresh)

@@ -187,7 +187,8 @@ FlaggedMap box_hexahedron(const Vec3& lo, double size) {
 std::vector<MeshingLevel> refine_adaptively(FlaggedMap& m, const PatternStore& store, int levels,
                                             const BoxTest& meets_surface) {
   Map& g = m.map;
-  if (g.dimension() != 3 || !m.positioned()) throw Error(ErrorCode::InvalidMap, "adaptive meshing needs a positioned 3-G-map");
+  if (g.dimension() != 3 || !m.positioned())
+    throw Error(ErrorCode::InvalidMap, "adaptive meshing needs a positioned 3-G-map");
   const ValidityReport valid = check_validity(g, 1);
   if (!valid.ok())
     throw Error(ErrorCode::InvalidMap,
@@ -215,7 +216,8 @@ std::vector<MeshingLevel> refine_adaptively(FlaggedMap& m, const PatternStore& s
     r.balanced = refine.size() - chosen.meeting;
     // Coarsest first: a hexahedron added for the balance is cut before its finer neighbours, so
     // that their faces never cut its faces a second time.
-    std::stable_sort(refine.begin(), refine.end(), [&](uint32_t a, uint32_t b) { return v.level[a] < v.level[b]; });
+    std::stable_sort(refine.begin(), refine.end(),
+                     [&](uint32_t a, uint32_t b) { return v.level[a] < v.level[b]; });
     for (size_t begin = 0; begin < refine.size();) {
       size_t end = begin;
       while (end < refine.size() && v.level[refine[end]] == v.level[refine[begin]]) ++end;

@@ -7,10 +7,10 @@
 // is refined too, recursively. Refining a hexahedron: its edges that are not split yet are split
 // in 2 (e-pattern), its faces are queried (those already cut by a finer neighbour match nothing),
 // then the volume; the hexahedra of a level are cut coarsest first (a balance hexahedron before
-// its finer neighbours, whose faces would otherwise cut its faces twice). Every dart of the new hexahedra is flagged (their corners, as the authors' code
-// does). Hexahedra outside the surface are kept (the authors' code deletes them).
-// Levels are read off the geometry: a hexahedron's level is log2(root size / its size), the
-// hexahedra being axis-aligned boxes.
+// its finer neighbours, whose faces would otherwise cut its faces twice). Every dart of the new
+// hexahedra is flagged (their corners, as the authors' code does). Hexahedra outside the surface
+// are kept (the authors' code deletes them). Levels are read off the geometry: a hexahedron's level
+// is log2(root size / its size), the hexahedra being axis-aligned boxes.
 #pragma once
 #include <functional>
 #include <vector>
@@ -21,11 +21,11 @@ namespace gmr::replace {
 
 struct MeshingLevel {
   int level = 0;
-  size_t volumes = 0;         // hexahedra after the level
+  size_t volumes = 0;  // hexahedra after the level
   size_t face_replacements = 0;
   size_t volume_replacements = 0;
-  size_t balanced = 0;        // hexahedra refined for the balance only
-  double seconds = 0;         // CPU time of the level (the count of its volumes not included)
+  size_t balanced = 0;  // hexahedra refined for the balance only
+  double seconds = 0;   // CPU time of the level (the count of its volumes not included)
 };
 
 // Whether the axis-aligned box [lo, hi] meets the surface.

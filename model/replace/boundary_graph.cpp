@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-
 #include "model/core/error.hpp"
 #include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
@@ -13,7 +12,8 @@ Dart boundary_successor(const Map& g, int i, Dart d) {
   Dart x = g.alpha(i, d);
   for (size_t steps = 0; !g.is_free(i + 1, x); ++steps) {
     if (steps > g.capacity())
-      throw Error(ErrorCode::InvalidMap, "no boundary successor (the fan does not close)", "dart " + std::to_string(d));
+      throw Error(ErrorCode::InvalidMap, "no boundary successor (the fan does not close)",
+                  "dart " + std::to_string(d));
     x = g.alpha(i, g.alpha(i + 1, x));
   }
   return x;
@@ -31,8 +31,8 @@ std::vector<uint32_t>& local_index(Dart capacity) {
 }
 
 template <class Nbr>
-void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive,
-          Nbr nbr) {
+void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag,
+          const std::vector<uint8_t>& positive, Nbr nbr) {
   std::vector<uint32_t>& local = local_index(capacity);
   for (uint32_t k = 0; k < b.size(); ++k) local[b.dart[k]] = k;
   struct Reset {
@@ -52,7 +52,8 @@ void fill(BoundaryGraph& b, Dart capacity, const std::vector<uint32_t>& flag, co
     for (int j = 0; j < b.arity; ++j) {
       const Dart y = nbr(d, j);
       if (y >= capacity || local[y] == UINT32_MAX)
-        throw Error(ErrorCode::InvalidMap, "boundary neighbour outside the boundary", "dart " + std::to_string(d));
+        throw Error(ErrorCode::InvalidMap, "boundary neighbour outside the boundary",
+                    "dart " + std::to_string(d));
       b.nbr[size_t(k) * b.arity + j] = local[y];
     }
   }
@@ -77,10 +78,12 @@ void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& fla
 }
 
 void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
-                   const std::vector<uint8_t>& positive, std::vector<uint32_t>& local, BoundaryGraph& b) {
+                   const std::vector<uint8_t>& positive, std::vector<uint32_t>& local,
+                   BoundaryGraph& b) {
   if (!g.alive(d)) throw Error(ErrorCode::Range, "no such dart", "dart " + std::to_string(d));
   if (g.is_omap() || i < 1 || i > g.dimension() + 1)
-    throw Error(ErrorCode::Usage, "the <0..i-1>-orbit of a G-map, 1 <= i <= n + 1", "i = " + std::to_string(i));
+    throw Error(ErrorCode::Usage, "the <0..i-1>-orbit of a G-map, 1 <= i <= n + 1",
+                "i = " + std::to_string(i));
   // One breadth-first traversal of the <0..i-1>-orbit (neighbours by increasing dimension, the
   // order of orbit()) numbers the darts and records their neighbours; then their flags and
   // classes. The arrays are written in place (grown when a cell outgrows them).
@@ -139,7 +142,8 @@ BoundaryGraph pattern_boundary(const Map& p, const std::vector<uint32_t>& flag,
   p.for_each_dart([&](Dart d) {
     if (p.is_free(n, d)) b.dart.push_back(d);
   });
-  fill(b, p.capacity(), flag, positive, [&](Dart x, int j) { return j < n - 1 ? p.alpha(j, x) : boundary_successor(p, n - 1, x); });
+  fill(b, p.capacity(), flag, positive,
+       [&](Dart x, int j) { return j < n - 1 ? p.alpha(j, x) : boundary_successor(p, n - 1, x); });
   return b;
 }
 

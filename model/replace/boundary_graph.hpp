@@ -40,7 +40,8 @@ void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& fla
 // The same, numbering the orbit's darts in `local` (indexed by dart, UINT32_MAX for every dart of
 // the orbit on entry): local[x] is the local index of x on return, left for the caller to reset.
 void cell_boundary(const Map& g, int i, Dart d, const std::vector<uint32_t>& flag,
-                   const std::vector<uint8_t>& positive, std::vector<uint32_t>& local, BoundaryGraph& out);
+                   const std::vector<uint8_t>& positive, std::vector<uint32_t>& local,
+                   BoundaryGraph& out);
 // The n-free darts of an n-G-map pattern (its boundary), neighbours alpha_0..alpha_{n-2} and the
 // boundary successor for n-1.
 BoundaryGraph pattern_boundary(const Map& p, const std::vector<uint32_t>& flag,

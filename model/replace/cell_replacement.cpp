@@ -12,7 +12,8 @@ namespace {
 // interior vertex, the pattern's mean value coordinates applied to the target's boundary positions
 // (the origin when the pattern has no geometry). `mirror` is the offset of the mirror copies (0:
 // none).
-void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first, Dart mirror) {
+void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first,
+                    Dart mirror) {
   thread_local std::vector<Vec3> at;
   at.resize(t.weights.size());
   Vec3* pos = target.position.data();
@@ -29,7 +30,8 @@ void place_interior(FlaggedMap& target, const ReplacementTemplate& t, const Dart
 
 // place_interior for new darts appended at the end (the positions written once, in dart order).
 // The boundary positions read were prefetched (prefetch_boundary_positions).
-void append_interior_positions(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, bool shared) {
+void append_interior_positions(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f,
+                               bool shared) {
   thread_local std::vector<Vec3> at;
   std::vector<Vec3>& pos = target.position;
   const uint32_t boundary = t.boundary;
@@ -68,7 +70,8 @@ void copy_links(Map& g, int d, const std::vector<uint32_t>& link, Dart first) {
 
 }  // namespace
 
-size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first, bool shared) {
+size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first,
+                    bool shared) {
   Map& g = target.map;
   const int i = t.cell_dim;
   const uint32_t k = t.interior;
@@ -106,7 +109,8 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   // The same writes, appended: each link array, the flags and the positions of the new darts are
   // written once, in dart order, with no free (or zero) state first (Map::add_linked_darts).
   Map& g = target.map;
-  if (target.flag.size() != g.capacity() || (target.positioned() && target.position.size() != g.capacity()))
+  if (target.flag.size() != g.capacity() ||
+      (target.positioned() && target.position.size() != g.capacity()))
     target.resize_flags();
   const int i = t.cell_dim;
   const uint32_t k = t.interior;
@@ -117,41 +121,42 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   // 1. The links: the copy of interior dart j is first + j, its mirror copy first + k + j; the
   // alpha_{i-1} of a dart at the boundary is f of the boundary dart (and its alpha_{i+1} for the
   // mirror copy).
-  const Dart first = g.add_linked_darts(size_t(k) * (shared ? 2 : 1), [&](int d, Dart from, LinkAppender& out) {
-    if (d > i) {  // alpha_{i+1} (d = i + 1): the two half-cells sewn copy by copy, or free
-      if (shared) {
-        out.append(k, [&](size_t j) { return from + k + static_cast<Dart>(j); });
-        out.append(k, [&](size_t j) { return from + static_cast<Dart>(j); });
-      } else {
-        out.append(k, [&](size_t j) { return from + static_cast<Dart>(j); });
-      }
-      return;
-    }
-    const uint32_t* link = t.link[d].data();
-    if (d != i - 1) {
-      for (Dart base = from, h = 0; h < (shared ? 2u : 1u); ++h, base += k)
-        out.append(k, [&](size_t j) { return base + link[j]; });
-      return;
-    }
-    const uint32_t* rank = t.relink_rank.data();
-    // alpha_{i+1} read where it is now (the arrays may have moved as they grew; it is appended
-    // after this dimension).
-    const Dart* across = shared ? g.links(i + 1).data() : nullptr;
-    // Both links read and one selected (no branch on the template's per-dart pattern).
-    out.append(k, [&](size_t j) {
-      const uint32_t b = rank[j];
-      const bool inside = b == ReplacementTemplate::kInterior;
-      const Dart boundary_dart = f[inside ? 0 : b];
-      return inside ? from + link[j] : boundary_dart;
-    });
-    if (shared)
-      out.append(k, [&](size_t j) {
-        const uint32_t b = rank[j];
-        const bool inside = b == ReplacementTemplate::kInterior;
-        const Dart boundary_dart = across[f[inside ? 0 : b]];
-        return inside ? from + k + link[j] : boundary_dart;
+  const Dart first =
+      g.add_linked_darts(size_t(k) * (shared ? 2 : 1), [&](int d, Dart from, LinkAppender& out) {
+        if (d > i) {  // alpha_{i+1} (d = i + 1): the two half-cells sewn copy by copy, or free
+          if (shared) {
+            out.append(k, [&](size_t j) { return from + k + static_cast<Dart>(j); });
+            out.append(k, [&](size_t j) { return from + static_cast<Dart>(j); });
+          } else {
+            out.append(k, [&](size_t j) { return from + static_cast<Dart>(j); });
+          }
+          return;
+        }
+        const uint32_t* link = t.link[d].data();
+        if (d != i - 1) {
+          for (Dart base = from, h = 0; h < (shared ? 2u : 1u); ++h, base += k)
+            out.append(k, [&](size_t j) { return base + link[j]; });
+          return;
+        }
+        const uint32_t* rank = t.relink_rank.data();
+        // alpha_{i+1} read where it is now (the arrays may have moved as they grew; it is appended
+        // after this dimension).
+        const Dart* across = shared ? g.links(i + 1).data() : nullptr;
+        // Both links read and one selected (no branch on the template's per-dart pattern).
+        out.append(k, [&](size_t j) {
+          const uint32_t b = rank[j];
+          const bool inside = b == ReplacementTemplate::kInterior;
+          const Dart boundary_dart = f[inside ? 0 : b];
+          return inside ? from + link[j] : boundary_dart;
+        });
+        if (shared)
+          out.append(k, [&](size_t j) {
+            const uint32_t b = rank[j];
+            const bool inside = b == ReplacementTemplate::kInterior;
+            const Dart boundary_dart = across[f[inside ? 0 : b]];
+            return inside ? from + k + link[j] : boundary_dart;
+          });
       });
-  });
   // 2. The boundary's side of the relinks.
   for (const auto& [j, b] : t.relinks) {
     const Dart y = f[b];
@@ -160,7 +165,8 @@ size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart
   }
   // 3. Flags and positions, appended.
   target.grow_flags(g.capacity());
-  for (int h = 0; h < (shared ? 2 : 1); ++h) target.flag.insert(target.flag.end(), t.flag.begin(), t.flag.end());
+  for (int h = 0; h < (shared ? 2 : 1); ++h)
+    target.flag.insert(target.flag.end(), t.flag.begin(), t.flag.end());
   if (target.positioned()) append_interior_positions(target, t, f, shared);
   return size_t(k) * (shared ? 2 : 1);
 }

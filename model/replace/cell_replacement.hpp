@@ -25,7 +25,8 @@ namespace gmr::replace {
 // written into existing free darts: first .. first + k - 1, and for a shared face the mirror copies
 // first + k .. first + 2k - 1 (k = t.interior); flags and positions must be sized to the map. The
 // target's dimension must be i or i + 1 (query_replace checks it). Returns the darts written.
-size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first, bool shared);
+size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, Dart first,
+                    bool shared);
 // The same into new darts added at the end of the map (flags and positions grown with it).
 size_t replace_cell(FlaggedMap& target, const ReplacementTemplate& t, const Dart* f, bool shared);
 

@@ -19,7 +19,11 @@ std::vector<uint64_t>& met_words(Dart capacity) {
 }  // namespace
 
 CellSweep::CellSweep(const Map& g, int cell_dim, const std::vector<Dart>* only)
-    : g_(g), cell_dim_(cell_dim), only_(only), capacity_(g.capacity()), met_{met_words(g.capacity()).data(), g.capacity()} {
+    : g_(g),
+      cell_dim_(cell_dim),
+      only_(only),
+      capacity_(g.capacity()),
+      met_{met_words(g.capacity()).data(), g.capacity()} {
   if (only)
     for (Dart d : *only)
       if (!g.alive(d)) throw Error(ErrorCode::Usage, "no such dart", "dart " + std::to_string(d));
@@ -47,14 +51,15 @@ void CellSweep::meet(const Dart* darts, size_t count) {
   }
 }
 
-void CellSweep::traverse(Dart d, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive,
-                         BoundaryGraph& c) {
+void CellSweep::traverse(Dart d, const std::vector<uint32_t>& flag,
+                         const std::vector<uint8_t>& positive, BoundaryGraph& c) {
   cell_boundary(g_, cell_dim_, d, flag, positive, c);
   for (Dart x : c.dart) met_.set(x);
   meet(c.dart.data(), c.dart.size());
 }
 
-bool CellSweep::follow(Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag, Dart* out) {
+bool CellSweep::follow(Dart d, const uint32_t* word, uint32_t size,
+                       const std::vector<uint32_t>& flag, Dart* out) {
   if (!follow_word(g_, cell_dim_, d, word, size, flag, met_, out)) return false;
   meet(out, size);
   return true;

@@ -44,11 +44,13 @@ class CellSweep {
   // The boundary of d's cell numbered by a breadth-first traversal from d (cell_boundary: local
   // index k is d's label k + 1 in the word from d, flagged_word.hpp); the cell is marked met, and
   // for a face of a 3-G-map its other half-face too.
-  void traverse(Dart d, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive, BoundaryGraph& out);
+  void traverse(Dart d, const std::vector<uint32_t>& flag, const std::vector<uint8_t>& positive,
+                BoundaryGraph& out);
   // The boundary of d's cell numbered along `word` (follow_word: `size` darts, out[k] of label
   // k + 1): on success the cell is marked met as by traverse and true is returned; otherwise
   // nothing is marked (traverse then meets the cell).
-  bool follow(Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag, Dart* out);
+  bool follow(Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag,
+              Dart* out);
 
  private:
   [[noreturn]] static void throw_listed_twice(Dart d);

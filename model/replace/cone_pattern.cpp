@@ -13,14 +13,18 @@ namespace gmr::replace {
 
 FlaggedMap cone_of_surface(const FlaggedMap& surface) {
   const Map& s = surface.map;
-  if (s.is_omap() || s.dimension() != 2) throw Error(ErrorCode::InvalidMap, "a cone is built on a 2-G-map surface");
+  if (s.is_omap() || s.dimension() != 2)
+    throw Error(ErrorCode::InvalidMap, "a cone is built on a 2-G-map surface");
   if (s.has_holes()) throw Error(ErrorCode::InvalidMap, "the surface has deleted darts");
   const ValidityReport v = check_validity(s, 1);
-  if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the surface is not valid: " + to_text(v.violations.front()));
+  if (!v.ok())
+    throw Error(ErrorCode::InvalidMap,
+                "the surface is not valid: " + to_text(v.violations.front()));
   s.for_each_dart([&](Dart d) {
     for (int i = 0; i <= 2; ++i)
       if (s.is_free(i, d))
-        throw Error(ErrorCode::InvalidMap, "the surface is not closed (an " + std::to_string(i) + "-free dart)",
+        throw Error(ErrorCode::InvalidMap,
+                    "the surface is not closed (an " + std::to_string(i) + "-free dart)",
                     "dart " + std::to_string(d));
   });
   const Dart n = s.capacity();
@@ -60,14 +64,16 @@ FlaggedMap cone_of_surface(const FlaggedMap& surface) {
     size_t vertices = 0;
     for (Dart r : orbit_representatives(s, cell_type(s, 0))) {
       bool corner = !any_flag;
-      for (Dart x : orbit(s, cell_type(s, 0), r)) corner |= x < surface.flag.size() && surface.flag[x] != 0;
+      for (Dart x : orbit(s, cell_type(s, 0), r))
+        corner |= x < surface.flag.size() && surface.flag[x] != 0;
       if (!corner) continue;
       for (int k = 0; k < 3; ++k) apex[k] += surface.position[r][k];
       ++vertices;
     }
     for (int k = 0; k < 3; ++k) apex[k] /= double(vertices);
     c.position.assign(g.capacity(), apex);
-    for (Dart d = 0; d < n; ++d) c.position[b(d)] = c.position[t0(d)] = c.position[t1(d)] = surface.position[d];
+    for (Dart d = 0; d < n; ++d)
+      c.position[b(d)] = c.position[t0(d)] = c.position[t1(d)] = surface.position[d];
   }
   return c;
 }
@@ -78,8 +84,10 @@ namespace {
 std::string configuration_name(const std::vector<int>& split) {
   std::string edges, faces;
   for (int e : split) {
-    if (e >= 100) faces += "-f" + std::to_string(e - 100);
-    else edges += (edges.empty() ? "" : "_") + std::to_string(e);
+    if (e >= 100)
+      faces += "-f" + std::to_string(e - 100);
+    else
+      edges += (edges.empty() ? "" : "_") + std::to_string(e);
   }
   return "hex-" + edges + faces;
 }
@@ -93,7 +101,9 @@ std::vector<Pattern> conformal_volume_patterns(Mode mode) {
   for (const Configuration& c : set.configurations) {
     std::vector<uint8_t> positive;
     if (mode == Mode::Oriented) positive = orientation_classes(c.map.map);
-    if (!seen.insert(store_key(cell_boundary(c.map.map, 3, c.cell, c.map.flag, positive), 3, mode)).second) continue;
+    if (!seen.insert(store_key(cell_boundary(c.map.map, 3, c.cell, c.map.flag, positive), 3, mode))
+             .second)
+      continue;
     out.push_back(make_pattern(configuration_name(c.split), cone_of_surface(c.map)));
   }
   return out;

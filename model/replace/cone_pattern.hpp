@@ -9,8 +9,8 @@
 // with alpha_0 = (b(a0 d), t0(a0 d), t2(d), t1(d)), alpha_1 = (b(a1 d), t1(d), t0(d), t2(a0 d)),
 // alpha_2 = (t0(d), b(d), t1(a1 d), t2(a1 d)) and alpha_3 = (b(d), t0(a2 d), t1(a2 d), t2(a2 d))
 // for (b, t0, t1, t2). Each is an involution and alpha_i alpha_j (j >= i + 2) is one because S's
-// alpha_0 alpha_2 is; the boundary successor abar_2(b(d)) = alpha_2 alpha_3 alpha_2 (b(d)) = b(a2 d),
-// so the boundary is S itself, with its orientation (b(d) = d keeps the parity of every dart).
+// alpha_0 alpha_2 is; the boundary successor abar_2(b(d)) = alpha_2 alpha_3 alpha_2 (b(d)) = b(a2
+// d), so the boundary is S itself, with its orientation (b(d) = d keeps the parity of every dart).
 // With positions on S, the apex is the mean of S's corners (its vertices with a flagged dart: the
 // cell's corners, docs/query-replace.md, Flags; every vertex when nothing is flagged), each once,
 // and the pattern gets mean value coordinates when it is made (§5.2).
@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "model/replace/flagged_map.hpp"
-#include "model/replace/pattern.hpp"
 #include "model/replace/flagged_word.hpp"
+#include "model/replace/pattern.hpp"
 
 namespace gmr::replace {
 

@@ -11,7 +11,8 @@ namespace gmr::replace {
 namespace {
 
 // Every non-empty subset of `edges` (one dart per edge) split in 2 on a copy of `base`.
-ConfigurationSet subsets(std::string name, int cell_dim, const Map& base, const std::vector<Dart>& edges) {
+ConfigurationSet subsets(std::string name, int cell_dim, const Map& base,
+                         const std::vector<Dart>& edges) {
   ConfigurationSet set;
   set.generator = std::move(name);
   set.cell_dim = cell_dim;
@@ -51,12 +52,14 @@ const std::vector<std::vector<uint32_t>> kHexFaces = {{0, 2, 3, 1}, {4, 5, 7, 6}
 
 // Flags a dart iff its vertex is a corner (0..7) and its edge lies on a cube edge: its other end is
 // a corner or the midpoint (8 + e) of a cube edge e at that corner.
-void flag_corners(FlaggedMap& m, const std::vector<uint32_t>& vertex, const std::vector<std::array<int, 2>>& edges) {
+void flag_corners(FlaggedMap& m, const std::vector<uint32_t>& vertex,
+                  const std::vector<std::array<int, 2>>& edges) {
   m.resize_flags();
   const Map& g = m.map;
   g.for_each_dart([&](Dart d) {
     const uint32_t v = vertex[d], w = vertex[g.alpha(0, d)];
-    const bool on_edge = w < 8 || (w < 20 && (edges[w - 8][0] == int(v) || edges[w - 8][1] == int(v)));
+    const bool on_edge =
+        w < 8 || (w < 20 && (edges[w - 8][0] == int(v) || edges[w - 8][1] == int(v)));
     m.flag[d] = v < 8 && on_edge ? 1 : 0;
   });
 }
@@ -69,15 +72,18 @@ ConfigurationSet hex_conformal() {
   const auto edges = cube_edges();
   auto edge_index = [&](uint32_t a, uint32_t b) {
     for (size_t e = 0; e < edges.size(); ++e)
-      if ((edges[e][0] == int(a) && edges[e][1] == int(b)) || (edges[e][0] == int(b) && edges[e][1] == int(a)))
+      if ((edges[e][0] == int(a) && edges[e][1] == int(b)) ||
+          (edges[e][0] == int(b) && edges[e][1] == int(a)))
         return e;
     throw Error(ErrorCode::Range, "not a cube edge");
   };
   // Positions on the unit cube: corners by their coordinate bits, midpoints, face centres.
   std::array<Vec3, 26> point;
-  for (uint32_t v = 0; v < 8; ++v) point[v] = {double(v & 1), double(v >> 1 & 1), double(v >> 2 & 1)};
+  for (uint32_t v = 0; v < 8; ++v)
+    point[v] = {double(v & 1), double(v >> 1 & 1), double(v >> 2 & 1)};
   for (size_t e = 0; e < 12; ++e)
-    for (int k = 0; k < 3; ++k) point[8 + e][k] = (point[edges[e][0]][k] + point[edges[e][1]][k]) / 2;
+    for (int k = 0; k < 3; ++k)
+      point[8 + e][k] = (point[edges[e][0]][k] + point[edges[e][1]][k]) / 2;
   for (size_t f = 0; f < 6; ++f)
     for (int k = 0; k < 3; ++k) {
       point[20 + f][k] = 0;
@@ -90,7 +96,8 @@ ConfigurationSet hex_conformal() {
     std::vector<uint32_t> full;  // faces whose 4 edges are split
     for (uint32_t f = 0; f < 6; ++f) {
       bool all = true;
-      for (size_t i = 0; i < 4; ++i) all &= (mask >> edge_index(kHexFaces[f][i], kHexFaces[f][(i + 1) % 4]) & 1) != 0;
+      for (size_t i = 0; i < 4; ++i)
+        all &= (mask >> edge_index(kHexFaces[f][i], kHexFaces[f][(i + 1) % 4]) & 1) != 0;
       if (all) full.push_back(f);
     }
     for (uint32_t cut = 0; cut < (1u << full.size()); ++cut) {
@@ -100,7 +107,9 @@ ConfigurationSet hex_conformal() {
         const auto& c = kHexFaces[f];
         const auto pos = std::find(full.begin(), full.end(), f);
         const bool is_cut = pos != full.end() && (cut >> (pos - full.begin()) & 1);
-        auto mid = [&](size_t i) { return static_cast<uint32_t>(8 + edge_index(c[i], c[(i + 1) % 4])); };
+        auto mid = [&](size_t i) {
+          return static_cast<uint32_t>(8 + edge_index(c[i], c[(i + 1) % 4]));
+        };
         if (is_cut) {
           cut_faces.push_back(static_cast<int>(f));
           for (size_t i = 0; i < 4; ++i) faces.push_back({c[i], mid(i), 20 + f, mid((i + 3) % 4)});
@@ -138,7 +147,8 @@ ConfigurationSet marching_cubes() {
   const auto edges = cube_edges();
   auto edge_index = [&](uint32_t a, uint32_t b) -> uint32_t {
     for (size_t e = 0; e < edges.size(); ++e)
-      if ((edges[e][0] == int(a) && edges[e][1] == int(b)) || (edges[e][0] == int(b) && edges[e][1] == int(a)))
+      if ((edges[e][0] == int(a) && edges[e][1] == int(b)) ||
+          (edges[e][0] == int(b) && edges[e][1] == int(a)))
         return static_cast<uint32_t>(e);
     throw Error(ErrorCode::Range, "not a cube edge");
   };
@@ -216,13 +226,15 @@ ConfigurationSet generate_configurations(std::string_view generator) {
   if (generator == "marching-cubes") return marching_cubes();
   if (generator == "hex-edges") {
     std::vector<uint32_t> vertex;
-    const Map g = surface_from_faces({{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}},
-                                      8, {}, &vertex);
+    const Map g = surface_from_faces(
+        {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}, 8, {},
+        &vertex);
     std::vector<Dart> edges;
     for (const auto& [a, b] : cube_edges()) {
       Dart found = kNoDart;
       g.for_each_dart([&](Dart d) {
-        if (found == kNoDart && vertex[d] == uint32_t(a) && vertex[g.alpha(0, d)] == uint32_t(b)) found = d;
+        if (found == kNoDart && vertex[d] == uint32_t(a) && vertex[g.alpha(0, d)] == uint32_t(b))
+          found = d;
       });
       edges.push_back(found);
     }
@@ -230,8 +242,10 @@ ConfigurationSet generate_configurations(std::string_view generator) {
   }
   std::string known;
   for (const auto& n : configuration_generators()) known += (known.empty() ? "" : ", ") + n;
-  throw Error(ErrorCode::Usage, "unknown configuration generator \"" + std::string(generator) + "\" (known: " + known + ")",
-              "--configurations");
+  throw Error(
+      ErrorCode::Usage,
+      "unknown configuration generator \"" + std::string(generator) + "\" (known: " + known + ")",
+      "--configurations");
 }
 
 }  // namespace gmr::replace

@@ -17,8 +17,8 @@ CoverageReport check_coverage(const PatternStore& store, const ConfigurationSet&
     const Configuration& c = set.configurations[i];
     std::vector<uint8_t> positive;
     if (store.mode() == Mode::Oriented) positive = orientation_classes(c.map.map);
-    const Word key = store_key(cell_boundary(c.map.map, set.cell_dim, c.cell, c.map.flag, positive), set.cell_dim,
-                               store.mode());
+    const Word key = store_key(cell_boundary(c.map.map, set.cell_dim, c.cell, c.map.flag, positive),
+                               set.cell_dim, store.mode());
     const bool new_class = first_of_class.emplace(key, i).second;
     if (const auto* hits = store.find(key)) {
       for (const StoreEntry& e : *hits) ++r.covering[e.pattern];

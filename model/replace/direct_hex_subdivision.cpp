@@ -11,11 +11,13 @@ namespace {
 // Every volume a combinatorial hexahedron: no free dart below 3, quadrangular faces and three
 // edges at every corner of every volume.
 void require_hexahedra(const Map& g) {
-  if (g.is_omap() || g.dimension() != 3) throw Error(ErrorCode::InvalidMap, "hexahedral subdivision works on 3-G-maps");
+  if (g.is_omap() || g.dimension() != 3)
+    throw Error(ErrorCode::InvalidMap, "hexahedral subdivision works on 3-G-maps");
   g.for_each_dart([&](Dart d) {
     for (int i = 0; i < 3; ++i)
       if (g.is_free(i, d))
-        throw Error(ErrorCode::InvalidMap, "not a hexahedral mesh: an " + std::to_string(i) + "-free dart",
+        throw Error(ErrorCode::InvalidMap,
+                    "not a hexahedral mesh: an " + std::to_string(i) + "-free dart",
                     "dart " + std::to_string(d));
     auto r10 = [&](Dart x) { return g.alpha(1, g.alpha(0, x)); };
     auto r21 = [&](Dart x) { return g.alpha(2, g.alpha(1, x)); };
@@ -23,16 +25,20 @@ void require_hexahedra(const Map& g) {
     const bool corner = r21(d) != d && r21(r21(r21(d))) == d;
     if (!quad || !corner)
       throw Error(ErrorCode::InvalidMap,
-                  std::string("not a hexahedral mesh: ") + (quad ? "a corner without 3 edges" : "a face that is not a quadrangle"),
+                  std::string("not a hexahedral mesh: ") +
+                      (quad ? "a corner without 3 edges" : "a face that is not a quadrangle"),
                   "dart " + std::to_string(d));
   });
 }
 
-Vec3 mean(const Vec3& a, const Vec3& b) { return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}; }
+Vec3 mean(const Vec3& a, const Vec3& b) {
+  return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+}
 
 // Per dart: the centre of its face and of its volume (averages over the orbits' darts, each
 // vertex counted equally often).
-void centres(const Map& g, const std::vector<Vec3>& p, std::vector<Vec3>& face, std::vector<Vec3>& cell) {
+void centres(const Map& g, const std::vector<Vec3>& p, std::vector<Vec3>& face,
+             std::vector<Vec3>& cell) {
   face.assign(g.capacity(), Vec3{0, 0, 0});
   cell.assign(g.capacity(), Vec3{0, 0, 0});
   std::vector<uint8_t> done(g.capacity(), 0);

@@ -1,11 +1,11 @@
 #include "model/replace/edge_split.hpp"
 
+#include <algorithm>
+
 #include "model/core/error.hpp"
+#include "model/core/generated_append.hpp"
 #include "model/core/huge_pages.hpp"
 #include "model/core/orbit.hpp"
-#include "model/core/generated_append.hpp"
-
-#include <algorithm>
 
 namespace gmr::replace {
 
@@ -41,7 +41,8 @@ size_t split_edges(FlaggedMap& m, const std::vector<Dart>& edges, unsigned k) {
     const DimMask edge = cell_type(g, 1).mask();
     for (Dart e : edges) {
       if (!g.alive(e)) throw Error(ErrorCode::Usage, "no such dart", "dart " + std::to_string(e));
-      if (seen.test(e)) throw Error(ErrorCode::Usage, "an edge is listed twice", "dart " + std::to_string(e));
+      if (seen.test(e))
+        throw Error(ErrorCode::Usage, "an edge is listed twice", "dart " + std::to_string(e));
       visit_orbit_marked(g, edge, e, seen.id(), stack, [&](Dart x) { darts.push_back(x); });
     }
     for (Dart x : darts) seen.unmark(x);
@@ -73,7 +74,8 @@ namespace {
 // from z = alpha_j x on z's chain (near[z] + s or near[z] - s as that chain runs from z or to z),
 // to itself when x is j-free. L: len when known at compile time (2: a split in 2), else 0.
 template <Dart L>
-void append_chains(FlaggedMap& m, const std::vector<Dart>& pairs, const Dart* near, Dart len_, unsigned k) {
+void append_chains(FlaggedMap& m, const std::vector<Dart>& pairs, const Dart* near, Dart len_,
+                   unsigned k) {
   Map& g = m.map;
   const Dart len = L ? L : len_;
   const Dart added = static_cast<Dart>(pairs.size()) * len;
@@ -84,7 +86,8 @@ void append_chains(FlaggedMap& m, const std::vector<Dart>& pairs, const Dart* ne
     const Dart* link0 = g.links(0).data();
     if (d == 0)
       return out.append(added, [&](size_t c) {
-        const Dart p = static_cast<Dart>(c / len), s = static_cast<Dart>(c % len), self = first + static_cast<Dart>(c);
+        const Dart p = static_cast<Dart>(c / len), s = static_cast<Dart>(c % len),
+                   self = first + static_cast<Dart>(c);
         if (s == 0) return pairs[p];
         if (s % 2 == 0) return self - 1;
         return s == len - 1 ? link0[pairs[p]] : self + 1;
@@ -136,11 +139,11 @@ void make_room(FlaggedMap& m, size_t total) {
 // Every pair split on a map without holes: old dart x gets the h = k - 1 new darts
 // first + h x + s, s = 0..h-1 counted from x, so the chain of (x, y = alpha_0 x) is x's darts then
 // y's in reverse (its s-th dart from x is x's s-th for s < h, and y's (2h - 1 - s)-th otherwise).
-// Along the chain alpha_0 and alpha_1 alternate from x (alpha_0 of the first dart is x); for j >= 2,
-// alpha_j sends x's s-th dart to the s-th of z = alpha_j x (to itself when x is j-free). Every link
-// is thus computed from x and its own links: no chain table. The new vertex m (1..k-1 from x) is
-// placed at ((k - m) p(x) + m p(y)) / k, the same value from either end. H: h when known at compile
-// time (1: a split in 2), else 0.
+// Along the chain alpha_0 and alpha_1 alternate from x (alpha_0 of the first dart is x); for j >=
+// 2, alpha_j sends x's s-th dart to the s-th of z = alpha_j x (to itself when x is j-free). Every
+// link is thus computed from x and its own links: no chain table. The new vertex m (1..k-1 from x)
+// is placed at ((k - m) p(x) + m p(y)) / k, the same value from either end. H: h when known at
+// compile time (1: a split in 2), else 0.
 template <Dart H>
 void append_dart_chains(FlaggedMap& m, unsigned k) {
   Map& g = m.map;
@@ -176,7 +179,8 @@ void append_dart_chains(FlaggedMap& m, unsigned k) {
       const Dart x = static_cast<Dart>(c / h), s = static_cast<Dart>(c % h);
       const Vec3 a = pos[x], b = pos[link0[x]];
       const double along = double(s / 2 + 1), rest = double(k) - along;
-      return Vec3{(rest * a[0] + along * b[0]) / k, (rest * a[1] + along * b[1]) / k, (rest * a[2] + along * b[2]) / k};
+      return Vec3{(rest * a[0] + along * b[0]) / k, (rest * a[1] + along * b[1]) / k,
+                  (rest * a[2] + along * b[2]) / k};
     });
   }
   // The old darts' alpha_0: the first dart of their chain.
@@ -189,13 +193,18 @@ size_t split_every_dart(FlaggedMap& m, unsigned k) {
   const Dart n = g.capacity();
   const Dart* link0 = g.links(0).data();
   for (Dart x = 0; x < n; ++x)
-    if (link0[x] == x) throw Error(ErrorCode::InvalidMap, "a 0-free dart has no edge to split", "dart " + std::to_string(x));
+    if (link0[x] == x)
+      throw Error(ErrorCode::InvalidMap, "a 0-free dart has no edge to split",
+                  "dart " + std::to_string(x));
   if (double(k - 1) * double(n) >= double(kNoDart - n))
-    throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")", "split in " + std::to_string(k));
+    throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")",
+                "split in " + std::to_string(k));
   m.resize_flags();
   make_room(m, size_t(n) * k);
-  if (k == 2) append_dart_chains<1>(m, k);
-  else append_dart_chains<0>(m, k);
+  if (k == 2)
+    append_dart_chains<1>(m, k);
+  else
+    append_dart_chains<0>(m, k);
   return size_t(n) * (k - 1);
 }
 
@@ -205,12 +214,15 @@ size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k) {
   Map& g = m.map;
   const Dart len = 2 * (k - 1);
   for (Dart x : darts)
-    if (g.is_free(0, x)) throw Error(ErrorCode::InvalidMap, "a 0-free dart has no edge to split", "dart " + std::to_string(x));
+    if (g.is_free(0, x))
+      throw Error(ErrorCode::InvalidMap, "a 0-free dart has no edge to split",
+                  "dart " + std::to_string(x));
   if (double(k - 1) * double(darts.size()) >= double(kNoDart - g.capacity()))
-    throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")", "split in " + std::to_string(k));
+    throw Error(ErrorCode::Range, "too many darts (limit " + std::to_string(kNoDart - 1) + ")",
+                "split in " + std::to_string(k));
   m.resize_flags();
-  // 2. One chain of len new darts per pair (x, alpha_0 x), numbered from the end of the map: near[x]
-  // is its end next to x, near[alpha_0 x] the other end.
+  // 2. One chain of len new darts per pair (x, alpha_0 x), numbered from the end of the map:
+  // near[x] is its end next to x, near[alpha_0 x] the other end.
   const Dart first = g.capacity();
   const size_t added = size_t(len) * (darts.size() / 2), total = size_t(first) + added;
   make_room(m, total);
@@ -225,8 +237,10 @@ size_t split_pairs(FlaggedMap& m, const std::vector<Dart>& darts, unsigned k) {
     pairs.push_back(x);
   }
   // 3. The chains appended, linked by alpha_j (j >= 2) as their ends are.
-  if (len == 2) append_chains<2>(m, pairs, near.data(), len, k);
-  else append_chains<0>(m, pairs, near.data(), len, k);
+  if (len == 2)
+    append_chains<2>(m, pairs, near.data(), len, k);
+  else
+    append_chains<0>(m, pairs, near.data(), len, k);
   for (Dart x : darts) near[x] = kNoDart;
   return darts.size() * (k - 1);
 }

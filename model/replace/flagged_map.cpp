@@ -37,16 +37,22 @@ FlaggedMap flagged_map(const EmbeddedMap& f, const std::string& where) {
   const EmbeddingField* e = f.find(kFlagEmbedding);
   if (!e) return m;
   if (e->orbit().size() != 0)
-    throw Error(ErrorCode::Schema, "the embedding \"flag\" must be on the orbit type <> (one value per dart), not " +
-                                       e->orbit().str(), where);
+    throw Error(ErrorCode::Schema,
+                "the embedding \"flag\" must be on the orbit type <> (one value per dart), not " +
+                    e->orbit().str(),
+                where);
   m.map.for_each_dart([&](Dart d) {
     if (!e->has(d)) return;
     const nlohmann::json v = e->value_json(d);
-    if (v.is_boolean()) m.flag[d] = v.get<bool>() ? 1 : 0;
-    else if (v.is_number_unsigned()) m.flag[d] = v.get<uint32_t>();
-    else if (v.is_number_integer() && v.get<long long>() >= 0) m.flag[d] = static_cast<uint32_t>(v.get<long long>());
+    if (v.is_boolean())
+      m.flag[d] = v.get<bool>() ? 1 : 0;
+    else if (v.is_number_unsigned())
+      m.flag[d] = v.get<uint32_t>();
+    else if (v.is_number_integer() && v.get<long long>() >= 0)
+      m.flag[d] = static_cast<uint32_t>(v.get<long long>());
     else
-      throw Error(ErrorCode::Schema, "a flag is a boolean or a non-negative integer, not " + v.dump(),
+      throw Error(ErrorCode::Schema,
+                  "a flag is a boolean or a non-negative integer, not " + v.dump(),
                   where + (where.empty() ? "" : ": ") + "dart " + std::to_string(d));
   });
   return m;

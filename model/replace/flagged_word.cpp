@@ -82,7 +82,8 @@ const std::vector<uint32_t>& face_sizes(const BoundaryGraph& b) {
 
 // The minimal word, one start after the other, each compared on the fly with the best so far
 // (early abort): O(|B|) memory, for graphs too large for one label array per start.
-CellSignature sequential_minimum(const BoundaryGraph& b, const std::vector<uint32_t>& starts, bool with_flags) {
+CellSignature sequential_minimum(const BoundaryGraph& b, const std::vector<uint32_t>& starts,
+                                 bool with_flags) {
   CellSignature s;
   std::vector<uint32_t> label(b.size(), 0), order;
   bool have = false;
@@ -122,7 +123,8 @@ void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out) {
   stream_word(b, start, true, nullptr, label, order, &out);
 }
 
-void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out, std::vector<uint32_t>& order) {
+void boundary_word(const BoundaryGraph& b, uint32_t start, Word& out,
+                   std::vector<uint32_t>& order) {
   // The loop of stream_word with the letters written in place: per dart in label order, its flag
   // and the labels of its neighbours (a neighbour labelled when new).
   thread_local std::vector<uint32_t> label;
@@ -200,7 +202,9 @@ StartSet start_darts(const BoundaryGraph& b, Mode mode, bool with_flags) {
   s.darts = std::move(flagged.empty() ? all : flagged);
   if (b.arity < 3 || s.darts.empty()) return s;
   const std::vector<uint32_t>& size = face_sizes(b);
-  auto key = [&](uint32_t k) { return uint64_t(size[k]) << 32 | size[b.neighbour(k, b.arity - 1)]; };
+  auto key = [&](uint32_t k) {
+    return uint64_t(size[k]) << 32 | size[b.neighbour(k, b.arity - 1)];
+  };
   s.invariant = UINT64_MAX;
   for (uint32_t k : s.darts) s.invariant = std::min(s.invariant, key(k));
   std::erase_if(s.darts, [&](uint32_t k) { return key(k) != s.invariant; });
@@ -244,13 +248,15 @@ CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_fla
   return minimal_signature(b, start_darts(b, mode, with_flags), with_flags);
 }
 
-CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& start_set, bool with_flags) {
+CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& start_set,
+                                bool with_flags) {
   CellSignature s;
   if (b.size() == 0) return s;
   if (b.size() >= UINT32_MAX / 2) throw Error(ErrorCode::Range, "cell too large for 32-bit labels");
   const std::vector<uint32_t>& starts = start_set.darts;
   const uint32_t n = b.size(), width = static_cast<uint32_t>(b.arity) + (with_flags ? 1 : 0);
-  if (double(starts.size()) * n > double(kLockstepLabels)) return sequential_minimum(b, starts, with_flags);
+  if (double(starts.size()) * n > double(kLockstepLabels))
+    return sequential_minimum(b, starts, with_flags);
   thread_local std::vector<uint32_t> label, order, length, alive, next, letters, best;
   const size_t m = starts.size();
   if (label.size() < m * n) label.resize(m * n, 0);
@@ -310,8 +316,10 @@ CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& start_se
       const uint32_t* mine = &letters[size_t(c) * width];
       uint32_t j = 0;
       while (j < width && mine[j] == least[j]) ++j;
-      if (j == width) next.push_back(c);
-      else drop(c);
+      if (j == width)
+        next.push_back(c);
+      else
+        drop(c);
     }
     s.word.insert(s.word.end(), least, least + width);
     alive.swap(next);
@@ -330,8 +338,8 @@ size_t WordHash::operator()(const Word& w) const noexcept {
     return h ^ (h >> 31);
   };
   auto pair = [&](size_t i) { return uint64_t(w[i]) << 32 | w[i + 1]; };
-  uint64_t h0 = 0x9e3779b97f4a7c15ull ^ w.size(), h1 = 0x94d049bb133111ebull, h2 = 0x2545f4914f6cdd1dull,
-           h3 = 0xd6e8feb86659fd93ull;
+  uint64_t h0 = 0x9e3779b97f4a7c15ull ^ w.size(), h1 = 0x94d049bb133111ebull,
+           h2 = 0x2545f4914f6cdd1dull, h3 = 0xd6e8feb86659fd93ull;
   size_t i = 0;
   for (; i + 8 <= w.size(); i += 8) {
     h0 = mix(h0, pair(i));

@@ -64,7 +64,8 @@ struct CellSignature {
 // Words longer than 2^32-1 labels cannot occur: labels are uint32 (Error(Range) beyond).
 // All starts are streamed in lockstep, dropping a start as soon as its word exceeds the smallest.
 CellSignature minimal_signature(const BoundaryGraph& b, Mode mode, bool with_flags = true);
-CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& starts, bool with_flags = true);
+CellSignature minimal_signature(const BoundaryGraph& b, const StartSet& starts,
+                                bool with_flags = true);
 struct WordHash {
   size_t operator()(const Word& w) const noexcept;
 };

@@ -120,7 +120,8 @@ size_t sweep_half_cells(const Map& g, int i, Sweep& s) {
 size_t count_half_cells(const Map& g, int i) {
   const int n = g.dimension();
   if (g.is_omap() || (i != 2 && i != 3) || (n != i && n != i + 1))
-    throw Error(ErrorCode::Usage, "half-cells are half-faces or half-volumes of a G-map", "i = " + std::to_string(i));
+    throw Error(ErrorCode::Usage, "half-cells are half-faces or half-volumes of a G-map",
+                "i = " + std::to_string(i));
   Sweep s;
   return sweep_half_cells(g, i, s);
 }
@@ -138,7 +139,8 @@ namespace {
 bool count_closed_half_faces_and_volumes(const Map& g, HalfFacesAndVolumes& h) {
   if (g.has_holes()) return false;
   const Dart cap = g.capacity();
-  const Dart *a0 = g.links(0).data(), *a1 = g.links(1).data(), *a2 = g.links(2).data(), *a3 = g.links(3).data();
+  const Dart *a0 = g.links(0).data(), *a1 = g.links(1).data(), *a2 = g.links(2).data(),
+             *a3 = g.links(3).data();
   const size_t words = (size_t(cap) + 63) / 64;
   ScratchTable<uint64_t> bits;
   bits.reserve(words);

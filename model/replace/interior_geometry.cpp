@@ -20,7 +20,8 @@ double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 // The boundary faces of the pattern as cycles of boundary darts, one dart per corner (f-pattern:
 // one polygon along alpha_0 and the boundary successor; v-pattern: the <0,1>-orbits of 3-free
 // darts).
-std::vector<std::vector<Dart>> boundary_polygons(const Map& p, const std::vector<uint8_t>& positive) {
+std::vector<std::vector<Dart>> boundary_polygons(const Map& p,
+                                                 const std::vector<uint8_t>& positive) {
   const int n = p.dimension();
   std::vector<std::vector<Dart>> polys;
   std::vector<uint8_t> seen(p.capacity(), 0);
@@ -70,7 +71,8 @@ std::vector<InteriorVertex> mean_value_coordinates(const Map& p, const std::vect
         len[j] = norm(a);
         tan_half[j] = norm(cross(a, b)) / (norm(a) * norm(b) + dot(a, b));
       }
-      for (size_t j = 0; j < k; ++j) add(poly[j], (tan_half[(j + k - 1) % k] + tan_half[j]) / len[j]);
+      for (size_t j = 0; j < k; ++j)
+        add(poly[j], (tan_half[(j + k - 1) % k] + tan_half[j]) / len[j]);
     } else {  // Ju, Schaefer & Warren: closed triangle mesh (polygons fan-triangulated)
       for (const auto& poly : polys)
         for (size_t t = 1; t + 1 < poly.size(); ++t) {
@@ -83,19 +85,23 @@ std::vector<InteriorVertex> mean_value_coordinates(const Map& p, const std::vect
             u[i] = {r[0] / d[i], r[1] / d[i], r[2] / d[i]};
           }
           double theta[3], c[3], s[3];
-          for (int i = 0; i < 3; ++i) theta[i] = 2 * std::asin(std::min(1.0, norm(sub(u[(i + 1) % 3], u[(i + 2) % 3])) / 2));
+          for (int i = 0; i < 3; ++i)
+            theta[i] = 2 * std::asin(std::min(1.0, norm(sub(u[(i + 1) % 3], u[(i + 2) % 3])) / 2));
           const double h = (theta[0] + theta[1] + theta[2]) / 2;
           const double sign = dot(cross(u[0], u[1]), u[2]) < 0 ? -1.0 : 1.0;
           bool skip = false;
           for (int i = 0; i < 3; ++i) {
-            c[i] = 2 * std::sin(h) * std::sin(h - theta[i]) / (std::sin(theta[(i + 1) % 3]) * std::sin(theta[(i + 2) % 3])) - 1;
+            c[i] = 2 * std::sin(h) * std::sin(h - theta[i]) /
+                       (std::sin(theta[(i + 1) % 3]) * std::sin(theta[(i + 2) % 3])) -
+                   1;
             s[i] = sign * std::sqrt(std::max(0.0, 1 - c[i] * c[i]));
             skip |= std::abs(s[i]) <= 1e-12;
           }
           if (skip) continue;  // x in the triangle's plane, outside it: no contribution
           for (int i = 0; i < 3; ++i) {
             const int a = (i + 1) % 3, b = (i + 2) % 3;
-            add(tri[i], (theta[i] - c[a] * theta[b] - c[b] * theta[a]) / (d[i] * std::sin(theta[a]) * s[b]));
+            add(tri[i], (theta[i] - c[a] * theta[b] - c[b] * theta[a]) /
+                            (d[i] * std::sin(theta[a]) * s[b]));
           }
         }
     }

@@ -22,7 +22,8 @@ std::vector<uint8_t> orientation_classes(const Map& g) {
           colour[y] = static_cast<uint8_t>(1 - colour[x]);
           stack.push_back(y);
         } else if (colour[y] == colour[x]) {
-          throw Error(ErrorCode::InvalidMap, "the oriented mode needs an orientable map", "dart " + std::to_string(x));
+          throw Error(ErrorCode::InvalidMap, "the oriented mode needs an orientable map",
+                      "dart " + std::to_string(x));
         }
       }
     }

@@ -9,11 +9,15 @@
 namespace gmr::replace {
 
 Pattern make_pattern(std::string name, FlaggedMap m) {
-  auto reject = [&](const std::string& why) { throw Error(ErrorCode::Schema, "not a pattern: " + why, name); };
+  auto reject = [&](const std::string& why) {
+    throw Error(ErrorCode::Schema, "not a pattern: " + why, name);
+  };
   const Map& g = m.map;
   const int n = g.dimension();
   if (g.is_omap()) reject("patterns are G-maps");
-  if (n != 2 && n != 3) reject("an f-pattern is a 2-G-map and a v-pattern a 3-G-map (dimension " + std::to_string(n) + ")");
+  if (n != 2 && n != 3)
+    reject("an f-pattern is a 2-G-map and a v-pattern a 3-G-map (dimension " + std::to_string(n) +
+           ")");
   if (g.size() == 0) reject("no dart");
   const ValidityReport v = check_validity(g, 1);
   if (!v.ok()) reject("invalid G-map: " + to_text(v.violations.front()));
@@ -22,8 +26,8 @@ Pattern make_pattern(std::string name, FlaggedMap m) {
   g.for_each_dart([&](Dart d) {
     for (int i = 0; i < n; ++i)
       if (g.is_free(i, d))
-        reject("dart " + std::to_string(d) + " is " + std::to_string(i) + "-free (only the boundary, " +
-               std::to_string(n) + "-free darts, may be free)");
+        reject("dart " + std::to_string(d) + " is " + std::to_string(i) +
+               "-free (only the boundary, " + std::to_string(n) + "-free darts, may be free)");
     boundary += g.is_free(n, d);
   });
   if (boundary == 0) reject("no boundary (no " + std::to_string(n) + "-free dart)");
@@ -39,8 +43,10 @@ Pattern make_pattern(std::string name, FlaggedMap m) {
   m.resize_flags();
   p.boundary = pattern_boundary(g, m.flag, p.positive);
   if (!is_connected(p.boundary))
-    reject(n == 2 ? "the boundary is not one cycle (not a disc)" : "the boundary is not one connected surface");
-  if (m.positioned() && !p.positive.empty()) p.interior_vertices = mean_value_coordinates(g, m.position, p.positive);
+    reject(n == 2 ? "the boundary is not one cycle (not a disc)"
+                  : "the boundary is not one connected surface");
+  if (m.positioned() && !p.positive.empty())
+    p.interior_vertices = mean_value_coordinates(g, m.position, p.positive);
   g.for_each_dart([&](Dart d) {
     if (!g.is_free(n, d)) p.interior_darts.push_back(d);
   });

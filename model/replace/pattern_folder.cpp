@@ -19,7 +19,8 @@ std::vector<Pattern> load_patterns(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
   for (const auto& e : std::filesystem::directory_iterator(folder))
     if (e.is_regular_file() && e.path().extension() == ".json") files.push_back(e.path());
-  if (files.empty()) throw Error(ErrorCode::Io, "no pattern file (*.json) in the folder", folder.string());
+  if (files.empty())
+    throw Error(ErrorCode::Io, "no pattern file (*.json) in the folder", folder.string());
   std::sort(files.begin(), files.end());
   std::vector<Pattern> out;
   for (const auto& file : files) {

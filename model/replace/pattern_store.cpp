@@ -31,7 +31,8 @@ bool boundary_automorphisms_extend(const Pattern& p, Mode mode, const StoreEntry
   const Word best = boundary_word(b, e.start);
   const std::vector<uint32_t> ref = boundary_labeling(b, e.start);
   for (uint32_t s = 0; s < b.size(); ++s) {
-    if (s == e.start || (mode == Mode::Oriented && !b.positive[s]) || boundary_word(b, s) != best) continue;
+    if (s == e.start || (mode == Mode::Oriented && !b.positive[s]) || boundary_word(b, s) != best)
+      continue;
     // The boundary automorphism ref[k] -> order[k], extended through alpha_0..alpha_n.
     const std::vector<uint32_t> order = boundary_labeling(b, s);
     std::vector<Dart> image(g.capacity(), kNoDart);
@@ -56,8 +57,10 @@ bool boundary_automorphisms_extend(const Pattern& p, Mode mode, const StoreEntry
     std::vector<uint8_t> hit(g.capacity(), 0);
     bool bijective = true;
     g.for_each_dart([&](Dart x) {
-      if (image[x] == kNoDart || hit[image[x]] || p.map.flag[x] != p.map.flag[image[x]]) bijective = false;
-      else hit[image[x]] = 1;
+      if (image[x] == kNoDart || hit[image[x]] || p.map.flag[x] != p.map.flag[image[x]])
+        bijective = false;
+      else
+        hit[image[x]] = 1;
     });
     if (!bijective) return false;
   }

@@ -22,7 +22,8 @@ struct StoreEntry {
   uint32_t start = 0;          // local boundary index of the minimal word's start dart
   uint32_t automorphisms = 0;  // boundary automorphisms (preserving flags, and D+ if oriented)
   // Some boundary automorphism does not extend to the whole pattern: the result of a replacement
-  // depends on the minimal start dart chosen (the paper's Fig. 4; ties are broken deterministically).
+  // depends on the minimal start dart chosen (the paper's Fig. 4; ties are broken
+  // deterministically).
   bool ambiguous = false;
 };
 
@@ -84,7 +85,8 @@ class PatternStore {
     std::vector<std::vector<uint32_t>> ranks;
   };
   std::unordered_map<Word, Lookup, WordHash> lookup_;
-  void index_start_words(const Pattern& p, const std::vector<StoreEntry>& list, const std::vector<uint32_t>& ref);
+  void index_start_words(const Pattern& p, const std::vector<StoreEntry>& list,
+                         const std::vector<uint32_t>& ref);
   size_t lookup_letters_ = 0;
 };
 

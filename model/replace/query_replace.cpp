@@ -24,14 +24,17 @@ QueryReplaceReport begin_replacement(FlaggedMap& target, const PatternStore& sto
   const Map& g = target.map;
   const int n = g.dimension();
   if (g.is_omap()) throw Error(ErrorCode::InvalidMap, "query-replace works on G-maps");
-  if (cell_dim != 2 && cell_dim != 3) throw Error(ErrorCode::Usage, "cells are faces (2) or volumes (3)", "--cells");
+  if (cell_dim != 2 && cell_dim != 3)
+    throw Error(ErrorCode::Usage, "cells are faces (2) or volumes (3)", "--cells");
   if (n != cell_dim && n != cell_dim + 1)
-    throw Error(ErrorCode::InvalidMap, std::to_string(cell_dim) + "-cells are replaced in " + std::to_string(cell_dim) +
-                                           "- or " + std::to_string(cell_dim + 1) + "-G-maps, not in a " +
+    throw Error(ErrorCode::InvalidMap, std::to_string(cell_dim) + "-cells are replaced in " +
+                                           std::to_string(cell_dim) + "- or " +
+                                           std::to_string(cell_dim + 1) + "-G-maps, not in a " +
                                            std::to_string(n) + "-G-map");
   if (precondition == Precondition::CheckValidity) {
     const ValidityReport v = check_validity(g, 1);
-    if (!v.ok()) throw Error(ErrorCode::InvalidMap, "the map is not valid: " + to_text(v.violations.front()));
+    if (!v.ok())
+      throw Error(ErrorCode::InvalidMap, "the map is not valid: " + to_text(v.violations.front()));
   }
   target.resize_flags();
   QueryReplaceReport r;
@@ -82,7 +85,7 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   StoreMatch last;
   std::vector<Dart> followed;
   std::vector<uint8_t> last_in_order;  // per hit of `last`: its ranks are the identity
-  CellPredictor predictor;  // the next cell along last_key fetched while one is replaced
+  CellPredictor predictor;             // the next cell along last_key fetched while one is replaced
   auto replace = [&](uint32_t pattern, const Dart* image, bool shared) {
     r.darts_added += replace_cell(target, store.replacement(pattern), image, shared);
     if (after_each) after_each();
@@ -100,9 +103,10 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
     // found and its word looked up.
     StoreMatch match;
     uint32_t start = 0;
-    const bool by_last = last.hits && (store.mode() == Mode::Unoriented || positive[rep]) &&
-                         sweep.follow(rep, last_key.data() + 1, static_cast<uint32_t>(followed.size()), target.flag,
-                                      followed.data());
+    const bool by_last =
+        last.hits && (store.mode() == Mode::Unoriented || positive[rep]) &&
+        sweep.follow(rep, last_key.data() + 1, static_cast<uint32_t>(followed.size()), target.flag,
+                     followed.data());
     if (by_last) {
       match = last;
       match.start = 0;
@@ -113,8 +117,10 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
       if (start != UINT32_MAX) {
         key.assign(1, static_cast<uint32_t>(cell_dim));
         // The traversal numbered the cell breadth-first from rep: from rep, its labels are there.
-        if (start == 0) numbered_boundary_word(c, key);
-        else boundary_word(c, start, key, order);
+        if (start == 0)
+          numbered_boundary_word(c, key);
+        else
+          boundary_word(c, start, key, order);
         match = store.match_word(key, start);
         if (match.hits) {
           last_key = key;
@@ -140,18 +146,22 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
       ++r.ambiguous_keys;
       if (select) choice = select(*hits, target, rep);
       if (choice >= hits->size())
-        throw Error(ErrorCode::Usage, "the duplicate selector chose pattern " + std::to_string(choice) + " of " +
-                                          std::to_string(hits->size()),
+        throw Error(ErrorCode::Usage,
+                    "the duplicate selector chose pattern " + std::to_string(choice) + " of " +
+                        std::to_string(hits->size()),
                     "dart " + std::to_string(rep));
     }
     // 2. The isomorphism f: the cell's darts in the label order of the pattern's template.
     const uint32_t pattern = static_cast<uint32_t>((*hits)[choice].pattern);
     const bool shared = n > cell_dim && !g.is_free(cell_dim + 1, rep);
     // Numbered along the pattern's own template order (ranks the identity): the numbering is f.
-    if (by_last && !deferred && last_in_order[choice]) return replace(pattern, followed.data(), shared);
+    if (by_last && !deferred && last_in_order[choice])
+      return replace(pattern, followed.data(), shared);
     std::vector<Dart>& image = deferred ? targets : f;
-    if (deferred) matches.push_back({pattern, targets.size(), shared});
-    else f.clear();
+    if (deferred)
+      matches.push_back({pattern, targets.size(), shared});
+    else
+      f.clear();
     if (by_last)
       for (uint32_t k : (*match.ranks)[choice]) image.push_back(followed[k]);
     else if (start == 0)
@@ -163,11 +173,13 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
   });
   // The deferred matches: their copies added at once (the arrays grow once), then written.
   size_t added = 0;
-  for (const Match& m : matches) added += size_t(store.replacement(m.pattern).interior) * (m.shared ? 2 : 1);
+  for (const Match& m : matches)
+    added += size_t(store.replacement(m.pattern).interior) * (m.shared ? 2 : 1);
   Dart next = added ? g.add_darts(added) : g.capacity();
   if (added) target.resize_flags();
   for (const Match& m : matches) {
-    const size_t written = replace_cell(target, store.replacement(m.pattern), &targets[m.targets], next, m.shared);
+    const size_t written =
+        replace_cell(target, store.replacement(m.pattern), &targets[m.targets], next, m.shared);
     next += static_cast<Dart>(written);
     r.darts_added += written;
     if (after_each) after_each();
@@ -189,11 +201,13 @@ size_t largest_interior(const PatternStore& store, int cell_dim) {
 
 }  // namespace
 
-size_t replacement_room(const Map& g, const PatternStore& store, const std::vector<int>& cell_dims) {
+size_t replacement_room(const Map& g, const PatternStore& store,
+                        const std::vector<int>& cell_dims) {
   const bool faces = std::count(cell_dims.begin(), cell_dims.end(), 2) == 1;
   const bool volumes = std::count(cell_dims.begin(), cell_dims.end(), 3) == 1;
   const size_t most_faces = largest_interior(store, 2), most_volumes = largest_interior(store, 3);
-  const bool together = faces && volumes && most_faces && most_volumes && !g.is_omap() && g.dimension() == 3;
+  const bool together =
+      faces && volumes && most_faces && most_volumes && !g.is_omap() && g.dimension() == 3;
   size_t room = 0;
   if (together) {
     const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
@@ -204,7 +218,8 @@ size_t replacement_room(const Map& g, const PatternStore& store, const std::vect
   return room;
 }
 
-size_t replacement_room_bound(size_t darts, const PatternStore& store, const std::vector<int>& cell_dims) {
+size_t replacement_room_bound(size_t darts, const PatternStore& store,
+                              const std::vector<int>& cell_dims) {
   size_t room = 0;
   for (int c : cell_dims) {
     const size_t most = largest_interior(store, c);
@@ -226,8 +241,8 @@ size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim) {
   // Maps query_replace refuses: per cell, two half-cells when it has two.
   size_t halves = 0;
   visit_all_orbits(
-      g, cell_type(g, cell_dim).mask(), [&](Dart d) { halves += n > cell_dim && !g.is_free(cell_dim + 1, d) ? 2 : 1; },
-      [](Dart) {});
+      g, cell_type(g, cell_dim).mask(),
+      [&](Dart d) { halves += n > cell_dim && !g.is_free(cell_dim + 1, d) ? 2 : 1; }, [](Dart) {});
   return halves * most;
 }
 

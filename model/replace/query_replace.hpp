@@ -25,10 +25,10 @@ namespace gmr::replace {
 struct QueryReplaceReport {
   Mode mode = Mode::Unoriented;
   int cell_dim = 2;
-  size_t cells = 0;                      // cells examined
-  std::vector<size_t> matched;           // per pattern of the store
-  std::vector<Dart> unmatched;           // one dart of each cell left untouched
-  size_t ambiguous_keys = 0;             // matches whose key held several patterns
+  size_t cells = 0;             // cells examined
+  std::vector<size_t> matched;  // per pattern of the store
+  std::vector<Dart> unmatched;  // one dart of each cell left untouched
+  size_t ambiguous_keys = 0;    // matches whose key held several patterns
   size_t darts_added = 0;
   size_t replaced() const;
 };
@@ -53,7 +53,8 @@ struct QueryReplaceReport {
 // caller that has validated the map itself (the map is then read as a valid G-map; an invalid one
 // gives undefined results).
 enum class Precondition { CheckValidity, AssumeValid };
-using DuplicateSelector = std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
+using DuplicateSelector =
+    std::function<size_t(const std::vector<StoreEntry>&, const FlaggedMap&, Dart)>;
 // The start shared by query_replace and replace_only (replace_only.hpp): checks the target (a
 // G-map of dimension cell_dim or cell_dim + 1, cell_dim 2 or 3: Error(Usage) otherwise; valid
 // unless AssumeValid: Error(InvalidMap)), sizes its flags and returns an empty report.
@@ -69,7 +70,8 @@ QueryReplaceReport query_replace(FlaggedMap& target, const PatternStore& store, 
 // An upper bound of the darts query_replace(target, store, cell_dim) adds: per cell, the largest
 // interior of the store's patterns of that dimension, twice for a face of a 3-G-map with two
 // half-faces. Splitting edges changes no cell, so the bound computed before an e-pattern holds
-// after it: a sequence (edges, faces, volumes) can reserve its final size once (FlaggedMap::reserve).
+// after it: a sequence (edges, faces, volumes) can reserve its final size once
+// (FlaggedMap::reserve).
 size_t replacement_room(const Map& g, const PatternStore& store, int cell_dim);
 // The bound of a sequence replacing the cells of each dimension of cell_dims in turn: the sum of
 // replacement_room over them, with the half-faces and half-volumes of a 3-G-map counted in one
@@ -84,6 +86,7 @@ size_t replacement_room(const Map& g, const PatternStore& store, const std::vect
 // split). Exact when every cell matches a pattern with both the smallest boundary and the largest
 // interior (a uniform subdivision: one pattern per dimension); with patterns of very different
 // sizes it reserves more than replacement_room, which counts the cells.
-size_t replacement_room_bound(size_t darts, const PatternStore& store, const std::vector<int>& cell_dims);
+size_t replacement_room_bound(size_t darts, const PatternStore& store,
+                              const std::vector<int>& cell_dims);
 
 }  // namespace gmr::replace

@@ -47,7 +47,8 @@ QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, s
     pending.insert(pending.end(), f.begin(), f.end());
     pending_shared.push_back(shared);
   });
-  for (size_t m = 0; m < pending_shared.size(); ++m) replace(&pending[m * t.boundary], pending_shared[m]);
+  for (size_t m = 0; m < pending_shared.size(); ++m)
+    replace(&pending[m * t.boundary], pending_shared[m]);
   return r;
 }
 

@@ -17,14 +17,14 @@
 
 namespace gmr::replace {
 
-// Replaces every cell_dim-cell of the target (cell_dim: the pattern's) by store.patterns()[pattern],
-// or only the cells of `starts`, each dart being the one matched with the pattern's start dart.
-// Without a list, every cell is traversed from its smallest dart. Checks of the target and
-// precondition as query_replace (Error(InvalidMap), Error(Usage)); a pattern index out of range,
-// a dart that is not alive or a cell listed twice is Error(Usage) before anything is replaced.
-// after_each (optional) runs after every replacement. The report counts the cells examined, the
-// replacements (matched[pattern]), the cells left (unmatched, the dart each was traversed from)
-// and the darts added.
+// Replaces every cell_dim-cell of the target (cell_dim: the pattern's) by
+// store.patterns()[pattern], or only the cells of `starts`, each dart being the one matched with
+// the pattern's start dart. Without a list, every cell is traversed from its smallest dart. Checks
+// of the target and precondition as query_replace (Error(InvalidMap), Error(Usage)); a pattern
+// index out of range, a dart that is not alive or a cell listed twice is Error(Usage) before
+// anything is replaced. after_each (optional) runs after every replacement. The report counts the
+// cells examined, the replacements (matched[pattern]), the cells left (unmatched, the dart each was
+// traversed from) and the darts added.
 QueryReplaceReport replace_only(FlaggedMap& target, const PatternStore& store, size_t pattern,
                                 const std::vector<Dart>* starts = nullptr,
                                 Precondition precondition = Precondition::CheckValidity,

@@ -10,7 +10,8 @@ namespace {
 
 // Per boundary rank (label order `order`), the first rank of its vertex: the orbit of neighbours
 // 1..m of the boundary graph (arity m + 1).
-std::vector<uint32_t> boundary_vertex_ranks(const BoundaryGraph& b, const std::vector<uint32_t>& order) {
+std::vector<uint32_t> boundary_vertex_ranks(const BoundaryGraph& b,
+                                            const std::vector<uint32_t>& order) {
   std::vector<uint32_t> rank_of(b.size()), out(order.size(), UINT32_MAX), stack;
   for (uint32_t r = 0; r < order.size(); ++r) rank_of[order[r]] = r;
   for (uint32_t r = 0; r < order.size(); ++r) {
@@ -67,8 +68,10 @@ ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start) {
       // Only alpha_{i-1} leaves the interior: alpha_j alpha_i is an involution for j <= i - 2,
       // so an interior dart's alpha_j (j != i - 1) is not i-free.
       if (y == UINT32_MAX || (y >= k && d != i - 1))
-        throw Error(ErrorCode::Schema, "interior dart " + std::to_string(x) + " is " + std::to_string(d) +
-                                           "-linked outside the interior and boundary", p.name);
+        throw Error(ErrorCode::Schema,
+                    "interior dart " + std::to_string(x) + " is " + std::to_string(d) +
+                        "-linked outside the interior and boundary",
+                    p.name);
       t.link[d].push_back(y < k ? y : j);
       if (y >= k) t.relinks.emplace_back(j, y - k);
       if (d == i - 1) t.relink_rank.push_back(y < k ? ReplacementTemplate::kInterior : y - k);
@@ -102,7 +105,8 @@ ReplacementTemplate compile_replacement(const Pattern& p, uint32_t start) {
   for (const auto& w : t.weights)
     for (const auto& [b, x] : w) t.vertex_reads.push_back(b);
   std::sort(t.vertex_reads.begin(), t.vertex_reads.end());
-  t.vertex_reads.erase(std::unique(t.vertex_reads.begin(), t.vertex_reads.end()), t.vertex_reads.end());
+  t.vertex_reads.erase(std::unique(t.vertex_reads.begin(), t.vertex_reads.end()),
+                       t.vertex_reads.end());
   return t;
 }
 

@@ -33,10 +33,11 @@ struct ReplacementTemplate {
   // link[t][j]: the alpha_t-neighbour of interior dart j (< interior), t = 0..cell_dim; for a
   // boundary neighbour (t = cell_dim - 1 only), j itself, overwritten by the relink.
   std::array<std::vector<uint32_t>, 4> link;
-  std::vector<std::pair<uint32_t, uint32_t>> relinks;  // (interior dart j, boundary rank b) of alpha_{i-1}
+  std::vector<std::pair<uint32_t, uint32_t>>
+      relinks;  // (interior dart j, boundary rank b) of alpha_{i-1}
   // The same per interior dart: b, or kInterior when alpha_{i-1} stays in the interior.
   std::vector<uint32_t> relink_rank;
-  std::vector<uint32_t> flag;                          // per interior dart
+  std::vector<uint32_t> flag;  // per interior dart
   // The interior darts at a boundary vertex (j, boundary rank b) and at an interior vertex (j, v).
   std::vector<std::pair<uint32_t, uint32_t>> at_boundary_vertex, at_interior_vertex;
   // The same per interior dart: b (< boundary) at a boundary vertex, boundary + v at interior

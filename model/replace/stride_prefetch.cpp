@@ -9,8 +9,8 @@ namespace {
 // half the fetches; fetching at every label, a dart skipped when in the same 16 as the one before,
 // was measured slower: the fetches crowd the memory accesses of the replacement).
 template <int I>
-void prefetch_predicted(const Dart* const* link, const uint32_t* flag, Dart flagged, Dart capacity, const Dart* last,
-                        const Dart* before, uint32_t size) {
+void prefetch_predicted(const Dart* const* link, const uint32_t* flag, Dart flagged, Dart capacity,
+                        const Dart* last, const Dart* before, uint32_t size) {
   for (uint32_t k = 0; k < size; k += 2) {
     const Dart next = 2 * last[k] - before[k];  // below 0: wraps past the capacity, skipped
     if (next >= capacity) continue;
@@ -21,8 +21,8 @@ void prefetch_predicted(const Dart* const* link, const uint32_t* flag, Dart flag
 
 }  // namespace
 
-void prefetch_predicted_cell(const Map& g, int i, const std::vector<uint32_t>& flag, const Dart* last,
-                             const Dart* before, uint32_t size) {
+void prefetch_predicted_cell(const Map& g, int i, const std::vector<uint32_t>& flag,
+                             const Dart* last, const Dart* before, uint32_t size) {
   const Dart* link[kMaxDim];
   for (int j = 0; j < i; ++j) link[j] = g.links(j).data();
   const Dart capacity = g.capacity(), flagged = static_cast<Dart>(flag.size());

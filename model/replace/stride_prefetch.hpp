@@ -27,17 +27,20 @@ inline bool predicts_cells(int i) { return i == 3; }
 
 // last, before: the darts of the last two cells numbered along the same word (size each), i = 2 or
 // 3. Fetches alpha_0..alpha_{i-1} and the flag of the predicted dart of every second label.
-void prefetch_predicted_cell(const Map& g, int i, const std::vector<uint32_t>& flag, const Dart* last,
-                             const Dart* before, uint32_t size);
+void prefetch_predicted_cell(const Map& g, int i, const std::vector<uint32_t>& flag,
+                             const Dart* last, const Dart* before, uint32_t size);
 
 // The cells a sweep numbers along one word, one after the other: from the second on, each one
 // numbered fetches the next one's predicted darts (for the dimensions predicts_cells allows).
 class CellPredictor {
  public:
   // A cell of dimension i numbered along the word (its darts in label order).
-  void numbered(const Map& g, int i, const std::vector<uint32_t>& flag, const std::vector<Dart>& cell) {
+  void numbered(const Map& g, int i, const std::vector<uint32_t>& flag,
+                const std::vector<Dart>& cell) {
     if (!predicts_cells(i)) return;
-    if (known_) prefetch_predicted_cell(g, i, flag, cell.data(), before_.data(), static_cast<uint32_t>(cell.size()));
+    if (known_)
+      prefetch_predicted_cell(g, i, flag, cell.data(), before_.data(),
+                              static_cast<uint32_t>(cell.size()));
     before_ = cell;
     known_ = true;
   }

@@ -7,7 +7,8 @@
 namespace gmr::replace {
 
 std::vector<Vec3> unit_hex_positions(const Map& g, double length) {
-  if (g.is_omap() || g.dimension() != 3) throw Error(ErrorCode::InvalidMap, "unit hexahedra are laid out in 3-G-maps");
+  if (g.is_omap() || g.dimension() != 3)
+    throw Error(ErrorCode::InvalidMap, "unit hexahedra are laid out in 3-G-maps");
   using Frame = std::array<Vec3, 3>;
   std::vector<Vec3> pos(g.capacity(), Vec3{0, 0, 0});
   std::vector<Frame> frame(g.capacity());
@@ -47,7 +48,8 @@ std::vector<Vec3> unit_hex_positions(const Map& g, double length) {
       }
     }
   }
-  if (queue.size() != g.size()) throw Error(ErrorCode::InvalidMap, "unit hexahedra: the map is not connected");
+  if (queue.size() != g.size())
+    throw Error(ErrorCode::InvalidMap, "unit hexahedra: the map is not connected");
   return pos;
 }
 

@@ -7,8 +7,8 @@ namespace {
 // follow_word for a fixed arity I (the cell dimension): the loops over the neighbours unrolled.
 // AllFlagged: every dart of `met` has a flag (no bound check per dart).
 template <int I, bool AllFlagged>
-bool follow(const Dart* const* link, Dart d, const uint32_t* w, uint32_t size, const uint32_t* fl, Dart flagged,
-            MetBits met, Dart* out) {
+bool follow(const Dart* const* link, Dart d, const uint32_t* w, uint32_t size, const uint32_t* fl,
+            Dart flagged, MetBits met, Dart* out) {
   uint32_t count = 1;
   out[0] = d;
   met.set(d);
@@ -39,19 +39,22 @@ disagree:
 
 }  // namespace
 
-bool follow_word(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag,
-                 MetBits met, Dart* out) {
+bool follow_word(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size,
+                 const std::vector<uint32_t>& flag, MetBits met, Dart* out) {
   if (size == 0) return false;
   const Dart* link[kMaxDim];
   for (int j = 0; j < i; ++j) link[j] = g.links(j).data();
   const Dart flagged = static_cast<Dart>(flag.size());
   const bool all = flagged >= met.size;  // as query-replace sizes the flags (begin_replacement)
   switch (i) {
-    case 2: return all ? follow<2, true>(link, d, word, size, flag.data(), flagged, met, out)
-                       : follow<2, false>(link, d, word, size, flag.data(), flagged, met, out);
-    case 3: return all ? follow<3, true>(link, d, word, size, flag.data(), flagged, met, out)
-                       : follow<3, false>(link, d, word, size, flag.data(), flagged, met, out);
-    default: return false;  // cells are faces or volumes (begin_replacement)
+    case 2:
+      return all ? follow<2, true>(link, d, word, size, flag.data(), flagged, met, out)
+                 : follow<2, false>(link, d, word, size, flag.data(), flagged, met, out);
+    case 3:
+      return all ? follow<3, true>(link, d, word, size, flag.data(), flagged, met, out)
+                 : follow<3, false>(link, d, word, size, flag.data(), flagged, met, out);
+    default:
+      return false;  // cells are faces or volumes (begin_replacement)
   }
 }
 

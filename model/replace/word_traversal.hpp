@@ -2,14 +2,15 @@
 // read backwards). W(B, s) lists, per dart in label order, its flag and the labels of its
 // neighbours, a new neighbour taking the next label (flagged_word.hpp). Given such a word and a
 // dart d of a target, the darts of d's <0..i-1>-orbit are numbered by following the word: the dart
-// of label 1 is d; for the k-th labelled dart x and j = 0..i-1, the word's letter is either the next
-// label (alpha_j(x) is numbered with it) or a label already given, which alpha_j(x) must carry. The
-// flags are compared on the way. When every letter agrees, the numbering is a homomorphism of the
-// word's boundary graph onto d's orbit (its image is closed under alpha_0..alpha_{i-1}); with every
-// dart numbered once (a per-dart bit, the map's darts met so far) it is a bijection: the word from d
-// is W(B, s), so the orbit is isomorphic to B with d sent to s (Theorem 1), and the k-th numbered
-// dart is the image of B's k-th labelled dart. No local index array, no neighbour table: one
-// pass over the orbit, reading each dart's links once, and the check is the traversal itself.
+// of label 1 is d; for the k-th labelled dart x and j = 0..i-1, the word's letter is either the
+// next label (alpha_j(x) is numbered with it) or a label already given, which alpha_j(x) must
+// carry. The flags are compared on the way. When every letter agrees, the numbering is a
+// homomorphism of the word's boundary graph onto d's orbit (its image is closed under
+// alpha_0..alpha_{i-1}); with every dart numbered once (a per-dart bit, the map's darts met so far)
+// it is a bijection: the word from d is W(B, s), so the orbit is isomorphic to B with d sent to s
+// (Theorem 1), and the k-th numbered dart is the image of B's k-th labelled dart. No local index
+// array, no neighbour table: one pass over the orbit, reading each dart's links once, and the check
+// is the traversal itself.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -42,12 +43,12 @@ struct MetBits {
 };
 
 // Follows `word` (per dart in label order: its flag, then the labels 1..size of its i neighbours
-// alpha_0..alpha_{i-1}) from d through the <0..i-1>-orbit of d in g. On success returns true, out[k]
-// being the dart of label k + 1 (out has room for `size` darts) and every dart of the orbit set in
-// `met`. On the first disagreement (a flag, a neighbour, a dart numbered twice or met before, a
-// dart outside `met`) returns false with `met` as it was. d must be alive and not met. `flag` is
-// indexed by dart (a dart past its end is unflagged).
-bool follow_word(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size, const std::vector<uint32_t>& flag,
-                 MetBits met, Dart* out);
+// alpha_0..alpha_{i-1}) from d through the <0..i-1>-orbit of d in g. On success returns true,
+// out[k] being the dart of label k + 1 (out has room for `size` darts) and every dart of the orbit
+// set in `met`. On the first disagreement (a flag, a neighbour, a dart numbered twice or met
+// before, a dart outside `met`) returns false with `met` as it was. d must be alive and not met.
+// `flag` is indexed by dart (a dart past its end is unflagged).
+bool follow_word(const Map& g, int i, Dart d, const uint32_t* word, uint32_t size,
+                 const std::vector<uint32_t>& flag, MetBits met, Dart* out);
 
 }  // namespace gmr::replace

@@ -11,8 +11,9 @@ using namespace gmr::graph;
 
 std::string DanglingArc::describe(const Rule& r, const DGraph& G) const {
   const Arc& e = G.arc(g_arc);
-  return "deleted node " + r.left().node_str(l_node) + " is matched to a node incident to the unmatched arc " +
-         G.node_str(e.src) + " -" + std::to_string(e.label) + "-> " + G.node_str(e.tgt) + " (dangling condition)";
+  return "deleted node " + r.left().node_str(l_node) +
+         " is matched to a node incident to the unmatched arc " + G.node_str(e.src) + " -" +
+         std::to_string(e.label) + "-> " + G.node_str(e.tgt) + " (dangling condition)";
 }
 
 void check_match(const Rule& r, const DGraph& G, const Match& m) {
@@ -22,8 +23,10 @@ void check_match(const Rule& r, const DGraph& G, const Match& m) {
   HandleVector<Node, bool> used(G.num_nodes(), false);
   for (Node v : L.nodes()) {
     const Node g = m.node[v];
-    if (g.index() >= G.num_nodes()) throw Error(ErrorCode::Usage, "image is not a node of G", "match of " + L.node_str(v));
-    if (used[g]) throw Error(ErrorCode::Usage, "match is not injective on nodes", "match of " + L.node_str(v));
+    if (g.index() >= G.num_nodes())
+      throw Error(ErrorCode::Usage, "image is not a node of G", "match of " + L.node_str(v));
+    if (used[g])
+      throw Error(ErrorCode::Usage, "match is not injective on nodes", "match of " + L.node_str(v));
     used[g] = true;
   }
   HandleVector<ArcId, bool> aused(G.num_arc_slots(), false);
@@ -31,12 +34,14 @@ void check_match(const Rule& r, const DGraph& G, const Match& m) {
     if (!L.arc_alive(a)) continue;
     const ArcId b = m.arc[a];
     const std::string loc = "match of arc " + r.arc_str(Side::L, a);
-    if (b.index() >= G.num_arc_slots() || !G.arc_alive(b)) throw Error(ErrorCode::Usage, "image is not an arc of G", loc);
+    if (b.index() >= G.num_arc_slots() || !G.arc_alive(b))
+      throw Error(ErrorCode::Usage, "image is not an arc of G", loc);
     if (aused[b]) throw Error(ErrorCode::Usage, "match is not injective on arcs", loc);
     aused[b] = true;
     const Arc &e = L.arc(a), &f = G.arc(b);
     if (f.label != e.label || f.src != m.node[e.src] || f.tgt != m.node[e.tgt])
-      throw Error(ErrorCode::Usage, "match does not preserve the ends or the label of the arc", loc);
+      throw Error(ErrorCode::Usage, "match does not preserve the ends or the label of the arc",
+                  loc);
   }
 }
 
@@ -93,7 +98,8 @@ Derivation derive_categorical(const Rule& r, const DGraph& G, const Match& m) {
     }
   HandleVector<ArcId, ArcId> garc_to_d(G.num_arc_slots(), kNoArc);
   for (ArcId b : G.arc_slots())
-    if (G.arc_alive(b) && !da[b]) garc_to_d[b] = out.D.add_arc(g_to_d[G.arc(b).src], g_to_d[G.arc(b).tgt], G.arc(b).label);
+    if (G.arc_alive(b) && !da[b])
+      garc_to_d[b] = out.D.add_arc(g_to_d[G.arc(b).src], g_to_d[G.arc(b).tgt], G.arc(b).label);
   // Pushout of D <- L∩R -> R: the K-part of R is glued on D through m (k |-> g_to_d(m(k))).
   out.H = out.D;
   out.g_to_h = g_to_d;  // H starts as a copy of D, same ids
@@ -111,7 +117,8 @@ Derivation derive_categorical(const Rule& r, const DGraph& G, const Match& m) {
     if (auto l = r.left_arc_of(a))
       out.comatch_arc[a] = garc_to_d[m.arc[*l]];
     else
-      out.comatch_arc[a] = out.H.add_arc(out.comatch[R.arc(a).src], out.comatch[R.arc(a).tgt], R.arc(a).label);
+      out.comatch_arc[a] =
+          out.H.add_arc(out.comatch[R.arc(a).src], out.comatch[R.arc(a).tgt], R.arc(a).label);
   }
   return out;
 }
@@ -171,7 +178,8 @@ Derivation derive_rewriting(const Rule& r, const DGraph& G, const Match& m) {
   for (Node k : order.handles()) out.H.add_node(W.name(order[k]));
   HandleVector<ArcId, ArcId> newarc(W.num_arc_slots(), kNoArc);
   for (ArcId b : W.arc_slots())
-    if (W.arc_alive(b)) newarc[b] = out.H.add_arc(newid[W.arc(b).src], newid[W.arc(b).tgt], W.arc(b).label);
+    if (W.arc_alive(b))
+      newarc[b] = out.H.add_arc(newid[W.arc(b).src], newid[W.arc(b).tgt], W.arc(b).label);
   out.g_to_h.assign(G.num_nodes(), kNoNode);
   for (Node g : G.nodes()) out.g_to_h[g] = newid[g];
   out.comatch.assign(R.num_nodes(), kNoNode);
@@ -194,7 +202,8 @@ bool same_derivation(const Derivation& a, const Derivation& b, std::string* why)
     return false;
   };
   if (a.H.num_nodes() != b.H.num_nodes()) return fail("different node counts");
-  if (a.g_to_h.size() != b.g_to_h.size() || a.comatch.size() != b.comatch.size()) return fail("different tracks");
+  if (a.g_to_h.size() != b.g_to_h.size() || a.comatch.size() != b.comatch.size())
+    return fail("different tracks");
   HandleVector<Node, Node> phi(a.H.num_nodes(), kNoNode);
   auto set = [&](Node x, Node y) {
     if (x == kNoNode || y == kNoNode) return x == y;
@@ -204,12 +213,15 @@ bool same_derivation(const Derivation& a, const Derivation& b, std::string* why)
     return true;
   };
   for (Node g : a.g_to_h.handles())
-    if (!set(a.g_to_h[g], b.g_to_h[g])) return fail("G node " + std::to_string(g.index()) + " tracked differently");
+    if (!set(a.g_to_h[g], b.g_to_h[g]))
+      return fail("G node " + std::to_string(g.index()) + " tracked differently");
   for (Node v : a.comatch.handles())
-    if (!set(a.comatch[v], b.comatch[v])) return fail("comatch differs on R node " + std::to_string(v.index()));
+    if (!set(a.comatch[v], b.comatch[v]))
+      return fail("comatch differs on R node " + std::to_string(v.index()));
   HandleVector<Node, bool> hit(b.H.num_nodes(), false);
   for (Node x : phi.handles()) {
-    if (phi[x] == kNoNode) return fail("H node " + a.H.node_str(x) + " is neither tracked from G nor in the comatch");
+    if (phi[x] == kNoNode)
+      return fail("H node " + a.H.node_str(x) + " is neither tracked from G nor in the comatch");
     if (hit[phi[x]]) return fail("two nodes sent to one");
     hit[phi[x]] = true;
   }
@@ -222,10 +234,12 @@ bool same_derivation(const Derivation& a, const Derivation& b, std::string* why)
     if (c != 0) return fail("arc multisets differ");
   if (a.comatch_arc.size() != b.comatch_arc.size()) return fail("different arc comatches");
   for (ArcId e : a.comatch_arc.handles()) {
-    if ((a.comatch_arc[e] == kNoArc) != (b.comatch_arc[e] == kNoArc)) return fail("arc comatch differs");
+    if ((a.comatch_arc[e] == kNoArc) != (b.comatch_arc[e] == kNoArc))
+      return fail("arc comatch differs");
     if (a.comatch_arc[e] == kNoArc) continue;
     const Arc &x = a.H.arc(a.comatch_arc[e]), &y = b.H.arc(b.comatch_arc[e]);
-    if (phi[x.src] != y.src || phi[x.tgt] != y.tgt || x.label != y.label) return fail("arc comatch differs");
+    if (phi[x.src] != y.src || phi[x.tgt] != y.tgt || x.label != y.label)
+      return fail("arc comatch differs");
   }
   return true;
 }
@@ -237,11 +251,14 @@ namespace {
 
 void check_rule_fits_map(const Rule& r, const Map& g) {
   if (r.kind() != g.kind())
-    throw Error(ErrorCode::Usage, std::string("a ") + to_string(r.kind()) + " rule applied to a " + to_string(g.kind()), "rule");
+    throw Error(
+        ErrorCode::Usage,
+        std::string("a ") + to_string(r.kind()) + " rule applied to a " + to_string(g.kind()),
+        "rule");
   if (r.dimension() > g.dimension())
     throw Error(ErrorCode::Usage,
-                "rule of dimension " + std::to_string(r.dimension()) + " applied to a map of dimension " +
-                    std::to_string(g.dimension()),
+                "rule of dimension " + std::to_string(r.dimension()) +
+                    " applied to a map of dimension " + std::to_string(g.dimension()),
                 "rule");
 }
 
@@ -272,19 +289,25 @@ MapDerivation apply_categorical(const Rule& r, const Map& g, const std::vector<D
   for (size_t k = 0; k < darts.size(); ++k) node_at[darts[k]] = Node(static_cast<uint32_t>(k));
   NodeMap nm;
   for (Dart d : match) {
-    if (!g.alive(d)) throw Error(ErrorCode::Usage, "match on a dart that does not exist", "dart " + std::to_string(d));
+    if (!g.alive(d))
+      throw Error(ErrorCode::Usage, "match on a dart that does not exist",
+                  "dart " + std::to_string(d));
     nm.push_back(node_at[d]);
   }
   auto m = match_from_nodes(r.left(), dg, nm);
-  if (!m) throw Error(ErrorCode::Usage, "the node map is not a match of the left-hand side (injective, label-preserving)", "match");
+  if (!m)
+    throw Error(ErrorCode::Usage,
+                "the node map is not a match of the left-hand side (injective, label-preserving)",
+                "match");
   Derivation der = derive_categorical(r, dg, *m);
   // H must be combinatorial to be stored as a map (I_H on every label).
   for (Node v : der.H.nodes())
     for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
       if (der.H.predecessors(v, i).size() != 1 || der.H.successors(v, i).size() != 1)
-        throw Error(ErrorCode::InvalidMap,
-                    "the result is not combinatorial: incident arcs I(" + std::to_string(i) + ") fails",
-                    "node " + der.H.node_str(v));
+        throw Error(
+            ErrorCode::InvalidMap,
+            "the result is not combinatorial: incident arcs I(" + std::to_string(i) + ") fails",
+            "node " + der.H.node_str(v));
   MapDerivation out;
   out.H = to_map(der.H, g.dimension(), g.kind());
   out.g_to_h.assign(g.capacity(), kNoDart);
@@ -298,7 +321,10 @@ MapDerivation apply_categorical(const Rule& r, const Map& g, const std::vector<D
 Dart predecessor(const Map& g, int i, Dart d) {
   if (g.is_involutive_dim(i)) {
     const Dart x = g.alpha(i, d);
-    if (g.alpha(i, x) != d) throw Error(ErrorCode::InvalidMap, "input map: alpha_" + std::to_string(i) + " is not an involution", "dart " + std::to_string(d));
+    if (g.alpha(i, x) != d)
+      throw Error(ErrorCode::InvalidMap,
+                  "input map: alpha_" + std::to_string(i) + " is not an involution",
+                  "dart " + std::to_string(d));
     return x;
   }
   Dart p = d;
@@ -306,7 +332,9 @@ Dart predecessor(const Map& g, int i, Dart d) {
     if (g.alpha(i, p) == d) return p;
     p = g.alpha(i, p);
   }
-  throw Error(ErrorCode::InvalidMap, "input map: beta_" + std::to_string(i) + " is not a permutation", "dart " + std::to_string(d));
+  throw Error(ErrorCode::InvalidMap,
+              "input map: beta_" + std::to_string(i) + " is not a permutation",
+              "dart " + std::to_string(d));
 }
 
 // Phase 1: the match is injective and every L arc has its image; L has at most one arc per label
@@ -316,21 +344,26 @@ std::vector<Node> check_map_match(const Rule& r, const Map& g, const std::vector
   std::vector<Node> lnode_of(g.capacity(), kNoNode);
   for (Node v : L.nodes()) {
     const Dart d = match[v.index()];
-    if (!g.alive(d)) throw Error(ErrorCode::Usage, "match on a dart that does not exist", "match of " + L.node_str(v));
-    if (lnode_of[d] != kNoNode) throw Error(ErrorCode::Usage, "match is not injective", "match of " + L.node_str(v));
+    if (!g.alive(d))
+      throw Error(ErrorCode::Usage, "match on a dart that does not exist",
+                  "match of " + L.node_str(v));
+    if (lnode_of[d] != kNoNode)
+      throw Error(ErrorCode::Usage, "match is not injective", "match of " + L.node_str(v));
     lnode_of[d] = v;
   }
   for (ArcId a : L.arc_slots()) {
     if (!L.arc_alive(a)) continue;
     const Arc& e = L.arc(a);
     if (g.alpha(e.label, match[e.src.index()]) != match[e.tgt.index()])
-      throw Error(ErrorCode::Usage, "the arc has no image in the map", "match of arc " + r.arc_str(Side::L, a));
+      throw Error(ErrorCode::Usage, "the arc has no image in the map",
+                  "match of arc " + r.arc_str(Side::L, a));
   }
   // In a map each dart has one i-arc out; two arcs of L from one node with one label cannot both
   // be matched (injective on arcs): reject parallel duplicates.
   std::string where;
   if (!at_most_one_arc_per_label(L, &where))
-    throw Error(ErrorCode::Usage, "left-hand side not combinatorial: no injective match into a map", "left " + where);
+    throw Error(ErrorCode::Usage, "left-hand side not combinatorial: no injective match into a map",
+                "left " + where);
   return lnode_of;
 }
 
@@ -343,10 +376,12 @@ void check_map_gluing(const Rule& r, const Map& g, const std::vector<Dart>& matc
     for (int i = g.lowest_dim(); i <= g.dimension(); ++i) {
       const auto out_l = L.successors(v, i), in_l = L.predecessors(v, i);
       const Dart t = g.alpha(i, d), s = predecessor(g, i, d);
-      if (out_l.empty() || match[out_l[0].index()] != t || in_l.empty() || match[in_l[0].index()] != s)
+      if (out_l.empty() || match[out_l[0].index()] != t || in_l.empty() ||
+          match[in_l[0].index()] != s)
         throw Error(ErrorCode::Usage,
-                    "the match violates the gluing condition: the " + std::to_string(i) + "-arcs of dart " +
-                        std::to_string(d) + " are not all matched (dangling condition)",
+                    "the match violates the gluing condition: the " + std::to_string(i) +
+                        "-arcs of dart " + std::to_string(d) +
+                        " are not all matched (dangling condition)",
                     "match of " + L.node_str(v));
     }
   }
@@ -361,20 +396,22 @@ enum class SlotState {
 using Slot = std::pair<int, Dart>;  // (dimension, dart)
 
 struct LinkRewrite {
-  std::map<Slot, SlotState> out;   // touched out-links
+  std::map<Slot, SlotState> out;    // touched out-links
   std::map<Slot, int> indeg_delta;  // change of the number of in-arcs
 };
 
 // Phase 4: removes the deleted L arcs and writes the added R arcs into H (at the comatch darts).
 // Throws Error(InvalidMap) when an added arc would be a second out-arc of its label.
-LinkRewrite rewrite_links(const Rule& r, Map& H, const std::vector<Dart>& match, const std::vector<Dart>& comatch) {
+LinkRewrite rewrite_links(const Rule& r, Map& H, const std::vector<Dart>& match,
+                          const std::vector<Dart>& comatch) {
   const DGraph &L = r.left(), &R = r.right();
   const int lo = H.lowest_dim(), n = H.dimension();
   LinkRewrite w;
   for (Node v : r.added_nodes())
     for (int i = lo; i <= n; ++i) {
       w.out[{i, comatch[v.index()]}] = SlotState::Unset;
-      w.indeg_delta[{i, comatch[v.index()]}] = -1;  // a fresh dart starts with no in-arc (its loop is not an arc)
+      w.indeg_delta[{i, comatch[v.index()]}] =
+          -1;  // a fresh dart starts with no in-arc (its loop is not an arc)
     }
   for (ArcId a : L.arc_slots()) {
     if (!L.arc_alive(a) || r.left_arc_status(a) != ElemStatus::Deleted) continue;
@@ -388,9 +425,10 @@ LinkRewrite rewrite_links(const Rule& r, Map& H, const std::vector<Dart>& match,
     const Dart s = comatch[e.src.index()], t = comatch[e.tgt.index()];
     SlotState& st = w.out[{e.label, s}];
     if (st != SlotState::Unset)
-      throw Error(ErrorCode::InvalidMap,
-                  "the result is not combinatorial: two outgoing " + std::to_string(e.label) + "-arcs",
-                  "R node " + R.node_str(e.src));
+      throw Error(
+          ErrorCode::InvalidMap,
+          "the result is not combinatorial: two outgoing " + std::to_string(e.label) + "-arcs",
+          "R node " + R.node_str(e.src));
     st = SlotState::Rewritten;
     H.set_alpha(e.label, s, t);
     ++w.indeg_delta[{e.label, t}];
@@ -400,12 +438,17 @@ LinkRewrite rewrite_links(const Rule& r, Map& H, const std::vector<Dart>& match,
 
 // Phase 5: every surviving touched dart has exactly one out-arc and one in-arc per label
 // (incident arcs on H); throws Error(InvalidMap) naming the first dart that fails.
-void check_result_combinatorial(const Rule& r, const std::vector<Node>& lnode_of, const LinkRewrite& w) {
-  auto deleted_dart = [&](Dart d) { return lnode_of.size() > d && lnode_of[d] != kNoNode && !r.right_of(lnode_of[d]); };
+void check_result_combinatorial(const Rule& r, const std::vector<Node>& lnode_of,
+                                const LinkRewrite& w) {
+  auto deleted_dart = [&](Dart d) {
+    return lnode_of.size() > d && lnode_of[d] != kNoNode && !r.right_of(lnode_of[d]);
+  };
   for (const auto& [k, st] : w.out)
     if (st == SlotState::Unset && !deleted_dart(k.second))
-      throw Error(ErrorCode::InvalidMap, "the result is not combinatorial: no outgoing " + std::to_string(k.first) + "-arc",
-                  "dart " + std::to_string(k.second));
+      throw Error(
+          ErrorCode::InvalidMap,
+          "the result is not combinatorial: no outgoing " + std::to_string(k.first) + "-arc",
+          "dart " + std::to_string(k.second));
   for (const auto& [k, delta] : w.indeg_delta)
     if (delta != 0 && !deleted_dart(k.second))
       throw Error(ErrorCode::InvalidMap,
@@ -416,7 +459,8 @@ void check_result_combinatorial(const Rule& r, const std::vector<Node>& lnode_of
 
 // Phase 6: removes the darts of the deleted nodes (detached first: remove_dart must not touch live
 // darts) and fills the dart track G -> H.
-void remove_deleted_darts(const Rule& r, const Map& g, const std::vector<Dart>& match, MapDerivation& out) {
+void remove_deleted_darts(const Rule& r, const Map& g, const std::vector<Dart>& match,
+                          MapDerivation& out) {
   Map& H = out.H;
   out.g_to_h.assign(g.capacity(), kNoDart);
   g.for_each_dart([&](Dart d) { out.g_to_h[d] = d; });
@@ -430,13 +474,15 @@ void remove_deleted_darts(const Rule& r, const Map& g, const std::vector<Dart>& 
 
 MapDerivation apply_rewriting(const Rule& r, const Map& g, const std::vector<Dart>& match) {
   check_rule_fits_map(r, g);
-  const DGraph &R = r.right();
-  if (match.size() != r.left().num_nodes()) throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");
+  const DGraph& R = r.right();
+  if (match.size() != r.left().num_nodes())
+    throw Error(ErrorCode::Usage, "match size does not fit the left-hand side", "match");
   const std::vector<Node> lnode_of = check_map_match(r, g, match);
   check_map_gluing(r, g, match);
   MapDerivation out;
   out.H = g;
-  // Phase 3: fresh darts for added nodes (before removals, so that no index is reused within this step).
+  // Phase 3: fresh darts for added nodes (before removals, so that no index is reused within this
+  // step).
   out.comatch.assign(R.num_nodes(), kNoDart);
   for (Node v : R.nodes())
     out.comatch[v.index()] = r.left_of(v) ? match[r.left_of(v)->index()] : out.H.add_dart();

@@ -33,19 +33,21 @@
 namespace gmr::rewrite {
 
 struct DanglingArc {
-  Node l_node;   // the deleted node of L
-  ArcId g_arc;   // the arc of G incident to its image and not in m(L)
+  Node l_node;  // the deleted node of L
+  ArcId g_arc;  // the arc of G incident to its image and not in m(L)
   std::string describe(const Rule& r, const DGraph& G) const;
 };
 std::vector<DanglingArc> dangling_arcs(const Rule& r, const DGraph& G, const Match& m);
-inline bool satisfies_gluing(const Rule& r, const DGraph& G, const Match& m) { return dangling_arcs(r, G, m).empty(); }
+inline bool satisfies_gluing(const Rule& r, const DGraph& G, const Match& m) {
+  return dangling_arcs(r, G, m).empty();
+}
 
 // Throws Error(Usage) when m is not an injective label-preserving morphism L -> G.
 void check_match(const Rule& r, const DGraph& G, const Match& m);
 
 struct Derivation {
-  DGraph D;                                // pushout complement (categorical construction only)
-  HandleVector<Node, Node> d_to_g;         // D node -> G node (categorical construction only)
+  DGraph D;                         // pushout complement (categorical construction only)
+  HandleVector<Node, Node> d_to_g;  // D node -> G node (categorical construction only)
   DGraph H;
   HandleVector<Node, Node> g_to_h;         // G node -> H node; kNoNode for deleted nodes
   HandleVector<Node, Node> comatch;        // R node -> H node
@@ -62,9 +64,10 @@ enum class Construction {
 Derivation derive(const Rule& r, const DGraph& G, const Match& m,
                   Construction c = Construction::Categorical);
 
-// True iff the map  H1 -> H2  defined by  g_to_h1[g] |-> g_to_h2[g]  and  comatch1[v] |-> comatch2[v]
-// is a well-defined label-preserving graph isomorphism (arc multiplicities included) that also
-// sends comatch_arc1 to arcs with the same ends as comatch_arc2. `why` gets the first difference.
+// True iff the map  H1 -> H2  defined by  g_to_h1[g] |-> g_to_h2[g]  and  comatch1[v] |->
+// comatch2[v] is a well-defined label-preserving graph isomorphism (arc multiplicities included)
+// that also sends comatch_arc1 to arcs with the same ends as comatch_arc2. `why` gets the first
+// difference.
 bool same_derivation(const Derivation& a, const Derivation& b, std::string* why = nullptr);
 
 struct MapDerivation {
@@ -73,7 +76,8 @@ struct MapDerivation {
   std::vector<Dart> comatch;  // R node -> dart of H
 };
 // Matches are node maps L node -> dart.
-std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const Map& g, size_t limit = SIZE_MAX);
+std::vector<std::vector<Dart>> find_map_matches(const Rule& r, const Map& g,
+                                                size_t limit = SIZE_MAX);
 // r applied to g at `match` (L node -> dart); g is unchanged.
 MapDerivation apply(const Rule& r, const Map& g, const std::vector<Dart>& match,
                     Construction c = Construction::Rewriting);

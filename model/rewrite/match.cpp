@@ -27,7 +27,7 @@ size_t count_arcs(const DGraph& g, Node s, Node t, int l) {
 // already-ordered neighbour and the arc to follow (or none).
 struct Step {
   Node v;
-  ArcId via = kNoArc;  // arc of L between v and an earlier node
+  ArcId via = kNoArc;    // arc of L between v and an earlier node
   bool via_out = false;  // true: via = prev -> v (v is the target); false: v -> prev
 };
 
@@ -109,7 +109,8 @@ std::optional<Match> match_from_nodes(const DGraph& L, const DGraph& G, const No
   return m;
 }
 
-size_t for_each_match(const DGraph& L, const DGraph& G, const std::function<bool(const Match&)>& f) {
+size_t for_each_match(const DGraph& L, const DGraph& G,
+                      const std::function<bool(const Match&)>& f) {
   const auto order = bfs_order(L);
   NodeMap m(L.num_nodes(), kNoNode);
   HandleVector<Node, bool> used(G.num_nodes(), false);
@@ -166,12 +167,16 @@ bool at_most_one_arc_per_label(const DGraph& g, std::string* where) {
     for (ArcId a : g.in_arcs(v)) ++in[g.arc(a).label];
     for (auto& [l, k] : out)
       if (k > 1) {
-        if (where) *where = "node " + g.node_str(v) + ": " + std::to_string(k) + " outgoing " + std::to_string(l) + "-arcs";
+        if (where)
+          *where = "node " + g.node_str(v) + ": " + std::to_string(k) + " outgoing " +
+                   std::to_string(l) + "-arcs";
         return false;
       }
     for (auto& [l, k] : in)
       if (k > 1) {
-        if (where) *where = "node " + g.node_str(v) + ": " + std::to_string(k) + " incoming " + std::to_string(l) + "-arcs";
+        if (where)
+          *where = "node " + g.node_str(v) + ": " + std::to_string(k) + " incoming " +
+                   std::to_string(l) + "-arcs";
         return false;
       }
   }
@@ -182,7 +187,9 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
                                     const std::vector<std::pair<Node, Node>>& anchors) {
   std::string where;
   if (!at_most_one_arc_per_label(L, &where))
-    throw Error(ErrorCode::Usage, "anchored matching needs a combinatorial left-hand side (Def. 35)", "left " + where);
+    throw Error(ErrorCode::Usage,
+                "anchored matching needs a combinatorial left-hand side (Def. 35)",
+                "left " + where);
   NodeMap m(L.num_nodes(), kNoNode);
   HandleVector<Node, Node> back(G.num_nodes(), kNoNode);
   std::deque<Node> q;
@@ -196,16 +203,19 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
   };
   for (auto [l, g] : anchors) {
     if (l.index() >= L.num_nodes())
-      throw Error(ErrorCode::Usage, "anchor on an unknown node of L", "L node " + std::to_string(l.index()));
+      throw Error(ErrorCode::Usage, "anchor on an unknown node of L",
+                  "L node " + std::to_string(l.index()));
     if (g.index() >= G.num_nodes())
-      throw Error(ErrorCode::Usage, "anchor on an unknown node of G", "G node " + std::to_string(g.index()));
+      throw Error(ErrorCode::Usage, "anchor on an unknown node of G",
+                  "G node " + std::to_string(g.index()));
     if (!assign(l, g)) return std::nullopt;
   }
-  auto unique = [&](const std::vector<Node>& c, Node at, int label, const char* dir) -> std::optional<Node> {
+  auto unique = [&](const std::vector<Node>& c, Node at, int label,
+                    const char* dir) -> std::optional<Node> {
     if (c.size() > 1)
       throw Error(ErrorCode::Usage,
-                  "anchored matching needs a combinatorial graph: " + std::to_string(c.size()) + " " + dir + " " +
-                      std::to_string(label) + "-arcs",
+                  "anchored matching needs a combinatorial graph: " + std::to_string(c.size()) +
+                      " " + dir + " " + std::to_string(label) + "-arcs",
                   "node " + G.node_str(at));
     if (c.empty()) return std::nullopt;
     return c[0];
@@ -224,7 +234,8 @@ std::optional<Match> anchored_match(const DGraph& L, const DGraph& G,
   }
   for (Node v : L.nodes())
     if (m[v] == kNoNode)
-      throw Error(ErrorCode::Usage, "node not connected to any anchor: give an anchor in each component of L",
+      throw Error(ErrorCode::Usage,
+                  "node not connected to any anchor: give an anchor in each component of L",
                   "L node " + L.node_str(v));
   return match_from_nodes(L, G, m);
 }

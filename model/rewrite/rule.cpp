@@ -24,8 +24,8 @@ void validate_side(const DGraph& g, const char* side, int lo, int n) {
     const int l = g.arc(a).label;
     if (l < lo || l > n)
       throw Error(ErrorCode::Schema,
-                  "label " + std::to_string(l) + " outside the dimension set " + std::to_string(lo) + ".." +
-                      std::to_string(n),
+                  "label " + std::to_string(l) + " outside the dimension set " +
+                      std::to_string(lo) + ".." + std::to_string(n),
                   std::string(side) + ".arcs[" + std::to_string(a.index()) + "]");
   }
 }
@@ -106,7 +106,8 @@ std::vector<Node> Rule::added_nodes() const {
 std::string Rule::arc_str(Side s, ArcId a) const {
   const DGraph& g = side(s);
   const Arc& e = g.arc(a);
-  return g.node_str(e.src) + " -" + std::to_string(e.label) + "-> " + g.node_str(e.tgt) + " (" + to_string(s) + ")";
+  return g.node_str(e.src) + " -" + std::to_string(e.label) + "-> " + g.node_str(e.tgt) + " (" +
+         to_string(s) + ")";
 }
 
 JointRepresentation to_joint(const Rule& r) {
@@ -127,7 +128,8 @@ JointRepresentation to_joint(const Rule& r) {
   for (ArcId a : L.arc_slots())
     if (L.arc_alive(a)) j.graph.add_arc(L.arc(a).src, L.arc(a).tgt, L.arc(a).label);
   for (ArcId a : R.arc_slots())
-    if (R.arc_alive(a)) j.graph.add_arc(right_node(R.arc(a).src), right_node(R.arc(a).tgt), R.arc(a).label);
+    if (R.arc_alive(a))
+      j.graph.add_arc(right_node(R.arc(a).src), right_node(R.arc(a).tgt), R.arc(a).label);
   for (Node v : L.nodes())
     if (auto w = r.right_of(v)) j.graph.add_arc(v, right_node(*w), kKappaLabel);
   return j;
@@ -149,7 +151,8 @@ Rule from_joint(const JointRepresentation& j) {
       throw Error(ErrorCode::Schema, "κ-arc must go from an L node to an R node",
                   "joint arc " + g.node_str(e.src) + " -> " + g.node_str(e.tgt));
     if (++kappa_out[e.src] > 1 || ++kappa_in[e.tgt] > 1)
-      throw Error(ErrorCode::Schema, "node with two κ-arcs", "joint arc " + g.node_str(e.src) + " -> " + g.node_str(e.tgt));
+      throw Error(ErrorCode::Schema, "node with two κ-arcs",
+                  "joint arc " + g.node_str(e.src) + " -> " + g.node_str(e.tgt));
     rname[e.tgt] = g.name(e.src);
   }
   for (Node v : g.nodes()) {
@@ -158,7 +161,8 @@ Rule from_joint(const JointRepresentation& j) {
       if (!kappa_in[v])
         for (Node u : g.nodes())
           if (!j.right_side[u] && g.name(u) == rname[v])
-            throw Error(ErrorCode::Schema, "added R node shares its name with an L node", "joint node " + rname[v]);
+            throw Error(ErrorCode::Schema, "added R node shares its name with an L node",
+                        "joint node " + rname[v]);
       local[v] = R.add_node(rname[v]);
     } else {
       local[v] = L.add_node(g.name(v));

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "model/core/map.hpp"
 #include "model/graph/dgraph.hpp"
 #include "model/graph/elem_status.hpp"
-#include "model/core/map.hpp"
 
 namespace gmr::rewrite {
 using graph::ArcId;
@@ -52,15 +52,27 @@ class Rule {
   // Node correspondence of the interface (nullopt: deleted, resp. added).
   std::optional<Node> right_of(Node l) const;
   std::optional<Node> left_of(Node r) const;
-  ElemStatus left_node_status(Node l) const { return l_to_r_[l] ? ElemStatus::Preserved : ElemStatus::Deleted; }
-  ElemStatus right_node_status(Node r) const { return r_to_l_[r] ? ElemStatus::Preserved : ElemStatus::Added; }
+  ElemStatus left_node_status(Node l) const {
+    return l_to_r_[l] ? ElemStatus::Preserved : ElemStatus::Deleted;
+  }
+  ElemStatus right_node_status(Node r) const {
+    return r_to_l_[r] ? ElemStatus::Preserved : ElemStatus::Added;
+  }
   // Arc correspondence (Assumption 4), indexed by arc slot.
   std::optional<ArcId> right_arc_of(ArcId l) const;
   std::optional<ArcId> left_arc_of(ArcId r) const;
-  ElemStatus left_arc_status(ArcId l) const { return la_to_ra_[l] ? ElemStatus::Preserved : ElemStatus::Deleted; }
-  ElemStatus right_arc_status(ArcId r) const { return ra_to_la_[r] ? ElemStatus::Preserved : ElemStatus::Added; }
-  ElemStatus arc_status(Side s, ArcId a) const { return s == Side::R ? right_arc_status(a) : left_arc_status(a); }
-  ElemStatus node_status(Side s, Node v) const { return s == Side::R ? right_node_status(v) : left_node_status(v); }
+  ElemStatus left_arc_status(ArcId l) const {
+    return la_to_ra_[l] ? ElemStatus::Preserved : ElemStatus::Deleted;
+  }
+  ElemStatus right_arc_status(ArcId r) const {
+    return ra_to_la_[r] ? ElemStatus::Preserved : ElemStatus::Added;
+  }
+  ElemStatus arc_status(Side s, ArcId a) const {
+    return s == Side::R ? right_arc_status(a) : left_arc_status(a);
+  }
+  ElemStatus node_status(Side s, Node v) const {
+    return s == Side::R ? right_node_status(v) : left_node_status(v);
+  }
 
   std::vector<Node> preserved_nodes() const;  // left ids
   std::vector<Node> deleted_nodes() const;    // left ids
@@ -82,7 +94,7 @@ class Rule {
 // Joint representation κ(L,R), Def. 36.
 inline constexpr int kKappaLabel = -1;
 struct JointRepresentation {
-  DGraph graph;                 // L nodes first (same ids as in L), then R nodes
+  DGraph graph;                         // L nodes first (same ids as in L), then R nodes
   HandleVector<Node, bool> right_side;  // per node
   int n = 0;
   MapKind kind = MapKind::GMap;

@@ -30,8 +30,8 @@ class Translator {
         if (pos_ < t_.size()) throw Unsupported{"code after the return statement"};
         return e;
       }
-      if (first == "Vec3" || first == "Point3" || first == "Color" || first == "Color3" || first == "double" ||
-          first == "float") {  // declaration
+      if (first == "Vec3" || first == "Point3" || first == "Color" || first == "Color3" ||
+          first == "double" || first == "float") {  // declaration
         const std::string var = ident();
         expect('=');
         skip();
@@ -82,7 +82,9 @@ class Translator {
   std::string ident() {
     skip();
     const size_t b = pos_;
-    while (pos_ < t_.size() && (std::isalnum(static_cast<unsigned char>(t_[pos_])) || t_[pos_] == '_')) ++pos_;
+    while (pos_ < t_.size() &&
+           (std::isalnum(static_cast<unsigned char>(t_[pos_])) || t_[pos_] == '_'))
+      ++pos_;
     if (b == pos_) throw Unsupported{"unexpected '" + line() + "'"};
     return t_.substr(b, pos_ - b);
   }
@@ -90,11 +92,16 @@ class Translator {
     skip();
     const size_t b = pos_;
     if (pos_ < t_.size() && (t_[pos_] == '-' || t_[pos_] == '+')) ++pos_;
-    while (pos_ < t_.size() && (std::isdigit(static_cast<unsigned char>(t_[pos_])) || t_[pos_] == '.')) ++pos_;
+    while (pos_ < t_.size() &&
+           (std::isdigit(static_cast<unsigned char>(t_[pos_])) || t_[pos_] == '.'))
+      ++pos_;
     std::string s = t_.substr(b, pos_ - b);
-    if (pos_ < t_.size() && (t_[pos_] == 'f' || t_[pos_] == 'd' || t_[pos_] == 'F' || t_[pos_] == 'D')) ++pos_;
+    if (pos_ < t_.size() &&
+        (t_[pos_] == 'f' || t_[pos_] == 'd' || t_[pos_] == 'F' || t_[pos_] == 'D'))
+      ++pos_;
     double v = 0;
-    if (s.empty() || std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v).ec != std::errc())
+    if (s.empty() ||
+        std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v).ec != std::errc())
       throw Unsupported{"expected a number at '" + line() + "'"};
     return s;
   }
@@ -120,8 +127,10 @@ class Translator {
   }
   static bool is_number(const std::string& s) {
     double v = 0;
-    return !s.empty() && std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v).ec == std::errc() &&
-           std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v).ptr == s.data() + s.size();
+    return !s.empty() &&
+           std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v).ec == std::errc() &&
+           std::from_chars(s.data() + (s[0] == '+'), s.data() + s.size(), v).ptr ==
+               s.data() + s.size();
   }
 
   std::string expr() {

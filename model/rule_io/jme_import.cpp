@@ -1,15 +1,14 @@
 #include "model/rule_io/jme_import.hpp"
 
-#include "model/expr/compiled_scheme.hpp"
-#include "model/rule_io/jme_expression.hpp"
-
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <map>
 
 #include "model/core/error.hpp"
+#include "model/expr/compiled_scheme.hpp"
 #include "model/map_io/read_file.hpp"
+#include "model/rule_io/jme_expression.hpp"
 #include "model/rule_io/xml.hpp"
 
 namespace gmr::io {
@@ -30,7 +29,8 @@ OrbitType parse_jme_orbit(std::string_view text) {
     const std::string_view item = trim(text.substr(p, c - p));
     int v = 0;
     auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
-    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || v < -1 || v >= kMaxDim)
+    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() || v < -1 ||
+        v >= kMaxDim)
       throw Error(ErrorCode::Parse, "bad Jerboa orbit \"" + std::string(text) + "\"");
     dims.push_back(v == -1 ? OrbitType::kHole : v);
     p = c + 1;
@@ -47,7 +47,9 @@ struct Ctx {
   std::string at(const XMLElement& e) const { return doc.at(e); }
   std::string attr(const XMLElement& e, const char* key) const {
     const char* v = e.Attribute(key);
-    if (!v) throw Error(ErrorCode::Schema, "<" + std::string(e.Name()) + "> has no attribute " + key, at(e));
+    if (!v)
+      throw Error(ErrorCode::Schema, "<" + std::string(e.Name()) + "> has no attribute " + key,
+                  at(e));
     return v;
   }
   int integer(const XMLElement& e, const char* key, int lo, int hi) const {
@@ -56,19 +58,22 @@ struct Ctx {
     auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (s.empty() || ec != std::errc() || ptr != s.data() + s.size() || v < lo || v > hi)
       throw Error(ErrorCode::Schema,
-                  "attribute " + std::string(key) + "=\"" + s + "\" is not an integer in " + std::to_string(lo) +
-                      ".." + std::to_string(hi),
+                  "attribute " + std::string(key) + "=\"" + s + "\" is not an integer in " +
+                      std::to_string(lo) + ".." + std::to_string(hi),
                   at(e));
     return v;
   }
   const XMLElement& child(const XMLElement& e, const char* name) const {
     const XMLElement* c = e.FirstChildElement(name);
-    if (!c) throw Error(ErrorCode::Schema, "<" + std::string(e.Name()) + "> has no <" + name + ">", at(e));
+    if (!c)
+      throw Error(ErrorCode::Schema, "<" + std::string(e.Name()) + "> has no <" + name + ">",
+                  at(e));
     return *c;
   }
 };
 
-void read_side(const Ctx& cx, const XMLElement& side, GraphScheme& g, std::vector<std::string>* hooks) {
+void read_side(const Ctx& cx, const XMLElement& side, GraphScheme& g,
+               std::vector<std::string>* hooks) {
   for (const XMLElement* nodes : xml_children(side, "nodes"))
     for (const XMLElement* n : xml_children(*nodes, "node")) {
       OrbitType label;
@@ -104,7 +109,8 @@ void read_side(const Ctx& cx, const XMLElement& side, GraphScheme& g, std::vecto
         const uint32_t v = node(*a, "node");
         g.arcs.push_back(SchemeArc{v, v, d});
       } else {
-        throw Error(ErrorCode::Schema, "unexpected <" + std::string(kind) + "> in <arcs>", cx.at(*a));
+        throw Error(ErrorCode::Schema, "unexpected <" + std::string(kind) + "> in <arcs>",
+                    cx.at(*a));
       }
     }
 }
@@ -158,8 +164,10 @@ JmeModeler parse_jme(std::string_view text, const std::string& source) {
   const XmlDocument doc(text, source);
   const Ctx cx{doc};
   const XMLElement& root = doc.root();
-  const XMLElement* modeler = std::string_view(root.Name()) == "modeler" ? &root : root.FirstChildElement("modeler");
-  if (!modeler) throw Error(ErrorCode::Schema, "no <modeler> element (not a Jerboa .jme file)", cx.at(root));
+  const XMLElement* modeler =
+      std::string_view(root.Name()) == "modeler" ? &root : root.FirstChildElement("modeler");
+  if (!modeler)
+    throw Error(ErrorCode::Schema, "no <modeler> element (not a Jerboa .jme file)", cx.at(root));
   JmeModeler m;
   if (const char* nm = modeler->Attribute("name")) m.name = nm;
   m.dimension = cx.integer(*modeler, "dimension", 0, kMaxDim - 1);
@@ -182,12 +190,15 @@ JmeModeler parse_jme(std::string_view text, const std::string& source) {
     for (size_t k = 0; k < m.rules.size(); ++k)
       if (m.rules[k].name == s.name)
         throw Error(ErrorCode::Schema,
-                    "two rules named \"" + s.name + "\" (lines " + std::to_string(m.rule_lines[k]) + " and " +
-                        std::to_string(r->GetLineNum()) + "): --rule could not tell them apart",
+                    "two rules named \"" + s.name + "\" (lines " + std::to_string(m.rule_lines[k]) +
+                        " and " + std::to_string(r->GetLineNum()) +
+                        "): --rule could not tell them apart",
                     cx.at(*r));
     s.dimension = m.dimension;
-    if (const XMLElement* c = r->FirstChildElement("comment")) s.description = trimmed(xml_text(*c));
-    if (const XMLElement* p = r->FirstChildElement("precondition")) s.precondition = trimmed(xml_text(*p));
+    if (const XMLElement* c = r->FirstChildElement("comment"))
+      s.description = trimmed(xml_text(*c));
+    if (const XMLElement* p = r->FirstChildElement("precondition"))
+      s.precondition = trimmed(xml_text(*p));
     std::vector<std::string> hooks;
     read_side(cx, cx.child(*r, "left"), s.left, &hooks);
     read_side(cx, cx.child(*r, "right"), s.right, nullptr);

@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include "model/map_io/atomic_write.hpp"
 #include "model/core/error.hpp"
+#include "model/map_io/atomic_write.hpp"
 #include "model/map_io/json_reader.hpp"
 #include "model/map_io/read_file.hpp"
 
@@ -33,10 +33,12 @@ DGraph read_side(const JsonAt& side, int lo, int n) {
     return it->second;
   };
   auto label_of = [&](const JsonAt& v) {
-    if (!v.value().is_number_integer()) v.fail("expected an integer label, found " + describe_json(v.value()));
+    if (!v.value().is_number_integer())
+      v.fail("expected an integer label, found " + describe_json(v.value()));
     const auto l = v.value().get<int64_t>();
     if (l < lo || l > n)
-      v.fail("label " + std::to_string(l) + " outside the dimension set " + std::to_string(lo) + ".." + std::to_string(n));
+      v.fail("label " + std::to_string(l) + " outside the dimension set " + std::to_string(lo) +
+             ".." + std::to_string(n));
     return static_cast<int>(l);
   };
   if (auto arcs = side.get("arcs")) {
@@ -55,7 +57,8 @@ DGraph read_side(const JsonAt& side, int lo, int n) {
       a.require_object();
       a.allow_only({"nodes", "label"});
       const JsonAt ends = a["nodes"];
-      if (ends.array_size() != 2) ends.fail("a link has exactly two nodes (the same twice for a loop)");
+      if (ends.array_size() != 2)
+        ends.fail("a link has exactly two nodes (the same twice for a loop)");
       const Node s = node_of(ends[0]);
       const Node t = node_of(ends[1]);
       g.add_link(s, t, label_of(a["label"]));
@@ -71,7 +74,9 @@ nlohmann::ordered_json side_to_json(const DGraph& g) {
   j["arcs"] = nlohmann::ordered_json::array();
   for (ArcId a : g.arc_slots())
     if (g.arc_alive(a))
-      j["arcs"].push_back({{"from", g.name(g.arc(a).src)}, {"to", g.name(g.arc(a).tgt)}, {"label", g.arc(a).label}});
+      j["arcs"].push_back({{"from", g.name(g.arc(a).src)},
+                           {"to", g.name(g.arc(a).tgt)},
+                           {"label", g.arc(a).label}});
   return j;
 }
 
@@ -80,10 +85,12 @@ nlohmann::ordered_json side_to_json(const DGraph& g) {
 Rule rule_from_json(const nlohmann::json& doc, const std::string& source) {
   const JsonAt root(doc, source);
   root.check_header("gmr.rule", 1);
-  root.allow_only({"format", "version", "kind", "name", "description", "map", "n", "left", "right"});
+  root.allow_only(
+      {"format", "version", "kind", "name", "description", "map", "n", "left", "right"});
   const JsonAt kind = root["kind"];
   if (kind.as_string() != "concrete")
-    kind.fail("unsupported rule kind \"" + kind.as_string() + "\" (this reader knows \"concrete\")");
+    kind.fail("unsupported rule kind \"" + kind.as_string() +
+              "\" (this reader knows \"concrete\")");
   std::string name;
   if (auto nm = root.get("name")) name = nm->as_string();
   if (auto d = root.get("description")) (void)d->as_string();

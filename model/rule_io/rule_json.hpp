@@ -9,7 +9,8 @@
 //     "left":  { "nodes": ["a", "b"],
 //                "arcs":  [ {"from": "a", "to": "b", "label": 0}, ... ],      directed arcs
 //                "links": [ {"nodes": ["a", "b"], "label": 0}, ... ] },      optional shorthand:
-//                                         a non-oriented link = two opposite arcs (a loop = one arc)
+//                                         a non-oriented link = two opposite arcs (a loop = one
+//                                         arc)
 //     "right": { ... }
 //   }
 //
@@ -21,9 +22,8 @@
 // atomically (write_file_atomic: temp file in the same directory + rename).
 #pragma once
 #include <filesystem>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "model/rewrite/rule.hpp"
 

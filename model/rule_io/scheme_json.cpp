@@ -2,9 +2,9 @@
 
 #include <set>
 
+#include "model/core/error.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/map_io/atomic_write.hpp"
-#include "model/core/error.hpp"
 #include "model/map_io/json_reader.hpp"
 #include "model/map_io/json_writer.hpp"
 #include "model/map_io/read_file.hpp"
@@ -39,8 +39,8 @@ GraphScheme read_side(const JsonAt& side, const RuleScheme& r) {
     const JsonAt ov = v["orbit"];
     OrbitType label = read_orbit(ov);
     if (label.size() != r.orbit.size())
-      ov.fail("label " + label.str() + " has arity " + std::to_string(label.size()) + ", the scheme's orbit " +
-              r.orbit.str() + " has " + std::to_string(r.orbit.size()));
+      ov.fail("label " + label.str() + " has arity " + std::to_string(label.size()) +
+              ", the scheme's orbit " + r.orbit.str() + " has " + std::to_string(r.orbit.size()));
     for (int x : label.dims())
       if (x != OrbitType::kHole && x > r.dimension)
         ov.fail("label " + label.str() + " uses dimension " + std::to_string(x) + " outside 0.." +
@@ -54,8 +54,10 @@ GraphScheme read_side(const JsonAt& side, const RuleScheme& r) {
         scheme::EmbeddingExpression ee{x["embedding"].as_string(), {}, {}, {}};
         if (auto u = x.get("unsupported")) ee.unsupported = u->as_string();
         if (auto j = x.get("jerboa")) ee.jerboa = j->as_string();
-        if (ee.unsupported.empty()) ee.code = x["code"].as_string();
-        else if (auto c = x.get("code")) c->fail("an unsupported Jerboa expression has no code");
+        if (ee.unsupported.empty())
+          ee.code = x["code"].as_string();
+        else if (auto c = x.get("code"))
+          c->fail("an unsupported Jerboa expression has no code");
         g.nodes[id].expressions.push_back(std::move(ee));
       }
     }
@@ -66,7 +68,8 @@ GraphScheme read_side(const JsonAt& side, const RuleScheme& r) {
       a.require_object();
       a.allow_only({"nodes", "label"});
       const JsonAt ends = a["nodes"];
-      if (ends.array_size() != 2) ends.fail("an arc has exactly two nodes (the same twice for a loop)");
+      if (ends.array_size() != 2)
+        ends.fail("an arc has exactly two nodes (the same twice for a loop)");
       uint32_t e[2];
       for (size_t t = 0; t < 2; ++t) {
         const std::string n = ends[t].as_string();
@@ -93,7 +96,8 @@ void check_expressions(const JsonAt& root, const RuleScheme& r) {
       if (xs.empty()) continue;
       const JsonAt ex = nodes[v]["expressions"];
       if (!right) {
-        if (!r.right_of(v)) ex.fail("an expression on a deleted node: expressions belong to right-hand nodes");
+        if (!r.right_of(v))
+          ex.fail("an expression on a deleted node: expressions belong to right-hand nodes");
         continue;  // kept, the right-hand node's expression is the one applied
       }
       for (size_t k = 0; k < xs.size(); ++k) {
@@ -101,15 +105,16 @@ void check_expressions(const JsonAt& root, const RuleScheme& r) {
         if (!xs[k].unsupported.empty()) continue;  // an untranslated Jerboa expression
         const auto* decl = r.find_embedding(xs[k].embedding);
         if (!decl)
-          x["embedding"].fail("embedding \"" + xs[k].embedding + "\" is not declared in \"embeddings\"");
+          x["embedding"].fail("embedding \"" + xs[k].embedding +
+                              "\" is not declared in \"embeddings\"");
         for (size_t j = 0; j < k; ++j)
           if (xs[j].embedding == xs[k].embedding)
-            x["embedding"].fail("two expressions for embedding \"" + xs[k].embedding + "\" on node " +
-                                g.nodes[v].name + " (thesis Def. 71: at most one)");
+            x["embedding"].fail("two expressions for embedding \"" + xs[k].embedding +
+                                "\" on node " + g.nodes[v].name + " (thesis Def. 71: at most one)");
         size_t e = 0;
         while (sigs[e].name != decl->name) ++e;
-        const std::string where = x.location_of(x.child_path("code")) + " (rule " + r.name + ", node " +
-                                  g.nodes[v].name + ")";
+        const std::string where = x.location_of(x.child_path("code")) + " (rule " + r.name +
+                                  ", node " + g.nodes[v].name + ")";
         expr::compile_expression(xs[k].code, sigs[e], ctx, where);
       }
     }
@@ -155,8 +160,8 @@ std::string rule_document_kind(const nlohmann::json& doc, const std::string& sou
 RuleScheme scheme_from_json(const nlohmann::json& doc, const std::string& source) {
   const JsonAt root(doc, source);
   root.check_header("gmr.rule", 1);
-  root.allow_only({"format", "version", "kind", "name", "description", "map", "n", "orbit", "hooks", "left",
-                   "right", "precondition", "embeddings"});
+  root.allow_only({"format", "version", "kind", "name", "description", "map", "n", "orbit", "hooks",
+                   "left", "right", "precondition", "embeddings"});
   const JsonAt kind = root["kind"];
   if (kind.as_string() != "scheme")
     kind.fail("expected kind \"scheme\", found \"" + kind.as_string() + "\"");
@@ -165,29 +170,35 @@ RuleScheme scheme_from_json(const nlohmann::json& doc, const std::string& source
   if (auto d = root.get("description")) r.description = d->as_string();
   if (auto p = root.get("precondition")) r.precondition = p->as_string();
   const JsonAt map = root["map"];
-  if (map.as_string() != "gmap") map.fail("rule schemes rewrite G-maps: expected \"gmap\", found \"" + map.as_string() + "\"");
+  if (map.as_string() != "gmap")
+    map.fail("rule schemes rewrite G-maps: expected \"gmap\", found \"" + map.as_string() + "\"");
   r.dimension = static_cast<int>(root["n"].as_int(0, kMaxDim - 1));
   const JsonAt ov = root["orbit"];
   r.orbit = read_orbit(ov);
   std::set<int> seen;
   for (int x : r.orbit.dims()) {
     if (x == OrbitType::kHole) ov.fail("the orbit of a scheme has no `_`: " + r.orbit.str());
-    if (x > r.dimension) ov.fail("dimension " + std::to_string(x) + " outside 0.." + std::to_string(r.dimension));
-    if (!seen.insert(x).second) ov.fail("dimension " + std::to_string(x) + " repeated in " + r.orbit.str());
+    if (x > r.dimension)
+      ov.fail("dimension " + std::to_string(x) + " outside 0.." + std::to_string(r.dimension));
+    if (!seen.insert(x).second)
+      ov.fail("dimension " + std::to_string(x) + " repeated in " + r.orbit.str());
   }
   if (auto em = root.get("embeddings")) {
     for (size_t k = 0; k < em->array_size(); ++k) {
       const JsonAt d = (*em)[k];
       d.require_object();
       d.allow_only({"name", "orbit", "type"});
-      scheme::EmbeddingDeclaration decl{d["name"].as_string(), read_orbit(d["orbit"]), d["type"].as_string()};
+      scheme::EmbeddingDeclaration decl{d["name"].as_string(), read_orbit(d["orbit"]),
+                                        d["type"].as_string()};
       if (decl.name.empty()) d["name"].fail("embedding names must not be empty");
       if (!expr::parse_value_type(decl.type))
         d["type"].fail("unknown value type \"" + decl.type + "\" (point, vector, scalar, colour)");
       for (int x : decl.orbit.dims())
         if (x == OrbitType::kHole || x > r.dimension)
-          d["orbit"].fail("an embedding's orbit type uses dimensions 0.." + std::to_string(r.dimension) + " without `_`");
-      if (r.find_embedding(decl.name)) d["name"].fail("embedding \"" + decl.name + "\" declared twice");
+          d["orbit"].fail("an embedding's orbit type uses dimensions 0.." +
+                          std::to_string(r.dimension) + " without `_`");
+      if (r.find_embedding(decl.name))
+        d["name"].fail("embedding \"" + decl.name + "\" declared twice");
       r.embeddings.push_back(std::move(decl));
     }
   }

@@ -34,13 +34,13 @@
 // checker's business, not the reader's. Every expression is parsed and type-checked
 // (docs/embeddings.md): a malformed or ill-typed expression, one for an undeclared embedding, two
 // for one embedding on a node, or one on a deleted node is an error located
-// "$.right.nodes[1].expressions[0].code (rule r, node n1), column 12". The writer writes atomically.
+// "$.right.nodes[1].expressions[0].code (rule r, node n1), column 12". The writer writes
+// atomically.
 #pragma once
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "model/scheme/rule_scheme.hpp"
 

@@ -21,23 +21,43 @@ using tinyxml2::XMLText;
 std::string describe(const tinyxml2::XMLDocument& d) {
   std::string what;
   switch (d.ErrorID()) {
-    case tinyxml2::XML_ERROR_PARSING_ELEMENT: what = "bad element tag"; break;
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+      what = "bad element tag";
+      break;
     case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
       what = "bad attribute (unquoted value, duplicate name or missing '=')";
       break;
-    case tinyxml2::XML_ERROR_PARSING_TEXT: what = "text not followed by a tag (after the root element?)"; break;
-    case tinyxml2::XML_ERROR_PARSING_CDATA: what = "unterminated CDATA section"; break;
-    case tinyxml2::XML_ERROR_PARSING_COMMENT: what = "unterminated comment"; break;
-    case tinyxml2::XML_ERROR_PARSING_DECLARATION: what = "bad XML declaration"; break;
-    case tinyxml2::XML_ERROR_PARSING_UNKNOWN: what = "bad <!...> declaration"; break;
-    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: what = "no root element"; break;
-    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT: what = "element closed by a different end tag"; break;
-    case tinyxml2::XML_ERROR_PARSING: what = "element not closed, or a tag that cannot be read"; break;
-    case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
-      what = "elements nested too deeply (tinyxml2's limit: " + std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) +
-             " levels)";
+    case tinyxml2::XML_ERROR_PARSING_TEXT:
+      what = "text not followed by a tag (after the root element?)";
       break;
-    default: what = d.ErrorName(); break;
+    case tinyxml2::XML_ERROR_PARSING_CDATA:
+      what = "unterminated CDATA section";
+      break;
+    case tinyxml2::XML_ERROR_PARSING_COMMENT:
+      what = "unterminated comment";
+      break;
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION:
+      what = "bad XML declaration";
+      break;
+    case tinyxml2::XML_ERROR_PARSING_UNKNOWN:
+      what = "bad <!...> declaration";
+      break;
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
+      what = "no root element";
+      break;
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+      what = "element closed by a different end tag";
+      break;
+    case tinyxml2::XML_ERROR_PARSING:
+      what = "element not closed, or a tag that cannot be read";
+      break;
+    case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
+      what = "elements nested too deeply (tinyxml2's limit: " +
+             std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) + " levels)";
+      break;
+    default:
+      what = d.ErrorName();
+      break;
   }
   // ErrorStr() is "Error=... ErrorID=... Line number=<n>[: <detail>]"; keep the detail.
   const std::string_view s = d.ErrorStr();
@@ -61,15 +81,17 @@ std::optional<std::pair<size_t, std::string>> bad_reference(std::string_view raw
     const bool word = !ref.empty() && std::all_of(ref.begin(), ref.end(), [](char c) {
       return c == '#' || std::isalnum(static_cast<unsigned char>(c));
     });
-    if (e == std::string_view::npos || !word) return std::pair{p, std::string("'&' that does not start a reference")};
+    if (e == std::string_view::npos || !word)
+      return std::pair{p, std::string("'&' that does not start a reference")};
     if (predefined_entity(ref)) continue;
     if (ref[0] != '#') return std::pair{p, "unknown entity &" + std::string(ref) + ";"};
     const bool hex = ref.size() > 1 && (ref[1] == 'x' || ref[1] == 'X');
     const std::string_view digits = ref.substr(hex ? 2 : 1);
     unsigned long cp = 0;
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), cp, hex ? 16 : 10);
-    if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size() || cp == 0 || cp > 0x10FFFF ||
-        (cp >= 0xD800 && cp <= 0xDFFF))
+    const auto [end, ec] =
+        std::from_chars(digits.data(), digits.data() + digits.size(), cp, hex ? 16 : 10);
+    if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size() || cp == 0 ||
+        cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
       return std::pair{p, "bad character reference &" + std::string(ref) + ";"};
   }
   return std::nullopt;
@@ -106,16 +128,19 @@ void check_raw(const XmlDocument& where, const tinyxml2::XMLDocument& raw) {
       for (const XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
         const std::string_view v = a->Value();
         if (const size_t lt = v.find('<'); lt != std::string_view::npos)
-          fail(a->GetLineNum() + newlines(v, 0, lt), "'<' in the value of attribute " + std::string(a->Name()));
+          fail(a->GetLineNum() + newlines(v, 0, lt),
+               "'<' in the value of attribute " + std::string(a->Name()));
         if (auto bad = bad_reference(v))
-          fail(a->GetLineNum() + newlines(v, 0, bad->first), bad->second + " in attribute " + a->Name());
+          fail(a->GetLineNum() + newlines(v, 0, bad->first),
+               bad->second + " in attribute " + a->Name());
       }
       for (const XMLNode* c = e->LastChild(); c; c = c->PreviousSibling()) todo.push_back(c);
     } else if (const XMLText* t = n->ToText(); t && !t->CData()) {
       // The node's line is that of its first non-whitespace character.
       const std::string_view v = t->Value();
       if (auto bad = bad_reference(v))
-        fail(t->GetLineNum() + newlines(v, v.find_first_not_of(" \t\r\n"), bad->first), bad->second);
+        fail(t->GetLineNum() + newlines(v, v.find_first_not_of(" \t\r\n"), bad->first),
+             bad->second);
     }
   }
 }
@@ -125,7 +150,9 @@ void check_raw(const XmlDocument& where, const tinyxml2::XMLDocument& raw) {
 XmlDocument::XmlDocument(std::string_view text, std::string source)
     : doc_(true, tinyxml2::PRESERVE_WHITESPACE), source_(std::move(source)) {
   doc_.Parse(text.data(), text.size());
-  if (doc_.Error()) throw Error(ErrorCode::Parse, "malformed XML: " + describe(doc_), at_line(std::max(doc_.ErrorLineNum(), 1)));
+  if (doc_.Error())
+    throw Error(ErrorCode::Parse, "malformed XML: " + describe(doc_),
+                at_line(std::max(doc_.ErrorLineNum(), 1)));
   tinyxml2::XMLDocument raw(false, tinyxml2::PRESERVE_WHITESPACE);
   raw.Parse(text.data(), text.size());
   check_raw(*this, raw);
@@ -137,7 +164,8 @@ std::string XmlDocument::at_line(int line) const {
 
 std::vector<const XMLElement*> xml_children(const XMLElement& e, const char* name) {
   std::vector<const XMLElement*> out;
-  for (const XMLElement* c = e.FirstChildElement(name); c; c = c->NextSiblingElement(name)) out.push_back(c);
+  for (const XMLElement* c = e.FirstChildElement(name); c; c = c->NextSiblingElement(name))
+    out.push_back(c);
   return out;
 }
 

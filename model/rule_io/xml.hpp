@@ -21,11 +21,11 @@
 // Not rejected (tinyxml2 accepts them): "--" inside a comment, attributes without whitespace
 // between them (<a x='1'y='2'/>).
 #pragma once
+#include <tinyxml2.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <tinyxml2.h>
 
 namespace gmr::io {
 
@@ -48,7 +48,8 @@ class XmlDocument {
 
 // The child elements of `e` named `name` (every child element when `name` is null), in document
 // order.
-std::vector<const tinyxml2::XMLElement*> xml_children(const tinyxml2::XMLElement& e, const char* name = nullptr);
+std::vector<const tinyxml2::XMLElement*> xml_children(const tinyxml2::XMLElement& e,
+                                                      const char* name = nullptr);
 
 // All character data directly inside `e` (CDATA sections included), references decoded.
 std::string xml_text(const tinyxml2::XMLElement& e);

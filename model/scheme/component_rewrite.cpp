@@ -54,7 +54,8 @@ size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w
     if (k + kAhead < n)
       for (size_t p = 0; p < arity; ++p) __builtin_prefetch(link[p] + darts[k + kAhead]);
     if (k + kAhead / 2 < n)
-      for (size_t p = 0; p < arity; ++p) __builtin_prefetch(index + link[p][darts[k + kAhead / 2]], 1);
+      for (size_t p = 0; p < arity; ++p)
+        __builtin_prefetch(index + link[p][darts[k + kAhead / 2]], 1);
     const Dart x = darts[k];
     for (size_t p = 0; p < arity; ++p) {
       const Dart y = link[p][x];
@@ -72,10 +73,14 @@ size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w
 
 size_t component_orbit(const Map& g, const OrbitType& t, Dart hook, Workspace& w) {
   switch (t.size()) {  // the map's dimension + 1 (rewrites_whole_components): unrolled for surfaces
-    case 2: return component_orbit<2>(g, t, hook, w);
-    case 3: return component_orbit<3>(g, t, hook, w);
-    case 4: return component_orbit<4>(g, t, hook, w);
-    default: return component_orbit<0>(g, t, hook, w);
+    case 2:
+      return component_orbit<2>(g, t, hook, w);
+    case 3:
+      return component_orbit<3>(g, t, hook, w);
+    case 4:
+      return component_orbit<4>(g, t, hook, w);
+    default:
+      return component_orbit<0>(g, t, hook, w);
   }
 }
 
@@ -96,7 +101,8 @@ std::vector<AddedLink> added_links(const SchemeEngine& e, int n) {
     if (r == SchemeEngine::kAdded) continue;
     const OrbitType& label = s.right.nodes[v].label;
     for (size_t p = 0; p < label.size(); ++p)
-      if (label[p] != OrbitType::kHole) out[r * dims + label[p]] = {AddedLink::Implicit, static_cast<uint32_t>(p), 0};
+      if (label[p] != OrbitType::kHole)
+        out[r * dims + label[p]] = {AddedLink::Implicit, static_cast<uint32_t>(p), 0};
   }
   for (const auto& a : s.right.arcs)
     for (const auto& [v, w] : {std::pair{a.a, a.b}, std::pair{a.b, a.a}}) {
@@ -146,7 +152,8 @@ Dart add_rewritten_darts(Map& g, const SchemeEngine& e, const ComponentInstance&
 // dimension, and its ends of explicit arcs. An implicit arc at position p of dimension t[p] is the
 // link the dart already has — T[v][b] -t[p]- T[v][nb(b, p)] with T[v][b] = O.darts[b] — and is not
 // written.
-void write_preserved_links(Map& g, const SchemeEngine& e, const ComponentInstance& c, const OrbitType& t) {
+void write_preserved_links(Map& g, const SchemeEngine& e, const ComponentInstance& c,
+                           const OrbitType& t) {
   const RuleScheme& s = e.scheme();
   const size_t sz = c.size();
   const Dart* darts = c.darts.data();
@@ -200,15 +207,17 @@ EverywhereApplication apply_by_components(const SchemeEngine& engine, Map& g, bo
   size_t rewritten = 0;  // live darts of the components met so far: all met, no more hooks
   for (Dart d = 0; d < cap0 && rewritten < live; ++d) {
     if (!g.alive(d) || w.index[d] != ComponentInstance::kNone) continue;  // dead, or used
-    const size_t sz = component_orbit(g, t, d, w);  // 1
+    const size_t sz = component_orbit(g, t, d, w);                        // 1
     rewritten += sz;
     const std::span<const Dart> orbit(w.darts.data(), sz);
-    ComponentInstance c{&engine, orbit, {}, t.size(), &w.index, g.capacity(), sz == live, &w.orbit_map};
+    ComponentInstance c{&engine,  orbit,        {},         t.size(),
+                        &w.index, g.capacity(), sz == live, &w.orbit_map};
     for (size_t p = 0; p < t.size(); ++p) c.nb[p] = w.orbit_map.link_data(t[p]);
     if (observer) observer->before_rewrite(g, c);
     if (engine.added_count() > 0) c.base = add_rewritten_darts(g, engine, c, links);  // 5, 6
-    write_preserved_links(g, engine, c, t);                                             // 6
-    if (!engine.deleted_nodes().empty()) {  // 7: the hook, L's only node, is deleted: its darts are O's
+    write_preserved_links(g, engine, c, t);                                           // 6
+    if (!engine.deleted_nodes()
+             .empty()) {  // 7: the hook, L's only node, is deleted: its darts are O's
       for (const Dart x : orbit) {
         for (int i = 0; i <= g.dimension(); ++i) g.set_alpha(i, x, x);
         g.remove_dart(x);

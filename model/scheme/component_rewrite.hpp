@@ -37,7 +37,7 @@ namespace gmr::scheme {
 struct ComponentInstance {
   static constexpr uint32_t kNone = UINT32_MAX;
   const SchemeEngine* engine = nullptr;
-  std::span<const Dart> darts;        // O.darts[b] (BFS order of orbit_graph)
+  std::span<const Dart> darts;  // O.darts[b] (BFS order of orbit_graph)
   // O's links, one array per label position: nb[p][b] is the orbit dart linked to b at position p.
   std::array<const uint32_t*, kMaxDim> nb = {};
   size_t arity = 0;

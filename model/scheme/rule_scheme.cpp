@@ -69,8 +69,12 @@ size_t GraphScheme::components(std::vector<uint32_t>& comp) const {
   return k;
 }
 
-std::optional<uint32_t> RuleScheme::right_of(uint32_t l) const { return right.find(left.nodes[l].name); }
-std::optional<uint32_t> RuleScheme::left_of(uint32_t r) const { return left.find(right.nodes[r].name); }
+std::optional<uint32_t> RuleScheme::right_of(uint32_t l) const {
+  return right.find(left.nodes[l].name);
+}
+std::optional<uint32_t> RuleScheme::left_of(uint32_t r) const {
+  return left.find(right.nodes[r].name);
+}
 NodeRole RuleScheme::role_left(uint32_t v) const {
   return right_of(v) ? NodeRole::Preserved : NodeRole::Deleted;
 }
@@ -96,7 +100,8 @@ void RuleScheme::validate_structure() const {
                                        std::to_string(kMaxDim - 1));
   for (size_t p = 0; p < orbit.size(); ++p) {
     if (orbit[p] == OrbitType::kHole)
-      throw Error(ErrorCode::Schema, "the orbit type of a scheme has no `_`: " + orbit.str(), "orbit");
+      throw Error(ErrorCode::Schema, "the orbit type of a scheme has no `_`: " + orbit.str(),
+                  "orbit");
     if (orbit[p] < 0 || orbit[p] > dimension)
       throw Error(ErrorCode::Schema,
                   "dimension " + std::to_string(orbit[p]) + " of " + orbit.str() + " outside 0.." +
@@ -104,7 +109,8 @@ void RuleScheme::validate_structure() const {
                   "orbit");
   }
   if (__builtin_popcount(orbit.mask()) != static_cast<int>(orbit.size()))
-    throw Error(ErrorCode::Schema, "the orbit type " + orbit.str() + " repeats a dimension", "orbit");
+    throw Error(ErrorCode::Schema, "the orbit type " + orbit.str() + " repeats a dimension",
+                "orbit");
   auto side = [&](const GraphScheme& g, const char* tag) {
     std::set<std::string> names;
     for (const auto& nd : g.nodes) {
@@ -129,9 +135,10 @@ void RuleScheme::validate_structure() const {
       if (e.a >= g.nodes.size() || e.b >= g.nodes.size())
         throw Error(ErrorCode::Schema, "arc end out of range", loc);
       if (e.dim < 0 || e.dim > dimension)
-        throw Error(ErrorCode::Schema,
-                    "arc dimension " + std::to_string(e.dim) + " outside 0.." + std::to_string(dimension),
-                    loc);
+        throw Error(
+            ErrorCode::Schema,
+            "arc dimension " + std::to_string(e.dim) + " outside 0.." + std::to_string(dimension),
+            loc);
     }
   };
   side(left, "L");
@@ -139,9 +146,11 @@ void RuleScheme::validate_structure() const {
   std::set<std::string> hs;
   for (size_t k = 0; k < hooks.size(); ++k) {
     if (!left.find(hooks[k]))
-      throw Error(ErrorCode::Schema, "hook \"" + hooks[k] + "\" is not a node of L", "hook " + std::to_string(k));
+      throw Error(ErrorCode::Schema, "hook \"" + hooks[k] + "\" is not a node of L",
+                  "hook " + std::to_string(k));
     if (!hs.insert(hooks[k]).second)
-      throw Error(ErrorCode::Schema, "hook \"" + hooks[k] + "\" listed twice", "hook " + std::to_string(k));
+      throw Error(ErrorCode::Schema, "hook \"" + hooks[k] + "\" listed twice",
+                  "hook " + std::to_string(k));
   }
 }
 

@@ -1,7 +1,7 @@
 // Jerboa rule schemes (thesis Ch. 6, Defs. 86–87).
 //
-// A rule scheme L -> R of dimension n is parameterised by an orbit type <o> (no `_`). Each side is a
-// graph scheme:
+// A rule scheme L -> R of dimension n is parameterised by an orbit type <o> (no `_`). Each side is
+// a graph scheme:
 //  * nodes, each with a name and a *label*: a generalised orbit type of the same arity as <o>, read
 //    positionally (<o> -> <o^v>, Def. 86): position p carries the pattern dimension o[p] into the
 //    node's dimension o^v[p], or deletes it when o^v[p] is `_` (OrbitType::kHole). These are the
@@ -17,7 +17,8 @@
 //
 // The structure is plain data: no invariant is enforced on construction. `validate_structure`
 // reports the structural problems that make a scheme unusable (unknown names, out-of-range
-// dimensions, wrong arity); the scheme checker (checker/scheme_checker.hpp) reports everything else.
+// dimensions, wrong arity); the scheme checker (checker/scheme_checker.hpp) reports everything
+// else.
 #pragma once
 #include <optional>
 #include <string>
@@ -29,8 +30,8 @@
 namespace gmr::scheme {
 
 struct EmbeddingExpression {
-  std::string embedding;  // e.g. "position"
-  std::string code;       // expression text (docs/embeddings.md); empty when `unsupported`
+  std::string embedding;    // e.g. "position"
+  std::string code;         // expression text (docs/embeddings.md); empty when `unsupported`
   std::string jerboa;       // the Jerboa (Java) code it was translated from, when imported
   std::string unsupported;  // why the Jerboa code could not be translated (then code is empty)
   friend bool operator==(const EmbeddingExpression&, const EmbeddingExpression&) = default;

@@ -15,12 +15,18 @@ constexpr uint32_t kAdded = SchemeEngine::kAdded;
 
 const char* to_string(NotApplicableReason r) {
   switch (r) {
-    case NotApplicableReason::None: return "none";
-    case NotApplicableReason::NotCombinatorial: return "not-combinatorial";
-    case NotApplicableReason::HookOrbitsNotIsomorphic: return "hook-orbits-not-isomorphic";
-    case NotApplicableReason::NotInjective: return "not-injective";
-    case NotApplicableReason::MissingExplicitArc: return "missing-explicit-arc";
-    case NotApplicableReason::MissingImplicitArc: return "missing-implicit-arc";
+    case NotApplicableReason::None:
+      return "none";
+    case NotApplicableReason::NotCombinatorial:
+      return "not-combinatorial";
+    case NotApplicableReason::HookOrbitsNotIsomorphic:
+      return "hook-orbits-not-isomorphic";
+    case NotApplicableReason::NotInjective:
+      return "not-injective";
+    case NotApplicableReason::MissingExplicitArc:
+      return "missing-explicit-arc";
+    case NotApplicableReason::MissingImplicitArc:
+      return "missing-implicit-arc";
   }
   return "?";
 }
@@ -38,7 +44,8 @@ std::string incident_arcs_problem(const RuleScheme& s) {
           return "preserved node " + nm + " has " + std::to_string(cl) + " " + std::to_string(d) +
                  "-arc(s) in L and " + std::to_string(cr) + " in R";
       } else if (cl != 1) {
-        return "deleted node " + nm + " has no " + std::to_string(d) + "-arc in L (gluing condition)";
+        return "deleted node " + nm + " has no " + std::to_string(d) +
+               "-arc in L (gluing condition)";
       }
     }
     for (uint32_t v = 0; v < s.right.size(); ++v) {
@@ -166,7 +173,8 @@ bool SchemeEngine::match_other_hooks(const Map& g, const std::vector<Dart>& hook
     std::string err;
     if (!pairs)
       err = conflict.earlier == kNoDart
-                ? "dart " + std::to_string(conflict.x2) + " would correspond to two darts of the reference orbit"
+                ? "dart " + std::to_string(conflict.x2) +
+                      " would correspond to two darts of the reference orbit"
                 : "dart " + std::to_string(conflict.x) + " would correspond to both " +
                       std::to_string(conflict.earlier) + " and " + std::to_string(conflict.x2);
     else if (pairs->size() != s)
@@ -175,8 +183,8 @@ bool SchemeEngine::match_other_hooks(const Map& g, const std::vector<Dart>& hook
       return fail(res, NotApplicableReason::HookOrbitsNotIsomorphic,
                   "the " + lc.str() + "-orbit of hook " + s_.hooks[c] + " at dart " +
                       std::to_string(hook_darts[c]) + " is not isomorphic to the " + lref.str() +
-                      "-orbit of hook " + s_.hooks[0] + " at dart " + std::to_string(hook_darts[0]) +
-                      ": " + err);
+                      "-orbit of hook " + s_.hooks[0] + " at dart " +
+                      std::to_string(hook_darts[0]) + ": " + err);
     Dart* Mh = &res.match[h * s];
     for (const auto& [x, x2] : *pairs) Mh[index.at(x)] = x2;
   }
@@ -244,8 +252,8 @@ bool SchemeEngine::check_match(const Map& g, const OrbitGraph& O, SchemeApplicat
                       "the implicit " + std::to_string(im.dim) + "-arcs of L node " +
                           s_.left.nodes[v].name + " " + s_.left.nodes[v].label.str() +
                           " are not in G: dart " + std::to_string(x) + " has " +
-                          std::to_string(im.dim) + "-neighbour " + std::to_string(g.alpha(im.dim, x)) +
-                          ", not " + std::to_string(y));
+                          std::to_string(im.dim) + "-neighbour " +
+                          std::to_string(g.alpha(im.dim, x)) + ", not " + std::to_string(y));
       }
   return true;
 }
@@ -269,7 +277,8 @@ void SchemeEngine::place_right_darts(Map& g, size_t s, SchemeApplication& res) c
   }
 }
 
-void SchemeEngine::write_right_links(Map& g, const OrbitGraph& O, const std::vector<Dart>& T) const {
+void SchemeEngine::write_right_links(Map& g, const OrbitGraph& O,
+                                     const std::vector<Dart>& T) const {
   const size_t s = O.size();
   for (uint32_t v = 0; v < s_.right.size(); ++v) {
     const Dart* Tv = &T[v * s];
@@ -307,15 +316,15 @@ SchemeApplication SchemeEngine::rewrite(Map& g, const std::vector<Dart>& hook_da
          "the scheme breaks incident arcs (Alg. 1): " + not_combinatorial_);
     return res;
   }
-  const OrbitGraph O = hook_orbit(g, hook_darts, res);   // 1
+  const OrbitGraph O = hook_orbit(g, hook_darts, res);  // 1
   const size_t s = O.size();
   if (!match_other_hooks(g, hook_darts, O, res)) return res;  // 2
-  propagate_match(g, s, res.match);                            // 3
-  if (!check_match(g, O, res)) return res;                     // 4
+  propagate_match(g, s, res.match);                           // 3
+  if (!check_match(g, O, res)) return res;                    // 4
   if (observer) observer->before_rewrite(g, res, O);
-  place_right_darts(g, s, res);                                // 5
-  write_right_links(g, O, res.comatch);                        // 6
-  remove_deleted_darts(g, s, res.match);                       // 7
+  place_right_darts(g, s, res);           // 5
+  write_right_links(g, O, res.comatch);   // 6
+  remove_deleted_darts(g, s, res.match);  // 7
   res.applied = true;
   res.darts_added = num_added_ * s;
   res.darts_deleted = deleted_.size() * s;

@@ -3,18 +3,20 @@
 // `apply(engine, g, hooks)` applies a scheme at one hook set: in place on a `Map&`, on a copy
 // (returned with the report) on a `const Map&` (docs/architecture.md, "Applying rules"). Given a
 // scheme S of parameter <o> and one dart per hook (hooks[0] = reference hook):
-//  1. hook orbit: O = G<t>(d_ref), t = label of the reference hook (Alg. 4), darts indexed b = 0..s-1,
+//  1. hook orbit: O = G<t>(d_ref), t = label of the reference hook (Alg. 4), darts indexed b =
+//  0..s-1,
 //     nb(b,p) = index of O[b]@t[p];
 //  2. other hooks: orbit isomorphism (Alg. 5, orbit_isomorphism in model/core/orbit.hpp) of
 //     G<t>(d_ref) with G<t_c>(d_c) up to the positional relabeling t -> t_c, giving M[b][h_c];
 //  3. match table M[b][v] for every L node, propagated along explicit L arcs from the hooks;
-//  4. match checks (the instantiated L must be a subgraph of G under M, injectively): (a) all M[b][v]
+//  4. match checks (the instantiated L must be a subgraph of G under M, injectively): (a) all
+//  M[b][v]
 //     pairwise distinct; (b) explicit arcs v –i– v': M[b][v]@i = M[b][v']; (c) implicit arcs
 //     (label position p with t^v[p] = j): M[b][v]@j = M[nb(b,p)][v];
 //  5. darts: a preserved R node reuses M[b][v], an added node gets s fresh darts;
 //  6. links of R are written over the old ones (implicit: T[b][v]@j := T[nb(b,p)][v]; explicit:
-//     T[b][v]@i := T[b][v'] both ways); a dimension a preserved node has neither in L nor in R keeps
-//     its outside link;
+//     T[b][v]@i := T[b][v'] both ways); a dimension a preserved node has neither in L nor in R
+//     keeps its outside link;
 //  7. the darts of deleted nodes are freed.
 // Cost O(s·(|V_L| + |V_R|)·(n+1)): linear in the size of the instantiated rule (expected: step 2
 // uses hash maps; plus O(capacity/64) only when the orbit covers more than 1/8 of the map, for the
@@ -22,7 +24,8 @@
 //
 // Scope and decisions (named in the docs):
 //  * G-maps only (Jerboa schemes are G-map schemes); the map's dimension must equal the scheme's.
-//  * The engine requires the scheme to satisfy incident arcs I_S(0..n) (thesis Alg. 1): otherwise no
+//  * The engine requires the scheme to satisfy incident arcs I_S(0..n) (thesis Alg. 1): otherwise
+//  no
 //    result of an application is a G-map (a dart would get 0 or 2 links of some dimension) and the
 //    overwrite semantics would differ from DPO. Such a scheme is reported as not applicable
 //    (reason NotCombinatorial) with the first failing node. Under I_S, the gluing (dangling)
@@ -114,7 +117,9 @@ class SchemeEngine {
   // The tables of phases 5-7, for the whole-component path (component_rewrite.hpp).
   static constexpr uint32_t kAdded = UINT32_MAX;
   uint32_t right_source(uint32_t v) const { return r_source_[v]; }  // L node of R node v, or kAdded
-  uint32_t added_rank(uint32_t v) const { return added_rank_[v]; }  // rank among added R nodes, or kAdded
+  uint32_t added_rank(uint32_t v) const {
+    return added_rank_[v];
+  }  // rank among added R nodes, or kAdded
   size_t added_count() const { return num_added_; }
   const std::vector<uint32_t>& deleted_nodes() const { return deleted_; }
   const std::vector<uint32_t>& hook_nodes() const { return hooks_; }
@@ -128,14 +133,15 @@ class SchemeEngine {
   // The phases of rewrite, numbered as in the header comment. check_call throws on misuse; a check
   // that fails marks `res` as not applicable and returns false.
   void check_call(const Map& g, const std::vector<Dart>& hook_darts) const;
-  OrbitGraph hook_orbit(const Map& g, const std::vector<Dart>& hook_darts, SchemeApplication& res) const;  // 1
+  OrbitGraph hook_orbit(const Map& g, const std::vector<Dart>& hook_darts,
+                        SchemeApplication& res) const;  // 1
   bool match_other_hooks(const Map& g, const std::vector<Dart>& hook_darts, const OrbitGraph& O,
-                         SchemeApplication& res) const;                                // 2
-  void propagate_match(const Map& g, size_t s, std::vector<Dart>& M) const;           // 3
-  bool check_match(const Map& g, const OrbitGraph& O, SchemeApplication& res) const;  // 4
-  void place_right_darts(Map& g, size_t s, SchemeApplication& res) const;             // 5
+                         SchemeApplication& res) const;                                   // 2
+  void propagate_match(const Map& g, size_t s, std::vector<Dart>& M) const;               // 3
+  bool check_match(const Map& g, const OrbitGraph& O, SchemeApplication& res) const;      // 4
+  void place_right_darts(Map& g, size_t s, SchemeApplication& res) const;                 // 5
   void write_right_links(Map& g, const OrbitGraph& O, const std::vector<Dart>& T) const;  // 6
-  void remove_deleted_darts(Map& g, size_t s, const std::vector<Dart>& M) const;      // 7
+  void remove_deleted_darts(Map& g, size_t s, const std::vector<Dart>& M) const;          // 7
 
   struct Step {
     uint32_t v, from;
@@ -147,12 +153,12 @@ class SchemeEngine {
   };
   RuleScheme s_;
   std::vector<uint32_t> hooks_;
-  std::vector<Step> steps_;                     // match propagation order over L
-  std::vector<std::vector<Implicit>> impl_l_;   // per L node
-  std::vector<std::vector<Implicit>> impl_r_;   // per R node
-  std::vector<uint32_t> r_source_;              // per R node: L node index, or kAdded
-  std::vector<uint32_t> added_rank_;            // per R node: rank among added nodes
-  std::vector<uint32_t> deleted_;               // L nodes not in R
+  std::vector<Step> steps_;                    // match propagation order over L
+  std::vector<std::vector<Implicit>> impl_l_;  // per L node
+  std::vector<std::vector<Implicit>> impl_r_;  // per R node
+  std::vector<uint32_t> r_source_;             // per R node: L node index, or kAdded
+  std::vector<uint32_t> added_rank_;           // per R node: rank among added nodes
+  std::vector<uint32_t> deleted_;              // L nodes not in R
   size_t num_added_ = 0;
   std::string not_combinatorial_;
 };

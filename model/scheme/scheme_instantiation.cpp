@@ -33,7 +33,8 @@ OrbitGraph orbit_graph(const Map& g, const OrbitType& t, Dart d) {
   for (uint32_t b = 0; b < O.darts.size(); ++b) index.set(O.darts[b], b);
   O.nb.resize(O.darts.size() * O.arity);
   for (uint32_t b = 0; b < O.darts.size(); ++b)
-    for (size_t p = 0; p < O.arity; ++p) O.nb[b * O.arity + p] = index.get(g.alpha(t[p], O.darts[b]));
+    for (size_t p = 0; p < O.arity; ++p)
+      O.nb[b * O.arity + p] = index.get(g.alpha(t[p], O.darts[b]));
   return O;
 }
 
@@ -57,7 +58,8 @@ static void add_node_instances(InstantiatedGraph& ig, uint32_t v, const SchemeNo
                     ", the orbit graph has " + std::to_string(O.arity),
                 "node " + node.name);
   const size_t s = O.size();
-  for (uint32_t b = 0; b < s; ++b) ig.table[v * s + b] = ig.graph.add_node(instance_name(O, b, node.name));
+  for (uint32_t b = 0; b < s; ++b)
+    ig.table[v * s + b] = ig.graph.add_node(instance_name(O, b, node.name));
   for (uint32_t b = 0; b < s; ++b)
     for (size_t p = 0; p < O.arity; ++p) {
       const int j = node.label[p];
@@ -85,7 +87,8 @@ InstantiatedGraph instantiate_nodes(const GraphScheme& s, const OrbitGraph& O) {
 }
 
 void instantiate_arc(const SchemeArc& e, const OrbitGraph& O, InstantiatedGraph& into) {
-  for (uint32_t b = 0; b < O.size(); ++b) into.graph.add_link(into.at(e.a, b), into.at(e.b, b), e.dim);
+  for (uint32_t b = 0; b < O.size(); ++b)
+    into.graph.add_link(into.at(e.a, b), into.at(e.b, b), e.dim);
 }
 
 InstantiatedGraph instantiate_graph(const GraphScheme& s, const OrbitGraph& O) {
@@ -103,7 +106,8 @@ InstantiatedRule instantiate_sides(const RuleScheme& r, const OrbitGraph& O) {
 
 Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O) {
   InstantiatedRule ir = instantiate_sides(r, O);
-  return Rule(std::move(ir.left.graph), std::move(ir.right.graph), r.dimension, MapKind::GMap, r.name);
+  return Rule(std::move(ir.left.graph), std::move(ir.right.graph), r.dimension, MapKind::GMap,
+              r.name);
 }
 
 OrbitGraph hook_orbit_graph(const Map& g, const RuleScheme& r, Dart hook_dart) {

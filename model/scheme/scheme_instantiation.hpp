@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "model/graph/dgraph.hpp"
 #include "model/core/map.hpp"
+#include "model/graph/dgraph.hpp"
 #include "model/rewrite/rule.hpp"
 #include "model/scheme/rule_scheme.hpp"
 
@@ -26,9 +26,9 @@ using graph::Node;
 using rewrite::Rule;
 
 struct OrbitGraph {
-  size_t arity = 0;            // |<o>|
-  std::vector<Dart> darts;     // darts[b]: the dart of G standing for b (used in names "u_v")
-  std::vector<uint32_t> nb;    // nb[b * arity + p]
+  size_t arity = 0;          // |<o>|
+  std::vector<Dart> darts;   // darts[b]: the dart of G standing for b (used in names "u_v")
+  std::vector<uint32_t> nb;  // nb[b * arity + p]
   size_t size() const { return darts.size(); }
   uint32_t neighbor(uint32_t b, size_t p) const { return nb[b * arity + p]; }
 };
@@ -63,8 +63,8 @@ struct InstantiatedRule {
   InstantiatedGraph left, right;
 };
 InstantiatedRule instantiate_sides(const RuleScheme& r, const OrbitGraph& O);
-// The instantiated rule as a concrete DPO rule (model/rewrite/rule.hpp): L and R with the names "u_v",
-// preserved instances sharing names, arcs deduced by Assumption 4. The concrete L node of
+// The instantiated rule as a concrete DPO rule (model/rewrite/rule.hpp): L and R with the names
+// "u_v", preserved instances sharing names, arcs deduced by Assumption 4. The concrete L node of
 // (scheme node v, orbit dart b) has index v * |O| + b (same for R).
 Rule instantiate_rule(const RuleScheme& r, const OrbitGraph& O);
 

@@ -9,7 +9,8 @@ namespace gmr::testing {
 
 inline constexpr const char* kCgalDataArchive = "/usr/share/doc/libcgal-dev/data.tar.gz";
 
-// The path of data/meshes/<name>.off unpacked from CGAL's archive, or "" when the archive is absent.
+// The path of data/meshes/<name>.off unpacked from CGAL's archive, or "" when the archive is
+// absent.
 inline std::string cgal_mesh(const std::string& name) {
   namespace fs = std::filesystem;
   if (!fs::exists(kCgalDataArchive)) return {};
@@ -17,8 +18,8 @@ inline std::string cgal_mesh(const std::string& name) {
   const fs::path off = dir / "data" / "meshes" / (name + ".off");
   if (!fs::exists(off)) {
     fs::create_directories(dir);
-    const std::string cmd =
-        "tar xzf " + std::string(kCgalDataArchive) + " -C '" + dir.string() + "' data/meshes/" + name + ".off";
+    const std::string cmd = "tar xzf " + std::string(kCgalDataArchive) + " -C '" + dir.string() +
+                            "' data/meshes/" + name + ".off";
     if (std::system(cmd.c_str()) != 0) return {};
   }
   return off.string();

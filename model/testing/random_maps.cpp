@@ -215,7 +215,8 @@ Map random_map(Rng& rng, Generator gen, int n) {
 }
 
 Map random_permutation_omap(Rng& rng, const PermutationOMapOptions& opt) {
-  const size_t k = draw(rng, std::max<size_t>(opt.min_darts, 1), opt.max_darts, "random_permutation_omap");
+  const size_t k =
+      draw(rng, std::max<size_t>(opt.min_darts, 1), opt.max_darts, "random_permutation_omap");
   Map o(2, MapKind::OMap);
   o.add_darts(k);
   const std::vector<Dart> beta1 = random_permutation(rng, k);
@@ -278,8 +279,9 @@ Map oriented_components(const Map& g) {
 Map permute_darts(const Map& g, const std::vector<Dart>& perm) {
   const Dart cap = g.capacity();
   if (perm.size() != cap)
-    throw Error(ErrorCode::Usage, "permute_darts: permutation of size " + std::to_string(perm.size()) +
-                                      " for a map of capacity " + std::to_string(cap));
+    throw Error(ErrorCode::Usage, "permute_darts: permutation of size " +
+                                      std::to_string(perm.size()) + " for a map of capacity " +
+                                      std::to_string(cap));
   std::vector<bool> hit(cap, false);
   for (Dart d = 0; d < cap; ++d) {
     if (perm[d] >= cap || hit[perm[d]])

@@ -16,16 +16,21 @@ OrbitType random_relabeling(Rng& rng, const OrbitType& o, int n) {
   std::vector<Dart> perm = random_permutation(rng, static_cast<size_t>(n + 1));
   std::vector<int> dims;
   for (size_t p = 0; p < o.size(); ++p) {
-    if (chance(rng, 30)) dims.push_back(OrbitType::kHole);
-    else if (chance(rng, 50)) dims.push_back(o[p]);  // often the identity at this position
-    else dims.push_back(static_cast<int>(perm[p]));
+    if (chance(rng, 30))
+      dims.push_back(OrbitType::kHole);
+    else if (chance(rng, 50))
+      dims.push_back(o[p]);  // often the identity at this position
+    else
+      dims.push_back(static_cast<int>(perm[p]));
   }
   // Make the non-hole dimensions distinct (injective relabeling): later duplicates become `_`.
   std::vector<bool> used(static_cast<size_t>(n + 1), false);
   for (int& d : dims) {
     if (d == OrbitType::kHole) continue;
-    if (used[static_cast<size_t>(d)]) d = OrbitType::kHole;
-    else used[static_cast<size_t>(d)] = true;
+    if (used[static_cast<size_t>(d)])
+      d = OrbitType::kHole;
+    else
+      used[static_cast<size_t>(d)] = true;
   }
   return OrbitType(std::move(dims));
 }
@@ -63,14 +68,16 @@ RuleScheme random_scheme(Rng& rng, const RandomSchemeOptions& opt) {
   }
   // R: each L node preserved with probability 85% (the hook at least once in three), added nodes.
   for (const SchemeNode& v : s.left.nodes)
-    if (chance(rng, 85)) s.right.add_node(v.name, chance(rng, 40) ? v.label : random_relabeling(rng, s.orbit, n));
+    if (chance(rng, 85))
+      s.right.add_node(v.name, chance(rng, 40) ? v.label : random_relabeling(rng, s.orbit, n));
   const size_t added = pick(rng, opt.max_added + 1);
   for (size_t k = 0; k < added; ++k)
     s.right.add_node("a" + std::to_string(k), random_relabeling(rng, s.orbit, n));
   // Keep explicit L arcs between preserved nodes most of the time.
   for (const SchemeArc& e : s.left.arcs) {
     const auto ra = s.right_of(e.a), rb = s.right_of(e.b);
-    if (ra && rb && chance(rng, 80) && !has_dim(s.right, *ra, e.dim) && !has_dim(s.right, *rb, e.dim))
+    if (ra && rb && chance(rng, 80) && !has_dim(s.right, *ra, e.dim) &&
+        !has_dim(s.right, *rb, e.dim))
       s.right.arcs.push_back({*ra, *rb, e.dim});
   }
   // Incident arcs (Alg. 1): a preserved node should have in R exactly the dimensions it has in L
@@ -85,7 +92,8 @@ RuleScheme random_scheme(Rng& rng, const RandomSchemeOptions& opt) {
   for (uint32_t v = 0; v < m; ++v) {
     std::vector<int> dims = s.right.nodes[v].label.dims();
     for (int& x : dims)
-      if (x != OrbitType::kHole && !wanted(v, x) && chance(rng, opt.complete_percent)) x = OrbitType::kHole;
+      if (x != OrbitType::kHole && !wanted(v, x) && chance(rng, opt.complete_percent))
+        x = OrbitType::kHole;
     s.right.nodes[v].label = OrbitType(dims);
   }
   for (int d = 0; d <= n; ++d) {
@@ -94,8 +102,10 @@ RuleScheme random_scheme(Rng& rng, const RandomSchemeOptions& opt) {
       std::vector<uint32_t> partners;
       for (uint32_t w = 0; w < m; ++w)
         if (w != v && !has_dim(s.right, w, d) && wanted(w, d)) partners.push_back(w);
-      if (!partners.empty() && chance(rng, 70)) s.right.arcs.push_back({v, partners[pick(rng, partners.size())], d});
-      else s.right.arcs.push_back({v, v, d});
+      if (!partners.empty() && chance(rng, 70))
+        s.right.arcs.push_back({v, partners[pick(rng, partners.size())], d});
+      else
+        s.right.arcs.push_back({v, v, d});
     }
   }
   return s;
@@ -128,8 +138,11 @@ std::string mutate_scheme(Rng& rng, RuleScheme& s) {
         const size_t v = pick(rng, s.right.size());
         std::vector<int> dims = s.right.nodes[v].label.dims();
         const size_t p = pick(rng, dims.size());
-        const int nd = chance(rng, 50) ? OrbitType::kHole : static_cast<int>(uniform(rng, 0, static_cast<uint64_t>(n)));
-        if (dims[p] == nd || (nd != OrbitType::kHole && std::count(dims.begin(), dims.end(), nd))) break;
+        const int nd = chance(rng, 50)
+                           ? OrbitType::kHole
+                           : static_cast<int>(uniform(rng, 0, static_cast<uint64_t>(n)));
+        if (dims[p] == nd || (nd != OrbitType::kHole && std::count(dims.begin(), dims.end(), nd)))
+          break;
         dims[p] = nd;
         s.right.nodes[v].label = OrbitType(dims);
         return "relabel R " + s.right.nodes[v].name + " position " + std::to_string(p);
@@ -140,7 +153,8 @@ std::string mutate_scheme(Rng& rng, RuleScheme& s) {
         const auto b = static_cast<uint32_t>(pick(rng, s.right.size()));
         const int d = static_cast<int>(uniform(rng, 0, static_cast<uint64_t>(n)));
         s.right.arcs.push_back({a, b, d});
-        return "add R arc " + s.right.nodes[a].name + " -" + std::to_string(d) + "- " + s.right.nodes[b].name;
+        return "add R arc " + s.right.nodes[a].name + " -" + std::to_string(d) + "- " +
+               s.right.nodes[b].name;
       }
       case 2: {  // remove an explicit R arc
         if (s.right.arcs.empty()) break;
@@ -148,7 +162,7 @@ std::string mutate_scheme(Rng& rng, RuleScheme& s) {
         s.right.arcs.erase(s.right.arcs.begin() + static_cast<long>(k));
         return "remove R arc " + std::to_string(k);
       }
-      case 3:    // drop an R node (an added node disappears; a preserved one becomes deleted)
+      case 3:  // drop an R node (an added node disappears; a preserved one becomes deleted)
       case 4: {
         if (s.right.nodes.empty()) break;
         const auto v = static_cast<uint32_t>(pick(rng, s.right.size()));

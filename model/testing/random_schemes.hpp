@@ -13,15 +13,15 @@
 //    explicit arc added or removed, an added node dropped, a preserved node deleted), keeping the
 //    structural validity above. Applied to the library operations, it gives "near miss" schemes.
 #pragma once
-#include "model/testing/random_maps.hpp"
 #include "model/scheme/rule_scheme.hpp"
+#include "model/testing/random_maps.hpp"
 
 namespace gmr::testing {
 using scheme::RuleScheme;
 
 struct RandomSchemeOptions {
   int n = 2;
-  size_t max_added = 3;           // added R nodes, uniform in [0, max]
+  size_t max_added = 3;  // added R nodes, uniform in [0, max]
   unsigned second_left_percent = 20;
   unsigned complete_percent = 90;  // chance that a missing dimension at an R node gets an arc
 };

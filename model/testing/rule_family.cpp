@@ -15,7 +15,8 @@ using namespace gmr::rewrite;
 
 size_t for_each_small_rule(int n, MapKind kind, int max_nodes, const std::vector<int>& arc_labels,
                            const std::function<bool(const Rule&)>& f) {
-  return rewrite::for_each_small_rule(n, kind, max_nodes, arc_labels, [&](size_t, const Rule& r) { return f(r); });
+  return rewrite::for_each_small_rule(n, kind, max_nodes, arc_labels,
+                                      [&](size_t, const Rule& r) { return f(r); });
 }
 
 Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t max_left_nodes) {
@@ -33,7 +34,8 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
   const double drop = coin(0.5) ? 0.0 : 0.15;
   for (ArcId a : G.arc_slots()) {
     const Arc& e = G.arc(a);
-    if (lpos[e.src] != kNoNode && lpos[e.tgt] != kNoNode && !coin(drop)) L.add_arc(lpos[e.src], lpos[e.tgt], e.label);
+    if (lpos[e.src] != kNoNode && lpos[e.tgt] != kNoNode && !coin(drop))
+      L.add_arc(lpos[e.src], lpos[e.tgt], e.label);
   }
   std::vector<bool> deleted(nodes.size());
   for (size_t k = 0; k < nodes.size(); ++k) deleted[k] = coin(0.25);
@@ -49,10 +51,12 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
   if (big.empty() || coin(0.2)) {
     // Fallback: R = the preserved part of L with a few toggled arcs, plus added nodes with loops.
     HandleVector<Node, Node> rpos(L.num_nodes(), kNoNode);
-    for (size_t k : kept) rpos[Node(static_cast<uint32_t>(k))] = R.add_node(L.name(Node(static_cast<uint32_t>(k))));
+    for (size_t k : kept)
+      rpos[Node(static_cast<uint32_t>(k))] = R.add_node(L.name(Node(static_cast<uint32_t>(k))));
     for (ArcId a : L.arc_slots()) {
       const Arc& e = L.arc(a);
-      if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(0.2)) R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
+      if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(0.2))
+        R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
     }
     for (size_t k = 0; k < added; ++k) {
       const Node v = R.add_node(std::string(1, anames[k]));
@@ -69,7 +73,8 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
     for (size_t k = 0; k < added; ++k) rpos[pool[next++]] = R.add_node(std::string(1, anames[k]));
     for (ArcId a : G2.arc_slots()) {
       const Arc& e = G2.arc(a);
-      if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(drop)) R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
+      if (rpos[e.src] != kNoNode && rpos[e.tgt] != kNoNode && !coin(drop))
+        R.add_arc(rpos[e.src], rpos[e.tgt], e.label);
     }
   }
   // Remove deleted nodes' names from R side: build L with all nodes (deleted ones stay in L only).
@@ -77,7 +82,8 @@ Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& fam, size_t ma
 }
 
 Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes) {
-  if (max_nodes < 1 || max_nodes > 8) throw Error(ErrorCode::Range, "random_small_rule: 1..8 nodes");
+  if (max_nodes < 1 || max_nodes > 8)
+    throw Error(ErrorCode::Range, "random_small_rule: 1..8 nodes");
   const size_t count = static_cast<size_t>(uniform(rng, 1, static_cast<uint64_t>(max_nodes)));
   const std::string names = "abcdefgh";
   DGraph L, R;
@@ -107,7 +113,8 @@ Rule random_small_rule(std::mt19937_64& rng, int n, MapKind kind, int max_nodes)
 }
 
 Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& fam) {
-  if (fam.graphs.empty()) throw Error(ErrorCode::Usage, "empty map family", "component_replacement_rule");
+  if (fam.graphs.empty())
+    throw Error(ErrorCode::Usage, "empty map family", "component_replacement_rule");
   const DGraph& GL = fam.graphs[uniform(rng, 0, fam.graphs.size() - 1)];
   const DGraph& GR = fam.graphs[uniform(rng, 0, fam.graphs.size() - 1)];
   const size_t p = uniform(rng, 0, std::min(GL.num_nodes(), GR.num_nodes()));
@@ -119,7 +126,8 @@ Rule component_replacement_rule(std::mt19937_64& rng, const MapFamily& fam) {
     return out;
   };
   DGraph L = copy(GL, [](Node v) { return "l" + std::to_string(v.index()); });
-  DGraph R = copy(GR, [p](Node v) { return (v.index() < p ? "l" : "r") + std::to_string(v.index()); });
+  DGraph R =
+      copy(GR, [p](Node v) { return (v.index() < p ? "l" : "r") + std::to_string(v.index()); });
   return Rule(std::move(L), std::move(R), fam.n, fam.kind, "component-replacement");
 }
 

@@ -27,7 +27,8 @@ using rewrite::Rule;
 size_t for_each_small_rule(int n, MapKind kind, int max_nodes, const std::vector<int>& arc_labels,
                            const std::function<bool(const Rule&)>& f);
 
-Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& family, size_t max_left_nodes = 4);
+Rule random_rule_from_maps(std::mt19937_64& rng, const MapFamily& family,
+                           size_t max_left_nodes = 4);
 
 // One random member of the `for_each_small_rule` family (property tests): up to max_nodes nodes,
 // each preserved, deleted or added, and for every label of the model a random partial injection

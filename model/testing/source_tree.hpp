@@ -19,7 +19,8 @@ inline std::string source_path(const std::string& relative) {
 // is not run through CTest (which sets it).
 inline std::string build_artifact(const char* variable) {
   const char* value = std::getenv(variable);
-  if (!value) throw std::runtime_error(std::string(variable) + " is not set: run the test through ctest");
+  if (!value)
+    throw std::runtime_error(std::string(variable) + " is not set: run the test through ctest");
   return value;
 }
 

@@ -26,8 +26,9 @@ Node follow_word(const DGraph& G, Node v, const PathWord& w) {
     const auto next = l.conj ? G.predecessors(v, l.dim) : G.successors(v, l.dim);
     if (next.size() != 1)
       throw Error(ErrorCode::InvalidMap,
-                  "incident arcs fails: " + std::to_string(next.size()) + (l.conj ? " incoming " : " outgoing ") +
-                      std::to_string(l.dim) + "-arcs while following the word " + to_string(w),
+                  "incident arcs fails: " + std::to_string(next.size()) +
+                      (l.conj ? " incoming " : " outgoing ") + std::to_string(l.dim) +
+                      "-arcs while following the word " + to_string(w),
                   "node " + G.node_str(v));
     v = next[0];
   }
@@ -43,11 +44,14 @@ PatternGraph pattern_graph(const DGraph& G, const std::vector<PathWord>& W) {
     P.origin.push_back(v);
   }
   for (Node v : G.nodes())
-    for (size_t k = 0; k < P.words.size(); ++k) P.graph.add_arc(v, follow_word(G, v, P.words[k]), static_cast<int>(k));
+    for (size_t k = 0; k < P.words.size(); ++k)
+      P.graph.add_arc(v, follow_word(G, v, P.words[k]), static_cast<int>(k));
   return P;
 }
 
-PatternGraph pattern_graph(const Map& g, const std::vector<PathWord>& W) { return pattern_graph(to_dgraph(g), W); }
+PatternGraph pattern_graph(const Map& g, const std::vector<PathWord>& W) {
+  return pattern_graph(to_dgraph(g), W);
+}
 
 namespace {
 std::vector<Node> bfs(const DGraph& g, Node v, HandleVector<Node, bool>& seen) {
@@ -72,7 +76,8 @@ std::vector<Node> bfs(const DGraph& g, Node v, HandleVector<Node, bool>& seen) {
 
 PatternGraph component(const PatternGraph& P, Node v) {
   if (v.index() >= P.size())
-    throw Error(ErrorCode::Range, "no node " + std::to_string(v.index()) + " in the pattern graph", "P_v");
+    throw Error(ErrorCode::Range, "no node " + std::to_string(v.index()) + " in the pattern graph",
+                "P_v");
   HandleVector<Node, bool> seen(P.size(), false);
   const std::vector<Node> order = bfs(P.graph, v, seen);
   HandleVector<Node, Node> index(P.size());
@@ -85,7 +90,8 @@ PatternGraph component(const PatternGraph& P, Node v) {
   }
   for (Node x : order)
     for (ArcId a : P.graph.out_arcs(x))
-      if (P.graph.arc_alive(a)) out.graph.add_arc(index[x], index[P.graph.arc(a).tgt], P.graph.arc(a).label);
+      if (P.graph.arc_alive(a))
+        out.graph.add_arc(index[x], index[P.graph.arc(a).tgt], P.graph.arc(a).label);
   return out;
 }
 

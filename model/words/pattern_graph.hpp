@@ -17,8 +17,8 @@
 #include <optional>
 #include <vector>
 
-#include "model/graph/dgraph.hpp"
 #include "model/core/map.hpp"
+#include "model/graph/dgraph.hpp"
 #include "model/words/word_rewriting.hpp"
 
 namespace gmr::words {
@@ -26,8 +26,8 @@ using graph::DGraph;
 using graph::Node;
 
 struct PatternGraph {
-  DGraph graph;              // label k = words[k]
-  std::vector<PathWord> words;   // W, without duplicates
+  DGraph graph;                     // label k = words[k]
+  std::vector<PathWord> words;      // W, without duplicates
   HandleVector<Node, Node> origin;  // node of P -> node of the graph it was built from
 
   size_t size() const { return graph.num_nodes(); }

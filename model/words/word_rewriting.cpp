@@ -37,16 +37,21 @@ PathWord parse_word(std::string_view text) {
   for (size_t k = 0; k < s.size(); ++k) {
     const char c = s[k];
     if (c == '~') {
-      if (pending) throw Error(ErrorCode::Parse, "\"~~\" in a word (write the letter itself)", "word \"" + std::string(text) + "\"");
+      if (pending)
+        throw Error(ErrorCode::Parse, "\"~~\" in a word (write the letter itself)",
+                    "word \"" + std::string(text) + "\"");
       pending = true;
     } else if (c >= '0' && c <= '9') {
       w.push_back({c - '0', pending});
       pending = false;
     } else {
-      throw Error(ErrorCode::Parse, std::string("unexpected character '") + c + "' in a word", "word \"" + std::string(text) + "\"");
+      throw Error(ErrorCode::Parse, std::string("unexpected character '") + c + "' in a word",
+                  "word \"" + std::string(text) + "\"");
     }
   }
-  if (pending) throw Error(ErrorCode::Parse, "\"~\" at the end of a word", "word \"" + std::string(text) + "\"");
+  if (pending)
+    throw Error(ErrorCode::Parse, "\"~\" at the end of a word",
+                "word \"" + std::string(text) + "\"");
   return w;
 }
 
@@ -60,14 +65,20 @@ std::string to_string(const PathWord& w) {
   return s;
 }
 
-RewritingSystem::RewritingSystem(std::set<int> N, std::set<int> O, std::vector<std::pair<int, int>> E)
+RewritingSystem::RewritingSystem(std::set<int> N, std::set<int> O,
+                                 std::vector<std::pair<int, int>> E)
     : N_(std::move(N)), O_(std::move(O)), E_(std::move(E)) {
   for (int d : N_)
-    if (O_.count(d)) throw Error(ErrorCode::Schema, "dimension " + std::to_string(d) + " is both oriented and non-oriented", "N, O");
+    if (O_.count(d))
+      throw Error(ErrorCode::Schema,
+                  "dimension " + std::to_string(d) + " is both oriented and non-oriented", "N, O");
   auto known = [&](int d) { return N_.count(d) || O_.count(d); };
   for (auto [i, j] : E_)
     if (!(i < j) || !known(i) || !known(j))
-      throw Error(ErrorCode::Schema, "exchangeable pair (" + std::to_string(i) + "," + std::to_string(j) + ") must satisfy i < j over N ∪ O", "E");
+      throw Error(ErrorCode::Schema,
+                  "exchangeable pair (" + std::to_string(i) + "," + std::to_string(j) +
+                      ") must satisfy i < j over N ∪ O",
+                  "E");
   // D̄ in the §4.6 convention: N ⊔ O ⊔ ~O.
   std::vector<Letter> letters;
   for (int d : N_) letters.push_back({d, false});
@@ -106,7 +117,8 @@ RewritingSystem RewritingSystem::omap(int n) { return of({n, MapKind::OMap}); }
 Letter RewritingSystem::normalize(Letter l) const {
   if (N_.count(l.dim)) return {l.dim, false};
   if (O_.count(l.dim)) return l;
-  throw Error(ErrorCode::Range, "dimension " + std::to_string(l.dim) + " is neither in N nor in O", "letter");
+  throw Error(ErrorCode::Range, "dimension " + std::to_string(l.dim) + " is neither in N nor in O",
+              "letter");
 }
 
 PathWord RewritingSystem::normalize(const PathWord& w) const {

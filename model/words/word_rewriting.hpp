@@ -4,25 +4,28 @@
 //  * A letter of D̄ = D ∪ {~d | d ∈ D} is a dimension with a conjugated flag; a word is a sequence
 //    of letters, conj(w_1..w_k) = ~w_k .. ~w_1 and ~~d = d (Def. 43).
 //  * R_{N,E} (Def. 52), for non-oriented dimensions N, oriented dimensions O and exchangeable pairs
-//    E ⊆ {(i,j) | i < j}: inside the system ~d := d for d ∈ N (so D̄ = N ⊔ O ⊔ ~O), and the rules are
+//    E ⊆ {(i,j) | i < j}: inside the system ~d := d for d ∈ N (so D̄ = N ⊔ O ⊔ ~O), and the rules
+//    are
 //      (i ~i, ε)            for every letter i of D̄;
 //      (j i, ~i ~j)          for (i,j) ∈ (N∪O)² ∪ (N∪~O)² with (||i||,||j||) ∈ E,
 //    i.e. swap an adjacent pair whose higher dimension comes first and conjugate both letters; both
 //    letters must be non-conjugated or both conjugated (N letters count as both).
-//  * Noetherian always (Lemma 10); confluent for G-maps (N = 0..n, O = ∅, E = (0..n)_{+2}) and O-maps
+//  * Noetherian always (Lemma 10); confluent for G-maps (N = 0..n, O = ∅, E = (0..n)_{+2}) and
+//  O-maps
 //    (N = 2..n, O = {1}, E = (1..n)_{+2}), where the normal form is unique and found by the
 //    leftmost derivation; not confluent in general (Lemma 11; Ex. 56: `210`).
 //
 // Text form: letters are digits, "~" conjugates the next digit, spaces are ignored, "" or "eps"
 // is the empty word: "~2 3130201". Dimensions are single digits (0..9), as in the thesis.
 #pragma once
-#include "model/core/map_spec.hpp"
 #include <compare>
 #include <set>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "model/core/map_spec.hpp"
 
 namespace gmr::words {
 
@@ -92,7 +95,9 @@ class RewritingSystem {
   PathWord normal_form(const PathWord& w) const { return leftmost_derivation(w).back(); }
   // Congruence test w <->* w' by equal (leftmost) normal forms: valid only when the system is
   // confluent (G-maps, O-maps); see normal_forms for the general search.
-  bool congruent(const PathWord& a, const PathWord& b) const { return normal_form(a) == normal_form(b); }
+  bool congruent(const PathWord& a, const PathWord& b) const {
+    return normal_form(a) == normal_form(b);
+  }
 
  private:
   std::set<int> N_, O_;

@@ -31,12 +31,10 @@
 #include <string>
 #include <vector>
 
-#include "model/testing/cgal_generalized_map.hpp"
-
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
-
+#include "model/testing/cgal_generalized_map.hpp"
 #include "tools/bench/bench_scale.hpp"
 
 using namespace gmr;
@@ -227,13 +225,15 @@ void cgal_marked_orbits(benchmark::State& state, Fixture<N>& f, DartsOf darts_of
 // CGAL: every <Alpha...>-orbit once.
 template <unsigned N, unsigned... Alpha>
 void cgal_orbits(benchmark::State& state, Fixture<N>& f) {
-  cgal_marked_orbits(state, f, [](const CMap<N>& m, auto it) { return m.template darts_of_orbit<Alpha...>(it); });
+  cgal_marked_orbits(
+      state, f, [](const CMap<N>& m, auto it) { return m.template darts_of_orbit<Alpha...>(it); });
 }
 
 // CGAL: every I-cell once (darts_of_cell<I>; I = N+1: connected components).
 template <unsigned N, unsigned I>
 void cgal_cell_orbits(benchmark::State& state, Fixture<N>& f) {
-  cgal_marked_orbits(state, f, [](const CMap<N>& m, auto it) { return m.template darts_of_cell<I>(it); });
+  cgal_marked_orbits(state, f,
+                     [](const CMap<N>& m, auto it) { return m.template darts_of_cell<I>(it); });
 }
 
 template <unsigned N>

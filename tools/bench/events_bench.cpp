@@ -17,11 +17,11 @@
 //             outside the timing; confirmation, naming of the touched orbits);
 //   dynamic   snapshot of G (orbit names and links), the application, the comparison with H.
 // Each iteration applies the rule to a fresh copy of the object (the copy is not timed: manual
-// timing, in thread CPU time; the copy has room for the new darts and an allocated marker, as a map in a modeler),
-// after the same method was run, untimed, on a copy of the scenario's smallest object: copying a
-// large object evicts the code and the rule's data from the caches, the warm-up puts every size in
-// the state of a modeler between two operations. tools/bench/events.sh prints the ratios
-// dynamic/static, with and without the application's own time.
+// timing, in thread CPU time; the copy has room for the new darts and an allocated marker, as a map
+// in a modeler), after the same method was run, untimed, on a copy of the scenario's smallest
+// object: copying a large object evicts the code and the rule's data from the caches, the warm-up
+// puts every size in the state of a modeler between two operations. tools/bench/events.sh prints
+// the ratios dynamic/static, with and without the application's own time.
 //
 // GMR_BENCH_SCALE (environment, default 1.0) scales the largest sizes down (e.g. 0.01).
 #include <benchmark/benchmark.h>
@@ -42,7 +42,6 @@
 #include "model/rule_io/jme_import.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/scheme_engine.hpp"
-
 #include "tools/bench/bench_scale.hpp"
 
 using namespace gmr;
@@ -58,7 +57,9 @@ RuleScheme library_rule(const std::string& name) {
   return io::read_scheme_file(std::string(GMR_SOURCE_DIR) + "/tools/data/rules/" + name + ".json");
 }
 RuleScheme jerboa_rule(const std::string& name) {
-  for (auto& r : io::read_jme_file(std::string(GMR_SOURCE_DIR) + "/tools/data/jerboa/JerboaTrackingOrbit.jme").rules)
+  for (auto& r :
+       io::read_jme_file(std::string(GMR_SOURCE_DIR) + "/tools/data/jerboa/JerboaTrackingOrbit.jme")
+           .rules)
     if (r.name == name) return r;
   throw std::runtime_error("no Jerboa rule " + name);
 }
@@ -85,7 +86,8 @@ Case local_split_case(double darts) {
 // The cube subdivided until it has about `darts` darts (48 * 4^k).
 Case split_case(double darts) {
   Case c{make_cube(), std::make_unique<SchemeEngine>(library_rule("quad_subdivision")), {0}};
-  while (static_cast<double>(c.object.size()) * 4 <= darts * 1.3) scheme::apply(*c.engine, c.object, {0});
+  while (static_cast<double>(c.object.size()) * 4 <= darts * 1.3)
+    scheme::apply(*c.engine, c.object, {0});
   return c;
 }
 // A stack of k cubes (48 darts each); the hook is a dart of the middle shared face.
@@ -126,8 +128,8 @@ double cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-void run(benchmark::State& state, const std::string& scenario, Factory f, double darts, const OrbitType& o,
-         Method m) {
+void run(benchmark::State& state, const std::string& scenario, Factory f, double darts,
+         const OrbitType& o, Method m) {
   Case& c = cached(scenario, f, darts);
   // The warm-up object: the same scenario at its smallest size.
   Case& w = cached(scenario, f, 1e3);
@@ -180,22 +182,29 @@ void run(benchmark::State& state, const std::string& scenario, Factory f, double
   if (m == Method::Static) state.counters["traversed"] = static_cast<double>(traversed);
 }
 
-void register_scenario(const std::string& scenario, Factory f, int n, const std::vector<double>& sizes) {
+void register_scenario(const std::string& scenario, Factory f, int n,
+                       const std::vector<double>& sizes) {
   const char* methods[] = {"apply", "static", "dynamic"};
   for (double size : sizes) {
     const double darts = size * (size > 1e4 ? scale() : 1.0);
     for (const OrbitType& o : all_orbit_types(n))
       for (int k = 0; k < 3; ++k) {
-        const std::string name = scenario + "/" + std::to_string(static_cast<long>(size)) + "/" + o.str() + "/" + methods[k];
+        const std::string name = scenario + "/" + std::to_string(static_cast<long>(size)) + "/" +
+                                 o.str() + "/" + methods[k];
         const Method m = static_cast<Method>(k);
-        benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& st) { run(st, scenario, f, darts, o, m); })
+        benchmark::RegisterBenchmark(
+            name.c_str(), [=](benchmark::State& st) { run(st, scenario, f, darts, o, m); })
             ->UseManualTime()
             // The minimum over the repetitions: the cost without interference from the other
             // processes of the machine (events.sh reports it next to the median).
-            ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); })
+            ->ComputeStatistics(
+                "min",
+                [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); })
             // Few iterations per repetition on large objects, many repetitions (events.sh takes the
             // medians): an iteration disturbed by the machine then spoils one sample, not a mean.
-            ->Iterations(size >= 1e6 || (scenario == "split" && size >= 1e5) ? 1 : size >= 1e5 ? 3 : 20)
+            ->Iterations(size >= 1e6 || (scenario == "split" && size >= 1e5) ? 1
+                         : size >= 1e5                                       ? 3
+                                                                             : 20)
             ->Unit(benchmark::kMicrosecond);
       }
   }

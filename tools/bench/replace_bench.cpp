@@ -15,25 +15,25 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <ctime>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
 
 #include "model/core/builders.hpp"
-#include "model/core/signature.hpp"
 #include "model/core/orbit.hpp"
+#include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
 #include "model/replace/configurations.hpp"
 #include "model/replace/direct_hex_subdivision.hpp"
 #include "model/replace/edge_split.hpp"
 #include "model/replace/pattern_folder.hpp"
+#include "model/replace/pattern_store.hpp"
 #include "model/replace/query_replace.hpp"
 #include "model/replace/replace_only.hpp"
 #include "model/replace/unit_hex_positions.hpp"
-#include "model/replace/pattern_store.hpp"
 
 namespace {
 
@@ -48,7 +48,8 @@ struct Data {
   Data() {
     for (size_t i = 0; i < set.configurations.size(); ++i) {
       const Configuration& c = set.configurations[i];
-      const Word key = store_key(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3, Mode::Unoriented);
+      const Word key =
+          store_key(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3, Mode::Unoriented);
       if (table.emplace(key, reps.size()).second) reps.push_back(i);
     }
     for (size_t r : reps) {
@@ -68,14 +69,16 @@ void BM_QueryByPatternStore(benchmark::State& state) {
   for (auto _ : state) {
     size_t found = 0;
     for (const Configuration& c : d.set.configurations)
-      found += d.store.match(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3).hits != nullptr;
+      found +=
+          d.store.match(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3).hits != nullptr;
     if (found != d.set.configurations.size()) state.SkipWithError("a configuration was not found");
     benchmark::DoNotOptimize(found);
   }
   state.counters["patterns"] = static_cast<double>(d.reps.size());
   // The store's lookup words: one per start dart of each pattern (automorphic starts once).
   state.counters["lookup_words"] = static_cast<double>(d.store.lookup_words());
-  state.counters["lookup_MB"] = static_cast<double>(d.store.lookup_letters()) * sizeof(uint32_t) / 1e6;
+  state.counters["lookup_MB"] =
+      static_cast<double>(d.store.lookup_letters()) * sizeof(uint32_t) / 1e6;
 }
 
 void BM_QueryBySignature(benchmark::State& state) {
@@ -83,7 +86,8 @@ void BM_QueryBySignature(benchmark::State& state) {
   for (auto _ : state) {
     size_t found = 0;
     for (const Configuration& c : d.set.configurations) {
-      const Word key = store_key(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3, Mode::Unoriented);
+      const Word key =
+          store_key(cell_boundary(c.map.map, 3, c.cell, c.map.flag, {}), 3, Mode::Unoriented);
       found += d.table.count(key);
     }
     if (found != d.set.configurations.size()) state.SkipWithError("a configuration was not found");
@@ -129,7 +133,8 @@ const PatternStore& hex_patterns() {
   static const PatternStore s = [] {
     PatternStore store(Mode::Unoriented);
     const char* src = std::getenv("GMR_SOURCE_DIR");
-    for (auto& p : load_patterns(std::string(src ? src : GMR_SOURCE_DIR) + "/tools/data/patterns/hex-subdivision"))
+    for (auto& p : load_patterns(std::string(src ? src : GMR_SOURCE_DIR) +
+                                 "/tools/data/patterns/hex-subdivision"))
       store.add(std::move(p));
     return store;
   }();
@@ -176,10 +181,12 @@ size_t subdivide_by_patterns(FlaggedMap& m, Sequence sequence) {
   m.reserve(subdivision_size(m, store));
   split_all_edges(m, 2);
   const bool lookup = sequence != Sequence::ReplaceOnly;
-  const QueryReplaceReport f = lookup ? query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid)
-                                      : replace_only(m, store, split4(), nullptr, Precondition::AssumeValid);
-  const QueryReplaceReport v = lookup ? query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid)
-                                      : replace_only(m, store, hex8(), nullptr, Precondition::AssumeValid);
+  const QueryReplaceReport f =
+      lookup ? query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid)
+             : replace_only(m, store, split4(), nullptr, Precondition::AssumeValid);
+  const QueryReplaceReport v =
+      lookup ? query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid)
+             : replace_only(m, store, hex8(), nullptr, Precondition::AssumeValid);
   if (!f.unmatched.empty() || !v.unmatched.empty()) return 0;
   return v.replaced() * 8;
 }
@@ -213,9 +220,10 @@ void BM_HexSubdivisionQueryReplaceUnreserved(benchmark::State& state) {
   }
 }
 
-// One step of the reserved sequence timed alone (range(1): 0 the reservation with its room counts, 1 the edge split, 2
-// the faces, 3 the volumes; range(2): 0 query-replace, 1 replace only; AssumeValid): the map before the step is made once, and each
-// iteration copies it and reserves the final size untimed.
+// One step of the reserved sequence timed alone (range(1): 0 the reservation with its room counts,
+// 1 the edge split, 2 the faces, 3 the volumes; range(2): 0 query-replace, 1 replace only;
+// AssumeValid): the map before the step is made once, and each iteration copies it and reserves the
+// final size untimed.
 void BM_HexStep(benchmark::State& state) {
   const PatternStore& store = hex_patterns();
   const int side = static_cast<int>(state.range(0)), step = static_cast<int>(state.range(1));
@@ -225,8 +233,10 @@ void BM_HexStep(benchmark::State& state) {
   auto run = [&](FlaggedMap& m, int s) {
     if (s == 0) m.reserve(subdivision_size(m, store));  // as the sequence does
     if (s == 1) split_all_edges(m, 2);
-    if (s == 2 && lookup) query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid);
-    if (s == 3 && lookup) query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid);
+    if (s == 2 && lookup)
+      query_replace(m, store, 2, {}, {}, {}, nullptr, Precondition::AssumeValid);
+    if (s == 3 && lookup)
+      query_replace(m, store, 3, {}, {}, {}, nullptr, Precondition::AssumeValid);
     if (s == 2 && !lookup) replace_only(m, store, split4(), nullptr, Precondition::AssumeValid);
     if (s == 3 && !lookup) replace_only(m, store, hex8(), nullptr, Precondition::AssumeValid);
   };
@@ -240,11 +250,15 @@ void BM_HexStep(benchmark::State& state) {
   }
 }
 
-void BM_HexSubdivisionQueryReplace(benchmark::State& state) { hex_subdivision_by_patterns(state, Sequence::QueryReplace); }
+void BM_HexSubdivisionQueryReplace(benchmark::State& state) {
+  hex_subdivision_by_patterns(state, Sequence::QueryReplace);
+}
 void BM_HexSubdivisionQueryReplaceAssumeValid(benchmark::State& state) {
   hex_subdivision_by_patterns(state, Sequence::QueryReplaceAssumeValid);
 }
-void BM_HexSubdivisionReplaceOnly(benchmark::State& state) { hex_subdivision_by_patterns(state, Sequence::ReplaceOnly); }
+void BM_HexSubdivisionReplaceOnly(benchmark::State& state) {
+  hex_subdivision_by_patterns(state, Sequence::ReplaceOnly);
+}
 
 void BM_HexSubdivisionDirect(benchmark::State& state) {
   const FlaggedMap& input = block(static_cast<int>(state.range(0)));
@@ -322,14 +336,25 @@ BENCHMARK(BM_HexSubdivisionQueryReplace)->Unit(benchmark::kMillisecond)->Arg(20)
 BENCHMARK(BM_HexStep)
     ->Unit(benchmark::kMillisecond)
     ->ArgsProduct({{16}, {0, 1, 2, 3}, {0, 1}})
-    ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
+    ->ComputeStatistics("min", [](const std::vector<double>& v) {
+      return *std::min_element(v.begin(), v.end());
+    });
 BENCHMARK(BM_HexSubdivisionQueryReplaceAssumeValid)->Unit(benchmark::kMillisecond)->Arg(20);
 BENCHMARK(BM_HexSubdivisionReplaceOnly)->Unit(benchmark::kMillisecond)->Arg(20);
 BENCHMARK(BM_HexSubdivisionDirect)->Unit(benchmark::kMillisecond)->Arg(20);
 // Pairs per size: about 3 s of work each.
-BENCHMARK(BM_HexSubdivisionPaired)->Unit(benchmark::kMillisecond)->ArgsProduct({{12}, {0, 1, 2}})->Iterations(200);
-BENCHMARK(BM_HexSubdivisionPaired)->Unit(benchmark::kMillisecond)->ArgsProduct({{16}, {0, 1, 2}})->Iterations(100);
-BENCHMARK(BM_HexSubdivisionPaired)->Unit(benchmark::kMillisecond)->ArgsProduct({{20}, {0, 1, 2}})->Iterations(50);
+BENCHMARK(BM_HexSubdivisionPaired)
+    ->Unit(benchmark::kMillisecond)
+    ->ArgsProduct({{12}, {0, 1, 2}})
+    ->Iterations(200);
+BENCHMARK(BM_HexSubdivisionPaired)
+    ->Unit(benchmark::kMillisecond)
+    ->ArgsProduct({{16}, {0, 1, 2}})
+    ->Iterations(100);
+BENCHMARK(BM_HexSubdivisionPaired)
+    ->Unit(benchmark::kMillisecond)
+    ->ArgsProduct({{20}, {0, 1, 2}})
+    ->Iterations(50);
 
 }  // namespace
 

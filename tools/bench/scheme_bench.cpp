@@ -24,15 +24,13 @@
 #include <memory>
 #include <vector>
 
-#include "model/testing/cgal_generalized_map.hpp"
-
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
-#include "model/scheme/scheme_engine.hpp"
-#include "model/rule_io/scheme_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
-
+#include "model/rule_io/scheme_json.hpp"
+#include "model/scheme/scheme_engine.hpp"
+#include "model/testing/cgal_generalized_map.hpp"
 #include "tools/bench/bench_scale.hpp"
 
 using namespace gmr;
@@ -69,7 +67,8 @@ Map from_cgal(CMap& m) {
   std::uint32_t k = 0;
   for (auto it = m.darts().begin(); it != m.darts().end(); ++it) m.info(it) = k++;
   for (auto it = m.darts().begin(); it != m.darts().end(); ++it)
-    for (unsigned i = 0; i <= 2; ++i) g.set_alpha(static_cast<int>(i), m.info(it), m.info(m.alpha(it, i)));
+    for (unsigned i = 0; i <= 2; ++i)
+      g.set_alpha(static_cast<int>(i), m.info(it), m.info(m.alpha(it, i)));
   return g;
 }
 
@@ -90,7 +89,8 @@ size_t cgal_quad_subdivision(CMap& m) {
   }
   for (size_t k = 0; k < s; ++k) {
     const DH d = n0[k];
-    const std::uint32_t a0 = m.info(m.alpha(d, 0)), a1 = m.info(m.alpha(d, 1)), a2 = m.info(m.alpha(d, 2));
+    const std::uint32_t a0 = m.info(m.alpha(d, 0)), a1 = m.info(m.alpha(d, 1)),
+                        a2 = m.info(m.alpha(d, 2));
     // links inside the quad corner of d
     m.basic_link_alpha(n1[k], n2[k], 1);
     m.basic_link_alpha(n2[k], n3[k], 0);
@@ -124,7 +124,8 @@ Fixture& fixture() {
   static std::unique_ptr<Fixture> f;
   if (f) return *f;
   f = std::make_unique<Fixture>();
-  f->engine = std::make_unique<gmr::scheme::SchemeEngine>(gmr::io::read_scheme_file(GMR_RULES_DIR "/quad_subdivision.json"));
+  f->engine = std::make_unique<gmr::scheme::SchemeEngine>(
+      gmr::io::read_scheme_file(GMR_RULES_DIR "/quad_subdivision.json"));
   // Correctness on a small torus: the CGAL result is isomorphic to the engine's.
   {
     Map g = gmr::make_torus(5, 7);
@@ -133,7 +134,8 @@ Fixture& fixture() {
     if (!scheme::apply(*f->engine, g, {0}).applied) std::abort();
     cgal_quad_subdivision(c);
     const bool iso = gmr::is_isomorphic(g, from_cgal(c));
-    std::fprintf(stderr, "[bench] quadsub on torus 5x7: gmr and CGAL results %s\n", iso ? "isomorphic" : "DIFFER");
+    std::fprintf(stderr, "[bench] quadsub on torus 5x7: gmr and CGAL results %s\n",
+                 iso ? "isomorphic" : "DIFFER");
     if (!iso || !c.is_valid()) std::abort();
   }
   const auto side = static_cast<size_t>(std::lround(250 * std::sqrt(scale())));
@@ -144,8 +146,11 @@ Fixture& fixture() {
   if (!scheme::apply(*f->engine, g, {0}).applied) std::abort();
   cgal_quad_subdivision(c);
   const bool gv = gmr::is_valid(g), cv = c.is_valid(), same = same_cells(g, c);
-  std::fprintf(stderr, "[bench] quadsub on torus %zux%zu: %zu -> %zu darts (CGAL %zu), valid gmr=%d cgal=%d, cell counts %s\n",
-               side, side, f->torus.size(), g.size(), c.number_of_darts(), gv, cv, same ? "agree" : "DISAGREE");
+  std::fprintf(stderr,
+               "[bench] quadsub on torus %zux%zu: %zu -> %zu darts (CGAL %zu), valid gmr=%d "
+               "cgal=%d, cell counts %s\n",
+               side, side, f->torus.size(), g.size(), c.number_of_darts(), gv, cv,
+               same ? "agree" : "DISAGREE");
   if (!gv || !cv || !same || g.size() != c.number_of_darts()) std::abort();
   return *f;
 }
@@ -164,7 +169,8 @@ void quadsub_gmr(benchmark::State& state) {
     { Map dead = std::move(g); }  // freeing is not timed
     state.ResumeTiming();
   }
-  state.counters["darts_per_second"] = benchmark::Counter(static_cast<double>(added), benchmark::Counter::kIsRate);
+  state.counters["darts_per_second"] =
+      benchmark::Counter(static_cast<double>(added), benchmark::Counter::kIsRate);
   state.counters["darts_after"] = static_cast<double>(f.torus.size() * 4);
 }
 
@@ -181,7 +187,8 @@ void quadsub_cgal(benchmark::State& state) {
     c.reset();
     state.ResumeTiming();
   }
-  state.counters["darts_per_second"] = benchmark::Counter(static_cast<double>(added), benchmark::Counter::kIsRate);
+  state.counters["darts_per_second"] =
+      benchmark::Counter(static_cast<double>(added), benchmark::Counter::kIsRate);
   state.counters["darts_after"] = static_cast<double>(f.torus.size() * 4);
 }
 

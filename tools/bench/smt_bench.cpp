@@ -11,9 +11,9 @@
 
 #include <cstdlib>
 
-#include "checker/smt/rule_space.hpp"
 #include "checker/smt/condition_registry.hpp"
 #include "checker/smt/condition_validation.hpp"
+#include "checker/smt/rule_space.hpp"
 #include "checker/smt/rule_verifier.hpp"
 #include "checker/smt/symbolic_validation.hpp"
 
@@ -67,13 +67,23 @@ void BM_SmtVariant(benchmark::State& st) {
   const Rule r = path_rule(2);
   EncodingOptions o;
   switch (st.range(1)) {
-    case 1: o.sort = DartSort::Int; break;
-    case 2: o.fixed_match = false; break;
-    case 3: o.incremental = false; break;
-    case 4: o.local_violations = false; break;
-    default: break;
+    case 1:
+      o.sort = DartSort::Int;
+      break;
+    case 2:
+      o.fixed_match = false;
+      break;
+    case 3:
+      o.incremental = false;
+      break;
+    case 4:
+      o.local_violations = false;
+      break;
+    default:
+      break;
   }
-  for (auto _ : st) benchmark::DoNotOptimize(verify_smt(r, static_cast<unsigned>(st.range(0)), o).preserves);
+  for (auto _ : st)
+    benchmark::DoNotOptimize(verify_smt(r, static_cast<unsigned>(st.range(0)), o).preserves);
 }
 // The 2931 rules of the 1-G-map family (2 nodes, labels 0 and 1) at 4 darts, consistency
 // semantics: arg 0 one SmtSession for all, arg 1 a fresh verification (context, solver) per rule.
@@ -102,7 +112,8 @@ ValidationOptions family_options(unsigned darts, int nodes) {
   return o;
 }
 void BM_Symbolic(benchmark::State& st) {
-  const ValidationOptions o = family_options(static_cast<unsigned>(st.range(0)), static_cast<int>(st.range(1)));
+  const ValidationOptions o =
+      family_options(static_cast<unsigned>(st.range(0)), static_cast<int>(st.range(1)));
   bool valid = false;
   for (auto _ : st) {
     const SymbolicReport r = validate_symbolic("thesis", o);
@@ -116,21 +127,26 @@ void BM_FamilyEnum(benchmark::State& st) {
   const char* s = std::getenv("GMR_BENCH_FAMILY_MAX_NODES");
   const int max_nodes = s ? std::atoi(s) : 2;
   if (st.range(0) > enum_max() || st.range(1) > max_nodes) {
-    st.SkipWithError("family too large for the enumerator (GMR_BENCH_ENUM_MAX, GMR_BENCH_FAMILY_MAX_NODES)");
+    st.SkipWithError(
+        "family too large for the enumerator (GMR_BENCH_ENUM_MAX, GMR_BENCH_FAMILY_MAX_NODES)");
     for (auto _ : st) {
     }
     return;
   }
-  ValidationOptions o = family_options(static_cast<unsigned>(st.range(0)), static_cast<int>(st.range(1)));
+  ValidationOptions o =
+      family_options(static_cast<unsigned>(st.range(0)), static_cast<int>(st.range(1)));
   o.engine = Engine::Enum;
   const BuiltinCondition* c = find_builtin_condition("thesis");
   bool valid = false;
   for (auto _ : st) {
-    const ValidationReport r = validate_condition("thesis", [&](const std::vector<Rule>& rules) {
-      std::vector<bool> out;
-      for (const auto& x : rules) out.push_back(c->holds(x));
-      return out;
-    }, o);
+    const ValidationReport r = validate_condition(
+        "thesis",
+        [&](const std::vector<Rule>& rules) {
+          std::vector<bool> out;
+          for (const auto& x : rules) out.push_back(c->holds(x));
+          return out;
+        },
+        o);
     valid = r.sound() && r.complete();
   }
   st.counters["valid"] = valid;
@@ -138,9 +154,24 @@ void BM_FamilyEnum(benchmark::State& st) {
 }  // namespace
 
 BENCHMARK(BM_FamilySession)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_SmtVariant)->ArgsProduct({{6, 7, 8}, {0, 1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_Smt)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_Enum)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_Symbolic)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_FamilyEnum)->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_SmtVariant)
+    ->ArgsProduct({{6, 7, 8}, {0, 1, 2, 3, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_Smt)
+    ->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_Enum)
+    ->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_Symbolic)
+    ->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_FamilyEnum)
+    ->ArgsProduct({{4, 5, 6, 7, 8, 9, 10}, {1, 2, 3, 4}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK_MAIN();

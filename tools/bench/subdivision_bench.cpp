@@ -18,11 +18,10 @@
 // iterations as gmr's buffer pool reuses it. `paired` runs gmr and CGAL one after the other in
 // every benchmark iteration and reports the median of the pairs' ratios (the comparison that holds
 // on a machine whose speed drifts: run_paired).
-#include <benchmark/benchmark.h>
-
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
+#include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
@@ -33,9 +32,9 @@
 #include <string>
 #include <vector>
 
+#include "model/core/embedded_map.hpp"
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
-#include "model/core/embedded_map.hpp"
 #include "model/expr/propagation.hpp"
 #include "model/map_io/off.hpp"
 #include "model/rule_io/scheme_json.hpp"
@@ -49,12 +48,15 @@ std::string mesh_path() {
   const char* m = std::getenv("GMR_BENCH_MESH");
   const std::string name = m ? m : "elephant";
   const char* archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
-  const std::filesystem::path off = std::filesystem::current_path() / "cgal-data/data/meshes" / (name + ".off");
+  const std::filesystem::path off =
+      std::filesystem::current_path() / "cgal-data/data/meshes" / (name + ".off");
   if (!std::filesystem::exists(off)) {
     std::filesystem::create_directories(std::filesystem::current_path() / "cgal-data");
-    const std::string cmd = std::string("tar xzf ") + archive + " -C cgal-data data/meshes/" + name + ".off";
+    const std::string cmd =
+        std::string("tar xzf ") + archive + " -C cgal-data data/meshes/" + name + ".off";
     if (std::system(cmd.c_str()) != 0)
-      throw std::runtime_error("CGAL's data meshes are missing: install libcgal-demo (tools/setup.sh)");
+      throw std::runtime_error(
+          "CGAL's data meshes are missing: install libcgal-demo (tools/setup.sh)");
   }
   return off.string();
 }
@@ -96,10 +98,12 @@ struct GmrSubdivision {
 };
 
 void cgal_catmull_clark(Mesh& m) {
-  CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
+  CGAL::Subdivision_method_3::CatmullClark_subdivision(
+      m, CGAL::parameters::number_of_iterations(kIterations));
 }
 void cgal_loop(Mesh& m) {
-  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(kIterations));
+  CGAL::Subdivision_method_3::Loop_subdivision(m,
+                                               CGAL::parameters::number_of_iterations(kIterations));
 }
 
 void run_gmr(benchmark::State& state, const char* rule) {
@@ -116,9 +120,10 @@ void run_gmr(benchmark::State& state, const char* rule) {
     vertices = gmr::count_orbits(m.map, gmr::OrbitType{1, 2});
     state.ResumeTiming();
   }
-  state.counters["darts_per_second"] = benchmark::Counter(static_cast<double>(darts), benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["vertices_per_second"] =
-      benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["darts_per_second"] =
+      benchmark::Counter(static_cast<double>(darts), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices_per_second"] = benchmark::Counter(
+      static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["darts_after"] = static_cast<double>(darts);
 }
 
@@ -141,19 +146,23 @@ void run_link_floor(benchmark::State& state, const char* rule) {
   const Fixture& f = fixture();
   const GmrSubdivision sub(rule);
   const gmr::scheme::SchemeEngine& engine = sub.engine;
-  std::vector<size_t> sizes{f.map.map.capacity()};  // darts before each iteration, and after the last
+  std::vector<size_t> sizes{
+      f.map.map.capacity()};  // darts before each iteration, and after the last
   gmr::Map g = f.map.map;
   for (int k = 0; k < kIterations; ++k) {
     gmr::scheme::apply_everywhere(engine, g, {.keep_tables = false});
     sizes.push_back(g.capacity());
   }
   const int dims = g.dimension() + 1;
-  std::vector<std::vector<gmr::Dart>> a(static_cast<size_t>(dims), std::vector<gmr::Dart>(sizes.back())),
+  std::vector<std::vector<gmr::Dart>> a(static_cast<size_t>(dims),
+                                        std::vector<gmr::Dart>(sizes.back())),
       b = a;  // touched before timing
-  for (int i = 0; i < dims; ++i) std::copy_n(f.map.map.links(i).begin(), sizes[0], a[static_cast<size_t>(i)].begin());
+  for (int i = 0; i < dims; ++i)
+    std::copy_n(f.map.map.links(i).begin(), sizes[0], a[static_cast<size_t>(i)].begin());
   for (auto _ : state) {
     for (int k = 0; k < kIterations; ++k) {
-      const size_t n = sizes[static_cast<size_t>(k)], blocks = sizes[static_cast<size_t>(k) + 1] / n;
+      const size_t n = sizes[static_cast<size_t>(k)],
+                   blocks = sizes[static_cast<size_t>(k) + 1] / n;
       for (size_t i = 0; i < a.size(); ++i) {
         const gmr::Dart* from = a[i].data();
         gmr::Dart* to = b[i].data();
@@ -180,9 +189,10 @@ void run_cgal(benchmark::State& state, Subdivide subdivide) {
     darts = 4 * m.number_of_edges();  // a closed surface: 4 darts of a 2-G-map per edge
     vertices = m.number_of_vertices();
   }
-  state.counters["darts_per_second"] = benchmark::Counter(static_cast<double>(darts), benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["vertices_per_second"] =
-      benchmark::Counter(static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["darts_per_second"] =
+      benchmark::Counter(static_cast<double>(darts), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices_per_second"] = benchmark::Counter(
+      static_cast<double>(vertices), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["darts_after"] = static_cast<double>(darts);
 }
 
@@ -227,25 +237,62 @@ void run_paired(benchmark::State& state, const char* rule, void (*cgal)(Mesh&)) 
 
 void BM_catmull_clark_gmr(benchmark::State& state) { run_gmr(state, "quad_subdivision.json"); }
 void BM_catmull_clark_cgal(benchmark::State& state) { run_cgal(state, cgal_catmull_clark); }
-void BM_catmull_clark_paired(benchmark::State& state) { run_paired(state, "quad_subdivision.json", cgal_catmull_clark); }
-void BM_loop_paired(benchmark::State& state) { run_paired(state, "loop_subdivision.json", cgal_loop); }
+void BM_catmull_clark_paired(benchmark::State& state) {
+  run_paired(state, "quad_subdivision.json", cgal_catmull_clark);
+}
+void BM_loop_paired(benchmark::State& state) {
+  run_paired(state, "loop_subdivision.json", cgal_loop);
+}
 void BM_loop_gmr(benchmark::State& state) { run_gmr(state, "loop_subdivision.json"); }
-void BM_catmull_clark_topology(benchmark::State& state) { run_gmr_topology(state, "quad_subdivision.json"); }
+void BM_catmull_clark_topology(benchmark::State& state) {
+  run_gmr_topology(state, "quad_subdivision.json");
+}
 void BM_loop_topology(benchmark::State& state) { run_gmr_topology(state, "loop_subdivision.json"); }
-void BM_catmull_clark_floor(benchmark::State& state) { run_link_floor(state, "quad_subdivision.json"); }
+void BM_catmull_clark_floor(benchmark::State& state) {
+  run_link_floor(state, "quad_subdivision.json");
+}
 void BM_loop_floor(benchmark::State& state) { run_link_floor(state, "loop_subdivision.json"); }
 void BM_loop_cgal(benchmark::State& state) { run_cgal(state, cgal_loop); }
 
 }  // namespace
 
-BENCHMARK(BM_catmull_clark_gmr)->Name("subdivision_catmull_clark/gmr")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_catmull_clark_cgal)->Name("subdivision_catmull_clark/cgal")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_catmull_clark_gmr)
+    ->Name("subdivision_catmull_clark/gmr")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_catmull_clark_cgal)
+    ->Name("subdivision_catmull_clark/cgal")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_loop_gmr)->Name("subdivision_loop/gmr")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_loop_cgal)->Name("subdivision_loop/cgal")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_catmull_clark_paired)->Name("subdivision_catmull_clark/paired")->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(4);
-BENCHMARK(BM_loop_paired)->Name("subdivision_loop/paired")->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(2);
-BENCHMARK(BM_catmull_clark_topology)->Name("subdivision_catmull_clark/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_loop_topology)->Name("subdivision_loop/gmr_topology_only")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_catmull_clark_floor)->Name("subdivision_catmull_clark/link_write_floor")->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_loop_floor)->Name("subdivision_loop/link_write_floor")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_loop_cgal)
+    ->Name("subdivision_loop/cgal")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_catmull_clark_paired)
+    ->Name("subdivision_catmull_clark/paired")
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(4);
+BENCHMARK(BM_loop_paired)
+    ->Name("subdivision_loop/paired")
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->MinTime(2);
+BENCHMARK(BM_catmull_clark_topology)
+    ->Name("subdivision_catmull_clark/gmr_topology_only")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_loop_topology)
+    ->Name("subdivision_loop/gmr_topology_only")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_catmull_clark_floor)
+    ->Name("subdivision_catmull_clark/link_write_floor")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_loop_floor)
+    ->Name("subdivision_loop/link_write_floor")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_MAIN();

@@ -8,12 +8,11 @@
 // .svg, .png for output) unless --from/--to names it. "-" is standard input (with --from) or
 // standard output (text formats, with --to).
 #pragma once
+#include <CLI/CLI.hpp>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "model/core/embedded_map.hpp"
 #include "model/core/validity.hpp"
@@ -52,8 +51,8 @@ inline constexpr size_t kMaxRenderedDarts = 1000;
 
 // Writes `f` to `path` (atomically; "-" = standard output for text formats). SVG/PNG of maps with
 // more than `max_rendered_darts` darts are refused with Error(Usage).
-void save_map(const EmbeddedMap& f, const std::string& path, Format format, const DotOptions& dot = {},
-              size_t max_rendered_darts = kMaxRenderedDarts);
+void save_map(const EmbeddedMap& f, const std::string& path, Format format,
+              const DotOptions& dot = {}, size_t max_rendered_darts = kMaxRenderedDarts);
 // Writes text to `path` atomically, or to standard output for "-".
 void write_output(const std::string& path, const std::string& text);
 

@@ -17,20 +17,20 @@
 
 #include "checker/events/concrete_scheme.hpp"
 #include "checker/events/event_format.hpp"
-#include "model/map_io/json_writer.hpp"
-#include "model/rewrite/dpo.hpp"
-#include "model/scheme/scheme_engine.hpp"
 #include "model/core/error.hpp"
-#include "model/rule_io/rule_json.hpp"
-#include "model/map_io/validity_report.hpp"
 #include "model/core/validity.hpp"
+#include "model/map_io/json_writer.hpp"
+#include "model/map_io/validity_report.hpp"
+#include "model/rewrite/dpo.hpp"
+#include "model/rule_io/rule_json.hpp"
+#include "model/scheme/scheme_engine.hpp"
 #include "tools/cli/cli.hpp"
-#include "tools/cli/subcommand.hpp"
 #include "tools/cli/match_syntax.hpp"
 #include "tools/cli/orbit_list.hpp"
 #include "tools/cli/rule_gate.hpp"
 #include "tools/cli/rule_input.hpp"
 #include "tools/cli/scheme_apply.hpp"
+#include "tools/cli/subcommand.hpp"
 #include "tools/cli/summary.hpp"
 
 namespace gmr::cli {
@@ -55,7 +55,8 @@ struct ApplyArgs {
 // (the engine appends them, the DPO reuses the indices of deleted darts first), so that the log
 // names the darts of the map written by -o. False (printed) when the engine refuses the rule.
 bool log_concrete_application(const Rule& r, const Map& g, const std::vector<Dart>& md,
-                              const std::vector<OrbitType>& types, const std::string& log_file, MapDerivation& d) {
+                              const std::vector<OrbitType>& types, const std::string& log_file,
+                              MapDerivation& d) {
   const scheme::RuleScheme s = events::scheme_of_concrete_rule(r);
   const scheme::SchemeEngine engine(s);
   std::vector<Dart> hooks;
@@ -78,19 +79,27 @@ int run_apply(const ApplyArgs& a) {
   const RuleInput in = load_rule_input(a.rule, a.rule_name);
   if (auto refused = gate_rule(in, a.rule, a.force, !a.no_embeddings)) return *refused;
   if (in.is_scheme()) {
-    if (!a.match.empty()) throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match", "--match");
-    return apply_scheme_input(*in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift,
-                                           a.limit, a.no_embeddings, a.events, a.orbits});
+    if (!a.match.empty())
+      throw Error(ErrorCode::Usage, "rule schemes are applied at hook darts (--hook), not --match",
+                  "--match");
+    return apply_scheme_input(
+        *in.scheme, {a.rule, a.input, a.from, a.output, a.to, a.hooks, a.all, a.json, a.lift,
+                     a.limit, a.no_embeddings, a.events, a.orbits});
   }
   if (!a.orbits.empty() && a.events.empty())
-    throw Error(ErrorCode::Usage, "--orbits selects the orbit types of the event log: give it with --events", "--orbits");
+    throw Error(ErrorCode::Usage,
+                "--orbits selects the orbit types of the event log: give it with --events",
+                "--orbits");
   const std::vector<OrbitType> orbit_types = parse_orbit_list(a.orbits);
   if (!a.hooks.empty() || a.all)
-    throw Error(ErrorCode::Usage, "--hook and --all apply rule schemes; give a concrete rule's match with --match", a.rule);
+    throw Error(ErrorCode::Usage,
+                "--hook and --all apply rule schemes; give a concrete rule's match with --match",
+                a.rule);
   const Rule& r = *in.concrete;
   const EmbeddedMap f = load_map(a.input, a.from);
   const Map& g = f.map;
-  const auto pairs = a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_match_pairs(r, g, a.match);
+  const auto pairs =
+      a.match.empty() ? std::vector<std::pair<Node, Dart>>{} : parse_match_pairs(r, g, a.match);
   const DGraph dg = to_dgraph(g);
   const auto darts = g.darts();
   std::vector<Node> node_of(g.capacity(), kNoNode);  // to_dgraph numbers the live darts in order
@@ -104,11 +113,13 @@ int run_apply(const ApplyArgs& a) {
       chosen = anchored_match(r.left(), dg, anchors);
       anchored = true;
       if (chosen && !satisfies_gluing(r, dg, *chosen)) {
-        std::cout << "the match violates the gluing condition: " << dangling_arcs(r, dg, *chosen)[0].describe(r, dg) << "\n";
+        std::cout << "the match violates the gluing condition: "
+                  << dangling_arcs(r, dg, *chosen)[0].describe(r, dg) << "\n";
         return kExitNegative;
       }
     } catch (const Error& e) {
-      if (e.code() != ErrorCode::Usage) throw;  // not every component anchored, or L not combinatorial
+      if (e.code() != ErrorCode::Usage)
+        throw;  // not every component anchored, or L not combinatorial
     }
   }
   if (!anchored) {
@@ -135,11 +146,13 @@ int run_apply(const ApplyArgs& a) {
     std::cout << "the result is not a map: " << e.location() << ": " << e.message() << "\n";
     return kExitNegative;
   }
-  if (!a.events.empty() && !log_concrete_application(r, g, md, orbit_types, a.events, d)) return kExitNegative;
+  if (!a.events.empty() && !log_concrete_application(r, g, md, orbit_types, a.events, d))
+    return kExitNegative;
   const ValidityReport rep = check_validity(d.H, a.limit);
   std::string match_text;
   for (Node v : r.left().nodes())
-    match_text += (v != Node(0) ? "," : "") + r.left().name(v) + "=" + std::to_string(md[v.index()]);
+    match_text +=
+        (v != Node(0) ? "," : "") + r.left().name(v) + "=" + std::to_string(md[v.index()]);
   if (a.json) {
     nlohmann::ordered_json j;
     j["rule"] = a.rule;
@@ -155,8 +168,10 @@ int run_apply(const ApplyArgs& a) {
     j["violations_not_listed"] = rep.truncated;
     print_json(j);
   } else {
-    std::cout << "match " << match_text << ": " << d.H.size() << " darts, " << (rep.ok() ? "valid" : "INVALID") << "\n";
-    if (const std::string c = describe_change(summarize(g), summarize(d.H)); !c.empty()) std::cout << "  " << c << "\n";
+    std::cout << "match " << match_text << ": " << d.H.size() << " darts, "
+              << (rep.ok() ? "valid" : "INVALID") << "\n";
+    if (const std::string c = describe_change(summarize(g), summarize(d.H)); !c.empty())
+      std::cout << "  " << c << "\n";
     print_violations(rep);
   }
   if (!rep.ok()) return kExitNegative;
@@ -167,28 +182,44 @@ int run_apply(const ApplyArgs& a) {
 }  // namespace
 
 void register_apply(CLI::App& app) {
-  auto [sub, args] = add_subcommand<ApplyArgs>(app,
-      "apply", "Apply a concrete rule once (DPO) at a match, or a rule scheme at hook darts; exit 1 if it does not apply or breaks the map", run_apply);
-  sub->add_option("rule", args->rule, "Rule file (gmr.rule JSON, concrete or scheme; Jerboa .jme with --rule)")->required();
+  auto [sub, args] =
+      add_subcommand<ApplyArgs>(app, "apply",
+                                "Apply a concrete rule once (DPO) at a match, or a rule scheme at "
+                                "hook darts; exit 1 if it does not apply or breaks the map",
+                                run_apply);
+  sub->add_option("rule", args->rule,
+                  "Rule file (gmr.rule JSON, concrete or scheme; Jerboa .jme with --rule)")
+      ->required();
   add_map_input(sub, args->input, args->from, "map", "Map file (.json, .off, .obj)");
-  sub->add_option("--match", args->match, "L-node=dart pairs, e.g. a=3,b=5 (default: the first applicable match)");
+  sub->add_option("--match", args->match,
+                  "L-node=dart pairs, e.g. a=3,b=5 (default: the first applicable match)");
   sub->add_option("-o,--output", args->output, "Write the result map here");
   sub->add_option("--to", args->to, std::string("Output format (") + kOutputFormats + ")");
   add_json_flag(sub, args->json, "Print JSON (schemes: with the match and comatch tables)");
-  sub->add_option("--hook", args->hooks, "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
-  sub->add_flag("--all", args->all, "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
+  sub->add_option("--hook", args->hooks,
+                  "Rule schemes: the hook dart(s), e.g. 5 or 5,17 (one per hook, in order)");
+  sub->add_flag(
+      "--all", args->all,
+      "Rule schemes: apply at every dart where the scheme applies, a fresh hook each time");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file");
-  sub->add_flag("--no-embeddings", args->no_embeddings,
-                "Rule schemes: drop the map's embeddings (positions, ...) and rewrite the topology only");
+  sub->add_flag(
+      "--no-embeddings", args->no_embeddings,
+      "Rule schemes: drop the map's embeddings (positions, ...) and rewrite the topology only");
   sub->add_flag("--lift", args->lift,
-                "Rule schemes of a higher dimension than the map: apply to the map lifted to it (new dimensions free)");
-  sub->add_flag("--force", args->force, "Apply a rule the checker rejects (by default it is refused, exit 1)");
+                "Rule schemes of a higher dimension than the map: apply to the map lifted to it "
+                "(new dimensions free)");
+  sub->add_flag("--force", args->force,
+                "Apply a rule the checker rejects (by default it is refused, exit 1)");
   sub->add_option("--limit", args->limit, "Maximum number of violations of the result listed")
       ->check(non_negative_integer())
       ->capture_default_str();
   sub->add_option("--events", args->events,
-                  "Write the event log here (gmr.events JSON: every orbit type's events, named by lowest dart, certain/confirmed/refuted; with --all one log per application; a concrete rule is logged as its scheme on <>)");
-  sub->add_option("--orbits", args->orbits, "With --events: the orbit types logged, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
+                  "Write the event log here (gmr.events JSON: every orbit type's events, named by "
+                  "lowest dart, certain/confirmed/refuted; with --all one log per application; a "
+                  "concrete rule is logged as its scheme on <>)");
+  sub->add_option(
+      "--orbits", args->orbits,
+      "With --events: the orbit types logged, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
 }
 
 }  // namespace gmr::cli

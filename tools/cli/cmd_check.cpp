@@ -10,9 +10,9 @@
 #include "checker/rule_check.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "tools/cli/cli.hpp"
-#include "tools/cli/subcommand.hpp"
 #include "tools/cli/scheme_check.hpp"
 #include "tools/cli/scheme_check.hpp"  // rule schemes and .jme files
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 using namespace gmr::rewrite;
@@ -25,7 +25,7 @@ struct CheckArgs {
   std::string input;
   bool json = false;
   bool per_constraint = false;
-  bool algorithm3 = false;  // rule schemes: the literal Algorithm 3 (scheme_checker.hpp)
+  bool algorithm3 = false;     // rule schemes: the literal Algorithm 3 (scheme_checker.hpp)
   bool no_embeddings = false;  // rule schemes: the topological conditions only
 };
 
@@ -48,15 +48,22 @@ int run_check(const CheckArgs& a) {
 }  // namespace
 
 void register_check(CLI::App& app) {
-  auto [sub, args] = add_subcommand<CheckArgs>(app,
-      "check", "Check the consistency conditions of a concrete rule or rule scheme (incident arcs, non-orientation, cycles); exit 1 if one fails", run_check);
-  sub->add_option("rule", args->input, "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")->required();
+  auto [sub, args] = add_subcommand<CheckArgs>(
+      app, "check",
+      "Check the consistency conditions of a concrete rule or rule scheme (incident arcs, "
+      "non-orientation, cycles); exit 1 if one fails",
+      run_check);
+  sub->add_option("rule", args->input,
+                  "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")
+      ->required();
   add_json_flag(sub, args->json, "Print JSON (format gmr.check)");
   sub->add_flag("--per-constraint", args->per_constraint,
-                "Check C_r on the ij-completion only (the thesis' per-constraint reading), without the model completion");
+                "Check C_r on the ij-completion only (the thesis' per-constraint reading), without "
+                "the model completion");
   // Rule schemes: a gmr.rule file of kind "scheme", or a Jerboa .jme file (summary table).
-  sub->add_flag("--algorithm3", args->algorithm3,
-                "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones)");
+  sub->add_flag(
+      "--algorithm3", args->algorithm3,
+      "Rule schemes: apply the thesis' Algorithm 3 literally (any L arc, not only deleted ones)");
   sub->add_flag("--no-embeddings", args->no_embeddings,
                 "Rule schemes: the topological conditions only, without the embedding checks");
 }

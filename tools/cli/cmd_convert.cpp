@@ -28,9 +28,13 @@ int run_convert(const ConvertArgs& a) {
 }  // namespace
 
 void register_convert(CLI::App& app) {
-  auto [sub, args] = add_subcommand<ConvertArgs>(app, "convert", "Convert a map file (json, off -> json, off, obj, dot, svg, png)", run_convert);
-  sub->add_option("input", args->input, "Input file (- for standard input with --from)")->required();
-  sub->add_option("output", args->output, "Output file, written atomically (- for standard output with --to)")
+  auto [sub, args] = add_subcommand<ConvertArgs>(
+      app, "convert", "Convert a map file (json, off -> json, off, obj, dot, svg, png)",
+      run_convert);
+  sub->add_option("input", args->input, "Input file (- for standard input with --from)")
+      ->required();
+  sub->add_option("output", args->output,
+                  "Output file, written atomically (- for standard output with --to)")
       ->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--to", args->to, std::string("Output format (") + kOutputFormats + ")");

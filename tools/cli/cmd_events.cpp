@@ -3,21 +3,21 @@
 // per orbit type, each creation, deletion, split, merge, modification or non-modification of a
 // pattern orbit, certain or possible with the instance pairs to compare at application time. A
 // Jerboa .jme file gives one table per rule (or the rule named by --rule). A concrete rule is
-// analysed as its scheme on <> (checker/events/concrete_scheme.hpp: one dart per node). Exit 0, 2 on
-// bad input.
+// analysed as its scheme on <> (checker/events/concrete_scheme.hpp: one dart per node). Exit 0, 2
+// on bad input.
+#include <filesystem>
 #include <iostream>
 #include <memory>
-#include <filesystem>
 
 #include "checker/events/concrete_scheme.hpp"
 #include "checker/events/event_format.hpp"
 #include "model/core/error.hpp"
-#include "model/rule_io/jme_import.hpp"
 #include "model/map_io/json_writer.hpp"
+#include "model/rule_io/jme_import.hpp"
 #include "tools/cli/cli.hpp"
-#include "tools/cli/subcommand.hpp"
 #include "tools/cli/orbit_list.hpp"
 #include "tools/cli/rule_input.hpp"
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 using namespace gmr::events;
@@ -57,7 +57,8 @@ int run_events(const EventsArgs& a) {
       docs.push_back(static_events_to_json(s, st));
       text += static_events_to_text(s, st) + "\n";
     } catch (const Error& e) {
-      docs.push_back({{"rule", s.name}, {"error", (e.location().empty() ? "" : e.location() + ": ") + e.message()}});
+      docs.push_back({{"rule", s.name},
+                      {"error", (e.location().empty() ? "" : e.location() + ": ") + e.message()}});
       text += s.name + ": not analysed: " + e.message() + "\n\n";
     }
   }
@@ -80,10 +81,17 @@ int run_events(const EventsArgs& a) {
 }  // namespace
 
 void register_events(CLI::App& app) {
-  auto [sub, args] = add_subcommand<EventsArgs>(app,
-      "events", "Static topological events of a rule scheme per orbit type: creation, deletion, split, merge, modification, certain or to confirm", run_events);
-  sub->add_option("rule", args->rule, "Rule (gmr.rule JSON, scheme or concrete: a scheme on <>) or Jerboa .jme file (every rule)")->required();
-  sub->add_option("--orbits", args->orbits, "Orbit types to analyse, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
+  auto [sub, args] = add_subcommand<EventsArgs>(
+      app, "events",
+      "Static topological events of a rule scheme per orbit type: creation, deletion, split, "
+      "merge, modification, certain or to confirm",
+      run_events);
+  sub->add_option("rule", args->rule,
+                  "Rule (gmr.rule JSON, scheme or concrete: a scheme on <>) or Jerboa .jme file "
+                  "(every rule)")
+      ->required();
+  sub->add_option("--orbits", args->orbits,
+                  "Orbit types to analyse, e.g. \"<0,1>,<1,2>\" (default: all 2^(n+1))");
   sub->add_option("--rule", args->rule_name, "The rule of a .jme file (default: every rule)");
   add_json_flag(sub, args->json, "Print JSON (format gmr.events, kind static)");
 }

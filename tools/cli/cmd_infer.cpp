@@ -1,5 +1,6 @@
 // `gmr infer BEFORE AFTER [--orbit O | --all-orbits] [--map PAIRS.json] [-o DIR] [--json]
-//  [--explicit-loops 2] [--prior-cut-loops 1,2] [--cut-loops 1,2] [--all-relabelings]`: rule inference by topological folding (thesis Ch. 7, inference/infer.hpp).
+//  [--explicit-loops 2] [--prior-cut-loops 1,2] [--cut-loops 1,2] [--all-relabelings]`: rule
+//  inference by topological folding (thesis Ch. 7, inference/infer.hpp).
 // The preserved darts are given by a gmr.mapping file (--map: dart pairs and orbit pairs,
 // inference/dart_mapping.hpp) or, by default, by identity on dart ids (darts alive in both maps).
 // Without --orbit every orbit type is tried (progress on standard error when it is a terminal).
@@ -28,8 +29,8 @@
 #include "model/map_io/atomic_write.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "tools/cli/cli.hpp"
-#include "tools/cli/subcommand.hpp"
 #include "tools/cli/inference_args.hpp"
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 
@@ -51,7 +52,8 @@ struct InferArgs {
 
 int run_infer(const InferArgs& a) {
   using namespace gmr::inference;
-  if (!a.orbit.empty() && a.all_orbits) throw Error(ErrorCode::Usage, "give either --orbit or --all-orbits", "--all-orbits");
+  if (!a.orbit.empty() && a.all_orbits)
+    throw Error(ErrorCode::Usage, "give either --orbit or --all-orbits", "--all-orbits");
   const EmbeddedMap g = load_map(a.before, a.from), h = load_map(a.after, a.from);
   const DartMapping m = a.map.empty() ? identity_mapping(g.map, h.map) : read_mapping_file(a.map);
   JointGraph j(0);
@@ -61,16 +63,19 @@ int run_infer(const InferArgs& a) {
     if (e.code() != ErrorCode::Schema || a.map.empty()) throw;
     throw Error(ErrorCode::Schema, e.message(), a.map + ":$." + e.location());
   }
-  cut_prior_loops(j, parse_dimension_list(a.prior_cut_loops, g.map.dimension(), "--prior-cut-loops"));
+  cut_prior_loops(j,
+                  parse_dimension_list(a.prior_cut_loops, g.map.dimension(), "--prior-cut-loops"));
   InferOptions opt;
   if (!a.orbit.empty()) opt.orbit = parse_orbit_option(a.orbit, "--orbit");
-  opt.fold.loops.explicit_loops = parse_dimension_list(a.explicit_loops, g.map.dimension(), "--explicit-loops");
+  opt.fold.loops.explicit_loops =
+      parse_dimension_list(a.explicit_loops, g.map.dimension(), "--explicit-loops");
   opt.all_relabelings = a.all_relabelings;
   opt.rule.cut_loops = parse_dimension_list(a.cut_loops, g.map.dimension(), "--cut-loops");
   const bool tty = isatty(STDERR_FILENO) != 0;
   if (tty && !opt.orbit)
     opt.progress = [](size_t k, size_t n, const OrbitType& o) {
-      std::cerr << "\rgmr infer: orbit type " << k << "/" << n << " " << o.str() << "        " << std::flush;
+      std::cerr << "\rgmr infer: orbit type " << k << "/" << n << " " << o.str() << "        "
+                << std::flush;
       if (k == n) std::cerr << "\n";
     };
   const InferenceResult res = infer_rules(j, opt);
@@ -82,8 +87,11 @@ int run_infer(const InferArgs& a) {
     out["mapping"] = a.map.empty() ? "identity" : a.map;
     nlohmann::ordered_json attempts = nlohmann::ordered_json::array();
     for (const auto& at : res.attempts) {
-      nlohmann::ordered_json x{{"orbit", at.orbit.str()}, {"start", at.start_text}, {"outcome", to_string(at.outcome)},
-                               {"left_nodes", at.left_nodes}, {"right_nodes", at.right_nodes}};
+      nlohmann::ordered_json x{{"orbit", at.orbit.str()},
+                               {"start", at.start_text},
+                               {"outcome", to_string(at.outcome)},
+                               {"left_nodes", at.left_nodes},
+                               {"right_nodes", at.right_nodes}};
       if (at.outcome == AttemptOutcome::FoldFailed) x["failure"] = to_json(at.failure, j);
       if (at.rule >= 0) x["rule"] = at.rule;
       if (at.rejected) {
@@ -95,7 +103,8 @@ int run_infer(const InferArgs& a) {
     out["attempts"] = attempts;
     nlohmann::ordered_json rules = nlohmann::ordered_json::array();
     for (size_t k = 0; k < res.rules.size(); ++k)
-      rules.push_back({{"duplicates_merged", res.duplicates[k]}, {"scheme", scheme_to_json(res.rules[k].scheme)}});
+      rules.push_back({{"duplicates_merged", res.duplicates[k]},
+                       {"scheme", scheme_to_json(res.rules[k].scheme)}});
     out["rules"] = rules;
     print_json(out);
   } else {
@@ -131,7 +140,8 @@ int run_infer(const InferArgs& a) {
       const std::string base = "rejected_" + std::to_string(r++);
       write_scheme_file(s, dir / (base + ".json"));
       RuleDotOptions dot;
-      if (at.outcome == AttemptOutcome::Inconsistent) dot.highlights = dot_highlights(at.rejected->check);
+      if (at.outcome == AttemptOutcome::Inconsistent)
+        dot.highlights = dot_highlights(at.rejected->check);
       write_diagram(s, base, to_dot(s, dot));
     }
     write_file_atomic(dir / "summary.txt", summary + not_drawn);
@@ -142,23 +152,35 @@ int run_infer(const InferArgs& a) {
 }  // namespace
 
 void register_infer(CLI::App& app) {
-  auto [sub, args] = add_subcommand<InferArgs>(app,
-      "infer", "Infer rule schemes from a before and an after map by topological folding (thesis Ch. 7); exit 1 if none is found", run_infer);
+  auto [sub, args] =
+      add_subcommand<InferArgs>(app, "infer",
+                                "Infer rule schemes from a before and an after map by topological "
+                                "folding (thesis Ch. 7); exit 1 if none is found",
+                                run_infer);
   sub->add_option("before", args->before, "Before map (.json, .off, .obj)")->required();
   sub->add_option("after", args->after, "After map (.json, .off, .obj)")->required();
-  sub->add_option("--from", args->from, std::string("Input format of both maps (") + kInputFormats + ")");
-  sub->add_option("--orbit", args->orbit, "Orbit type to fold on, e.g. \"<0,1,2>\" (default: every orbit type)");
+  sub->add_option("--from", args->from,
+                  std::string("Input format of both maps (") + kInputFormats + ")");
+  sub->add_option("--orbit", args->orbit,
+                  "Orbit type to fold on, e.g. \"<0,1,2>\" (default: every orbit type)");
   sub->add_flag("--all-orbits", args->all_orbits, "Try every orbit type (2^(n+1)), the default");
-  sub->add_option("--map", args->map, "Preserved darts: gmr.mapping file (dart pairs, orbit pairs); default identity on dart ids");
+  sub->add_option(
+      "--map", args->map,
+      "Preserved darts: gmr.mapping file (dart pairs, orbit pairs); default identity on dart ids");
   sub->add_option("--explicit-loops", args->explicit_loops,
-                  "Dimensions whose loops are always explicit arcs (conservative), e.g. 2 or 0,2 (default: implicit first)");
+                  "Dimensions whose loops are always explicit arcs (conservative), e.g. 2 or 0,2 "
+                  "(default: implicit first)");
   sub->add_flag("--all-relabelings", args->all_relabelings,
-                "Fold every combination of consistent relabelings (thesis §7.6), not only the documented default choice");
+                "Fold every combination of consistent relabelings (thesis §7.6), not only the "
+                "documented default choice");
   sub->add_option("--prior-cut-loops", args->prior_cut_loops,
-                  "Prior-cut loops: before folding, remove loops of these dimensions that a preserved dart has before and after, e.g. 2");
+                  "Prior-cut loops: before folding, remove loops of these dimensions that a "
+                  "preserved dart has before and after, e.g. 2");
   sub->add_option("--cut-loops", args->cut_loops,
-                  "Posterior-cut loops: remove explicit loops of these dimensions present on both copies of a preserved node, e.g. 2");
-  sub->add_option("-o,--output", args->output, "Directory for rule_k.json/.dot/.svg, rejected_k.json/.dot/.svg and summary.txt");
+                  "Posterior-cut loops: remove explicit loops of these dimensions present on both "
+                  "copies of a preserved node, e.g. 2");
+  sub->add_option("-o,--output", args->output,
+                  "Directory for rule_k.json/.dot/.svg, rejected_k.json/.dot/.svg and summary.txt");
   add_json_flag(sub, args->json, "Print JSON (attempts and inferred schemes)");
 }
 

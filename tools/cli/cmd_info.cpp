@@ -47,22 +47,29 @@ int run_info(const InfoArgs& a) {
               << "components:  " << s.components << "\n"
               << "euler:       " << s.euler << "\n"
               << "closed:      " << (s.closed ? "yes" : "no") << "\n"
-              << "boundary:    " << s.boundary_cells << " boundary " << (s.dimension - 1) << "-cell(s)\n";
+              << "boundary:    " << s.boundary_cells << " boundary " << (s.dimension - 1)
+              << "-cell(s)\n";
   } else {
     std::cout << "cells:       not computed (the map is invalid)\n";
   }
   std::cout << "valid:       "
-            << (s.valid ? "yes" : "no (" + std::to_string(s.violations) + " violations; see `gmr validate`)") << "\n";
-  std::cout << "embeddings:  " << (f.fields.empty() ? "none" : std::to_string(f.fields.size())) << "\n";
+            << (s.valid
+                    ? "yes"
+                    : "no (" + std::to_string(s.violations) + " violations; see `gmr validate`)")
+            << "\n";
+  std::cout << "embeddings:  " << (f.fields.empty() ? "none" : std::to_string(f.fields.size()))
+            << "\n";
   for (const auto& e : f.fields)
-    std::cout << "  " << e.name() << " " << e.orbit().str() << ": " << value_count(e) << " value(s)\n";
+    std::cout << "  " << e.name() << " " << e.orbit().str() << ": " << value_count(e)
+              << " value(s)\n";
   return kExitOk;
 }
 
 }  // namespace
 
 void register_info(CLI::App& app) {
-  auto [sub, args] = add_subcommand<InfoArgs>(app, "info", "Describe a map: darts, links, cells, Euler characteristic, validity", run_info);
+  auto [sub, args] = add_subcommand<InfoArgs>(
+      app, "info", "Describe a map: darts, links, cells, Euler characteristic, validity", run_info);
   add_map_input(sub, args->input, args->from);
   add_json_flag(sub, args->json);
 }

@@ -33,7 +33,8 @@ struct GenerateArgs {
 
 int run_generate(const GenerateArgs& a) {
   if (a.set != "hex-conformal")
-    throw Error(ErrorCode::Usage, "unknown pattern set '" + a.set + "' (known: hex-conformal)", "generate");
+    throw Error(ErrorCode::Usage, "unknown pattern set '" + a.set + "' (known: hex-conformal)",
+                "generate");
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::exists(a.folder, ec) && (!fs::is_directory(a.folder, ec) || !fs::is_empty(a.folder, ec)))
@@ -43,9 +44,10 @@ int run_generate(const GenerateArgs& a) {
   fs::create_directories(a.folder, ec);
   if (ec) throw Error(ErrorCode::Io, "cannot create the folder: " + ec.message(), a.folder);
   for (const replace::Pattern& p : patterns)
-    save_map(replace::to_embedded_map(p.map), (fs::path(a.folder) / (p.name + ".json")).string(), Format::Json);
-  std::cout << patterns.size() << " v-patterns (" << replace::to_string(mode) << " classes of hex-conformal) written to "
-            << a.folder << "\n";
+    save_map(replace::to_embedded_map(p.map), (fs::path(a.folder) / (p.name + ".json")).string(),
+             Format::Json);
+  std::cout << patterns.size() << " v-patterns (" << replace::to_string(mode)
+            << " classes of hex-conformal) written to " << a.folder << "\n";
   return kExitOk;
 }
 
@@ -110,9 +112,10 @@ int run_check(const PatternsArgs& a) {
     std::cout << "; " << m["ambiguous"].size() << " ambiguous";
     for (const auto& g : m["ambiguous"]) std::cout << " " << g.get<std::string>();
     if (!a.generator.empty())
-      std::cout << "; " << a.generator << ": " << m["configurations"].get<size_t>() << " configurations, "
-                << m["classes"].get<size_t>() << " classes, " << m["missing_classes"].get<size_t>()
-                << " classes missing (" << m["missing_configurations"].get<size_t>() << " configurations)";
+      std::cout << "; " << a.generator << ": " << m["configurations"].get<size_t>()
+                << " configurations, " << m["classes"].get<size_t>() << " classes, "
+                << m["missing_classes"].get<size_t>() << " classes missing ("
+                << m["missing_configurations"].get<size_t>() << " configurations)";
     std::cout << "\n";
     if (!a.generator.empty() && !m["missing"].empty()) {
       std::cout << "  missing:";
@@ -123,7 +126,8 @@ int run_check(const PatternsArgs& a) {
       std::cout << "\n";
     }
   }
-  std::cout << (negative ? "incomplete" : "complete") << " (" << (a.oriented ? "oriented" : "unoriented") << " mode)\n";
+  std::cout << (negative ? "incomplete" : "complete") << " ("
+            << (a.oriented ? "oriented" : "unoriented") << " mode)\n";
   return negative ? kExitNegative : kExitOk;
 }
 
@@ -132,16 +136,21 @@ int run_check(const PatternsArgs& a) {
 void register_patterns(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("patterns", "Pattern sets of query-replace");
   sub->require_subcommand(1);
-  auto [check, args] = add_subcommand<PatternsArgs>(*sub, "check", "Duplicates and missing configurations of a pattern set", run_check);
+  auto [check, args] = add_subcommand<PatternsArgs>(
+      *sub, "check", "Duplicates and missing configurations of a pattern set", run_check);
   check->add_option("folder", args->folder, "Folder of pattern files")->required();
-  check->add_option("--configurations", args->generator, "Configuration generator (square-edges, triangle-edges, hex-edges, hex-conformal, marching-cubes)");
+  check->add_option("--configurations", args->generator,
+                    "Configuration generator (square-edges, triangle-edges, hex-edges, "
+                    "hex-conformal, marching-cubes)");
   check->add_flag("--oriented", args->oriented, "Verdict in oriented mode (default: unoriented)");
   add_json_flag(check, args->json);
-  auto [generate, gen] =
-      add_subcommand<GenerateArgs>(*sub, "generate", "Write a generated pattern set (hex-conformal: the conformal volume patterns)", run_generate);
+  auto [generate, gen] = add_subcommand<GenerateArgs>(
+      *sub, "generate",
+      "Write a generated pattern set (hex-conformal: the conformal volume patterns)", run_generate);
   generate->add_option("set", gen->set, "Pattern set (hex-conformal)")->required();
   generate->add_option("folder", gen->folder, "Output folder (new or empty)")->required();
-  generate->add_flag("--oriented", gen->oriented, "One pattern per oriented class (325; default: unoriented, 226)");
+  generate->add_flag("--oriented", gen->oriented,
+                     "One pattern per oriented class (325; default: unoriented, 226)");
 }
 
 }  // namespace gmr::cli

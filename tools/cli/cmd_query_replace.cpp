@@ -38,8 +38,10 @@ int run_query_replace(const QueryReplaceArgs& a) {
   if (a.split_edges > 1) {
     // The arrays grow once: room for the split edges and the replacements (a size beyond the
     // dart limit is left to split_edges to refuse).
-    const double room = double(m.map.capacity()) + double(m.map.size()) * (a.split_edges - 1) +
-                        (a.cells <= m.map.dimension() ? double(replace::replacement_room(m.map, store, a.cells)) : 0);
+    const double room =
+        double(m.map.capacity()) + double(m.map.size()) * (a.split_edges - 1) +
+        (a.cells <= m.map.dimension() ? double(replace::replacement_room(m.map, store, a.cells))
+                                      : 0);
     if (room < double(kNoDart)) m.reserve(static_cast<size_t>(room));
     const std::vector<Dart> edges = orbit_representatives(m.map, cell_type(m.map, 1));
     replace::split_edges(m, edges, a.split_edges);
@@ -77,19 +79,22 @@ int run_query_replace(const QueryReplaceArgs& a) {
       if (store.entry(i).ambiguous) amb.push_back(store.patterns()[i].name);
     j["ambiguous_patterns"] = amb;
     j["darts"] = m.map.size();
-    j["time_ms"] = ms;            // query and replace
+    j["time_ms"] = ms;             // query and replace
     j["read_split_ms"] = read_ms;  // reading the patterns and the map, splitting edges
     j["output"] = a.output;
     print_json(j);
     return kExitOk;
   }
-  std::cout << "query-replace (" << replace::to_string(mode) << "): " << r.cells << " " << cell << ", "
-            << r.replaced() << " replaced, " << r.unmatched.size() << " unmatched";
+  std::cout << "query-replace (" << replace::to_string(mode) << "): " << r.cells << " " << cell
+            << ", " << r.replaced() << " replaced, " << r.unmatched.size() << " unmatched";
   if (split) std::cout << " (" << split << " edges split in " << a.split_edges << " first)";
-  std::cout << "; " << m.map.size() << " darts; " << ms << " ms (reading and splitting: " << read_ms << " ms)\n";
+  std::cout << "; " << m.map.size() << " darts; " << ms << " ms (reading and splitting: " << read_ms
+            << " ms)\n";
   for (size_t i = 0; i < r.matched.size(); ++i)
     std::cout << "  " << store.patterns()[i].name << ": " << r.matched[i]
-              << (store.entry(i).ambiguous ? " (ambiguous: a boundary symmetry its interior lacks; tie-break applied)" : "")
+              << (store.entry(i).ambiguous
+                      ? " (ambiguous: a boundary symmetry its interior lacks; tie-break applied)"
+                      : "")
               << "\n";
   if (!r.unmatched.empty()) {
     std::cout << "  unmatched " << cell << " (a dart of each):";
@@ -98,22 +103,28 @@ int run_query_replace(const QueryReplaceArgs& a) {
     std::cout << "\n";
   }
   if (r.ambiguous_keys)
-    std::cout << "  " << r.ambiguous_keys << " matches had several patterns for one signature: the first was used\n";
+    std::cout << "  " << r.ambiguous_keys
+              << " matches had several patterns for one signature: the first was used\n";
   return kExitOk;
 }
 
 }  // namespace
 
 void register_query_replace(CLI::App& app) {
-  auto [sub, args] = add_subcommand<QueryReplaceArgs>(app, "query-replace", "Replace the cells whose boundary matches a pattern (signatures)", run_query_replace);
-  sub->add_option("patterns", args->patterns, "Folder of pattern files (gmr.gmap JSON, flags as the embedding \"flag\")")
+  auto [sub, args] = add_subcommand<QueryReplaceArgs>(
+      app, "query-replace", "Replace the cells whose boundary matches a pattern (signatures)",
+      run_query_replace);
+  sub->add_option("patterns", args->patterns,
+                  "Folder of pattern files (gmr.gmap JSON, flags as the embedding \"flag\")")
       ->required();
   sub->add_option("map", args->input, "Map file (.json, .off, .obj)")->required();
   sub->add_option("-o,--output", args->output, "Output map")->required();
   sub->add_option("--from", args->from, std::string("Input format (") + kInputFormats + ")");
   sub->add_option("--to", args->to, std::string("Output format (") + kOutputFormats + ")");
-  sub->add_option("--cells", args->cells, "Cells to replace: 2 (faces) or 3 (volumes)")->check(CLI::IsMember({2, 3}));
-  sub->add_flag("--oriented", args->oriented, "Oriented mode: start darts in one orientation class only");
+  sub->add_option("--cells", args->cells, "Cells to replace: 2 (faces) or 3 (volumes)")
+      ->check(CLI::IsMember({2, 3}));
+  sub->add_flag("--oriented", args->oriented,
+                "Oriented mode: start darts in one orientation class only");
   sub->add_option("--split-edges", args->split_edges, "Split every edge in K first (e-pattern)")
       ->check(CLI::Range(1u, 1000u));
   sub->add_flag("--flag-all", args->flag_all, "Flag every dart of the input (its corners)");

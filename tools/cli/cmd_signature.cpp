@@ -26,8 +26,10 @@ std::vector<uint32_t> flags_from(const EmbeddedMap& f, const std::string& name) 
   if (!e) {
     std::string names;
     for (const auto& x : f.fields) names += (names.empty() ? "" : ", ") + x.name();
-    throw Error(ErrorCode::Usage, "no embedding \"" + name + "\" in the map (embeddings: " +
-                                      (names.empty() ? "none" : names) + ")", "--flags");
+    throw Error(ErrorCode::Usage,
+                "no embedding \"" + name +
+                    "\" in the map (embeddings: " + (names.empty() ? "none" : names) + ")",
+                "--flags");
   }
   std::map<std::string, uint32_t> rank;
   f.map.for_each_dart([&](Dart d) {
@@ -64,7 +66,9 @@ int run_signature(const SignatureArgs& a) {
 }  // namespace
 
 void register_signature(CLI::App& app) {
-  auto [sub, args] = add_subcommand<SignatureArgs>(app, "signature", "Print the minimal signature of a map (equal iff isomorphic)", run_signature);
+  auto [sub, args] = add_subcommand<SignatureArgs>(
+      app, "signature", "Print the minimal signature of a map (equal iff isomorphic)",
+      run_signature);
   add_map_input(sub, args->input, args->from);
   sub->add_option("--flags", args->flags, "Embedding whose values flag the darts (e.g. position)");
   add_json_flag(sub, args->json);

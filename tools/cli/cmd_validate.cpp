@@ -28,7 +28,8 @@ std::vector<EmbeddingIssue> embedding_issues(const Map& g, const EmbeddingField&
   if (e.name() != kPositionName) return issues;
   for (Dart rep : orbit_representatives(g, e.orbit()))
     if (e.has(rep))
-      if (auto problem = position_value_problem(e.value_json(rep))) issues.push_back({rep, *problem});
+      if (auto problem = position_value_problem(e.value_json(rep)))
+        issues.push_back({rep, *problem});
   return issues;
 }
 
@@ -40,7 +41,8 @@ int run_validate(const ValidateArgs& a) {
     EmbeddingIssue issue;
   };
   std::vector<Issue> issues;
-  if (r.ok())  // orbits of an invalid map do not describe cells: embeddings are checked on valid maps
+  if (r.ok())  // orbits of an invalid map do not describe cells: embeddings are checked on valid
+               // maps
     for (const auto& e : f.fields)
       for (auto& i : embedding_issues(f.map, e)) issues.push_back({e.name(), i});
   const bool valid = r.ok() && issues.empty();
@@ -52,7 +54,9 @@ int run_validate(const ValidateArgs& a) {
     j["violations"] = io::violations_json(r);
     j["truncated"] = r.truncated;
     nlohmann::ordered_json es = nlohmann::ordered_json::array();
-    for (const Issue& i : issues) es.push_back({{"embedding", i.embedding}, {"dart", i.issue.dart}, {"problem", i.issue.problem}});
+    for (const Issue& i : issues)
+      es.push_back(
+          {{"embedding", i.embedding}, {"dart", i.issue.dart}, {"problem", i.issue.problem}});
     j["embedding_issues"] = es;
     print_json(j);
     return valid ? kExitOk : kExitNegative;
@@ -62,12 +66,15 @@ int run_validate(const ValidateArgs& a) {
     return kExitOk;
   }
   if (!r.ok()) {
-    std::cout << a.input << ": invalid " << map_name(f.map) << ": " << r.total() << " violation(s)\n";
+    std::cout << a.input << ": invalid " << map_name(f.map) << ": " << r.total()
+              << " violation(s)\n";
     print_violations(r);
   } else {
-    std::cout << a.input << ": valid " << map_name(f.map) << ", but " << issues.size() << " embedding issue(s)\n";
+    std::cout << a.input << ": valid " << map_name(f.map) << ", but " << issues.size()
+              << " embedding issue(s)\n";
     for (const Issue& i : issues)
-      std::cout << "  embedding '" << i.embedding << "' at dart " << i.issue.dart << ": " << i.issue.problem << "\n";
+      std::cout << "  embedding '" << i.embedding << "' at dart " << i.issue.dart << ": "
+                << i.issue.problem << "\n";
   }
   return kExitNegative;
 }
@@ -75,8 +82,10 @@ int run_validate(const ValidateArgs& a) {
 }  // namespace
 
 void register_validate(CLI::App& app) {
-  auto [sub, args] = add_subcommand<ValidateArgs>(app,
-      "validate", "Check the G-map/O-map constraints and the embeddings; list every violation (exit 1 if any)", run_validate);
+  auto [sub, args] = add_subcommand<ValidateArgs>(
+      app, "validate",
+      "Check the G-map/O-map constraints and the embeddings; list every violation (exit 1 if any)",
+      run_validate);
   add_map_input(sub, args->input, args->from);
   sub->add_option("--limit", args->limit, "Maximum number of violations listed")
       ->check(non_negative_integer())

@@ -11,8 +11,8 @@
 #include "checker/smt/counterexample.hpp"
 #include "model/core/error.hpp"
 #include "tools/cli/cli.hpp"
-#include "tools/cli/subcommand.hpp"
 #include "tools/cli/rule_input.hpp"
+#include "tools/cli/subcommand.hpp"
 
 namespace gmr::cli {
 using namespace gmr::smt;
@@ -47,17 +47,20 @@ std::string describe(const Rule& r, const Counterexample& c) {
   s << "counterexample on a " << model_name(r) << " of " << c.G.size() << " darts; match";
   for (graph::Node v : r.left().nodes()) s << " " << r.left().name(v) << "->" << c.match.node[v];
   s << "; H breaks";
-  for (size_t k = 0; k < c.violations.size() && k < 4; ++k) s << (k ? "; " : " ") << graph::to_text(c.violations[k], c.H);
+  for (size_t k = 0; k < c.violations.size() && k < 4; ++k)
+    s << (k ? "; " : " ") << graph::to_text(c.violations[k], c.H);
   if (c.violations.size() > 4) s << "; ... (" << c.violations.size() << " in all)";
   return s.str();
 }
 
 int run_verify(const VerifyArgs& a) {
-  if (a.bound < 1 || a.bound > 16) throw Error(ErrorCode::Usage, "--bound must be in 1..16", "--bound");
+  if (a.bound < 1 || a.bound > 16)
+    throw Error(ErrorCode::Usage, "--bound must be in 1..16", "--bound");
   std::vector<Engine> engines;
   if (a.engine == "smt" || a.engine == "both") engines.push_back(Engine::Smt);
   if (a.engine == "enum" || a.engine == "both") engines.push_back(Engine::Enum);
-  if (engines.empty()) throw Error(ErrorCode::Usage, "unknown engine '" + a.engine + "' (smt|enum|both)", "--engine");
+  if (engines.empty())
+    throw Error(ErrorCode::Usage, "unknown engine '" + a.engine + "' (smt|enum|both)", "--engine");
   RuleInput in = load_rule_input(a.input, a.rule_name);
   const std::string name = in.is_scheme() ? in.scheme->name : in.concrete->name();
   std::vector<Run> runs;
@@ -121,14 +124,17 @@ int run_verify(const VerifyArgs& a) {
   } else {
     for (const Run& r : runs) {
       std::cout << name << ": ";
-      const std::string model = in.is_scheme() ? std::to_string(in.scheme->dimension) + "-G-map" : model_name(*in.concrete);
+      const std::string model = in.is_scheme() ? std::to_string(in.scheme->dimension) + "-G-map"
+                                               : model_name(*in.concrete);
       if (r.result.preserves)
-        std::cout << "no " << model << " of at most " << a.bound << " darts on which an application breaks a constraint"
+        std::cout << "no " << model << " of at most " << a.bound
+                  << " darts on which an application breaks a constraint"
                   << (r.result.applicable ? "" : " (the rule never applies within the bound)");
       else
         std::cout << describe(r.rule(), *r.result.counterexample);
       if (r.scheme)
-        std::cout << " [" << r.scheme->orbits << " hook orbits of at most " << r.scheme->orbit_bound << " darts]";
+        std::cout << " [" << r.scheme->orbits << " hook orbits of at most " << r.scheme->orbit_bound
+                  << " darts]";
       std::printf(" (engine %s, %.3f s)\n", to_string(r.result.engine), r.result.seconds);
       std::cout.flush();
     }
@@ -139,17 +145,26 @@ int run_verify(const VerifyArgs& a) {
 }  // namespace
 
 void register_verify(CLI::App& app) {
-  auto [sub, args] = add_subcommand<VerifyArgs>(app,
-      "verify", "Bounded verification of a rule: does any application on a map of at most k darts break a constraint? Exit 1 with a counterexample", run_verify);
-  sub->add_option("rule", args->input, "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")->required();
+  auto [sub, args] =
+      add_subcommand<VerifyArgs>(app, "verify",
+                                 "Bounded verification of a rule: does any application on a map of "
+                                 "at most k darts break a constraint? Exit 1 with a counterexample",
+                                 run_verify);
+  sub->add_option("rule", args->input,
+                  "Rule file (gmr.rule JSON, concrete or scheme) or Jerboa .jme file")
+      ->required();
   sub->add_option("--rule", args->rule_name, "Rule of a .jme file");
   sub->add_option("--bound,-k", args->bound, "Maps of at most this many darts (default 6)");
   sub->add_option("--orbit-bound", args->orbit_bound,
-                  "Rule schemes: instantiate on hook orbits of at most this many darts only (default: the bound)");
-  sub->add_option("--engine", args->engine, "smt (Z3, default), enum (exhaustive enumeration) or both");
+                  "Rule schemes: instantiate on hook orbits of at most this many darts only "
+                  "(default: the bound)");
+  sub->add_option("--engine", args->engine,
+                  "smt (Z3, default), enum (exhaustive enumeration) or both");
   add_json_flag(sub, args->json, "Print JSON (format gmr.verify)");
-  sub->add_option("-o,--output", args->output, "Write the counterexample (gmr.counterexample JSON)");
-  sub->add_option("--dot", args->dot, "Write the counterexample's G as DOT, offending darts highlighted");
+  sub->add_option("-o,--output", args->output,
+                  "Write the counterexample (gmr.counterexample JSON)");
+  sub->add_option("--dot", args->dot,
+                  "Write the counterexample's G as DOT, offending darts highlighted");
 }
 
 }  // namespace gmr::cli

@@ -6,7 +6,6 @@
 
 namespace gmr::cli {
 
-
 using namespace gmr::inference;
 
 OrbitType parse_orbit_option(const std::string& text, const std::string& option) {
@@ -34,7 +33,8 @@ DimMask parse_dimension_list(const std::string& text, int n, const std::string& 
       used = 0;
     }
     if (used != item.size() || d < 0 || d > n)
-      throw Error(ErrorCode::Usage, "\"" + item + "\" is not a dimension in 0.." + std::to_string(n), option);
+      throw Error(ErrorCode::Usage,
+                  "\"" + item + "\" is not a dimension in 0.." + std::to_string(n), option);
     m |= DimMask(1) << d;
   }
   return m;

@@ -4,13 +4,12 @@
 //
 // Exit codes: 0 success, 1 negative verdict, 2 bad input or usage. Errors are printed as
 // "gmr: error: <location>: <message>" on standard error.
+#include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstring>
 #include <iostream>
 #include <new>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "model/core/error.hpp"
 #include "model/map_io/atomic_write.hpp"
@@ -72,8 +71,8 @@ int check_standard_output(int code) {
   std::cout.flush();
   if (std::cout) return code;
   const int err = errno;
-  std::cerr << "gmr: error: standard output: write failed" << (err ? std::string(": ") + std::strerror(err) : "")
-            << "\n";
+  std::cerr << "gmr: error: standard output: write failed"
+            << (err ? std::string(": ") + std::strerror(err) : "") << "\n";
   return gmr::cli::kExitBadInput;
 }
 
@@ -97,8 +96,8 @@ int main(int argc, char** argv) {
     argv[2] = const_cast<char*>("--help");
     argc = 3;
   } else if (!word.empty() && !has_command(app, word)) {
-    std::cerr << "gmr: error: usage: unknown command '" << gmr::cli::abbreviate(word) << "' (commands: "
-              << known_commands(app) << ")\n";
+    std::cerr << "gmr: error: usage: unknown command '" << gmr::cli::abbreviate(word)
+              << "' (commands: " << known_commands(app) << ")\n";
     return gmr::cli::kExitBadInput;
   }
   try {
@@ -110,7 +109,8 @@ int main(int argc, char** argv) {
               << "Run 'gmr --help' or 'gmr <command> --help' for more information.\n";
     return gmr::cli::kExitBadInput;
   } catch (const gmr::Error& e) {
-    std::cerr << "gmr: error: " << (e.location().empty() ? "" : gmr::cli::abbreviate(e.location()) + ": ")
+    std::cerr << "gmr: error: "
+              << (e.location().empty() ? "" : gmr::cli::abbreviate(e.location()) + ": ")
               << gmr::cli::abbreviate(e.message()) << "\n";
     return gmr::cli::kExitBadInput;
   } catch (const std::bad_alloc&) {

@@ -13,7 +13,8 @@ std::vector<OrbitType> parse_orbit_list(const std::string& text) {
   std::smatch m;
   while (it != text.cend()) {
     if (!std::regex_search(it, text.cend(), m, item, std::regex_constants::match_continuous))
-      throw Error(ErrorCode::Usage, "expected a list of orbit types such as \"<0,1>,<1,2>\", found \"" + text + "\"",
+      throw Error(ErrorCode::Usage,
+                  "expected a list of orbit types such as \"<0,1>,<1,2>\", found \"" + text + "\"",
                   "--orbits");
     try {
       out.push_back(OrbitType::parse(m[1].str()));

@@ -5,10 +5,10 @@
 #include "checker/rule_check.hpp"
 #include "checker/scheme_checker.hpp"
 #include "model/core/error.hpp"
+#include "model/draw/render.hpp"
 #include "model/draw/rule_dot.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/rule_input.hpp"
-#include "model/draw/render.hpp"
 
 namespace gmr::cli {
 using namespace gmr::draw;
@@ -17,7 +17,9 @@ using namespace gmr::checker;
 std::optional<int> dot_rule_input(const RuleDotArgs& a) {
   if (!is_rule_file(a.input)) {
     if (!a.rule.empty() || a.kappa || a.check || !a.events.empty())
-      throw Error(ErrorCode::Usage, "--rule, --kappa, --check and --events apply to rule files (gmr.rule JSON, .jme)", a.input);
+      throw Error(ErrorCode::Usage,
+                  "--rule, --kappa, --check and --events apply to rule files (gmr.rule JSON, .jme)",
+                  a.input);
     return std::nullopt;
   }
   const Format out = drawing_format(a.output, a.to);
@@ -27,8 +29,11 @@ std::optional<int> dot_rule_input(const RuleDotArgs& a) {
   opt.name = a.name;
   std::string dot;
   if (in.is_scheme()) {
-    if (a.kappa) throw Error(ErrorCode::Usage, "--kappa draws the joint representation of a concrete rule", a.input);
-    if (a.check && !a.events.empty()) throw Error(ErrorCode::Usage, "give either --check or --events", "--events");
+    if (a.kappa)
+      throw Error(ErrorCode::Usage, "--kappa draws the joint representation of a concrete rule",
+                  a.input);
+    if (a.check && !a.events.empty())
+      throw Error(ErrorCode::Usage, "give either --check or --events", "--events");
     if (a.check) opt.highlights = dot_highlights(check_scheme(*in.scheme));
     if (!a.events.empty()) {
       const OrbitType o = OrbitType::parse(a.events);
@@ -38,14 +43,17 @@ std::optional<int> dot_rule_input(const RuleDotArgs& a) {
     dot = to_dot(*in.scheme, opt);
   } else {
     if (!a.events.empty())
-      throw Error(ErrorCode::Usage, "--events draws the static events of a rule scheme, not of a concrete rule", "--events");
+      throw Error(ErrorCode::Usage,
+                  "--events draws the static events of a rule scheme, not of a concrete rule",
+                  "--events");
     if (a.check) opt.highlights = dot_highlights(check_rule(*in.concrete));
     dot = to_dot(*in.concrete, opt);
   }
   if (out == Format::Dot) {
     write_output(a.output, dot);
   } else {
-    if (a.output == "-") throw Error(ErrorCode::Usage, "images are not written to standard output", a.output);
+    if (a.output == "-")
+      throw Error(ErrorCode::Usage, "images are not written to standard output", a.output);
     render_dot_file(dot, out == Format::Svg ? ImageFormat::Svg : ImageFormat::Png, a.output);
   }
   return kExitOk;

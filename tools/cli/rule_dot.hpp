@@ -12,7 +12,8 @@ struct RuleDotArgs {
   std::string input, output = "-", to, rule, name;
   bool kappa = false;  // κ arcs (concrete rules)
   bool check = false;  // overlay the checker's diagnostics
-  std::string events;  // rule schemes: overlay the static events of this orbit type (checker/events)
+  std::string
+      events;  // rule schemes: overlay the static events of this orbit type (checker/events)
 };
 
 // nullopt when the input is not a rule file; otherwise the exit code (0). Bad input throws.

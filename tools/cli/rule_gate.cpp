@@ -40,20 +40,23 @@ Verdict verdict_of(const RuleInput& in, bool embeddings) {
 
 }  // namespace
 
-std::optional<int> gate_rule(const RuleInput& in, const std::string& path, bool force, bool embeddings) {
+std::optional<int> gate_rule(const RuleInput& in, const std::string& path, bool force,
+                             bool embeddings) {
   if (in.is_scheme() && !in.scheme->precondition.empty())
     std::cerr << "gmr: warning: rule \"" << in.scheme->name
-              << "\" has a Jerboa precondition; gmr does not evaluate it (the rule is applied as if it held)\n";
+              << "\" has a Jerboa precondition; gmr does not evaluate it (the rule is applied as "
+                 "if it held)\n";
   const Verdict v = verdict_of(in, embeddings);
   if (v.errors == 0) return std::nullopt;
   if (force) {
-    std::cerr << "gmr: warning: applying rule \"" << v.rule << "\", which the checker rejects (" << v.errors
-              << " error(s)), because of --force\n";
+    std::cerr << "gmr: warning: applying rule \"" << v.rule << "\", which the checker rejects ("
+              << v.errors << " error(s)), because of --force\n";
     return std::nullopt;
   }
   std::cerr << "gmr: rule \"" << v.rule << "\" is rejected by the checker (" << v.errors
             << " error(s)); its application may break the map. First error:\n  " << v.first_error
-            << "\n`gmr check " << path << "` lists every diagnostic; --force applies the rule anyway.\n";
+            << "\n`gmr check " << path
+            << "` lists every diagnostic; --force applies the rule anyway.\n";
   return 1;
 }
 

@@ -14,6 +14,7 @@ namespace gmr::cli {
 // error: the verdict, the first error, how to see all and how to force) and returns exit code 1.
 // Warnings (forced application, unevaluated precondition) go to standard error. Without
 // `embeddings` (apply --no-embeddings), the topological conditions only.
-std::optional<int> gate_rule(const RuleInput& in, const std::string& path, bool force, bool embeddings);
+std::optional<int> gate_rule(const RuleInput& in, const std::string& path, bool force,
+                             bool embeddings);
 
 }  // namespace gmr::cli

@@ -3,9 +3,9 @@
 #include <filesystem>
 
 #include "model/core/error.hpp"
-#include "model/rule_io/jme_import.hpp"
 #include "model/map_io/json_reader.hpp"
 #include "model/map_io/read_file.hpp"
+#include "model/rule_io/jme_import.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "model/rule_io/scheme_json.hpp"
 
@@ -39,8 +39,8 @@ RuleInput load_rule_input(const std::string& path, const std::string& rule_name)
     if (rule_name.empty()) {
       if (m.rules.size() > 1)
         throw Error(ErrorCode::Usage,
-                    "the Jerboa file has " + std::to_string(m.rules.size()) + " rules (first: " + m.rules[0].name +
-                        "); pick one with --rule NAME",
+                    "the Jerboa file has " + std::to_string(m.rules.size()) +
+                        " rules (first: " + m.rules[0].name + "); pick one with --rule NAME",
                     path);
       in.scheme = std::move(m.rules[0]);
       return in;
@@ -52,7 +52,8 @@ RuleInput load_rule_input(const std::string& path, const std::string& rule_name)
       }
     std::string names;
     for (const auto& r : m.rules) names += (names.empty() ? "" : ", ") + r.name;
-    throw Error(ErrorCode::Usage, "no rule \"" + rule_name + "\" in the Jerboa file (rules: " + names + ")", path);
+    throw Error(ErrorCode::Usage,
+                "no rule \"" + rule_name + "\" in the Jerboa file (rules: " + names + ")", path);
   }
   const nlohmann::json doc = parse_json(read_text_file(path), path);
   if (rule_document_kind(doc, path) == "scheme")
@@ -61,7 +62,8 @@ RuleInput load_rule_input(const std::string& path, const std::string& rule_name)
     in.concrete = rule_from_json(doc, path);
   const std::string& name = in.scheme ? in.scheme->name : in.concrete->name();
   if (!rule_name.empty() && rule_name != name)
-    throw Error(ErrorCode::Usage, "the file holds rule \"" + name + "\", not \"" + rule_name + "\"", "--rule");
+    throw Error(ErrorCode::Usage, "the file holds rule \"" + name + "\", not \"" + rule_name + "\"",
+                "--rule");
   return in;
 }
 

@@ -1,6 +1,6 @@
 // Rule files on the command line (`gmr dot`, `gmr apply`): a gmr.rule JSON document (kind
-// "concrete" or "scheme", told by its "kind" member) or a Jerboa .jme file (one of its rules, picked
-// by name). Anything else is not a rule input (the caller treats it as a map).
+// "concrete" or "scheme", told by its "kind" member) or a Jerboa .jme file (one of its rules,
+// picked by name). Anything else is not a rule input (the caller treats it as a map).
 #pragma once
 #include <optional>
 #include <string>

@@ -6,15 +6,15 @@
 
 #include "checker/events/event_format.hpp"
 #include "model/core/builders.hpp"
+#include "model/core/embedded_map.hpp"
 #include "model/core/error.hpp"
+#include "model/core/validity.hpp"
+#include "model/expr/compiled_scheme.hpp"
+#include "model/expr/propagation.hpp"
 #include "model/map_io/json_writer.hpp"
 #include "model/map_io/validity_report.hpp"
-#include "model/expr/compiled_scheme.hpp"
-#include "model/core/embedded_map.hpp"
-#include "model/expr/propagation.hpp"
 #include "model/scheme/apply_everywhere.hpp"
 #include "model/scheme/scheme_engine.hpp"
-#include "model/core/validity.hpp"
 #include "tools/cli/cli.hpp"
 #include "tools/cli/orbit_list.hpp"
 #include "tools/cli/summary.hpp"
@@ -63,17 +63,21 @@ struct Applied {
 // Usage errors of --hook / --all, before the map is read.
 void check_hook_arguments(const RuleScheme& s, const SchemeApplyArgs& a) {
   const size_t nhooks = s.hooks.size();
-  if (a.all && !a.hooks.empty()) throw Error(ErrorCode::Usage, "give either --hook or --all", "--all");
+  if (a.all && !a.hooks.empty())
+    throw Error(ErrorCode::Usage, "give either --hook or --all", "--all");
   if (a.all && nhooks != 1)
     throw Error(ErrorCode::Usage,
-                "--all applies schemes with one hook; \"" + s.name + "\" has " + std::to_string(nhooks) +
-                    " (give them with --hook)",
+                "--all applies schemes with one hook; \"" + s.name + "\" has " +
+                    std::to_string(nhooks) + " (give them with --hook)",
                 "--all");
   if (!a.orbits.empty() && a.events.empty())
-    throw Error(ErrorCode::Usage, "--orbits selects the orbit types of the event log: give it with --events", "--orbits");
+    throw Error(ErrorCode::Usage,
+                "--orbits selects the orbit types of the event log: give it with --events",
+                "--orbits");
   if (!a.all && a.hooks.empty() && nhooks > 0)
     throw Error(ErrorCode::Usage,
-                "the scheme has " + std::to_string(nhooks) + " hook(s): give the dart(s) with --hook D[,D...] or use --all",
+                "the scheme has " + std::to_string(nhooks) +
+                    " hook(s): give the dart(s) with --hook D[,D...] or use --all",
                 "--hook");
 }
 
@@ -107,7 +111,8 @@ std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, Map& g, const 
     events::EventRecorder recorder(s, st, obs);
     app = scheme::apply(engine, g, hooks, &recorder);
     if (app)
-      write_output(a.events, io::dump_json(events::event_log_to_json(s, st, recorder.logs().back())));
+      write_output(a.events,
+                   io::dump_json(events::event_log_to_json(s, st, recorder.logs().back())));
   }
   if (!app) {
     print_not_applicable(s, a, app.reason, app.why, s.name + ": " + app.why);
@@ -120,8 +125,8 @@ std::optional<Applied> apply_at_hooks(const SchemeEngine& engine, Map& g, const 
 }
 
 // --all: apply_everywhere; nullopt when applicable at no dart (already printed).
-std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, Map& g, const SchemeApplyArgs& a,
-                                           ApplicationObserver* obs) {
+std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, Map& g,
+                                           const SchemeApplyArgs& a, ApplicationObserver* obs) {
   const RuleScheme& s = engine.scheme();
   const std::vector<Dart> darts = g.darts();
   // With --events, every application is logged on the map as it is just before and after it.
@@ -138,9 +143,10 @@ std::optional<Applied> apply_at_every_dart(const SchemeEngine& engine, Map& g, c
     write_output(a.events, io::dump_json(events::event_logs_to_json(s, *st, recorder->logs())));
   if (all.applications.empty()) {
     const SchemeApplication& last = all.last_failure;
-    const std::string why = darts.empty() ? "the map has no dart"
-                                          : last.why + " (at dart " + std::to_string(darts.front()) +
-                                                ", and at every other dart)";
+    const std::string why = darts.empty()
+                                ? "the map has no dart"
+                                : last.why + " (at dart " + std::to_string(darts.front()) +
+                                      ", and at every other dart)";
     print_not_applicable(s, a, last.reason, why, s.name + ": not applicable at any dart; " + why);
     return std::nullopt;
   }
@@ -162,17 +168,17 @@ void lift_to_scheme(const RuleScheme& s, const SchemeApplyArgs& a, Map& g) {
   if (g.dimension() >= s.dimension || g.is_omap()) return;
   if (!a.lift)
     throw Error(ErrorCode::Usage,
-                "the scheme rewrites " + std::to_string(s.dimension) + "-G-maps, the map is a " + map_name(g) +
-                    ": --lift applies it to the map lifted to dimension " + std::to_string(s.dimension) +
-                    " (new dimensions free)",
+                "the scheme rewrites " + std::to_string(s.dimension) + "-G-maps, the map is a " +
+                    map_name(g) + ": --lift applies it to the map lifted to dimension " +
+                    std::to_string(s.dimension) + " (new dimensions free)",
                 a.input);
   g = lift(g, s.dimension);
 }
 
 // Prints the applications, the dart counts, the change in cells and the validity of the result.
-void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r, const Change& change,
-                   const Map& g, const ValidityReport& rep, const expr::EmbeddingPropagation& prop,
-                   const EmbeddedMap& m) {
+void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied& r,
+                   const Change& change, const Map& g, const ValidityReport& rep,
+                   const expr::EmbeddingPropagation& prop, const EmbeddedMap& m) {
   const size_t before = change.darts_before;
   const auto& apps = r.apps;
   const auto& hooks_used = r.hooks_used;
@@ -211,18 +217,21 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
     j["evaluations"] = prop.evaluations();
     nlohmann::ordered_json is = nlohmann::ordered_json::array();
     for (const auto& i : prop.issues())
-      is.push_back({{"code", i.code}, {"embedding", i.embedding}, {"dart", i.dart}, {"message", i.message}});
+      is.push_back(
+          {{"code", i.code}, {"embedding", i.embedding}, {"dart", i.dart}, {"message", i.message}});
     j["embedding_issues"] = is;
     print_json(j);
   } else {
     std::cout << s.name << ": applied " << apps.size() << " time" << (apps.size() == 1 ? "" : "s");
     if (apps.size() == 1 && !hooks_used[0].empty()) {
       std::cout << " at hook" << (hooks_used[0].size() > 1 ? "s " : " ");
-      for (size_t k = 0; k < hooks_used[0].size(); ++k) std::cout << (k ? "," : "") << hooks_used[0][k];
+      for (size_t k = 0; k < hooks_used[0].size(); ++k)
+        std::cout << (k ? "," : "") << hooks_used[0][k];
     }
-    std::cout << ": " << before << " -> " << g.size() << " darts (+" << added << " -" << deleted << "), "
-              << (rep.ok() ? "valid" : "INVALID") << "\n";
-    if (const std::string c = describe_change(change.before, change.after); !c.empty()) std::cout << "  " << c << "\n";
+    std::cout << ": " << before << " -> " << g.size() << " darts (+" << added << " -" << deleted
+              << "), " << (rep.ok() ? "valid" : "INVALID") << "\n";
+    if (const std::string c = describe_change(change.before, change.after); !c.empty())
+      std::cout << "  " << c << "\n";
     print_violations(rep);
     if (!m.fields.empty()) {
       std::cout << "embeddings: ";
@@ -231,9 +240,11 @@ void print_applied(const RuleScheme& s, const SchemeApplyArgs& a, const Applied&
       std::cout << " (" << prop.evaluations() << " expression evaluations)\n";
     }
     if (prop.issue_count() > 0)
-      std::cout << "embedding issues: " << prop.issue_count() << " (the result is not embedding-consistent)\n";
+      std::cout << "embedding issues: " << prop.issue_count()
+                << " (the result is not embedding-consistent)\n";
     for (const auto& i : prop.issues())
-      std::cout << "  " << i.code << ": embedding " << i.embedding << ", dart " << i.dart << ": " << i.message << "\n";
+      std::cout << "  " << i.code << ": embedding " << i.embedding << ", dart " << i.dart << ": "
+                << i.message << "\n";
   }
 }
 

@@ -6,9 +6,9 @@
 
 #include "checker/check_format.hpp"
 #include "checker/scheme_checker.hpp"
-#include "model/rule_io/jme_import.hpp"
 #include "model/map_io/json_reader.hpp"
 #include "model/map_io/read_file.hpp"
+#include "model/rule_io/jme_import.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "tools/cli/cli.hpp"
 
@@ -28,13 +28,15 @@ std::string code_summary(const CheckReport& r) {
     if (n[d.code]++ == 0) order.push_back(d.code);
   }
   std::string s;
-  for (const auto& c : order) s += (s.empty() ? "" : ", ") + c + (n[c] > 1 ? " x" + std::to_string(n[c]) : "");
+  for (const auto& c : order)
+    s += (s.empty() ? "" : ", ") + c + (n[c] > 1 ? " x" + std::to_string(n[c]) : "");
   return s.empty() ? "-" : s;
 }
 
 }  // namespace
 
-std::optional<int> check_scheme_input(const std::string& path, bool json, bool algorithm3_strict, bool embeddings) {
+std::optional<int> check_scheme_input(const std::string& path, bool json, bool algorithm3_strict,
+                                      bool embeddings) {
   SchemeCheckOptions opt;
   opt.algorithm3_strict = algorithm3_strict;
   opt.embeddings = embeddings;
@@ -90,14 +92,17 @@ std::optional<int> check_scheme_input(const std::string& path, bool json, bool a
   } else {
     size_t w = 4;
     for (const auto& r : m.rules) w = std::max(w, r.name.size());
-    auto pad = [](std::string s, size_t n) { return s + std::string(n > s.size() ? n - s.size() : 0, ' '); };
-    std::cout << path << ": Jerboa modeler " << m.name << ", dimension " << m.dimension << ", " << m.rules.size()
-              << " rules\n";
+    auto pad = [](std::string s, size_t n) {
+      return s + std::string(n > s.size() ? n - s.size() : 0, ' ');
+    };
+    std::cout << path << ": Jerboa modeler " << m.name << ", dimension " << m.dimension << ", "
+              << m.rules.size() << " rules\n";
     std::cout << pad("rule", w) << "  " << pad("verdict", 8) << "  errors  warnings  diagnostics\n";
     for (size_t k = 0; k < reps.size(); ++k)
-      std::cout << pad(m.rules[k].name, w) << "  " << pad(reps[k].ok() ? "accepted" : "rejected", 8) << "  "
-                << pad(std::to_string(reps[k].errors()), 6) << "  " << pad(std::to_string(reps[k].warnings()), 8)
-                << "  " << code_summary(reps[k]) << "\n";
+      std::cout << pad(m.rules[k].name, w) << "  " << pad(reps[k].ok() ? "accepted" : "rejected", 8)
+                << "  " << pad(std::to_string(reps[k].errors()), 6) << "  "
+                << pad(std::to_string(reps[k].warnings()), 8) << "  " << code_summary(reps[k])
+                << "\n";
     std::cout << accepted << " accepted, " << m.rules.size() - accepted << " rejected\n";
     std::cout << "expressions: " << translated << " of " << expressions
               << " translated into gmr's language (the others: E-unsupported, by rule and node)\n";

@@ -22,7 +22,8 @@ MapSummary summarize(const Map& g) {
   s.dimension = g.dimension();
   s.darts = g.size();
   s.links.assign(static_cast<size_t>(g.dimension()) + 1, 0);
-  for (int i = g.lowest_dim(); i <= g.dimension(); ++i) s.links[static_cast<size_t>(i)] = g.count_links(i);
+  for (int i = g.lowest_dim(); i <= g.dimension(); ++i)
+    s.links[static_cast<size_t>(i)] = g.count_links(i);
   const ValidityReport r = check_validity(g, 0);
   s.valid = r.ok();
   s.violations = r.total();
@@ -42,7 +43,8 @@ void add_to_json(nlohmann::ordered_json& j, const MapSummary& s) {
   j["dimension"] = s.dimension;
   j["darts"] = s.darts;
   nlohmann::ordered_json links = nlohmann::ordered_json::object();
-  for (int i = s.kind == MapKind::OMap ? 1 : 0; i <= s.dimension; ++i) links[std::to_string(i)] = s.links[static_cast<size_t>(i)];
+  for (int i = s.kind == MapKind::OMap ? 1 : 0; i <= s.dimension; ++i)
+    links[std::to_string(i)] = s.links[static_cast<size_t>(i)];
   j["links"] = links;
   j["valid"] = s.valid;
   j["violations"] = s.violations;
@@ -58,8 +60,9 @@ void add_to_json(nlohmann::ordered_json& j, const MapSummary& s) {
 std::string describe_change(const MapSummary& before, const MapSummary& after) {
   if (!before.cells_known || !after.cells_known) return {};
   const int lo = before.kind == MapKind::OMap ? 1 : 0;
-  return "cells " + per_dimension(before.cells, lo) + " -> " + per_dimension(after.cells, lo) + ", components " +
-         std::to_string(before.components) + " -> " + std::to_string(after.components) + ", Euler characteristic " +
+  return "cells " + per_dimension(before.cells, lo) + " -> " + per_dimension(after.cells, lo) +
+         ", components " + std::to_string(before.components) + " -> " +
+         std::to_string(after.components) + ", Euler characteristic " +
          std::to_string(before.euler) + " -> " + std::to_string(after.euler);
 }
 

@@ -3,10 +3,9 @@
 // validity.hpp). Cell counts are computed only for a valid map (orbits of an invalid map do not
 // describe cells).
 #pragma once
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "model/core/map.hpp"
 
@@ -39,7 +38,8 @@ void add_to_json(nlohmann::ordered_json& j, const MapSummary& s);
 // "cells 0:8 1:12 2:6 -> 0:26 1:48 2:24, components 1 -> 1, Euler characteristic 2 -> 2";
 // empty when either map is invalid.
 std::string describe_change(const MapSummary& before, const MapSummary& after);
-// {"cells": [[before], [after]], "components": [b, a], "euler": [b, a]}; null when either is invalid.
+// {"cells": [[before], [after]], "components": [b, a], "euler": [b, a]}; null when either is
+// invalid.
 nlohmann::ordered_json change_to_json(const MapSummary& before, const MapSummary& after);
 
 }  // namespace gmr::cli

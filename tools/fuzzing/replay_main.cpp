@@ -58,8 +58,9 @@ std::vector<std::string> read_dictionary(const fs::path& p) {
 }
 
 std::string mutate(std::string s, std::mt19937_64& rng, const std::vector<std::string>& dict) {
-  static const std::vector<std::string> numbers = {"-1", "0", "4294967295", "4294967296", "1e999", "-0.0",
-                                                   "99999999999999999999", "1.5", "2147483648"};
+  static const std::vector<std::string> numbers = {
+      "-1",  "0",         "4294967295", "4294967296", "1e999", "-0.0", "99999999999999999999",
+      "1.5", "2147483648"};
   static const std::string bytes = std::string("\0\xff[]{}\"-9<>/,:\n", 16);
   auto pick = [&](size_t n) { return n == 0 ? size_t{0} : static_cast<size_t>(rng() % n); };
   const size_t steps = 1 + pick(4);
@@ -108,7 +109,8 @@ int run(const Options& o) {
     }
   }
   std::sort(seeds.begin(), seeds.end());
-  const std::vector<std::string> dict = o.dict.empty() ? std::vector<std::string>{} : read_dictionary(o.dict);
+  const std::vector<std::string> dict =
+      o.dict.empty() ? std::vector<std::string>{} : read_dictionary(o.dict);
   size_t executed = 0;
   for (const fs::path& seed : seeds) {
     const std::string original = read_all(seed);
@@ -118,7 +120,8 @@ int run(const Options& o) {
       try {
         LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(input.data()), input.size());
       } catch (const std::exception& e) {
-        const fs::path crash = o.crash_dir / ("crash-" + seed.filename().string() + "-" + std::to_string(m));
+        const fs::path crash =
+            o.crash_dir / ("crash-" + seed.filename().string() + "-" + std::to_string(m));
         std::ofstream(crash, std::ios::binary) << input;
         std::cerr << "finding: " << e.what() << "\n  seed " << seed.string() << ", mutation " << m
                   << "\n  input written to " << crash.string() << "\n";
@@ -140,15 +143,19 @@ int main(int argc, char** argv) {
     const std::string a = argv[k];
     if ((a == "--mutations" || a == "--dict" || a == "--crash-dir") && k + 1 < argc) {
       const std::string v = argv[++k];
-      if (a == "--mutations") o.mutations = std::stoul(v);
-      else if (a == "--dict") o.dict = v;
-      else o.crash_dir = v;
+      if (a == "--mutations")
+        o.mutations = std::stoul(v);
+      else if (a == "--dict")
+        o.dict = v;
+      else
+        o.crash_dir = v;
     } else {
       o.inputs.emplace_back(a);
     }
   }
   if (o.inputs.empty()) {
-    std::cerr << "usage: " << argv[0] << " [--mutations N] [--dict FILE] [--crash-dir DIR] FILE|DIR...\n";
+    std::cerr << "usage: " << argv[0]
+              << " [--mutations N] [--dict FILE] [--crash-dir DIR] FILE|DIR...\n";
     return 2;
   }
   return run(o);

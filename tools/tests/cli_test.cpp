@@ -7,14 +7,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
+#include "model/core/orbit.hpp"
+#include "model/core/signature.hpp"
 #include "model/map_io/map_json.hpp"
 #include "model/map_io/off.hpp"
 #include "model/map_io/read_file.hpp"
-#include "model/core/orbit.hpp"
-#include "model/core/signature.hpp"
 #include "tools/tests/cli_fixture.hpp"
 
 using namespace gmr;
@@ -22,11 +21,11 @@ using namespace gmr::io;
 using namespace gmr::cli_test;
 namespace fs = std::filesystem;
 
-
 TEST_F(Cli, HelpForEverySubcommand) {
   Result r = run("--help");
   EXPECT_EQ(r.code, 0);
-  for (const char* sub : {"info", "validate", "convert", "dot", "signature", "demo", "fold", "infer"}) {
+  for (const char* sub :
+       {"info", "validate", "convert", "dot", "signature", "demo", "fold", "infer"}) {
     EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
     const Result h = run(std::string(sub) + " --help");
     EXPECT_EQ(h.code, 0) << sub;
@@ -39,7 +38,8 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   expect_bad_input("frobnicate", "usage");
   expect_bad_input("info", "usage", "file");
   expect_bad_input("info " + q(tools_data("cube.off")) + " --bogus", "usage", "--bogus");
-  expect_bad_input("info " + q(dir / "missing.json"), (dir / "missing.json").string(), "cannot open");
+  expect_bad_input("info " + q(dir / "missing.json"), (dir / "missing.json").string(),
+                   "cannot open");
   expect_bad_input("info " + q(dir / "noext"), (dir / "noext").string(), "--from");
   expect_bad_input("info " + q(tools_data("cube.off")) + " --from xyz", "--from", "unknown format");
 }
@@ -60,12 +60,16 @@ TEST_F(Cli, InfoOnOffAndJson) {
 }
 
 TEST_F(Cli, MalformedInputsNameTheirLocation) {
-  expect_bad_input("info " + q(test_data("bad_syntax.json")), "bad_syntax.json:4:8", "malformed JSON");
-  expect_bad_input("validate " + q(test_data("wrong_format.json")), "wrong_format.json:$.format", "gmr.gmap");
-  expect_bad_input("validate " + q(test_data("dart_out_of_range.json")), "dart_out_of_range.json:$.alpha.1[3]",
-                   "dart index 7 out of range");
-  expect_bad_input("info " + q(test_data("nonmanifold_edge.off")), "nonmanifold_edge.off:11", "non-manifold edge");
-  expect_bad_input("info " + q(test_data("pinched_vertex.off")), "pinched_vertex.off:4", "non-manifold vertex");
+  expect_bad_input("info " + q(test_data("bad_syntax.json")), "bad_syntax.json:4:8",
+                   "malformed JSON");
+  expect_bad_input("validate " + q(test_data("wrong_format.json")), "wrong_format.json:$.format",
+                   "gmr.gmap");
+  expect_bad_input("validate " + q(test_data("dart_out_of_range.json")),
+                   "dart_out_of_range.json:$.alpha.1[3]", "dart index 7 out of range");
+  expect_bad_input("info " + q(test_data("nonmanifold_edge.off")), "nonmanifold_edge.off:11",
+                   "non-manifold edge");
+  expect_bad_input("info " + q(test_data("pinched_vertex.off")), "pinched_vertex.off:4",
+                   "non-manifold vertex");
   expect_bad_input("info " + q(test_data("bad_line.off")), "bad_line.off:5", "3 numbers");
 }
 
@@ -96,7 +100,8 @@ TEST_F(Cli, ValidateVerdicts) {
 }
 
 TEST_F(Cli, ConvertRoundTripsAndFormats) {
-  const fs::path json = dir / "out/cube.json", off = dir / "out/cube.off", obj = dir / "out/cube.obj";
+  const fs::path json = dir / "out/cube.json", off = dir / "out/cube.off",
+                 obj = dir / "out/cube.obj";
   EXPECT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(json)).code, 0);
   EXPECT_EQ(run("convert " + q(json) + " " + q(off)).code, 0);
   EXPECT_EQ(run("convert " + q(json) + " " + q(obj)).code, 0);
@@ -109,7 +114,7 @@ TEST_F(Cli, ConvertRoundTripsAndFormats) {
     EXPECT_EQ(run("convert " + q(test_data("square.json")) + " " + q(p)).code, 0) << ext;
     const std::string bytes = read_text_file(p);
     const std::string e = ext;
-    const bool ok = e == "dot" ? bytes.rfind("graph", 0) == 0
+    const bool ok = e == "dot"   ? bytes.rfind("graph", 0) == 0
                     : e == "svg" ? bytes.find("<svg") != std::string::npos
                                  : bytes.substr(1, 3) == "PNG";
     EXPECT_TRUE(ok) << ext;
@@ -123,16 +128,22 @@ TEST_F(Cli, ConvertRoundTripsAndFormats) {
 
 TEST_F(Cli, FailedCommandsLeaveNoOutput) {
   const fs::path out = dir / "out/x.json";
-  expect_bad_input("convert " + q(test_data("bad_syntax.json")) + " " + q(out), "bad_syntax.json:4:8");
-  expect_bad_input("convert " + q(test_data("nonmanifold_edge.off")) + " " + q(out), "nonmanifold_edge.off:11");
-  expect_bad_input("convert " + q(test_data("square.json")) + " " + q(dir / "out/x.txt"), "x.txt", "--to");
+  expect_bad_input("convert " + q(test_data("bad_syntax.json")) + " " + q(out),
+                   "bad_syntax.json:4:8");
+  expect_bad_input("convert " + q(test_data("nonmanifold_edge.off")) + " " + q(out),
+                   "nonmanifold_edge.off:11");
+  expect_bad_input("convert " + q(test_data("square.json")) + " " + q(dir / "out/x.txt"), "x.txt",
+                   "--to");
   // OFF output needs positions: the 2-G-map of invalid_gmap.json has none.
-  expect_bad_input("convert " + q(test_data("invalid_gmap.json")) + " " + q(dir / "out/x.off"), "", "\"position\"");
-  expect_bad_input("convert " + q(test_data("square.json")) + " " + q(dir / "out/missing/x.json"), "missing/x.json");
+  expect_bad_input("convert " + q(test_data("invalid_gmap.json")) + " " + q(dir / "out/x.off"), "",
+                   "\"position\"");
+  expect_bad_input("convert " + q(test_data("square.json")) + " " + q(dir / "out/missing/x.json"),
+                   "missing/x.json");
   EXPECT_EQ(outputs(), 0u);
   // A failed conversion keeps the previous content of the destination.
   std::ofstream(out) << "previous";
-  expect_bad_input("convert " + q(test_data("dart_out_of_range.json")) + " " + q(out), "$.alpha.1[3]");
+  expect_bad_input("convert " + q(test_data("dart_out_of_range.json")) + " " + q(out),
+                   "$.alpha.1[3]");
   EXPECT_EQ(read_text_file(out), "previous");
   EXPECT_EQ(outputs(), 1u);
 }
@@ -145,7 +156,8 @@ TEST_F(Cli, DotAndSignature) {
   r = run("dot --loops " + q(test_data("square.json")));
   EXPECT_NE(r.out.find("0 -- 0 [color=blue]"), std::string::npos) << r.out;
   EXPECT_EQ(run("dot " + q(test_data("square.json")) + " -o " + q(dir / "out/sq.svg")).code, 0);
-  expect_bad_input("dot " + q(test_data("square.json")) + " -o " + q(dir / "out/sq.obj"), "sq.obj", "dot, svg or png");
+  expect_bad_input("dot " + q(test_data("square.json")) + " -o " + q(dir / "out/sq.obj"), "sq.obj",
+                   "dot, svg or png");
 
   const Result s1 = run("signature " + q(tools_data("cube.off")));
   EXPECT_EQ(s1.code, 0) << s1.err;
@@ -155,8 +167,10 @@ TEST_F(Cli, DotAndSignature) {
   EXPECT_EQ(s1.out.rfind("gmap2:[", 0), 0u) << s1.out;
   const Result f = run("signature --json --flags position " + q(dir / "out/cube.json"));
   EXPECT_EQ(f.code, 0) << f.err;
-  EXPECT_NE(nlohmann::json::parse(f.out)["signature"], nlohmann::json(s1.out.substr(0, s1.out.size() - 1)));
-  expect_bad_input("signature --flags colour " + q(dir / "out/cube.json"), "--flags", "no embedding");
+  EXPECT_NE(nlohmann::json::parse(f.out)["signature"],
+            nlohmann::json(s1.out.substr(0, s1.out.size() - 1)));
+  expect_bad_input("signature --flags colour " + q(dir / "out/cube.json"), "--flags",
+                   "no embedding");
 }
 
 TEST_F(Cli, Demo) {
@@ -167,14 +181,17 @@ TEST_F(Cli, Demo) {
   ASSERT_EQ(j["objects"].size(), 5u);
   EXPECT_EQ(j["objects"][0]["darts"], 96);
   EXPECT_EQ(j["objects"][0]["cells"], nlohmann::json::array({12, 20, 11, 2}));
-  for (const char* f : {"stacked_cubes.dot", "stacked_cubes.svg", "cube.dot", "cube.svg", "cube.obj", "torus.obj"})
+  for (const char* f :
+       {"stacked_cubes.dot", "stacked_cubes.svg", "cube.dot", "cube.svg", "cube.obj", "torus.obj"})
     EXPECT_TRUE(fs::exists(dir / "out/demo" / f)) << f;
   // The torus OBJ round-trips into the torus of the builders.
   EXPECT_EQ(run("info " + q(dir / "out/demo/torus.json")).code, 0);
 }
 
 fs::path rule_data(const std::string& name) { return tools_data("rules/" + name); }
-fs::path checker_data(const std::string& name) { return source_dir() / "checker/tests/data" / name; }
+fs::path checker_data(const std::string& name) {
+  return source_dir() / "checker/tests/data" / name;
+}
 
 TEST_F(Cli, DotOfRulesAndSchemes) {
   // A rule scheme: labels "n0 <_,1,2>", arcs coloured per dimension, double-bordered hook.
@@ -201,14 +218,19 @@ TEST_F(Cli, DotOfRulesAndSchemes) {
   EXPECT_NE(line.find("I-added-node"), std::string::npos) << line;
   EXPECT_NE(line.find("style=\"bold,filled\""), std::string::npos) << line;
   // Rendering and .jme files.
-  EXPECT_EQ(run("dot --check " + q(rule_data("sew2.json")) + " -o " + q(dir / "out/sew2.svg")).code, 0);
+  EXPECT_EQ(run("dot --check " + q(rule_data("sew2.json")) + " -o " + q(dir / "out/sew2.svg")).code,
+            0);
   EXPECT_NE(read_text_file(dir / "out/sew2.svg").find("<svg"), std::string::npos);
-  EXPECT_EQ(run("dot --kappa " + q(checker_data("F1_ex34_weak_incident.json")) + " -o " + q(dir / "out/f1.png")).code, 0);
+  EXPECT_EQ(run("dot --kappa " + q(checker_data("F1_ex34_weak_incident.json")) + " -o " +
+                q(dir / "out/f1.png"))
+                .code,
+            0);
   EXPECT_EQ(read_text_file(dir / "out/f1.png").substr(1, 3), "PNG");
   r = run("dot " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --rule " + "NOTARULE");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("rules: "), std::string::npos) << r.err;
-  expect_bad_input("dot " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")), "JerboaTrackingOrbit.jme", "--rule NAME");
+  expect_bad_input("dot " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")),
+                   "JerboaTrackingOrbit.jme", "--rule NAME");
   expect_bad_input("dot --kappa " + q(rule_data("sew2.json")), "sew2.json", "concrete rule");
   expect_bad_input("dot --check " + q(test_data("square.json")), "square.json", "rule files");
   EXPECT_EQ(outputs(), 2u);
@@ -283,13 +305,19 @@ TEST_F(Cli, CheckAndApplyConcreteRule) {
   EXPECT_EQ(run("check " + q(checker_data("F5_fig319a_unsew.json"))).code, 0);
   EXPECT_EQ(run("check " + q(checker_data("F1_ex34_weak_incident.json"))).code, 1);
   const fs::path out = dir / "out/unsewn.json";
-  Result r = run("apply --json " + q(checker_data("F5_fig319a_unsew.json")) + " " + q(tools_data("cube.off")) + " -o " + q(out));
+  Result r = run("apply --json " + q(checker_data("F5_fig319a_unsew.json")) + " " +
+                 q(tools_data("cube.off")) + " -o " + q(out));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["valid"], true);
   EXPECT_EQ(read_map_json_file(out).map.size(), 48u);
   // No match: sew on a closed cube; a scheme option on a concrete rule.
-  EXPECT_EQ(run("apply " + q(checker_data("F5_fig319a_sew.json")) + " " + q(tools_data("cube.off")) + " -o " + q(dir / "out/x.json")).code, 1);
-  expect_bad_input("apply --all " + q(checker_data("F5_fig319a_sew.json")) + " " + q(tools_data("cube.off")), "F5_fig319a_sew.json", "--match");
+  EXPECT_EQ(run("apply " + q(checker_data("F5_fig319a_sew.json")) + " " +
+                q(tools_data("cube.off")) + " -o " + q(dir / "out/x.json"))
+                .code,
+            1);
+  expect_bad_input(
+      "apply --all " + q(checker_data("F5_fig319a_sew.json")) + " " + q(tools_data("cube.off")),
+      "F5_fig319a_sew.json", "--match");
   EXPECT_EQ(outputs(), 1u);
 }
 
@@ -297,7 +325,8 @@ TEST_F(Cli, CheckAndApplyScheme) {
   EXPECT_EQ(run("check " + q(rule_data("quad_subdivision.json"))).code, 0);
   // Quad subdivision of the cube at one hook: the whole component, 48 -> 192 darts.
   const fs::path out = dir / "out/quads.json";
-  Result r = run("apply --json " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --hook 0 -o " + q(out));
+  Result r = run("apply --json " + q(rule_data("quad_subdivision.json")) + " " +
+                 q(tools_data("cube.off")) + " --hook 0 -o " + q(out));
   EXPECT_EQ(r.code, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["darts"], 192);
@@ -306,8 +335,10 @@ TEST_F(Cli, CheckAndApplyScheme) {
   EXPECT_EQ(j["tables"][0]["comatch"]["n3"].size(), 48u);
   EXPECT_EQ(j["tables"][0]["comatch"]["n0"][0], j["tables"][0]["orbit"][0]);
   EXPECT_EQ(read_map_json_file(out).map.size(), 192u);
-  // --all: vertex insertion on every edge of the cube (12 applications), then quad subdivision once.
-  r = run("apply --json --all " + q(rule_data("vertex_insertion.json")) + " " + q(tools_data("cube.off")));
+  // --all: vertex insertion on every edge of the cube (12 applications), then quad subdivision
+  // once.
+  r = run("apply --json --all " + q(rule_data("vertex_insertion.json")) + " " +
+          q(tools_data("cube.off")));
   EXPECT_EQ(r.code, 0) << r.err;
   j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["darts"], 96);
@@ -317,23 +348,31 @@ TEST_F(Cli, CheckAndApplyScheme) {
   EXPECT_NE(r.out.find("applied 1 time"), std::string::npos) << r.out;
   // Two hooks: sew two free edges of an open square. Its positions clash: the sewn vertices merge
   // orbits of different positions without an expression (E-merge, exit 1, nothing written)...
-  r = run("apply " + q(rule_data("sew2.json")) + " " + q(test_data("square.json")) + " --hook 0,4 -o " + q(dir / "out/sewn.json"));
+  r = run("apply " + q(rule_data("sew2.json")) + " " + q(test_data("square.json")) +
+          " --hook 0,4 -o " + q(dir / "out/sewn.json"));
   EXPECT_EQ(r.code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("E-merge"), std::string::npos) << r.out;
   // ... unless the embeddings are dropped.
-  r = run("apply --no-embeddings " + q(rule_data("sew2.json")) + " " + q(test_data("square.json")) + " --hook 0,4 -o " + q(dir / "out/sewn.json"));
+  r = run("apply --no-embeddings " + q(rule_data("sew2.json")) + " " + q(test_data("square.json")) +
+          " --hook 0,4 -o " + q(dir / "out/sewn.json"));
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   // Not applicable (exit 1, the reason, no output): sew on the closed cube.
-  r = run("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --hook 0,8 -o " + q(dir / "out/x.json"));
+  r = run("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) +
+          " --hook 0,8 -o " + q(dir / "out/x.json"));
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.out.find("not applicable, because"), std::string::npos) << r.out;
-  r = run("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --hook 0,0 -o " + q(dir / "out/x.json"));
+  r = run("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) +
+          " --hook 0,0 -o " + q(dir / "out/x.json"));
   EXPECT_EQ(r.code, 1) << r.err;
   // Bad input (exit 2): unknown dart, wrong number of hooks, --all with two hooks, no hook.
   const std::string quad = q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off"));
-  expect_bad_input("apply " + quad + " --hook 999 -o " + q(dir / "out/x.json"), "--hook", "not a dart");
-  expect_bad_input("apply " + quad + " --hook 0,1 -o " + q(dir / "out/x.json"), "quad_subdivision", "1 hook(s), 2 dart(s)");
-  expect_bad_input("apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --all", "--all", "one hook");
+  expect_bad_input("apply " + quad + " --hook 999 -o " + q(dir / "out/x.json"), "--hook",
+                   "not a dart");
+  expect_bad_input("apply " + quad + " --hook 0,1 -o " + q(dir / "out/x.json"), "quad_subdivision",
+                   "1 hook(s), 2 dart(s)");
+  expect_bad_input(
+      "apply " + q(rule_data("sew2.json")) + " " + q(tools_data("cube.off")) + " --all", "--all",
+      "one hook");
   expect_bad_input("apply " + quad, "--hook", "--all");
   expect_bad_input("apply " + quad + " --hook 0 --match n0=0", "--match");
   EXPECT_EQ(outputs(), 2u);
@@ -343,7 +382,8 @@ TEST_F(Cli, CheckAndApplyScheme) {
 // OBJ and JSON (the JSON round-trips), a malformed expression located by rule, node and column.
 TEST_F(Cli, ApplyCarriesPositions) {
   const fs::path off = dir / "out/cc.off", obj = dir / "out/cc.obj", json = dir / "out/cc.json";
-  Result r = run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(off));
+  Result r = run("apply " + q(rule_data("quad_subdivision.json")) + " " +
+                 q(tools_data("cube.off")) + " --all -o " + q(off));
   EXPECT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("embeddings: position <1,2>"), std::string::npos) << r.out;
   const EmbeddedMap m = read_off_file(off);
@@ -353,12 +393,21 @@ TEST_F(Cli, ApplyCarriesPositions) {
   bool corner = false;
   for (Dart d : orbit_representatives(m.map, OrbitType{1, 2})) {
     const Vec3 p = m.position().get(d);
-    if (std::abs(p[0] - 2.0 / 9) < 1e-12 && std::abs(p[1] - 2.0 / 9) < 1e-12 && std::abs(p[2] - 2.0 / 9) < 1e-12) corner = true;
+    if (std::abs(p[0] - 2.0 / 9) < 1e-12 && std::abs(p[1] - 2.0 / 9) < 1e-12 &&
+        std::abs(p[2] - 2.0 / 9) < 1e-12)
+      corner = true;
   }
   EXPECT_TRUE(corner);
-  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(obj)).code, 0);
-  EXPECT_NE(read_text_file(obj).find("v 0.2222222222222222 0.2222222222222222 0.2222222222222222"), std::string::npos);
-  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) + " --all -o " + q(json)).code, 0);
+  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) +
+                " --all -o " + q(obj))
+                .code,
+            0);
+  EXPECT_NE(read_text_file(obj).find("v 0.2222222222222222 0.2222222222222222 0.2222222222222222"),
+            std::string::npos);
+  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(tools_data("cube.off")) +
+                " --all -o " + q(json))
+                .code,
+            0);
   const EmbeddedMap f = read_map_json_file(json);
   ASSERT_NE(f.find("position"), nullptr);
   EXPECT_EQ(write_map_json(read_map_json(write_map_json(f))), write_map_json(f));
@@ -391,18 +440,24 @@ TEST_F(Cli, FoldPrintsTheSchemeOrTheNamedFailure) {
   r = run("fold " + q(tools_data("cube.off")) + " --orbit '<>' --dart 47");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("48 nodes"), std::string::npos) << r.out;
-  expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,_>' --dart 0", "--orbit", "`_`");
-  expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,1>' --dart 48", "--dart", "not a dart");
+  expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,_>' --dart 0", "--orbit",
+                   "`_`");
+  expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,1>' --dart 48", "--dart",
+                   "not a dart");
   expect_bad_input("fold " + q(tools_data("cube.off")) + " --orbit '<0,1' --dart 0", "--orbit");
 }
 
 // `gmr infer`: the quad subdivision from the cube and its subdivision (identity mapping), written
-// as gmr.rule + DOT + SVG + summary and accepted by `gmr check`; the triangle -> hexagon vertex split
-// (explicit --map) infers nothing (exit 1) and writes the rejected scheme with its diagnostics.
+// as gmr.rule + DOT + SVG + summary and accepted by `gmr check`; the triangle -> hexagon vertex
+// split (explicit --map) infers nothing (exit 1) and writes the rejected scheme with its
+// diagnostics.
 TEST_F(Cli, InferWritesCheckedSchemes) {
   const fs::path cube = dir / "cube.json", sub = dir / "sub.json";
   ASSERT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(cube)).code, 0);
-  ASSERT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(cube) + " --hook 0 -o " + q(sub)).code, 0);
+  ASSERT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(cube) + " --hook 0 -o " +
+                q(sub))
+                .code,
+            0);
   Result r = run("infer " + q(cube) + " " + q(sub) + " --orbit '<0,1,2>' -o " + q(dir / "out/q"));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 rule(s) inferred"), std::string::npos) << r.out;
@@ -418,14 +473,19 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   r = run("infer " + q(cube) + " " + q(sub) + " --orbit '<0,1,2>' --prior-cut-loops 0,1");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("1 rule(s) inferred"), std::string::npos) << r.out;
-  // A scheme too large to lay out (<> on 192 + 768 darts: 960 nodes): DOT only, said in the summary.
+  // A scheme too large to lay out (<> on 192 + 768 darts: 960 nodes): DOT only, said in the
+  // summary.
   const fs::path sub2 = dir / "sub2.json";
-  ASSERT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(sub) + " --hook 0 -o " + q(sub2)).code, 0);
+  ASSERT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(sub) + " --hook 0 -o " +
+                q(sub2))
+                .code,
+            0);
   r = run("infer " + q(sub) + " " + q(sub2) + " --orbit '<>' -o " + q(dir / "out/e"));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "out/e/rule_0.dot"));
   EXPECT_FALSE(fs::exists(dir / "out/e/rule_0.svg"));
-  EXPECT_NE(read_text_file(dir / "out/e/summary.txt").find("rule_0.svg not drawn: 960 nodes"), std::string::npos);
+  EXPECT_NE(read_text_file(dir / "out/e/summary.txt").find("rule_0.svg not drawn: 960 nodes"),
+            std::string::npos);
   // Every orbit type, JSON: the <0,1,2> rule is among them; duplicates are counted.
   r = run("infer --json --all-orbits " + q(cube) + " " + q(sub));
   EXPECT_EQ(r.code, 0) << r.err;
@@ -440,25 +500,32 @@ TEST_F(Cli, InferWritesCheckedSchemes) {
   std::ofstream(hex) << R"({"format":"gmr.gmap","version":1,"kind":"gmap","dimension":2,"darts":12,
     "alpha":{"0":[1,0,3,2,5,4,7,6,9,8,11,10],"1":[11,2,1,4,3,6,5,8,7,10,9,0],"2":[0,1,2,3,4,5,6,7,8,9,10,11]}})";
   const fs::path vsplit = source_dir() / "inference/tests/data/triangle_hexagon_vertex_split.json";
-  r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(vsplit) + " -o " + q(dir / "out/v"));
+  r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(vsplit) + " -o " +
+          q(dir / "out/v"));
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.out.find("rejected by the checker"), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(dir / "out/v/rejected_0.json"));
   EXPECT_TRUE(fs::exists(dir / "out/v/rejected_0.svg"));
   EXPECT_FALSE(fs::exists(dir / "out/v/rule_0.json"));
   const fs::path esplit = source_dir() / "inference/tests/data/triangle_hexagon_edge_split.json";
-  EXPECT_EQ(run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit)).code, 0);
+  EXPECT_EQ(run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit)).code,
+            0);
   // Bad input: both orbit options, a mapping pairing one after dart twice.
-  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --orbit '<0>' --all-orbits", "--all-orbits");
-  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --cut-loops 3", "--cut-loops", "not a dimension");
-  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --prior-cut-loops 3", "--prior-cut-loops", "not a dimension");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --orbit '<0>' --all-orbits",
+                   "--all-orbits");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --cut-loops 3", "--cut-loops",
+                   "not a dimension");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --prior-cut-loops 3", "--prior-cut-loops",
+                   "not a dimension");
   expect_bad_input("infer " + q(tri) + " " + q(hex) + " --explicit-loops x", "--explicit-loops");
   // Every relabeling combination, with the loops of preserved nodes cut: still exactly one rule.
-  r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit) + " --all-relabelings --cut-loops 2");
+  r = run("infer " + q(tri) + " " + q(hex) + " --orbit '<0,1,2>' --map " + q(esplit) +
+          " --all-relabelings --cut-loops 2");
   EXPECT_EQ(r.code, 0) << r.err;
   const fs::path bad = dir / "bad_map.json";
   std::ofstream(bad) << R"({"format":"gmr.mapping","version":1,"pairs":[[0,0],[1,0]]})";
-  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --map " + q(bad), "pairs[1]", "image of two darts");
+  expect_bad_input("infer " + q(tri) + " " + q(hex) + " --map " + q(bad), "pairs[1]",
+                   "image of two darts");
 }
 
 // `gmr events`: the static table per orbit type (text and gmr.events JSON), every rule of a .jme
@@ -467,8 +534,11 @@ TEST_F(Cli, EventsPrintsTheStaticTable) {
   const std::string tri = q(tools_data("rules/face_triangulation.json"));
   Result r = run("events " + tri);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("implicit split along 2 of L<0,1>(n0) -> R<0,1>(n0), possible"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("modification of L<1,2>(n0) -> R<1,2>(n0), certain"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("implicit split along 2 of L<0,1>(n0) -> R<0,1>(n0), possible"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("modification of L<1,2>(n0) -> R<1,2>(n0), certain"), std::string::npos)
+      << r.out;
   r = run("events " + tri + " --orbits \"<1>,<0,2>\" --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -477,7 +547,8 @@ TEST_F(Cli, EventsPrintsTheStaticTable) {
   ASSERT_EQ(j["orbits"].size(), 2u);
   EXPECT_EQ(j["orbits"][0]["orbit"], "<1>");
   EXPECT_EQ(j["orbits"][1]["orbit"], "<0,2>");
-  r = run("events " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) + " --orbits \"<0,1>\" --json");
+  r = run("events " + q(tools_data("jerboa/JerboaTrackingOrbit.jme")) +
+          " --orbits \"<0,1>\" --json");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["kind"], "static-set");
   expect_bad_input("events " + tri + " --orbits \"<0,3>\"", "<0,3>", "not a dimension");
@@ -488,16 +559,21 @@ TEST_F(Cli, EventsPrintsTheStaticTable) {
 // rule application refuses it: new orbits would get no value (docs/embeddings.md). Without the
 // embeddings (--no-embeddings) it applies.
 TEST_F(Cli, ApplyRefusesJsonEmbeddingsThatConvertKeeps) {
-  const fs::path cube = dir / "cube.json", labelled = dir / "labelled.json", copy = dir / "out/copy.json";
+  const fs::path cube = dir / "cube.json", labelled = dir / "labelled.json",
+                 copy = dir / "out/copy.json";
   ASSERT_EQ(run("convert " + q(tools_data("cube.off")) + " " + q(cube)).code, 0);
   nlohmann::json j = nlohmann::json::parse(read_text_file(cube));
-  j["embeddings"].push_back({{"name", "label"}, {"orbit", "<0,1>"}, {"values", {{{"dart", 0}, {"value", "top"}}}}});
+  j["embeddings"].push_back(
+      {{"name", "label"}, {"orbit", "<0,1>"}, {"values", {{{"dart", 0}, {"value", "top"}}}}});
   std::ofstream(labelled) << j.dump();
   EXPECT_EQ(run("convert " + q(labelled) + " " + q(copy)).code, 0);
   EXPECT_EQ(nlohmann::json::parse(read_text_file(copy))["embeddings"], j["embeddings"]);
   expect_bad_input("apply " + q(rule_data("quad_subdivision.json")) + " " + q(labelled) + " --all",
                    "embedding 'label', dart 0", "rule applications carry numeric embeddings only");
-  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(labelled) + " --all --no-embeddings").code, 0);
+  EXPECT_EQ(run("apply " + q(rule_data("quad_subdivision.json")) + " " + q(labelled) +
+                " --all --no-embeddings")
+                .code,
+            0);
 }
 
 TEST_F(Cli, ApplyWritesTheEventLog) {
@@ -517,11 +593,15 @@ TEST_F(Cli, ApplyWritesTheEventLog) {
   EXPECT_EQ(j["orbits"][4]["events"][0]["after"].size(), 4u);
   fs::remove(log);
   // Not applicable: unsewing at a 2-free dart does not match, and no log is written.
-  r = run("apply " + q(tools_data("rules/unsew2.json")) + " " + house + " --hook 4 --events " + q(log));
+  r = run("apply " + q(tools_data("rules/unsew2.json")) + " " + house + " --hook 4 --events " +
+          q(log));
   EXPECT_EQ(r.code, 1) << r.out << r.err;
   EXPECT_EQ(outputs(), 0u);
-  expect_bad_input("apply " + tri + " " + house + " --hook 0 --orbits \"<0,1>\"", "--orbits", "--events");
-  expect_bad_input("apply " + tri + " " + house + " --hook 0 --events " + q(log) + " --orbits \"<0,7>\"", "<0,7>");
+  expect_bad_input("apply " + tri + " " + house + " --hook 0 --orbits \"<0,1>\"", "--orbits",
+                   "--events");
+  expect_bad_input(
+      "apply " + tri + " " + house + " --hook 0 --events " + q(log) + " --orbits \"<0,7>\"",
+      "<0,7>");
   EXPECT_EQ(outputs(), 0u);
 }
 
@@ -531,7 +611,8 @@ TEST_F(Cli, ApplyEverywhereLogsEveryApplication) {
   const std::string tri = q(tools_data("rules/face_triangulation.json"));
   const std::string house = q(source_dir() / "checker/events/tests/data/house.json");
   const fs::path log = dir / "all.json";
-  Result r = run("apply " + tri + " " + house + " --all --events " + q(log) + " --orbits \"<0,1>,<1,2>\"");
+  Result r =
+      run("apply " + tri + " " + house + " --all --events " + q(log) + " --orbits \"<0,1>,<1,2>\"");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("applied 2 times"), std::string::npos) << r.out;
   const auto j = nlohmann::json::parse(read_text_file(log));
@@ -548,7 +629,8 @@ TEST_F(Cli, ApplyEverywhereLogsEveryApplication) {
     ASSERT_EQ(app["orbits"][0]["events"].size(), 1u);
     EXPECT_EQ(app["orbits"][0]["events"][0]["event"], "split");
   }
-  EXPECT_EQ(j["applications"][0]["orbits"][0]["events"][0]["after"].size(), 4u);  // square: 4 triangles
+  EXPECT_EQ(j["applications"][0]["orbits"][0]["events"][0]["after"].size(),
+            4u);  // square: 4 triangles
   EXPECT_EQ(j["applications"][1]["orbits"][0]["events"][0]["after"].size(), 3u);  // roof: 3
 }
 
@@ -559,9 +641,12 @@ TEST_F(Cli, EventsOfConcreteRules) {
   const std::string grid = q(source_dir() / "checker/events/tests/data/quad_grid_2x2.off");
   Result r = run("events " + unsew + " --orbits \"<0,2>\"");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("explicit split of L<0,2>(a) -> R<0,2>(a), R<0,2>(c), certain"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("explicit split of L<0,2>(a) -> R<0,2>(a), R<0,2>(c), certain"),
+            std::string::npos)
+      << r.out;
   const fs::path log = dir / "log.json", with = dir / "with.json", without = dir / "without.json";
-  r = run("apply " + unsew + " " + grid + " --match a=2 --events " + q(log) + " --orbits \"<0,2>,<0,1,2>\" -o " + q(with));
+  r = run("apply " + unsew + " " + grid + " --match a=2 --events " + q(log) +
+          " --orbits \"<0,2>,<0,1,2>\" -o " + q(with));
   ASSERT_EQ(r.code, 0) << r.err;
   r = run("apply " + unsew + " " + grid + " --match a=2 -o " + q(without));
   ASSERT_EQ(r.code, 0) << r.err;
@@ -573,18 +658,19 @@ TEST_F(Cli, EventsOfConcreteRules) {
   EXPECT_EQ(j["orbits"][0]["events"][0]["event"], "split");
   EXPECT_EQ(j["orbits"][0]["events"][0]["status"], "certain");
   EXPECT_EQ(j["orbits"][1]["events"][0]["event"], "modification");  // the grid stays connected
-  expect_bad_input("events " + q(source_dir() / "checker/tests/data/omap_face_split.json"), "O-maps");
+  expect_bad_input("events " + q(source_dir() / "checker/tests/data/omap_face_split.json"),
+                   "O-maps");
 }
 
 TEST_F(Cli, DotDrawsTheStaticEvents) {
   const std::string tri = q(tools_data("rules/face_triangulation.json"));
   Result r = run("dot " + tri + " --events \"<0,1>\"");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("S2?"), std::string::npos) << r.out;       // possible implicit split
-  EXPECT_NE(r.out.find("#ffd58a"), std::string::npos) << r.out;   // drawn as "to confirm"
+  EXPECT_NE(r.out.find("S2?"), std::string::npos) << r.out;      // possible implicit split
+  EXPECT_NE(r.out.find("#ffd58a"), std::string::npos) << r.out;  // drawn as "to confirm"
   r = run("dot " + tri + " --events \"<1,2>\"");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("mod"), std::string::npos) << r.out;       // certain modification
+  EXPECT_NE(r.out.find("mod"), std::string::npos) << r.out;  // certain modification
   EXPECT_NE(r.out.find("#ff9c9c"), std::string::npos) << r.out;
   expect_bad_input("dot " + tri + " --events \"<0,5>\"", "<0,5>");
   expect_bad_input("dot " + tri + " --events \"<0,1>\" --check", "--events");

@@ -5,11 +5,10 @@
 
 #include <cstdlib>
 #include <filesystem>
-
 #include <nlohmann/json.hpp>
 
-#include "model/testing/scratch_dir.hpp"
 #include "model/map_io/read_file.hpp"
+#include "model/testing/scratch_dir.hpp"
 #include "model/testing/source_tree.hpp"
 
 namespace fs = std::filesystem;
@@ -31,13 +30,16 @@ class CliVerify : public ::testing::Test {
  protected:
   fs::path dir;
   void SetUp() override {
-    dir = gmr::testing::scratch_path("gmr_cli_verify_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir = gmr::testing::scratch_path(
+        "gmr_cli_verify_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir);
     fs::create_directories(dir);
   }
   void TearDown() override { fs::remove_all(dir); }
   Result run(const std::string& args) {
-    const std::string cmd = q(gmr_bin()) + " " + args + " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr") + " </dev/null";
+    const std::string cmd = q(gmr_bin()) + " " + args + " >" + q(dir / "stdout") + " 2>" +
+                            q(dir / "stderr") + " </dev/null";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, gmr::io::read_text_file(dir / "stdout"),
             gmr::io::read_text_file(dir / "stderr")};
@@ -46,7 +48,8 @@ class CliVerify : public ::testing::Test {
 }  // namespace
 
 TEST_F(CliVerify, PreservingRule) {
-  const Result r = run("verify " + q(source_dir() / "checker/tests/data/F5_fig319a_sew.json") + " --bound 5 --engine both");
+  const Result r = run("verify " + q(source_dir() / "checker/tests/data/F5_fig319a_sew.json") +
+                       " --bound 5 --engine both");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("no 2-G-map of at most 5 darts"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("engine smt"), std::string::npos);
@@ -54,8 +57,9 @@ TEST_F(CliVerify, PreservingRule) {
 }
 
 TEST_F(CliVerify, CounterexampleFiles) {
-  const Result r = run("verify " + q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json") + " -k 4 --json -o " +
-                       q(dir / "cex.json") + " --dot " + q(dir / "cex.dot"));
+  const Result r =
+      run("verify " + q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json") +
+          " -k 4 --json -o " + q(dir / "cex.json") + " --dot " + q(dir / "cex.dot"));
   EXPECT_EQ(r.code, 1) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["format"], "gmr.verify");
@@ -80,32 +84,44 @@ TEST_F(CliVerify, RuleSchemeByInstantiation) {
 }
 
 TEST_F(CliVerify, BadInput) {
-  EXPECT_EQ(run("verify " + q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json") + " --engine z3").code, 2);
+  EXPECT_EQ(run("verify " + q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json") +
+                " --engine z3")
+                .code,
+            2);
   EXPECT_EQ(run("verify " + q(dir / "missing.json")).code, 2);
 }
 
 TEST_F(CliVerify, ValidateConditionWrongVariantExits1) {
-  const Result r = run("validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes 1 --bound 2 --json");
+  const Result r =
+      run("validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes "
+          "1 --bound 2 --json");
   EXPECT_EQ(r.code, 1) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["format"], "gmr.condition-validation");
   EXPECT_EQ(doc["sound"], false);
   EXPECT_TRUE(doc["smallest_unsound"]["counterexample"]["gluing_fails"].get<bool>());
-  EXPECT_TRUE(r.err.empty()) << "no progress output when standard error is not a terminal: " << r.err;
+  EXPECT_TRUE(r.err.empty()) << "no progress output when standard error is not a terminal: "
+                             << r.err;
 }
 
 TEST_F(CliVerify, ValidateConditionThesisExits0) {
-  const Result r = run("validate-condition --condition thesis --labels 0,1 --max-nodes 1 --bound 3 --shard 1/2");
+  const Result r =
+      run("validate-condition --condition thesis --labels 0,1 --max-nodes 1 --bound 3 --shard 1/2");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("sound: yes"), std::string::npos) << r.out;
 }
 
 TEST_F(CliVerify, ValidateConditionSymbolicEngine) {
-  const Result ok = run("validate-condition --condition thesis --labels 0,1 --max-nodes 3 --bound 5 --engine symbolic");
+  const Result ok =
+      run("validate-condition --condition thesis --labels 0,1 --max-nodes 3 --bound 5 --engine "
+          "symbolic");
   EXPECT_EQ(ok.code, 0) << ok.err;
-  EXPECT_NE(ok.out.find("every rule of the family at once (1466908 rules)"), std::string::npos) << ok.out;
-  const Result bad = run("validate-condition --condition wrong-orientation-dropped --labels 0 --max-nodes 3 --bound 4 "
-                         "--engine symbolic --json -o " + q(dir / "sym.json"));
+  EXPECT_NE(ok.out.find("every rule of the family at once (1466908 rules)"), std::string::npos)
+      << ok.out;
+  const Result bad = run(
+      "validate-condition --condition wrong-orientation-dropped --labels 0 --max-nodes 3 --bound 4 "
+      "--engine symbolic --json -o " +
+      q(dir / "sym.json"));
   EXPECT_EQ(bad.code, 1) << bad.err;
   const auto doc = nlohmann::json::parse(bad.out);
   EXPECT_EQ(doc["engine"], "symbolic");
@@ -114,11 +130,15 @@ TEST_F(CliVerify, ValidateConditionSymbolicEngine) {
   EXPECT_TRUE(fs::exists(dir / "sym.json"));
   EXPECT_EQ(run("validate-condition --merge " + q(dir / "sym.json")).code, 2);
   // Cycle pairs: C_r through the checker's lemmas; the variant without ij-completion is incomplete.
-  const Result cyc = run("validate-condition --condition thesis --labels 0,1,2 --max-nodes 2 --bound 4 --engine symbolic");
+  const Result cyc =
+      run("validate-condition --condition thesis --labels 0,1,2 --max-nodes 2 --bound 4 --engine "
+          "symbolic");
   EXPECT_EQ(cyc.code, 0) << cyc.err;
-  EXPECT_NE(cyc.out.find("component patterns tabulated by the concrete checker"), std::string::npos) << cyc.out;
-  const Result wrong = run("validate-condition --condition wrong-cycle-without-completion --labels 0,1,2 --max-nodes 2 "
-                           "--bound 4 --engine symbolic --json");
+  EXPECT_NE(cyc.out.find("component patterns tabulated by the concrete checker"), std::string::npos)
+      << cyc.out;
+  const Result wrong = run(
+      "validate-condition --condition wrong-cycle-without-completion --labels 0,1,2 --max-nodes 2 "
+      "--bound 4 --engine symbolic --json");
   EXPECT_EQ(wrong.code, 1) << wrong.err;
   const auto wdoc = nlohmann::json::parse(wrong.out);
   EXPECT_EQ(wdoc["complete"], false);
@@ -126,12 +146,18 @@ TEST_F(CliVerify, ValidateConditionSymbolicEngine) {
   EXPECT_GT(wdoc["cycle_patterns"].get<int>(), 0);
   EXPECT_EQ(wdoc["cycle_lemmas"].get<int>(), 0);
   // Plug-ins and shards are refused.
-  EXPECT_EQ(run("validate-condition --condition thesis --labels 0,1 --shard 0/2 --engine symbolic").code, 2);
-  EXPECT_EQ(run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) + " --engine symbolic").code, 2);
+  EXPECT_EQ(
+      run("validate-condition --condition thesis --labels 0,1 --shard 0/2 --engine symbolic").code,
+      2);
+  EXPECT_EQ(run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) +
+                " --engine symbolic")
+                .code,
+            2);
 }
 
 TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
-  const Result r = run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) + " --labels 0 --max-nodes 2");
+  const Result r = run(std::string("validate-condition --plugin ") +
+                       q(plugin("crashing_condition")) + " --labels 0 --max-nodes 2");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("crashing_condition"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("while evaluating rule rule"), std::string::npos) << r.err;
@@ -142,8 +168,9 @@ TEST_F(CliVerify, CrashingPluginExits2NamingPluginAndRule) {
 
 TEST_F(CliVerify, ValidateSchemeConditionOnSchemeFiles) {
   const std::string rules = (source_dir() / "tools/data/rules").string();
-  const Result r = run("validate-condition --condition scheme-thesis --bound 3 --json --schemes " +
-                       q(rules + "/face_triangulation.json") + " " + q(rules + "/quad_subdivision.json"));
+  const Result r =
+      run("validate-condition --condition scheme-thesis --bound 3 --json --schemes " +
+          q(rules + "/face_triangulation.json") + " " + q(rules + "/quad_subdivision.json"));
   EXPECT_EQ(r.code, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["format"], "gmr.scheme-condition-validation");
@@ -151,46 +178,60 @@ TEST_F(CliVerify, ValidateSchemeConditionOnSchemeFiles) {
   EXPECT_EQ(doc["holds"], 2);
   EXPECT_EQ(doc["sound"], true);
   EXPECT_EQ(run("validate-condition --condition scheme-thesis").code, 2);  // no --schemes
-  EXPECT_EQ(run("validate-condition --condition thesis --schemes " + q(rules + "/face_triangulation.json")).code, 2);
+  EXPECT_EQ(run("validate-condition --condition thesis --schemes " +
+                q(rules + "/face_triangulation.json"))
+                .code,
+            2);
   EXPECT_EQ(run("validate-condition --condition scheme-thesis --schemes " +
-                q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json")).code, 2);  // a concrete rule
+                q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json"))
+                .code,
+            2);  // a concrete rule
 }
 
 TEST_F(CliVerify, SchemePluginOnSchemeFiles) {
   const std::string rules = (source_dir() / "tools/data/rules").string();
-  const Result r = run(std::string("validate-condition --plugin ") + q(plugin("full_degree_scheme_condition")) + " --bound 3 --json --schemes " +
+  const Result r = run(std::string("validate-condition --plugin ") +
+                       q(plugin("full_degree_scheme_condition")) + " --bound 3 --json --schemes " +
                        q(rules + "/face_triangulation.json") + " " + q(rules + "/sew2.json"));
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["condition"], "full-degree");
   EXPECT_EQ(doc["schemes"], 2);
   EXPECT_EQ(r.code, doc["sound"].get<bool>() && doc["complete"].get<bool>() ? 0 : 1) << r.err;
   // A plug-in without the scheme entry point, with --schemes: exit 2 naming the symbol.
-  const Result bad = run(std::string("validate-condition --plugin ") + q(plugin("crashing_condition")) + " --schemes " +
-                         q(rules + "/sew2.json"));
+  const Result bad = run(std::string("validate-condition --plugin ") +
+                         q(plugin("crashing_condition")) + " --schemes " + q(rules + "/sew2.json"));
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("gmr_scheme_condition_v1"), std::string::npos) << bad.err;
 }
 
 TEST_F(CliVerify, HangingPluginExits2AfterTheEvaluationTimeLimit) {
-  const Result r = run(std::string("validate-condition --plugin ") + q(plugin("hanging_condition")) +
-                       " --labels 0 --max-nodes 1 --eval-timeout 0.5");
+  const Result r =
+      run(std::string("validate-condition --plugin ") + q(plugin("hanging_condition")) +
+          " --labels 0 --max-nodes 1 --eval-timeout 0.5");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("hanging_condition"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("did not return within the per-evaluation time limit of 0.5 s while evaluating rule rule"),
-            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("did not return within the per-evaluation time limit of 0.5 s while "
+                       "evaluating rule rule"),
+            std::string::npos)
+      << r.err;
   EXPECT_EQ(run("validate-condition --condition thesis --eval-timeout -1").code, 2);
 }
 
 TEST_F(CliVerify, ShardsMergeIntoTheWholeSweep) {
-  const std::string sweep = "validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes 2 --bound 3 ";
+  const std::string sweep =
+      "validate-condition --condition wrong-incident-without-dangling --labels 0,1 --max-nodes 2 "
+      "--bound 3 ";
   EXPECT_EQ(run(sweep + "--shard 0/2 -o " + q(dir / "s0.json")).code, 1);
   EXPECT_EQ(run(sweep + "--shard 1/2 -o " + q(dir / "s1.json")).code, 1);
   const Result whole = run(sweep + "--json");
-  const Result merged = run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s1.json"));
+  const Result merged =
+      run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s1.json"));
   EXPECT_EQ(merged.code, 1) << merged.err;
   const auto a = nlohmann::json::parse(whole.out), b = nlohmann::json::parse(merged.out);
-  for (const char* key : {"rules", "holds", "fails", "vacuous", "unsound", "incomplete"}) EXPECT_EQ(a[key], b[key]) << key;
+  for (const char* key : {"rules", "holds", "fails", "vacuous", "unsound", "incomplete"})
+    EXPECT_EQ(a[key], b[key]) << key;
   EXPECT_EQ(a["smallest_unsound"]["index"], b["smallest_unsound"]["index"]);
   EXPECT_EQ(b["shard"], "0,1/2");
-  EXPECT_EQ(run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s0.json")).code, 2);
+  EXPECT_EQ(run("validate-condition --merge " + q(dir / "s0.json") + " " + q(dir / "s0.json")).code,
+            2);
 }

@@ -44,7 +44,8 @@ std::vector<TourLine> tour_commands(const std::string& readme) {
 }  // namespace
 
 TEST_F(Cli, ReadmeTourRunsAsWritten) {
-  const std::vector<TourLine> lines = tour_commands(gmr::io::read_text_file(source_dir() / "README.md"));
+  const std::vector<TourLine> lines =
+      tour_commands(gmr::io::read_text_file(source_dir() / "README.md"));
   ASSERT_GE(lines.size(), 8u);
   const fs::path root = fs::absolute(source_dir());
   for (const auto& entry : fs::directory_iterator(root))
@@ -53,8 +54,8 @@ TEST_F(Cli, ReadmeTourRunsAsWritten) {
       fs::create_directory_symlink(entry.path(), dir / entry.path().filename());
   const std::string path = fs::path(gmr_bin()).parent_path().string();
   for (const TourLine& t : lines) {
-    const std::string cmd = "cd " + q(dir) + " && PATH=" + q(path) + ":\"$PATH\" " + t.command + " >" +
-                            q(dir / "stdout") + " 2>" + q(dir / "stderr");
+    const std::string cmd = "cd " + q(dir) + " && PATH=" + q(path) + ":\"$PATH\" " + t.command +
+                            " >" + q(dir / "stdout") + " 2>" + q(dir / "stderr");
     const int status = std::system(cmd.c_str());
     EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == t.expected_exit)
         << t.command << "\nexit " << WEXITSTATUS(status) << ", expected " << t.expected_exit << "\n"

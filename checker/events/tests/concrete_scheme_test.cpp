@@ -1,13 +1,14 @@
 // Events of concrete rules through their scheme on <> (concrete_scheme.hpp): the conversion gives
 // the concrete rule's application back (dart for dart against the DPO of model/rewrite/dpo.hpp),
 // and its static events with confirmation agree with the dynamic detector.
+#include "checker/events/concrete_scheme.hpp"
+
 #include <gtest/gtest.h>
 
-#include "checker/events/concrete_scheme.hpp"
 #include "checker/events/tests/events_fixtures.hpp"
 #include "model/core/error.hpp"
-#include "model/rule_io/rule_json.hpp"
 #include "model/rewrite/dpo.hpp"
+#include "model/rule_io/rule_json.hpp"
 
 using namespace gmr;
 using namespace gmr::events;
@@ -43,7 +44,8 @@ TEST(ConcreteScheme, UnsewOnTheGridAgreesWithDpoAndOracle) {
   EmbeddedMap m = io::read_off_file(event_data("quad_grid_2x2.off"));
   Map& g = m.map;
   const Dart a = edge_dart(m, {1, 1, 0}, {1, 2, 0});
-  const std::vector<Dart> match = {a, g.alpha(0, a), g.alpha(2, a), g.alpha(0, g.alpha(2, a))};  // a b c d
+  const std::vector<Dart> match = {a, g.alpha(0, a), g.alpha(2, a),
+                                   g.alpha(0, g.alpha(2, a))};  // a b c d
   const rewrite::MapDerivation dpo = rewrite::apply(r, g, match);
   const Checked c = apply_checked(scheme_of_concrete_rule(r), g, {a});
   expect_oracle_agrees(c);

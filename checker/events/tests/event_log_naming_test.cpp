@@ -14,7 +14,8 @@ using namespace gmr::events::testing;
 namespace {
 
 scheme::RuleScheme jerboa_rule(const std::string& name) {
-  for (auto& r : io::read_jme_file(source_dir() / "tools/data/jerboa/JerboaTrackingOrbit.jme").rules)
+  for (auto& r :
+       io::read_jme_file(source_dir() / "tools/data/jerboa/JerboaTrackingOrbit.jme").rules)
     if (r.name == name) return r;
   throw std::runtime_error("no Jerboa rule " + name);
 }

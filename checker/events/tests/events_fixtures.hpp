@@ -79,8 +79,9 @@ inline void expect_oracle_agrees(const Checked& c) {
   ASSERT_TRUE(c.logged.application) << c.logged.application.why;
   for (size_t t = 0; t < c.dynamic.size(); ++t)
     EXPECT_TRUE(same_events(c.logged.log.orbits[t].events, c.dynamic[t]))
-        << c.logged.log.orbits[t].orbit.str() << "\nlog:\n" << describe(c.logged.log.orbits[t].events)
-        << "dynamic:\n" << describe(c.dynamic[t]);
+        << c.logged.log.orbits[t].orbit.str() << "\nlog:\n"
+        << describe(c.logged.log.orbits[t].events) << "dynamic:\n"
+        << describe(c.dynamic[t]);
 }
 
 // Number of events of a kind (and status, when given) in one orbit type's log.

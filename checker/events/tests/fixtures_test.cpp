@@ -44,9 +44,9 @@ Map house() { return io::read_map_json_file(event_data("house.json")).map; }
 // A cylinder of circumference one edge and height two quads: each circle (bottom, middle, top) is a
 // single edge whose two ends are one vertex. Quad k has darts 8k..8k+7: bottom side 8k, 8k+1,
 // right side 8k+2, 8k+3, top side 8k+4, 8k+5, left side 8k+6, 8k+7 (8k and 8k+7 at its bottom-left
-// corner, 8k+1 and 8k+2 at its bottom-right one, and so on). The right side of each quad is 2-sewn to
-// its own left side (so each circle closes on one vertex); the top of the lower quad to the bottom
-// of the upper one (the middle circle, darts 4, 5, 8, 9).
+// corner, 8k+1 and 8k+2 at its bottom-right one, and so on). The right side of each quad is 2-sewn
+// to its own left side (so each circle closes on one vertex); the top of the lower quad to the
+// bottom of the upper one (the middle circle, darts 4, 5, 8, 9).
 Map one_edge_cylinder() {
   Map g(2);
   g.add_darts(16);
@@ -68,8 +68,9 @@ Map one_edge_cylinder() {
 void expect_top_edge_events(const Checked& c, OrbitEventKind kind) {
   EXPECT_EQ(count(c.log("<0,2>"), kind, EventStatus::Certain), 1u);
   EXPECT_EQ(count(c.log("<2>"), kind, EventStatus::Certain), 2u);
-  EXPECT_EQ(count(c.log("<1,2>"), kind, EventStatus::Confirmed), 1u);                       // (1,2)
-  EXPECT_EQ(count(c.log("<1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);  // (1,1)
+  EXPECT_EQ(count(c.log("<1,2>"), kind, EventStatus::Confirmed), 1u);  // (1,2)
+  EXPECT_EQ(count(c.log("<1,2>"), OrbitEventKind::Modification, EventStatus::Refuted),
+            1u);  // (1,1)
   EXPECT_EQ(count(c.log("<0,1,2>"), kind), 0u);
   EXPECT_EQ(count(c.log("<0,1,2>"), OrbitEventKind::Modification, EventStatus::Refuted), 1u);
 }
@@ -103,32 +104,52 @@ TEST(Fixtures, F1FaceTriangulationTable1) {
   const std::map<std::string, std::vector<Expected>> table1 = {
       {"<>", {}},  // filled below: 16 creations, 8 non-modifications
       {"<0>",
-       {{OrbitEventKind::Creation, {}, {"a1"}}, {OrbitEventKind::Creation, {}, {"b1"}},
-        {OrbitEventKind::Creation, {}, {"c1"}}, {OrbitEventKind::Creation, {}, {"d1"}},
-        {OrbitEventKind::Creation, {}, {"e1"}}, {OrbitEventKind::Creation, {}, {"f1"}},
-        {OrbitEventKind::Creation, {}, {"g1"}}, {OrbitEventKind::Creation, {}, {"h1"}},
-        {OrbitEventKind::NonModification, {"a0"}, {"a0"}}, {OrbitEventKind::NonModification, {"c0"}, {"c0"}},
-        {OrbitEventKind::NonModification, {"e0"}, {"e0"}}, {OrbitEventKind::NonModification, {"g0"}, {"g0"}}}},
+       {{OrbitEventKind::Creation, {}, {"a1"}},
+        {OrbitEventKind::Creation, {}, {"b1"}},
+        {OrbitEventKind::Creation, {}, {"c1"}},
+        {OrbitEventKind::Creation, {}, {"d1"}},
+        {OrbitEventKind::Creation, {}, {"e1"}},
+        {OrbitEventKind::Creation, {}, {"f1"}},
+        {OrbitEventKind::Creation, {}, {"g1"}},
+        {OrbitEventKind::Creation, {}, {"h1"}},
+        {OrbitEventKind::NonModification, {"a0"}, {"a0"}},
+        {OrbitEventKind::NonModification, {"c0"}, {"c0"}},
+        {OrbitEventKind::NonModification, {"e0"}, {"e0"}},
+        {OrbitEventKind::NonModification, {"g0"}, {"g0"}}}},
       {"<1>",
-       {{OrbitEventKind::Creation, {}, {"a2"}}, {OrbitEventKind::Creation, {}, {"c2"}},
-        {OrbitEventKind::Creation, {}, {"e2"}}, {OrbitEventKind::Creation, {}, {"g2"}},
-        {OrbitEventKind::Split, {"a0"}, {"a0", "h0"}}, {OrbitEventKind::Split, {"b0"}, {"b0", "c0"}},
-        {OrbitEventKind::Split, {"d0"}, {"d0", "e0"}}, {OrbitEventKind::Split, {"f0"}, {"f0", "g0"}}}},
+       {{OrbitEventKind::Creation, {}, {"a2"}},
+        {OrbitEventKind::Creation, {}, {"c2"}},
+        {OrbitEventKind::Creation, {}, {"e2"}},
+        {OrbitEventKind::Creation, {}, {"g2"}},
+        {OrbitEventKind::Split, {"a0"}, {"a0", "h0"}},
+        {OrbitEventKind::Split, {"b0"}, {"b0", "c0"}},
+        {OrbitEventKind::Split, {"d0"}, {"d0", "e0"}},
+        {OrbitEventKind::Split, {"f0"}, {"f0", "g0"}}}},
       {"<2>",
-       {{OrbitEventKind::Creation, {}, {"a1"}}, {OrbitEventKind::Creation, {}, {"b1"}},
-        {OrbitEventKind::Creation, {}, {"d1"}}, {OrbitEventKind::Creation, {}, {"f1"}},
-        {OrbitEventKind::Creation, {}, {"a2"}}, {OrbitEventKind::Creation, {}, {"b2"}},
-        {OrbitEventKind::Creation, {}, {"d2"}}, {OrbitEventKind::Creation, {}, {"f2"}}}},
+       {{OrbitEventKind::Creation, {}, {"a1"}},
+        {OrbitEventKind::Creation, {}, {"b1"}},
+        {OrbitEventKind::Creation, {}, {"d1"}},
+        {OrbitEventKind::Creation, {}, {"f1"}},
+        {OrbitEventKind::Creation, {}, {"a2"}},
+        {OrbitEventKind::Creation, {}, {"b2"}},
+        {OrbitEventKind::Creation, {}, {"d2"}},
+        {OrbitEventKind::Creation, {}, {"f2"}}}},
       {"<0,1>", {{OrbitEventKind::Split, {"a0"}, {"a0", "c0", "e0", "g0"}}}},
       {"<0,2>",
-       {{OrbitEventKind::Creation, {}, {"a1"}}, {OrbitEventKind::Creation, {}, {"b1"}},
-        {OrbitEventKind::Creation, {}, {"d1"}}, {OrbitEventKind::Creation, {}, {"f1"}},
-        {OrbitEventKind::NonModification, {"a0"}, {"a0"}}, {OrbitEventKind::NonModification, {"c0"}, {"c0"}},
-        {OrbitEventKind::NonModification, {"e0"}, {"e0"}}, {OrbitEventKind::NonModification, {"g0"}, {"g0"}}}},
+       {{OrbitEventKind::Creation, {}, {"a1"}},
+        {OrbitEventKind::Creation, {}, {"b1"}},
+        {OrbitEventKind::Creation, {}, {"d1"}},
+        {OrbitEventKind::Creation, {}, {"f1"}},
+        {OrbitEventKind::NonModification, {"a0"}, {"a0"}},
+        {OrbitEventKind::NonModification, {"c0"}, {"c0"}},
+        {OrbitEventKind::NonModification, {"e0"}, {"e0"}},
+        {OrbitEventKind::NonModification, {"g0"}, {"g0"}}}},
       {"<1,2>",
        {{OrbitEventKind::Creation, {}, {"a2"}},
-        {OrbitEventKind::Modification, {"a0"}, {"a0"}}, {OrbitEventKind::Modification, {"b0"}, {"b0"}},
-        {OrbitEventKind::Modification, {"d0"}, {"d0"}}, {OrbitEventKind::Modification, {"f0"}, {"f0"}}}},
+        {OrbitEventKind::Modification, {"a0"}, {"a0"}},
+        {OrbitEventKind::Modification, {"b0"}, {"b0"}},
+        {OrbitEventKind::Modification, {"d0"}, {"d0"}},
+        {OrbitEventKind::Modification, {"f0"}, {"f0"}}}},
       {"<0,1,2>", {{OrbitEventKind::Modification, {"a0"}, {"a0"}}}},
   };
   for (const auto& [o, rows] : table1) {
@@ -151,7 +172,9 @@ TEST(Fixtures, F1FaceTriangulationTable1) {
       expected.push_back(e);
     }
     EXPECT_TRUE(same_events(c.log(o).events, expected))
-        << o << "\nlog:\n" << describe(c.log(o).events) << "expected:\n" << describe(expected);
+        << o << "\nlog:\n"
+        << describe(c.log(o).events) << "expected:\n"
+        << describe(expected);
   }
   // The splits on <1> and <0,1> are implicit (along n0's second position): possible, confirmed.
   EXPECT_EQ(count(c.log("<1>"), OrbitEventKind::Split, EventStatus::Confirmed), 4u);
@@ -198,7 +221,8 @@ TEST(Fixtures, F4EdgeDeletion) {
   const auto unsew = library_rule("unsew2");
   ASSERT_TRUE(apply_checked(unsew, g, {edge_dart(m, {1, 1, 0}, {1, 2, 0})}).logged.application);
   ASSERT_TRUE(apply_checked(unsew, g, {edge_dart(m, {0, 1, 0}, {1, 1, 0})}).logged.application);
-  const Checked c = apply_checked(library_rule("edge_deletion"), g, {edge_dart(m, {1, 1, 0}, {1, 0, 0})});
+  const Checked c =
+      apply_checked(library_rule("edge_deletion"), g, {edge_dart(m, {1, 1, 0}, {1, 0, 0})});
   expect_oracle_agrees(c);
   EXPECT_EQ(count(c.log("<0,2>"), OrbitEventKind::Deletion, EventStatus::Certain), 1u);
   EXPECT_EQ(count(c.log("<1>"), OrbitEventKind::Merge, EventStatus::Confirmed), 2u);
@@ -220,7 +244,8 @@ TEST(Fixtures, F4bBorderEdgeDeletionIsNoMerge) {
   const StaticEvents st = analyse(rule, {OrbitType{1}});
   bool complete_implicit_merge = false;
   for (const auto& e : st.orbits[0].events)
-    complete_implicit_merge |= e.kind == PatternEventKind::ImplicitMerge && st.orbits[0].left.complete[e.left[0]];
+    complete_implicit_merge |=
+        e.kind == PatternEventKind::ImplicitMerge && st.orbits[0].left.complete[e.left[0]];
   EXPECT_TRUE(complete_implicit_merge);
   const Checked c = apply_checked(rule, g, {edge_dart(m, {0, 0, 0}, {1, 0, 0})});
   expect_oracle_agrees(c);
@@ -261,7 +286,8 @@ TEST(Fixtures, F5EdgeCollapseOnCylinder) {
   EmbeddedMap m = io::read_off_file(event_data("cylinder_4.off"));
   Map& g = m.map;
   EXPECT_EQ(cells(g), (std::vector<size_t>{8, 16, 8, 1}));
-  const Checked c = apply_checked(library_rule("edge_collapse"), g, {edge_dart(m, {1, 0, 0}, {1, 0, 1})});
+  const Checked c =
+      apply_checked(library_rule("edge_collapse"), g, {edge_dart(m, {1, 0, 0}, {1, 0, 1})});
   expect_oracle_agrees(c);
   expect_merged_and_split(c.log("<1,2>"));
   EXPECT_EQ(count(c.log("<0,1,2>"), OrbitEventKind::Split), 0u);
@@ -277,7 +303,8 @@ TEST(Fixtures, F5EdgeCollapseSplitOnlyOnCylinder) {
   Map g = one_edge_cylinder();
   EXPECT_EQ(cells(g), (std::vector<size_t>{3, 5, 2, 1}));
   const auto vertex = orbit(g, OrbitType{1, 2}, 4);
-  EXPECT_NE(std::find(vertex.begin(), vertex.end(), Dart{5}), vertex.end());  // both ends: one vertex
+  EXPECT_NE(std::find(vertex.begin(), vertex.end(), Dart{5}),
+            vertex.end());  // both ends: one vertex
   const auto rule = library_rule("edge_collapse");
   const Checked c = apply_checked(rule, g, {4});
   expect_oracle_agrees(c);

@@ -22,14 +22,30 @@ std::vector<std::string> summary(const OrbitTypeEvents& t) {
   for (const auto& e : t.events) {
     std::string w;
     switch (e.kind) {
-      case PatternEventKind::Creation: w = "C"; break;
-      case PatternEventKind::Deletion: w = "D"; break;
-      case PatternEventKind::NonModification: w = "NM"; break;
-      case PatternEventKind::Modification: w = "M"; break;
-      case PatternEventKind::ExplicitSplit: w = "S+"; break;
-      case PatternEventKind::ExplicitMerge: w = "M+"; break;
-      case PatternEventKind::ImplicitSplit: w = "Si"; break;
-      case PatternEventKind::ImplicitMerge: w = "Mi"; break;
+      case PatternEventKind::Creation:
+        w = "C";
+        break;
+      case PatternEventKind::Deletion:
+        w = "D";
+        break;
+      case PatternEventKind::NonModification:
+        w = "NM";
+        break;
+      case PatternEventKind::Modification:
+        w = "M";
+        break;
+      case PatternEventKind::ExplicitSplit:
+        w = "S+";
+        break;
+      case PatternEventKind::ExplicitMerge:
+        w = "M+";
+        break;
+      case PatternEventKind::ImplicitSplit:
+        w = "Si";
+        break;
+      case PatternEventKind::ImplicitMerge:
+        w = "Mi";
+        break;
     }
     for (uint32_t k : e.positions) w += std::to_string(k + 1);
     if (e.certainty == Certainty::Possible) w += "?";
@@ -62,7 +78,8 @@ bool left_complete(const scheme::RuleScheme& s, const std::string& o, const std:
 TEST(StaticEvents, AllOrbitTypesOfDimension2) {
   std::vector<std::string> names;
   for (const auto& o : all_orbit_types(2)) names.push_back(o.str());
-  EXPECT_EQ(names, (std::vector<std::string>{"<>", "<0>", "<1>", "<2>", "<0,1>", "<0,2>", "<1,2>", "<0,1,2>"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"<>", "<0>", "<1>", "<2>", "<0,1>", "<0,2>", "<1,2>",
+                                             "<0,1,2>"}));
   EXPECT_EQ(all_orbit_types(3).size(), 16u);
 }
 
@@ -90,7 +107,8 @@ TEST(StaticEvents, F1FaceTriangulation) {
                    {"<1,2>", {"M", "C"}},
                    {"<0,1,2>", {"M"}}});
   for (const char* o : {"<>", "<0>", "<1>", "<0,1>"}) EXPECT_TRUE(left_complete(s, o, "n0")) << o;
-  for (const char* o : {"<2>", "<0,2>", "<1,2>", "<0,1,2>"}) EXPECT_FALSE(left_complete(s, o, "n0")) << o;
+  for (const char* o : {"<2>", "<0,2>", "<1,2>", "<0,1,2>"})
+    EXPECT_FALSE(left_complete(s, o, "n0")) << o;
 }
 
 // Fig. 6: the explicit split of 2-unsewing is certain on <2>, <0,2> (complete R pattern orbits) and

@@ -2,6 +2,8 @@
 // and complete on the bounded families below, the three deliberately wrong variants are refuted
 // with minimal counterexamples (no smaller family refutes them), both engines give the same counts,
 // and condition plug-ins load, run in a child process and fail cleanly.
+#include "checker/smt/condition_validation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,35 +12,42 @@
 #include "checker/rule_check.hpp"
 #include "checker/smt/condition_plugin.hpp"
 #include "checker/smt/condition_registry.hpp"
-#include "checker/smt/condition_validation.hpp"
-#include "checker/smt/validation_format.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/scheme_conditions.hpp"
-#include "model/rule_io/scheme_json.hpp"
-#include "model/testing/source_tree.hpp"
+#include "checker/smt/validation_format.hpp"
 #include "model/core/error.hpp"
+#include "model/rule_io/scheme_json.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::smt;
 
 namespace {
-ValidationReport run(const std::string& name, int n, MapKind kind, std::vector<int> labels, int max_nodes,
-                     unsigned bound, Engine e = Engine::Smt) {
+ValidationReport run(const std::string& name, int n, MapKind kind, std::vector<int> labels,
+                     int max_nodes, unsigned bound, Engine e = Engine::Smt) {
   const BuiltinCondition* c = find_builtin_condition(name);
   EXPECT_NE(c, nullptr) << name;
-  const ValidationOptions o{
-      .n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound, .engine = e};
-  return validate_condition(name, [&](const std::vector<Rule>& rules) {
-    std::vector<bool> out;
-    for (const auto& r : rules) out.push_back(c->holds(r));
-    return out;
-  }, o);
+  const ValidationOptions o{.n = n,
+                            .kind = kind,
+                            .labels = std::move(labels),
+                            .max_nodes = max_nodes,
+                            .bound = bound,
+                            .engine = e};
+  return validate_condition(
+      name,
+      [&](const std::vector<Rule>& rules) {
+        std::vector<bool> out;
+        for (const auto& r : rules) out.push_back(c->holds(r));
+        return out;
+      },
+      o);
 }
 
 size_t nodes(const Rule& r) { return r.left().num_nodes() + r.added_nodes().size(); }
 
-std::string plugin(const std::string& stem) { return gmr::testing::build_artifact("GMR_PLUGIN_DIR") + "/lib" + stem + ".so"; }
+std::string plugin(const std::string& stem) {
+  return gmr::testing::build_artifact("GMR_PLUGIN_DIR") + "/lib" + stem + ".so";
+}
 }  // namespace
 
 TEST(ConditionValidation, ThesisConjunctionIsCheckRule) {
@@ -109,11 +118,14 @@ TEST(ConditionValidation, ShardsPartitionTheSweep) {
   for (unsigned k = 0; k < 3; ++k) {
     o.shard = k;
     o.shards = 3;
-    const auto r = validate_condition(c->name, [&](const std::vector<Rule>& rs) {
-      std::vector<bool> out;
-      for (const auto& x : rs) out.push_back(c->holds(x));
-      return out;
-    }, o);
+    const auto r = validate_condition(
+        c->name,
+        [&](const std::vector<Rule>& rs) {
+          std::vector<bool> out;
+          for (const auto& x : rs) out.push_back(c->holds(x));
+          return out;
+        },
+        o);
     rules += r.rules;
     unsound += r.unsound;
     holds += r.holds;
@@ -127,11 +139,14 @@ TEST(ConditionValidation, ShardsPartitionTheSweep) {
 TEST(ConditionValidation, TimeLimitReportsCoverage) {
   const BuiltinCondition* c = find_builtin_condition("thesis");
   ValidationOptions o{.n = 1, .labels = {0}, .max_nodes = 3, .bound = 4, .time_limit = 0.3};
-  const auto r = validate_condition(c->name, [&](const std::vector<Rule>& rs) {
-    std::vector<bool> out;
-    for (const auto& x : rs) out.push_back(c->holds(x));
-    return out;
-  }, o);
+  const auto r = validate_condition(
+      c->name,
+      [&](const std::vector<Rule>& rs) {
+        std::vector<bool> out;
+        for (const auto& x : rs) out.push_back(c->holds(x));
+        return out;
+      },
+      o);
   EXPECT_TRUE(r.time_limit_hit);
   EXPECT_LT(r.checked, r.rules);
   EXPECT_LT(r.nodes_covered, 3);
@@ -191,8 +206,10 @@ TEST(ConditionPlugins, BadPluginsFailNamingPluginAndRule) {
     hung = e.location() + ": " + e.message();
   }
   EXPECT_NE(hung.find("hanging_condition"), std::string::npos) << hung;
-  EXPECT_NE(hung.find("did not return within the per-evaluation time limit of 0.3 s while evaluating rule rule"),
-            std::string::npos) << hung;
+  EXPECT_NE(hung.find("did not return within the per-evaluation time limit of 0.3 s while "
+                      "evaluating rule rule"),
+            std::string::npos)
+      << hung;
   EXPECT_NE(missing.find("no entry symbol gmr_condition_v1"), std::string::npos) << missing;
   const std::string absent = message("does_not_exist");
   EXPECT_NE(absent.find("cannot load"), std::string::npos) << absent;
@@ -200,7 +217,8 @@ TEST(ConditionPlugins, BadPluginsFailNamingPluginAndRule) {
 
 TEST(ConditionValidation, RandomLargerRules) {
   const BuiltinCondition* c = find_builtin_condition("thesis");
-  ValidationOptions o{.n = 1, .labels = {0, 1}, .max_nodes = 1, .bound = 6, .random = 300, .seed = 7};
+  ValidationOptions o{
+      .n = 1, .labels = {0, 1}, .max_nodes = 1, .bound = 6, .random = 300, .seed = 7};
   auto eval = [&](const std::vector<Rule>& rs) {
     std::vector<bool> out;
     for (const auto& x : rs) out.push_back(c->holds(x));
@@ -231,7 +249,8 @@ TEST(ConditionValidation, RandomLargerRules) {
 // library schemes; the entry points a plug-in lacks are refused by name.
 TEST(ConditionPlugins, SchemePluginWorkedExampleAgreesWithInProcessPredicate) {
   std::vector<scheme::RuleScheme> schemes;
-  for (const auto& e : std::filesystem::directory_iterator(gmr::testing::source_path("tools/data/rules")))
+  for (const auto& e :
+       std::filesystem::directory_iterator(gmr::testing::source_path("tools/data/rules")))
     if (e.path().extension() == ".json") schemes.push_back(io::read_scheme_file(e.path()));
   ASSERT_EQ(schemes.size(), 16u);
   ConditionPlugin p(plugin("full_degree_scheme_condition"));

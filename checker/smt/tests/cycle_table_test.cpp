@@ -23,8 +23,8 @@ using rewrite::Rule;
 namespace {
 const MapSpec kTableSpec{2, MapKind::GMap};
 
-std::pair<std::vector<int>, std::vector<uint64_t>> table_pattern_of(const Rule& r, std::vector<std::string> nodes,
-                                                                     const std::vector<int>& labels) {
+std::pair<std::vector<int>, std::vector<uint64_t>> table_pattern_of(
+    const Rule& r, std::vector<std::string> nodes, const std::vector<int>& labels) {
   const ComponentPattern p = component_pattern(r, std::move(nodes), labels);
   return {p.status, p.arcs};
 }
@@ -32,7 +32,8 @@ std::pair<std::vector<int>, std::vector<uint64_t>> table_pattern_of(const Rule& 
 bool theorems12_on_labels(const Rule& r, const std::vector<int>& labels) {
   std::vector<checker::Diagnostic> d;
   for (int i : labels)
-    if (!checker::check_incident_arcs(r, i, d) || !checker::check_non_orientation(r, i, d)) return false;
+    if (!checker::check_incident_arcs(r, i, d) || !checker::check_non_orientation(r, i, d))
+      return false;
   return true;
 }
 }  // namespace
@@ -41,11 +42,13 @@ bool theorems12_on_labels(const Rule& r, const std::vector<int>& labels) {
 // each component is a pattern of the table, with the verdict of the checker on the component; in
 // each reading. Every pattern of the table is met (each is itself a rule of the family).
 TEST(CycleTable, EveryComponentIsTabulatedWithTheCheckersVerdict) {
-  for (CycleReading reading : {CycleReading::ModelCompletion, CycleReading::IjCompletion, CycleReading::AsWritten}) {
+  for (CycleReading reading :
+       {CycleReading::ModelCompletion, CycleReading::IjCompletion, CycleReading::AsWritten}) {
     const CycleTable table = cycle_table(kTableSpec, {0, 1, 2}, 2, ThesisParts{}, reading);
     EXPECT_EQ(table.labels, (std::vector<int>{0, 2}));
     std::map<std::pair<std::vector<int>, std::vector<uint64_t>>, bool> verdict;
-    for (const auto& p : table.patterns) EXPECT_TRUE(verdict.emplace(std::pair{p.status, p.arcs}, p.holds).second);
+    for (const auto& p : table.patterns)
+      EXPECT_TRUE(verdict.emplace(std::pair{p.status, p.arcs}, p.holds).second);
     std::set<std::pair<std::vector<int>, std::vector<uint64_t>>> met;
     size_t rules = 0;
     for_each_rule(2, MapKind::GMap, 2, {0, 2}, [&](size_t, const Rule& r) {
@@ -56,7 +59,8 @@ TEST(CycleTable, EveryComponentIsTabulatedWithTheCheckersVerdict) {
         const auto it = verdict.find(key);
         EXPECT_NE(it, verdict.end()) << rule_text(r);
         if (it == verdict.end()) return false;
-        EXPECT_EQ(it->second, cycle_condition(restrict_rule(r, k, {0, 2}), reading)) << rule_text(r);
+        EXPECT_EQ(it->second, cycle_condition(restrict_rule(r, k, {0, 2}), reading))
+            << rule_text(r);
         met.insert(key);
       }
       return true;
@@ -66,10 +70,12 @@ TEST(CycleTable, EveryComponentIsTabulatedWithTheCheckersVerdict) {
   }
   // The sizes: 6 one-node and 81 connected two-node patterns (labels 0, 2); 3 labels' worth of arcs
   // in the family change nothing (label 1 is no cycle label).
-  const CycleTable t = cycle_table(kTableSpec, {0, 2}, 2, ThesisParts{}, CycleReading::ModelCompletion);
+  const CycleTable t =
+      cycle_table(kTableSpec, {0, 2}, 2, ThesisParts{}, CycleReading::ModelCompletion);
   EXPECT_EQ(t.patterns.size(), 87u);
   // Without arcs on label 2, only patterns without added nodes and without 2-arcs remain.
-  const CycleTable t0 = cycle_table(kTableSpec, {0, 1}, 2, ThesisParts{}, CycleReading::ModelCompletion);
+  const CycleTable t0 =
+      cycle_table(kTableSpec, {0, 1}, 2, ThesisParts{}, CycleReading::ModelCompletion);
   EXPECT_EQ(t0.labels, (std::vector<int>{0}));
   for (const auto& p : t0.patterns)
     for (int s : p.status) EXPECT_NE(s, 2);
@@ -78,17 +84,21 @@ TEST(CycleTable, EveryComponentIsTabulatedWithTheCheckersVerdict) {
 // The cubes of the 3-node table: every failing pattern lies in some failing cube, no holding one in
 // any (far fewer cubes than failing patterns), and the converse for the holding cubes.
 TEST(CycleTable, CubesHoldEveryFailingPatternAndNoHoldingOne) {
-  const CycleTable table = cycle_table(kTableSpec, {0, 1, 2}, 3, ThesisParts{}, CycleReading::ModelCompletion);
+  const CycleTable table =
+      cycle_table(kTableSpec, {0, 1, 2}, 3, ThesisParts{}, CycleReading::ModelCompletion);
   const std::vector<PatternCube> cubes = failing_cubes(table);
   size_t failing = 0;
   for (const ComponentPattern& p : table.patterns) {
     const PatternBits b = pattern_bits(p, table.labels.size());
     size_t in = 0;
     for (const PatternCube& c : cubes)
-      in += c.nodes == p.nodes() && (b[0] & c.care[0]) == c.value[0] && (b[1] & c.care[1]) == c.value[1];
+      in += c.nodes == p.nodes() && (b[0] & c.care[0]) == c.value[0] &&
+            (b[1] & c.care[1]) == c.value[1];
     failing += !p.holds;
-    if (p.holds) EXPECT_EQ(in, 0u);
-    else EXPECT_GT(in, 0u);
+    if (p.holds)
+      EXPECT_EQ(in, 0u);
+    else
+      EXPECT_GT(in, 0u);
   }
   EXPECT_EQ(table.patterns.size(), 2198u);  // 6 + 81 + 2111 connected patterns
   EXPECT_EQ(failing, 1166u);
@@ -99,9 +109,12 @@ TEST(CycleTable, CubesHoldEveryFailingPatternAndNoHoldingOne) {
     const PatternBits b = pattern_bits(p, table.labels.size());
     size_t in = 0;
     for (const PatternCube& c : holding)
-      in += c.nodes == p.nodes() && (b[0] & c.care[0]) == c.value[0] && (b[1] & c.care[1]) == c.value[1];
-    if (p.holds) EXPECT_GT(in, 0u);
-    else EXPECT_EQ(in, 0u);
+      in += c.nodes == p.nodes() && (b[0] & c.care[0]) == c.value[0] &&
+            (b[1] & c.care[1]) == c.value[1];
+    if (p.holds)
+      EXPECT_GT(in, 0u);
+    else
+      EXPECT_EQ(in, 0u);
   }
   EXPECT_LT(holding.size(), table.patterns.size() - failing);
 }
@@ -112,7 +125,8 @@ TEST(CycleTable, CubesHoldEveryFailingPatternAndNoHoldingOne) {
 // patterns (one of 3 nodes, 2 + 1, 1 + 1 + 1 nodes), drawn at random, renamed into the family's
 // status order.
 TEST(CycleTable, LemmasFixOkOnEveryComponent) {
-  const CycleTable table = cycle_table(kTableSpec, {0, 1, 2}, 3, ThesisParts{}, CycleReading::ModelCompletion);
+  const CycleTable table =
+      cycle_table(kTableSpec, {0, 1, 2}, 3, ThesisParts{}, CycleReading::ModelCompletion);
   z3::context ctx;
   const SymbolicRule sym(ctx, kTableSpec, 3, {0, 1, 2});
   const SymbolicCycle cyc(sym, {0, 2});
@@ -156,14 +170,18 @@ TEST(CycleTable, LemmasFixOkOnEveryComponent) {
       Rule u(std::move(L), std::move(R), 2, MapKind::GMap, "union");
       // Status order along a, b, c, d: sort the names by status.
       std::vector<std::pair<int, std::string>> nodes;
-      for (graph::Node v : u.left().nodes()) nodes.emplace_back(u.right_of(v) ? 0 : 1, u.left().name(v));
+      for (graph::Node v : u.left().nodes())
+        nodes.emplace_back(u.right_of(v) ? 0 : 1, u.left().name(v));
       for (graph::Node w : u.added_nodes()) nodes.emplace_back(2, u.right().name(w));
-      std::stable_sort(nodes.begin(), nodes.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::stable_sort(nodes.begin(), nodes.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
       std::map<std::string, std::string> to;
-      for (size_t k = 0; k < nodes.size(); ++k) to[nodes[k].second] = std::string(1, static_cast<char>('a' + k));
+      for (size_t k = 0; k < nodes.size(); ++k)
+        to[nodes[k].second] = std::string(1, static_cast<char>('a' + k));
       auto side = [&](const graph::DGraph& g) {
         std::vector<graph::Node> order(g.nodes().begin(), g.nodes().end());
-        std::sort(order.begin(), order.end(), [&](auto x, auto y) { return to[g.name(x)] < to[g.name(y)]; });
+        std::sort(order.begin(), order.end(),
+                  [&](auto x, auto y) { return to[g.name(x)] < to[g.name(y)]; });
         graph::DGraph out;
         HandleVector<graph::Node, graph::Node> at(g.num_nodes());
         for (graph::Node v : order) at[v] = out.add_node(to[g.name(v)]);
@@ -176,7 +194,8 @@ TEST(CycleTable, LemmasFixOkOnEveryComponent) {
       const auto components = rule_components(r, {0, 2});
       EXPECT_EQ(components.size(), sizes.size()) << rule_text(r);
       for (const auto& k : components) {
-        const bool verdict = cycle_condition(restrict_rule(r, k, {0, 2}), CycleReading::ModelCompletion);
+        const bool verdict =
+            cycle_condition(restrict_rule(r, k, {0, 2}), CycleReading::ModelCompletion);
         failing += !verdict;
         s.push();
         s.add(sym.describes(r));

@@ -35,7 +35,8 @@ struct Findings {
   std::map<std::string, std::string> found;  // rule -> "unsound ..." / "incomplete ..."
   void compare(const std::string& name, bool static_ok, bool preserves, bool applicable) {
     if (static_ok && !preserves) found[name] = "unsound";
-    if (!static_ok && preserves) found[name] = applicable ? "incomplete" : "incomplete (never applies)";
+    if (!static_ok && preserves)
+      found[name] = applicable ? "incomplete" : "incomplete (never applies)";
   }
   void print(const std::string& what) const {
     std::printf("%s: %zu findings\n", what.c_str(), found.size());
@@ -49,13 +50,15 @@ void scheme_verdicts(const RuleScheme& s, unsigned bound, Findings& f) {
   EXPECT_EQ(a.preserves, b.preserves) << s.name;
   EXPECT_EQ(a.applicable > 0, b.applicable > 0) << s.name;
   std::printf("  %-28s smt %-9s %6.3fs  enum %-9s %6.3fs  %zu orbits\n", s.name.c_str(),
-              a.preserves ? "preserves" : "breaks", a.seconds, b.preserves ? "preserves" : "breaks", b.seconds, a.orbits);
+              a.preserves ? "preserves" : "breaks", a.seconds, b.preserves ? "preserves" : "breaks",
+              b.seconds, a.orbits);
   // Both engines judge the topology: the static verdict compared is the topological one.
   const bool static_ok = checker::check_scheme(s, {.embeddings = false}).ok();
   if (!static_ok && b.preserves) {
     const SchemeVerifyResult c = verify_scheme(s, kEscalationBound, Engine::Smt);
-    std::printf("  %-28s rejected, preserves within %u darts; within %u: %s (%.3fs)\n", s.name.c_str(), bound,
-                kEscalationBound, c.preserves ? "preserves" : "breaks", c.seconds);
+    std::printf("  %-28s rejected, preserves within %u darts; within %u: %s (%.3fs)\n",
+                s.name.c_str(), bound, kEscalationBound, c.preserves ? "preserves" : "breaks",
+                c.seconds);
     f.compare(s.name, static_ok, c.preserves, c.applicable > 0);
     return;
   }

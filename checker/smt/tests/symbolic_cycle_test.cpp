@@ -37,11 +37,14 @@ Rule renamed(const Rule& r, const std::string& perm) {
 // (preserved, deleted, added), as the symbolic rule's symmetry breaking wants them.
 Rule in_family_order(const Rule& r) {
   std::vector<std::pair<int, std::string>> nodes;  // (status, name)
-  for (graph::Node v : r.left().nodes()) nodes.emplace_back(r.right_of(v) ? 0 : 1, r.left().name(v));
+  for (graph::Node v : r.left().nodes())
+    nodes.emplace_back(r.right_of(v) ? 0 : 1, r.left().name(v));
   for (graph::Node w : r.added_nodes()) nodes.emplace_back(2, r.right().name(w));
-  std::stable_sort(nodes.begin(), nodes.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::stable_sort(nodes.begin(), nodes.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
   std::string perm(8, '?');
-  for (size_t k = 0; k < nodes.size(); ++k) perm[nodes[k].second[0] - 'a'] = static_cast<char>('a' + k);
+  for (size_t k = 0; k < nodes.size(); ++k)
+    perm[nodes[k].second[0] - 'a'] = static_cast<char>('a' + k);
   return renamed(r, perm);
 }
 }  // namespace
@@ -67,7 +70,8 @@ TEST(SymbolicCycle, ComponentFormulasAreTheRulesComponents) {
       split += expected.size() > 1;
       for (unsigned mask = 1; mask < (1u << slots); ++mask) {
         const bool is = std::find(expected.begin(), expected.end(), mask) != expected.end();
-        EXPECT_EQ(m.eval(cyc.component(mask), true).is_true(), is) << "mask " << mask << " on " << rule_text(r);
+        EXPECT_EQ(m.eval(cyc.component(mask), true).is_true(), is)
+            << "mask " << mask << " on " << rule_text(r);
       }
       s.pop();
       ++rules;
@@ -77,7 +81,9 @@ TEST(SymbolicCycle, ComponentFormulasAreTheRulesComponents) {
       for_each_rule(2, MapKind::GMap, 2, {0, 2}, [&](size_t, const Rule& r) { return check(r); });
     } else {
       std::mt19937_64 rng(static_cast<unsigned>(slots));
-      for (int t = 0; t < 300 && check(in_family_order(random_rule(rng, 2, MapKind::GMap, slots, {0, 1, 2}, "random")));
+      for (int t = 0;
+           t < 300 &&
+           check(in_family_order(random_rule(rng, 2, MapKind::GMap, slots, {0, 1, 2}, "random")));
            ++t) {
       }
     }
@@ -98,7 +104,8 @@ TEST(SymbolicCycle, LemmaCoversEveryPlacementAndNoOtherPattern) {
   for (int t = 0; t < 400 && lemmas < 40; ++t) {
     const Rule r = in_family_order(random_rule(rng, 2, MapKind::GMap, 4, {0, 2}, "random"));
     const auto components = rule_components(r, {0, 2});
-    const auto big = std::find_if(components.begin(), components.end(), [](const auto& k) { return k.size() >= 2; });
+    const auto big = std::find_if(components.begin(), components.end(),
+                                  [](const auto& k) { return k.size() >= 2; });
     if (big == components.end()) continue;
     z3::solver s(ctx);
     s.add(sym.family());
@@ -107,7 +114,8 @@ TEST(SymbolicCycle, LemmaCoversEveryPlacementAndNoOtherPattern) {
     ASSERT_EQ(s.check(), z3::sat);
     const z3::model m = s.get_model();
     const unsigned mask = cyc.mask_of(*big);
-    const bool verdict = cycle_condition(restrict_rule(r, *big, {0, 2}), CycleReading::ModelCompletion);
+    const bool verdict =
+        cycle_condition(restrict_rule(r, *big, {0, 2}), CycleReading::ModelCompletion);
     s.pop();
     s.add(cyc.lemma(m, mask, verdict));
     ++lemmas;
@@ -149,7 +157,8 @@ TEST(SymbolicCycle, LemmaCoversEveryPlacementAndNoOtherPattern) {
       s.add(sym.describes(other));
       if (s.check() == z3::sat) {
         s.add(cyc.ok(mask) != ctx.bool_val(verdict));
-        EXPECT_EQ(s.check(), z3::sat) << "the lemma of " << rule_text(r) << " constrains " << rule_text(other);
+        EXPECT_EQ(s.check(), z3::sat)
+            << "the lemma of " << rule_text(r) << " constrains " << rule_text(other);
         ++others;
       }
       s.pop();

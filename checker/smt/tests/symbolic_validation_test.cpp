@@ -10,10 +10,10 @@
 
 #include "checker/rule_check.hpp"
 #include "checker/smt/condition_registry.hpp"
-#include "checker/smt/validation_format.hpp"
 #include "checker/smt/condition_validation.hpp"
 #include "checker/smt/rule_space.hpp"
 #include "checker/smt/symbolic_rule.hpp"
+#include "checker/smt/validation_format.hpp"
 #include "model/core/error.hpp"
 
 using namespace gmr;
@@ -22,7 +22,12 @@ using namespace gmr::smt;
 namespace {
 ValidationOptions sym_options(int n, MapKind kind, std::vector<int> labels, int max_nodes,
                               unsigned bound, Engine e = Engine::Enum) {
-  return {.n = n, .kind = kind, .labels = std::move(labels), .max_nodes = max_nodes, .bound = bound, .engine = e};
+  return {.n = n,
+          .kind = kind,
+          .labels = std::move(labels),
+          .max_nodes = max_nodes,
+          .bound = bound,
+          .engine = e};
 }
 
 ValidationReport family_report(const std::string& name, const ValidationOptions& o) {
@@ -140,8 +145,8 @@ TEST(SymbolicValidation, RefusesOtherConditions) {
 }
 
 // The cycle oracle's lemmas generalise over the arcs of the labels outside the cycle pairs: on
-// every fourth rule of the 2-G-map family (labels 0,1,2, up to 2 nodes), C_r in each reading is the same
-// with the 1-arcs removed. (Where Theorems 1-2 hold, the validation itself checks every oracle
+// every fourth rule of the 2-G-map family (labels 0,1,2, up to 2 nodes), C_r in each reading is the
+// same with the 1-arcs removed. (Where Theorems 1-2 hold, the validation itself checks every oracle
 // verdict against the built-in condition.)
 TEST(SymbolicValidation, CycleOracleReadsOnlyCycleLabels) {
   const std::vector<std::pair<std::string, CycleReading>> readings = {
@@ -159,7 +164,8 @@ TEST(SymbolicValidation, CycleOracleReadsOnlyCycleLabels) {
     std::vector<bool> verdicts;
     for (const auto& [name, reading] : readings) {
       verdicts.push_back(cycle_condition(r, reading));
-      EXPECT_EQ(verdicts.back(), cycle_condition(without1, reading)) << name << " on " << rule_text(r);
+      EXPECT_EQ(verdicts.back(), cycle_condition(without1, reading))
+          << name << " on " << rule_text(r);
     }
     if (verdicts.front() != verdicts.back()) ++differ;
     // No added node and no changed 0- or 2-arc: C_r holds in every reading (an axiom of the
@@ -168,7 +174,8 @@ TEST(SymbolicValidation, CycleOracleReadsOnlyCycleLabels) {
     for (graph::Side side : graph::kSides) {
       const graph::DGraph& g = r.side(side);
       for (graph::ArcId a : g.arc_slots())
-        if (g.arc_alive(a) && g.arc(a).label != 1 && r.arc_status(side, a) != graph::ElemStatus::Preserved)
+        if (g.arc_alive(a) && g.arc(a).label != 1 &&
+            r.arc_status(side, a) != graph::ElemStatus::Preserved)
           untouched = false;
     }
     if (untouched) {
@@ -219,12 +226,15 @@ TEST(SymbolicValidation, CycleTableAgreesWithLazyLemmas) {
     const SymbolicReport tab = validate_symbolic(name, o);
     o.cycle_table_nodes = 0;
     const SymbolicReport lazy = validate_symbolic(name, o);
-    ASSERT_TRUE(tab.sound_decided && tab.complete_decided && lazy.sound_decided && lazy.complete_decided);
+    ASSERT_TRUE(tab.sound_decided && tab.complete_decided && lazy.sound_decided &&
+                lazy.complete_decided);
     EXPECT_EQ(tab.sound(), lazy.sound()) << name;
     EXPECT_EQ(tab.complete(), lazy.complete()) << name;
     EXPECT_EQ(tab.smallest_incomplete.has_value(), lazy.smallest_incomplete.has_value()) << name;
     if (tab.smallest_incomplete && lazy.smallest_incomplete) {
-      EXPECT_EQ(rule_nodes(tab.smallest_incomplete->rule), rule_nodes(lazy.smallest_incomplete->rule)) << name;
+      EXPECT_EQ(rule_nodes(tab.smallest_incomplete->rule),
+                rule_nodes(lazy.smallest_incomplete->rule))
+          << name;
     }
     EXPECT_GT(tab.cycle_patterns, 0u);
     EXPECT_EQ(tab.cycle_lemmas, 0u) << name;

@@ -1,9 +1,10 @@
+#include "model/core/buffer_pool.hpp"
+
 #include <gtest/gtest.h>
 
 #include <thread>
 #include <vector>
 
-#include "model/core/buffer_pool.hpp"
 #include "model/core/map.hpp"
 
 namespace gmr {
@@ -117,8 +118,8 @@ TEST(BufferPool, ResizeForOverwriteLeavesAPooledTableUnfilled) {
 TEST(BufferPool, AMapDestroyedAfterThePoolFreesItsArrays) {
   std::thread([] {
     thread_local Map outliving(2, MapKind::GMap);  // constructed first: destroyed last
-    outliving.add_darts(size_t(1) << 19);  // link arrays the pool keeps; the
-                                           // pool is constructed here, after the map
+    outliving.add_darts(size_t(1) << 19);          // link arrays the pool keeps; the
+                                                   // pool is constructed here, after the map
     Map scratch(2, MapKind::GMap);
     scratch.add_darts(size_t(1) << 19);
   }).join();

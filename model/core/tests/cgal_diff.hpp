@@ -15,13 +15,12 @@
 #include <utility>
 #include <vector>
 
-#include "model/testing/cgal_generalized_map.hpp"
-
 #include "model/core/map.hpp"
 #include "model/core/orbit.hpp"
-#include "model/testing/random_maps.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/cgal_generalized_map.hpp"
+#include "model/testing/random_maps.hpp"
 
 namespace cgal_diff {
 
@@ -128,7 +127,8 @@ inline bool break_involution(Map& g, gmr::testing::Rng& rng) {
   for (int t = 0; t < 100; ++t) {
     const Dart d = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)];
     const Dart x = ds[gmr::testing::uniform(rng, 0, ds.size() - 1)];
-    const int i = static_cast<int>(gmr::testing::uniform(rng, 0, static_cast<uint64_t>(g.dimension())));
+    const int i =
+        static_cast<int>(gmr::testing::uniform(rng, 0, static_cast<uint64_t>(g.dimension())));
     if (x == d || x == g.alpha(i, d)) continue;
     g.set_alpha(i, d, x);
     return true;
@@ -255,7 +255,8 @@ void compare_one(const Map& g, gmr::testing::Rng& rng, Stats& st) {
     if (break_involution(b, rng)) {
       const auto rep = rejected_by_both(b);
       bool has_invol = false;
-      for (const auto& v : rep.violations) has_invol |= v.constraint == gmr::Constraint::NonOrientation;
+      for (const auto& v : rep.violations)
+        has_invol |= v.constraint == gmr::Constraint::NonOrientation;
       EXPECT_TRUE(has_invol);
       ++st.broken_involution;
     }

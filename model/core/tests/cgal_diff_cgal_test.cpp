@@ -51,27 +51,21 @@ TEST(CgalDiff, GluedPolygons2D) {
   EXPECT_GT(st.broken_cycle, 40u);
 }
 
-TEST(CgalDiff, GluedPolygons3D) {
-  sweep<3>(Generator::GluedPolygons, 40, "glued polygons n=3");
-}
+TEST(CgalDiff, GluedPolygons3D) { sweep<3>(Generator::GluedPolygons, 40, "glued polygons n=3"); }
 
 TEST(CgalDiff, SewSequence2D) {
   const Stats st = sweep<2>(Generator::SewSequence, 80, "sew sequences n=2");
   EXPECT_GT(st.multi_component, 10u);
 }
 
-TEST(CgalDiff, SewSequence3D) {
-  sweep<3>(Generator::SewSequence, 80, "sew sequences n=3");
-}
+TEST(CgalDiff, SewSequence3D) { sweep<3>(Generator::SewSequence, 80, "sew sequences n=3"); }
 
 TEST(CgalDiff, Polycube3D) {
   const Stats st = sweep<3>(Generator::Polycube, 50, "polycubes n=3");
   EXPECT_GT(st.broken_cycle, 40u);
 }
 
-TEST(CgalDiff, SewSequence4D) {
-  sweep<4>(Generator::SewSequence, 30, "sew sequences n=4");
-}
+TEST(CgalDiff, SewSequence4D) { sweep<4>(Generator::SewSequence, 30, "sew sequences n=4"); }
 
 TEST(CgalDiff, ResewnRandomMaps) {
   // Random resews are mostly non-isomorphic; this sweep only adds volume to the agreement check.
@@ -79,8 +73,8 @@ TEST(CgalDiff, ResewnRandomMaps) {
   for (uint64_t s = 0; s < 60; ++s) {
     Rng rng(s + 424242);
     compare_one<2>(
-        gmr::testing::random_map(rng, s % 2 ? Generator::GluedPolygons : Generator::SewSequence, 2), rng,
-        st);
+        gmr::testing::random_map(rng, s % 2 ? Generator::GluedPolygons : Generator::SewSequence, 2),
+        rng, st);
   }
   report("resewn random maps n=2", st);
   EXPECT_GT(st.resew_non_iso, 0u);

@@ -1,10 +1,11 @@
 // Embeddings: one value per orbit, with a consistency check.
+#include "model/core/embedding.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
 
 #include "model/core/builders.hpp"
-#include "model/core/embedding.hpp"
 
 using namespace gmr;
 

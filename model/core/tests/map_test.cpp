@@ -68,7 +68,8 @@ TEST(Map, LinkedDartsAreAddedWithTheirLinks) {
       out.append(8, [](size_t x) { return static_cast<Dart>(x); });
       return;
     }
-    out.append(3, [&g, i, base](size_t x) { return base + g.alpha(i, static_cast<Dart>(x)); });  // blocks
+    out.append(
+        3, [&g, i, base](size_t x) { return base + g.alpha(i, static_cast<Dart>(x)); });  // blocks
     out.append(5, [&g, i, base](size_t x) { return base + g.alpha(i, static_cast<Dart>(x + 3)); });
   });
   EXPECT_EQ(first, 8u);
@@ -93,7 +94,9 @@ TEST(Map, LinkedDartsWithMissingLinksLeaveTheMapUnchanged) {
     EXPECT_EQ(e.code(), ErrorCode::Usage);
     EXPECT_NE(std::string(e.what()).find("1-links"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(g.add_linked_darts(2, [](int, Dart, LinkAppender&) { throw Error(ErrorCode::Range, "fill"); }), Error);
+  EXPECT_THROW(g.add_linked_darts(
+                   2, [](int, Dart, LinkAppender&) { throw Error(ErrorCode::Range, "fill"); }),
+               Error);
   EXPECT_EQ(g.capacity(), before.capacity());
   for (int i = 0; i <= 2; ++i) EXPECT_EQ(g.links(i), before.links(i)) << i;
   EXPECT_EQ(g.add_darts(70), 6u);  // the markers and the dead set regrow clean
@@ -174,7 +177,8 @@ TEST(Builders, LiftAddsFreeDimensions) {
   EXPECT_EQ(lifted.size(), 48u);
   EXPECT_FALSE(lifted.alive(48));
   EXPECT_TRUE(is_valid(lifted));
-  EXPECT_EQ(count_all_cells(lifted), (std::vector<size_t>{8, 12, 6, 1}));  // one volume bounded by the surface
+  EXPECT_EQ(count_all_cells(lifted),
+            (std::vector<size_t>{8, 12, 6, 1}));  // one volume bounded by the surface
   for (Dart d : lifted.darts()) {
     EXPECT_TRUE(lifted.is_free(3, d));
     for (int i = 0; i <= 2; ++i) EXPECT_EQ(lifted.alpha(i, d), cube.alpha(i, d));

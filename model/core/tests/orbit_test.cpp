@@ -1,9 +1,10 @@
 // Orbits, cells, components, boundary, Euler characteristic, Algorithm 5.
+#include "model/core/orbit.hpp"
+
 #include <gtest/gtest.h>
 
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
-#include "model/core/orbit.hpp"
 #include "model/core/sew.hpp"
 #include "model/core/validity.hpp"
 
@@ -37,7 +38,11 @@ TEST(Orbit, BfsOrderAndSizes) {
 }
 
 TEST(Orbit, CellsOfStandardObjects) {
-  struct Case { Map g; std::vector<size_t> cells; long long chi; };
+  struct Case {
+    Map g;
+    std::vector<size_t> cells;
+    long long chi;
+  };
   std::vector<Case> cases;
   cases.push_back({make_tetrahedron(), {4, 6, 4}, 2});
   cases.push_back({make_square_pyramid(), {5, 8, 5}, 2});
@@ -94,7 +99,8 @@ TEST(Orbit, OrientRejectsOpenAndNonOrientable) {
   std::vector<std::vector<uint32_t>> faces;
   auto id = [](uint32_t x, uint32_t y) { return y == 3 ? (3 - x) % 3 : y * 3 + x % 3; };
   for (uint32_t y = 0; y < 3; ++y)
-    for (uint32_t x = 0; x < 3; ++x) faces.push_back({id(x, y), id(x + 1, y), id(x + 1, y + 1), id(x, y + 1)});
+    for (uint32_t x = 0; x < 3; ++x)
+      faces.push_back({id(x, y), id(x + 1, y), id(x + 1, y + 1), id(x, y + 1)});
   Map klein = surface_from_faces(faces, 9);
   EXPECT_TRUE(is_valid(klein));
   EXPECT_TRUE(is_closed(klein));

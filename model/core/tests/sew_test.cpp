@@ -1,10 +1,11 @@
 // Checked sewing (CGAL/Moka semantics) refuses every sew that would break validity.
+#include "model/core/sew.hpp"
+
 #include <gtest/gtest.h>
 
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
-#include "model/core/sew.hpp"
 #include "model/core/validity.hpp"
 
 using namespace gmr;

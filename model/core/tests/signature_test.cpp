@@ -1,4 +1,6 @@
 // BFS-word signatures (Damiand & Nivoliers §2.4 lifted to G-maps) and isomorphism.
+#include "model/core/signature.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,7 +8,6 @@
 #include <random>
 
 #include "model/core/builders.hpp"
-#include "model/core/signature.hpp"
 
 using namespace gmr;
 

@@ -6,8 +6,8 @@
 
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
-#include "model/testing/random_maps.hpp"
 #include "model/core/validity.hpp"
+#include "model/testing/random_maps.hpp"
 
 using namespace gmr;
 using namespace gmr::testing;
@@ -85,7 +85,8 @@ bool same(const ValidityReport& a, const ValidityReport& b) {
   if (a.truncated != b.truncated || a.violations.size() != b.violations.size()) return false;
   for (size_t k = 0; k < a.violations.size(); ++k) {
     const auto &x = a.violations[k], &y = b.violations[k];
-    if (x.constraint != y.constraint || x.at != y.at || x.i != y.i || x.j != y.j || x.path != y.path)
+    if (x.constraint != y.constraint || x.at != y.at || x.i != y.i || x.j != y.j ||
+        x.path != y.path)
       return false;
   }
   return true;
@@ -153,8 +154,8 @@ TEST(TraversalEquivalence, ValidRandomMaps) {
       for (uint64_t seed = 0; seed < 12; ++seed) {
         Rng rng(seed);
         check_traversals(random_map(rng, gen, n), std::string(to_string(gen)) +
-                                                       " n=" + std::to_string(n) +
-                                                       " seed=" + std::to_string(seed));
+                                                      " n=" + std::to_string(n) +
+                                                      " seed=" + std::to_string(seed));
         if (HasFatalFailure()) return;
       }
 }
@@ -172,7 +173,7 @@ TEST(TraversalEquivalence, InvalidMaps) {
   for (uint64_t seed = 0; seed < 60; ++seed) {
     Rng rng(seed);
     Map g = random_map(rng, seed % 2 ? Generator::SewSequence : Generator::GluedPolygons,
-                         2 + int(seed % 3 == 0));
+                       2 + int(seed % 3 == 0));
     corrupt(g, rng, 1 + static_cast<int>(seed % 4), seed % 5 == 0);
     check_traversals(g, "corrupted seed=" + std::to_string(seed));
     if (HasFatalFailure()) return;

@@ -1,10 +1,11 @@
 // Validity reports every violation with its location (dart, dimensions, path).
+#include "model/core/validity.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "model/core/builders.hpp"
-#include "model/core/validity.hpp"
 
 using namespace gmr;
 
@@ -123,8 +124,12 @@ TEST(Validity, VerdictIsTheDefinitionsOnBrokenGMaps) {
     const int i = static_cast<int>(rng() % static_cast<unsigned>(n + 1));
     const Dart d = dart(), e = dart();
     switch (round % 4) {
-      case 0: g.set_alpha(i, d, cap + static_cast<Dart>(rng() % 3)); break;
-      case 1: g.set_alpha(i, d, e); break;
+      case 0:
+        g.set_alpha(i, d, cap + static_cast<Dart>(rng() % 3));
+        break;
+      case 1:
+        g.set_alpha(i, d, e);
+        break;
       default: {  // d -i- e and d1 -i- e1 for d -i- d1 and e -i- e1
         const Dart d1 = g.alpha(i, d), e1 = g.alpha(i, e);
         if (d == e || d1 == e) break;  // nothing to exchange

@@ -1,9 +1,10 @@
 // DOT text of maps (model/io_dot.hpp): one edge per link coloured per dimension, loops on request,
 // O-map beta_1 as directed arcs, non-reciprocated links dashed.
+#include "model/draw/map_dot.hpp"
+
 #include <gtest/gtest.h>
 
 #include "model/core/builders.hpp"
-#include "model/draw/map_dot.hpp"
 #include "model/testing/count_occurrences.hpp"
 
 using namespace gmr;
@@ -53,7 +54,8 @@ TEST(IoDot, NonReciprocatedLinksAreDashedArrows) {
   g.set_alpha(0, 1, 2);
   g.set_alpha(0, 2, 1);
   const std::string dot = to_dot(g);
-  EXPECT_NE(dot.find("  0 -- 1 [color=black, style=dashed, dir=forward];"), std::string::npos) << dot;
+  EXPECT_NE(dot.find("  0 -- 1 [color=black, style=dashed, dir=forward];"), std::string::npos)
+      << dot;
   EXPECT_NE(dot.find("  1 -- 2 [color=black];"), std::string::npos) << dot;
   EXPECT_EQ(count_occurrences(dot, " -- "), 2u);
 }

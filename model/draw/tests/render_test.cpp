@@ -1,15 +1,16 @@
 // DOT rendering through Graphviz (tools/render.hpp): SVG and PNG bytes, rejected DOT text reported
 // as Error(Parse) with Graphviz's diagnostic, no file left behind on failure.
+#include "model/draw/render.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "model/testing/scratch_dir.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/draw/map_dot.hpp"
 #include "model/map_io/read_file.hpp"
-#include "model/draw/render.hpp"
+#include "model/testing/scratch_dir.hpp"
 
 using namespace gmr;
 using namespace gmr::io;

@@ -1,12 +1,13 @@
 // DOT text of rules (model/io_rule_dot.hpp): L and R clusters, colours per dimension, one edge per
 // link, κ arcs on request, node roles, scheme labels "n0 <_,1,2>", double-bordered hooks, loops.
+#include "model/draw/rule_dot.hpp"
+
 #include <gtest/gtest.h>
 
-#include "model/draw/rule_dot.hpp"
 #include "model/rule_io/rule_json.hpp"
 #include "model/rule_io/scheme_json.hpp"
-#include "model/testing/source_tree.hpp"
 #include "model/testing/count_occurrences.hpp"
+#include "model/testing/source_tree.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -49,7 +50,8 @@ TEST(IoRuleDot, ConcreteRuleSideBySide) {
   EXPECT_EQ(count_occurrences(dot, "subgraph cluster_R {"), 1u);
   EXPECT_NE(dot.find("L0 [label=\"a\"]"), std::string::npos) << dot;
   EXPECT_NE(dot.find("R3 [label=\"d\"]"), std::string::npos) << dot;
-  // Two 0-links per side, one undirected edge each; four deleted 2-loops in L, two added 2-links in R.
+  // Two 0-links per side, one undirected edge each; four deleted 2-loops in L, two added 2-links in
+  // R.
   EXPECT_EQ(count_occurrences(dot, "[color=black, dir=none]"), 4u) << dot;
   EXPECT_EQ(count_occurrences(dot, "[color=blue, penwidth=2.5, dir=none]"), 6u) << dot;
   EXPECT_NE(dot.find("L0 -> L0 [color=blue"), std::string::npos);
@@ -85,8 +87,10 @@ TEST(IoRuleDot, SchemeLabelsHooksLoops) {
   EXPECT_NE(dot.find("L1 [label=\"n1 <0>\", peripheries=2]"), std::string::npos) << dot;
   EXPECT_NE(dot.find("R0 [label=\"n0 <0>\"]"), std::string::npos) << dot;
   EXPECT_EQ(count_occurrences(dot, "peripheries=2"), 2u);  // hooks only, on L
-  EXPECT_NE(dot.find("L0 -> L0 [color=blue, penwidth=2.5]"), std::string::npos) << dot;  // deleted loop
-  EXPECT_NE(dot.find("R0 -> R1 [color=blue, penwidth=2.5]"), std::string::npos) << dot;  // added arc
+  EXPECT_NE(dot.find("L0 -> L0 [color=blue, penwidth=2.5]"), std::string::npos)
+      << dot;  // deleted loop
+  EXPECT_NE(dot.find("R0 -> R1 [color=blue, penwidth=2.5]"), std::string::npos)
+      << dot;  // added arc
 
   const RuleScheme quad = read_scheme_file(source("tools/data/rules/quad_subdivision.json"));
   const std::string q = to_dot(quad);
@@ -100,13 +104,18 @@ TEST(IoRuleDot, SchemeLabelsHooksLoops) {
 TEST(IoRuleDot, Highlights) {
   const RuleScheme sew = read_scheme_file(source("tools/data/rules/sew2.json"));
   RuleDotOptions opt;
-  opt.highlights = {{graph::Side::R, "n1", "X-code", "a message", true}, {std::nullopt, "n0", "W-code", "careful", false}};
+  opt.highlights = {{graph::Side::R, "n1", "X-code", "a message", true},
+                    {std::nullopt, "n0", "W-code", "careful", false}};
   const std::string dot = to_dot(sew, opt);
-  EXPECT_NE(dot.find("R1 [label=\"n1 <0>\", fillcolor=\"#ff9c9c\", tooltip=\"X-code: a message\", style=\"filled\"]"),
+  EXPECT_NE(dot.find("R1 [label=\"n1 <0>\", fillcolor=\"#ff9c9c\", tooltip=\"X-code: a message\", "
+                     "style=\"filled\"]"),
             std::string::npos)
       << dot;
-  EXPECT_NE(dot.find("R1_note [shape=note, fontsize=8, fontcolor=darkred, color=gray, label=\"X-code\"]"), std::string::npos);
+  EXPECT_NE(
+      dot.find("R1_note [shape=note, fontsize=8, fontcolor=darkred, color=gray, label=\"X-code\"]"),
+      std::string::npos);
   EXPECT_NE(dot.find("R1 -> R1_note [style=dotted"), std::string::npos);
-  EXPECT_EQ(dot.find("L1 [label=\"n1 <0>\", peripheries=2, fill"), std::string::npos) << dot;  // R only
-  EXPECT_EQ(count_occurrences(dot, "fillcolor=\"#ffd58a\""), 2u) << dot;                                  // n0 on both sides
+  EXPECT_EQ(dot.find("L1 [label=\"n1 <0>\", peripheries=2, fill"), std::string::npos)
+      << dot;                                                             // R only
+  EXPECT_EQ(count_occurrences(dot, "fillcolor=\"#ffd58a\""), 2u) << dot;  // n0 on both sides
 }

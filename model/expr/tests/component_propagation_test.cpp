@@ -26,7 +26,8 @@ std::string rules_dir() {
 }
 
 // Random values on every orbit of a field (some orbits left without value when `holes`).
-EmbeddingField random_field(gt::Rng& rng, const Map& g, const std::string& name, const OrbitType& o, bool holes) {
+EmbeddingField random_field(gt::Rng& rng, const Map& g, const std::string& name, const OrbitType& o,
+                            bool holes) {
   EmbeddingField f = EmbeddingField::numeric(name, o);
   for (Dart rep : orbit_representatives(g, o)) {
     if (holes && gt::chance(rng, 10)) continue;
@@ -54,7 +55,8 @@ struct Outcome {
   bool threw = false;
 };
 
-Outcome run(const scheme::SchemeEngine& engine, const CompiledScheme& cs, EmbeddedMap& m, bool by_components) {
+Outcome run(const scheme::SchemeEngine& engine, const CompiledScheme& cs, EmbeddedMap& m,
+            bool by_components) {
   Outcome out;
   EmbeddingPropagation p(cs, m);
   try {
@@ -72,14 +74,17 @@ Outcome run(const scheme::SchemeEngine& engine, const CompiledScheme& cs, Embedd
   return out;
 }
 
-bool close(double a, double b) { return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)}); }
+bool close(double a, double b) {
+  return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)});
+}
 
 void expect_same(const EmbeddedMap& a, const EmbeddedMap& b, const std::string& where) {
   ASSERT_EQ(a.map.capacity(), b.map.capacity()) << where;
   for (Dart d = 0; d < a.map.capacity(); ++d) {
     ASSERT_EQ(a.map.alive(d), b.map.alive(d)) << where;
     if (!a.map.alive(d)) continue;
-    for (int i = 0; i <= a.map.dimension(); ++i) ASSERT_EQ(a.map.alpha(i, d), b.map.alpha(i, d)) << where;
+    for (int i = 0; i <= a.map.dimension(); ++i)
+      ASSERT_EQ(a.map.alpha(i, d), b.map.alpha(i, d)) << where;
     for (size_t f = 0; f < a.fields.size(); ++f) {
       const auto& x = a.fields[f].values;
       const auto& y = b.fields[f].values;
@@ -87,12 +92,14 @@ void expect_same(const EmbeddedMap& a, const EmbeddedMap& b, const std::string& 
       if (!x.has(d)) continue;
       for (size_t k = 0; k < 3; ++k)
         ASSERT_TRUE(close(x.get(d)[k], y.get(d)[k]))
-            << where << ", " << x.name() << ", dart " << d << ": " << x.get(d)[k] << " vs " << y.get(d)[k];
+            << where << ", " << x.name() << ", dart " << d << ": " << x.get(d)[k] << " vs "
+            << y.get(d)[k];
     }
   }
 }
 
-size_t compare(const scheme::RuleScheme& s, const EmbeddedMap& m0, int iterations, const std::string& where) {
+size_t compare(const scheme::RuleScheme& s, const EmbeddedMap& m0, int iterations,
+               const std::string& where) {
   const scheme::SchemeEngine engine(s);
   const CompiledScheme cs = compile_scheme(s);
   EmbeddedMap a = m0, b = m0;
@@ -112,8 +119,8 @@ size_t compare(const scheme::RuleScheme& s, const EmbeddedMap& m0, int iteration
 }
 
 TEST(ComponentPropagation, SubdivisionSchemesOnRandomSurfacesGiveTheGeneralPathsValues) {
-  for (const char* file : {"quad_subdivision.json", "loop_subdivision.json", "sqrt3_subdivision.json",
-                           "doo_sabin_subdivision.json"}) {
+  for (const char* file : {"quad_subdivision.json", "loop_subdivision.json",
+                           "sqrt3_subdivision.json", "doo_sabin_subdivision.json"}) {
     const scheme::RuleScheme s = io::read_scheme_file(rules_dir() + file);
     for (uint64_t seed = 0; seed < 12; ++seed) {
       gt::Rng rng(seed);
@@ -122,7 +129,8 @@ TEST(ComponentPropagation, SubdivisionSchemesOnRandomSurfacesGiveTheGeneralPaths
       opt.connected = seed % 3 != 0;
       opt.max_extra_sews = 12;
       const Map g = gt::random_glued_polygons(rng, opt);
-      compare(s, random_embedded(rng, g, seed % 2 == 0), 2, std::string(file) + ", seed " + std::to_string(seed));
+      compare(s, random_embedded(rng, g, seed % 2 == 0), 2,
+              std::string(file) + ", seed " + std::to_string(seed));
     }
   }
 }

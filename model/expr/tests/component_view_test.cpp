@@ -3,6 +3,8 @@
 // a copy otherwise), the same values bit for bit for the expressions of
 // the four subdivision schemes at every orbit dart (tree and program, memo mode), and an
 // evaluation error of an application located on the map, not on the view.
+#include "model/expr/component_view.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -12,7 +14,6 @@
 
 #include "model/core/orbit.hpp"
 #include "model/expr/compiled_scheme.hpp"
-#include "model/expr/component_view.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/expr/propagation.hpp"
 #include "model/rule_io/scheme_json.hpp"
@@ -25,8 +26,8 @@ namespace gt = gmr::testing;
 // Named (the test files of a module are compiled together): no clash with the others' helpers.
 namespace component_view_test {
 
-const char* const kSchemes[] = {"quad_subdivision.json", "loop_subdivision.json", "sqrt3_subdivision.json",
-                                "doo_sabin_subdivision.json"};
+const char* const kSchemes[] = {"quad_subdivision.json", "loop_subdivision.json",
+                                "sqrt3_subdivision.json", "doo_sabin_subdivision.json"};
 
 std::string rules_dir() {
   const char* s = std::getenv("GMR_SOURCE_DIR");
@@ -83,7 +84,8 @@ class ViewChecker : public scheme::ApplicationObserver, public scheme::Component
     const Embedding<Vec3>& on_map = m_.fields[0].values;
     const Embedding<Vec3>& on_view = v.fields[0]->values;
     for (uint32_t b = 0; b < c.size(); ++b) {
-      for (int i = 0; i <= g.dimension(); ++i) ASSERT_EQ(c.darts[v.map().alpha(i, b)], g.alpha(i, c.darts[b]));
+      for (int i = 0; i <= g.dimension(); ++i)
+        ASSERT_EQ(c.darts[v.map().alpha(i, b)], g.alpha(i, c.darts[b]));
       ASSERT_EQ(on_view.slot(b), on_map.slot(c.darts[b]));
     }
     ASSERT_EQ(on_view.num_values(), on_map.num_values());
@@ -150,7 +152,8 @@ TEST(ComponentView, AnEvaluationErrorNamesADartOfTheMap) {
   using namespace component_view_test;
   // A vertex without position: the application fails, and the dart the error names is one of the
   // map's darts without a position (the view numbers darts otherwise).
-  const scheme::RuleScheme s = io::read_scheme_file(component_view_test::rules_dir() + "loop_subdivision.json");
+  const scheme::RuleScheme s =
+      io::read_scheme_file(component_view_test::rules_dir() + "loop_subdivision.json");
   const scheme::SchemeEngine engine(s);
   const CompiledScheme cs = compile_scheme(s);
   size_t checked = 0;
@@ -159,8 +162,10 @@ TEST(ComponentView, AnEvaluationErrorNamesADartOfTheMap) {
     const Map g = random_surface(seed * 3 + 1);  // connected: one component, evaluated on its view
     EmbeddedMap m = random_positions(rng, g);
     const auto vertices = orbit_representatives(g, OrbitType{1, 2});
-    const Dart hole = vertices[static_cast<size_t>(gt::uniform(rng, 0, static_cast<int>(vertices.size()) - 1))];
-    for (Dart x : orbit(g, OrbitType{1, 2}, hole)) m.fields[0].values.set_slot(g, x, Embedding<Vec3>::kNoValue);
+    const Dart hole =
+        vertices[static_cast<size_t>(gt::uniform(rng, 0, static_cast<int>(vertices.size()) - 1))];
+    for (Dart x : orbit(g, OrbitType{1, 2}, hole))
+      m.fields[0].values.set_slot(g, x, Embedding<Vec3>::kNoValue);
     const EmbeddedMap before = m;
     EmbeddingPropagation p(cs, m);
     try {
@@ -174,7 +179,8 @@ TEST(ComponentView, AnEvaluationErrorNamesADartOfTheMap) {
       EXPECT_TRUE(before.map.alive(d)) << what;
       EXPECT_FALSE(before.fields[0].values.has(d)) << "seed " << seed << ": " << what;
       // The values evaluated before the failing class are dropped with it: nothing was rewritten.
-      EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values()) << "seed " << seed;
+      EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values())
+          << "seed " << seed;
       EXPECT_EQ(m.map.size(), before.map.size()) << "seed " << seed;
       ++checked;
     }
@@ -189,8 +195,10 @@ TEST(ComponentView, ValuesAreTheGeneralPathsBitForBitWhenNothingIsFused) {
   // every value is the same to the bit. An orbit listed in another order than the walk's changes
   // the last bits of some barycentre.
   using namespace component_view_test;
-  scheme::RuleScheme s = io::read_scheme_file(component_view_test::rules_dir() + "loop_subdivision.json");
-  s.right.nodes[0].expressions[0].code = "middle(middle([e@0.position | e in <1,2>/<0,2>(n0)]), n0.position)";
+  scheme::RuleScheme s =
+      io::read_scheme_file(component_view_test::rules_dir() + "loop_subdivision.json");
+  s.right.nodes[0].expressions[0].code =
+      "middle(middle([e@0.position | e in <1,2>/<0,2>(n0)]), n0.position)";
   s.right.nodes[1].expressions[0].code = "middle(n0.position, n0@0.position, n0@1@0.position)";
   const scheme::SchemeEngine engine(s);
   const CompiledScheme cs = compile_scheme(s);
@@ -225,10 +233,12 @@ TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
   // positions; the map's fields are position then shade, and one vertex has no shade: the
   // positions are evaluated and appended first, then the shade fails, and both fields are left as
   // they were.
-  nlohmann::json doc = nlohmann::json::parse(std::ifstream(component_view_test::rules_dir() + "loop_subdivision.json"));
+  nlohmann::json doc = nlohmann::json::parse(
+      std::ifstream(component_view_test::rules_dir() + "loop_subdivision.json"));
   doc["embeddings"].push_back({{"name", "shade"}, {"orbit", "<1,2>"}, {"type", "point"}});
   doc["right"]["nodes"][0]["expressions"].push_back({{"embedding", "shade"}, {"code", "n0.shade"}});
-  doc["right"]["nodes"][1]["expressions"].push_back({{"embedding", "shade"}, {"code", "(n0.shade + n0@0.shade) / 2"}});
+  doc["right"]["nodes"][1]["expressions"].push_back(
+      {{"embedding", "shade"}, {"code", "(n0.shade + n0@0.shade) / 2"}});
   const scheme::RuleScheme s = io::scheme_from_json(doc, "loop with shade");
   const scheme::SchemeEngine engine(s);
   const CompiledScheme cs = compile_scheme(s);
@@ -238,7 +248,8 @@ TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
     EmbeddedMap m = random_positions(rng, g);
     EmbeddingField shade = EmbeddingField::numeric("shade", OrbitType{1, 2});
     const auto vertices = orbit_representatives(g, OrbitType{1, 2});
-    for (size_t i = 1; i < vertices.size(); ++i) shade.values.set(g, vertices[i], Vec3{static_cast<double>(i), 2.0, 3.0});
+    for (size_t i = 1; i < vertices.size(); ++i)
+      shade.values.set(g, vertices[i], Vec3{static_cast<double>(i), 2.0, 3.0});
     m.fields.push_back(std::move(shade));
     const EmbeddedMap before = m;
     EmbeddingPropagation p(cs, m);
@@ -246,8 +257,10 @@ TEST(ComponentView, AFailingFieldDropsTheValuesOfEveryField) {
                  Error)
         << "seed " << seed;
     ASSERT_GT(before.fields[0].values.num_values(), 0u);
-    EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values()) << "seed " << seed;
-    EXPECT_EQ(m.fields[1].values.num_values(), before.fields[1].values.num_values()) << "seed " << seed;
+    EXPECT_EQ(m.fields[0].values.num_values(), before.fields[0].values.num_values())
+        << "seed " << seed;
+    EXPECT_EQ(m.fields[1].values.num_values(), before.fields[1].values.num_values())
+        << "seed " << seed;
     EXPECT_EQ(m.map.size(), before.map.size()) << "seed " << seed;
   }
 }

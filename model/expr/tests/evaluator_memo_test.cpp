@@ -32,15 +32,20 @@ const MemoCase kMemoExpressions[] = {
     {"count([0 | e in <0,1,2>/<1>(n0)])", ValueType::Scalar},
     {"middle([e@0.position | e in <1,2>/<0,2>(n0)])", ValueType::Point},
     {"middle([middle(<0,1>_position(f)) | f in <1,2>/<0,1>(n0)])", ValueType::Point},
-    {"middle([middle([x@0.position | x in <0,1>/<1,2>(f)]) | f in <1,2>/<0,1>(n0)])", ValueType::Point},
-    {"let n = count([0 | e in <1,2>/<0,2>(n0)]) in (middle([middle(<0,1>_position(f)) | f in <1,2>/<0,1>(n0)]) + "
+    {"middle([middle([x@0.position | x in <0,1>/<1,2>(f)]) | f in <1,2>/<0,1>(n0)])",
+     ValueType::Point},
+    {"let n = count([0 | e in <1,2>/<0,2>(n0)]) in (middle([middle(<0,1>_position(f)) | f in "
+     "<1,2>/<0,1>(n0)]) + "
      "2 * middle([middle(<0>_position(e)) | e in <1,2>/<0,2>(n0)]) + (n - 3) * n0.position) / n",
      ValueType::Point},
-    {"(n0.position + n0@0.position + middle(<0,1>_position(n0)) + middle(<0,1>_position(n0@2))) / 4",
+    {"(n0.position + n0@0.position + middle(<0,1>_position(n0)) + middle(<0,1>_position(n0@2))) / "
+     "4",
      ValueType::Point},
 };
 
-bool memo_close(double a, double b) { return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)}); }
+bool memo_close(double a, double b) {
+  return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)});
+}
 
 // A random surface of the seed's kind: 1-gons and 2-gons on even seeds (faces through one vertex
 // twice), disconnected on every third seed.
@@ -63,8 +68,10 @@ TEST(EvaluatorMemo, MemoModeGivesThePlainValuesEverywhere) {
     const Map g = varied_surface(seed, rng);
     EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
-      pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)), static_cast<double>(gt::uniform(rng, 0, 1000)),
-                            static_cast<double>(gt::uniform(rng, 0, 1000))});
+      pos.values.set(g, r,
+                     {static_cast<double>(gt::uniform(rng, 0, 1000)),
+                      static_cast<double>(gt::uniform(rng, 0, 1000)),
+                      static_cast<double>(gt::uniform(rng, 0, 1000))});
     for (const auto& [code, t] : kMemoExpressions) {
       auto e = parse_expression(code);
       check_expression(*e, ctx, t);
@@ -86,7 +93,8 @@ TEST(EvaluatorMemo, MemoModeGivesThePlainValuesEverywhere) {
         }
         ASSERT_EQ(fa, fb) << code << ", seed " << seed << ", dart " << d;
         if (fa) continue;
-        ASSERT_TRUE(memo_close(a.x, b.x) && memo_close(a.y, b.y) && memo_close(a.z, b.z) && memo_close(a.w, b.w))
+        ASSERT_TRUE(memo_close(a.x, b.x) && memo_close(a.y, b.y) && memo_close(a.z, b.z) &&
+                    memo_close(a.w, b.w))
             << code << ", seed " << seed << ", dart " << d << ": " << a.x << " vs " << b.x;
         ++compared;
       }
@@ -96,17 +104,18 @@ TEST(EvaluatorMemo, MemoModeGivesThePlainValuesEverywhere) {
 }
 
 // Memo mode lists the darts of an <a,b>-orbit without a marker (cycles and paths: the surfaces
-// have boundaries); the order must be the marked walk's, since it decides the first dart met of each
-// <c>-orbit (x@k.position below depends on it) and the order of the floating-point sum (positions
-// that are not dyadic): memo and plain values are equal bit for bit.
+// have boundaries); the order must be the marked walk's, since it decides the first dart met of
+// each <c>-orbit (x@k.position below depends on it) and the order of the floating-point sum
+// (positions that are not dyadic): memo and plain values are equal bit for bit.
 TEST(EvaluatorMemo, TwoDimensionOrbitsAreListedInTheMarkedWalksOrder) {
   const std::vector<EmbeddingSignature> sigs{{"position", OrbitType{1, 2}, ValueType::Point}};
   CheckContext ctx;
   ctx.nodes = {"n0"};
   ctx.embeddings = sigs;
-  const char* codes[] = {"middle([x@0.position | x in <1,2>/<2>(n0)])", "middle([x@1.position | x in <0,1>/<0>(n0)])",
-                         "middle([x@1.position | x in <0,2>/<>(n0)])", "middle([x@2@0.position | x in <1,2>/<>(n0)])",
-                         "middle([x@0@1.position | x in <0,2>/<2>(n0)])"};
+  const char* codes[] = {
+      "middle([x@0.position | x in <1,2>/<2>(n0)])", "middle([x@1.position | x in <0,1>/<0>(n0)])",
+      "middle([x@1.position | x in <0,2>/<>(n0)])", "middle([x@2@0.position | x in <1,2>/<>(n0)])",
+      "middle([x@0@1.position | x in <0,2>/<2>(n0)])"};
   size_t compared = 0, paths = 0;
   for (uint64_t seed = 0; seed < 30; ++seed) {
     gt::Rng rng(700 + seed);
@@ -114,8 +123,10 @@ TEST(EvaluatorMemo, TwoDimensionOrbitsAreListedInTheMarkedWalksOrder) {
     for (Dart d : g.darts()) paths += g.is_free(2, d) ? 1 : 0;
     EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
-      pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)) / 7.0, static_cast<double>(gt::uniform(rng, 0, 1000)) / 3.0,
-                            static_cast<double>(gt::uniform(rng, 0, 1000)) / 11.0});
+      pos.values.set(g, r,
+                     {static_cast<double>(gt::uniform(rng, 0, 1000)) / 7.0,
+                      static_cast<double>(gt::uniform(rng, 0, 1000)) / 3.0,
+                      static_cast<double>(gt::uniform(rng, 0, 1000)) / 11.0});
     for (const char* code : codes) {
       auto e = parse_expression(code);
       check_expression(*e, ctx, ValueType::Point);
@@ -125,8 +136,8 @@ TEST(EvaluatorMemo, TwoDimensionOrbitsAreListedInTheMarkedWalksOrder) {
       for (Dart d : g.darts()) {
         const Val a = plain.evaluate(*e, &d, ValueType::Point, "test");
         const Val b = memo.evaluate(*e, &d, ValueType::Point, "test");
-        ASSERT_TRUE(std::memcmp(&a, &b, sizeof a) == 0) << code << ", seed " << seed << ", dart " << d << ": " << a.x
-                                                        << " vs " << b.x;
+        ASSERT_TRUE(std::memcmp(&a, &b, sizeof a) == 0)
+            << code << ", seed " << seed << ", dart " << d << ": " << a.x << " vs " << b.x;
         ++compared;
       }
     }
@@ -146,8 +157,9 @@ TEST(EvaluatorMemo, LoadsThroughHeldTablesGiveTheTreesValuesAndErrors) {
   ctx.embeddings = sigs;
   std::vector<std::pair<std::string, ValueType>> codes;
   for (const auto& [code, t] : kMemoExpressions) codes.emplace_back(code, t);
-  for (const char* code : {"(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8",
-                           "middle([x@2@0.position | x in <1,2>/<>(n0)])", "n0@1@0.position"})
+  for (const char* code :
+       {"(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8",
+        "middle([x@2@0.position | x in <1,2>/<>(n0)])", "n0@1@0.position"})
     codes.emplace_back(code, ValueType::Point);
   size_t compared = 0, errors = 0;
   for (uint64_t seed = 0; seed < 30; ++seed) {
@@ -155,9 +167,12 @@ TEST(EvaluatorMemo, LoadsThroughHeldTablesGiveTheTreesValuesAndErrors) {
     const Map g = varied_surface(seed, rng);
     EmbeddingField pos = EmbeddingField::numeric("position", OrbitType{1, 2});
     for (Dart r : orbit_representatives(g, OrbitType{1, 2}))
-      if (seed % 4 != 3 || gt::uniform(rng, 0, 9) != 0)  // every fourth surface: a few vertices without position
-        pos.values.set(g, r, {static_cast<double>(gt::uniform(rng, 0, 1000)) / 7.0, static_cast<double>(gt::uniform(rng, 0, 1000)) / 3.0,
-                              static_cast<double>(gt::uniform(rng, 0, 1000)) / 11.0});
+      if (seed % 4 != 3 ||
+          gt::uniform(rng, 0, 9) != 0)  // every fourth surface: a few vertices without position
+        pos.values.set(g, r,
+                       {static_cast<double>(gt::uniform(rng, 0, 1000)) / 7.0,
+                        static_cast<double>(gt::uniform(rng, 0, 1000)) / 3.0,
+                        static_cast<double>(gt::uniform(rng, 0, 1000)) / 11.0});
     for (const auto& [code, type] : codes) {
       auto e = parse_expression(code);
       check_expression(*e, ctx, type);
@@ -186,10 +201,12 @@ TEST(EvaluatorMemo, LoadsThroughHeldTablesGiveTheTreesValuesAndErrors) {
           continue;
         }
         if (program->fused)
-          ASSERT_TRUE(memo_close(a.x, b.x) && memo_close(a.y, b.y) && memo_close(a.z, b.z) && memo_close(a.w, b.w))
+          ASSERT_TRUE(memo_close(a.x, b.x) && memo_close(a.y, b.y) && memo_close(a.z, b.z) &&
+                      memo_close(a.w, b.w))
               << code << ", seed " << seed << ", dart " << d;
         else
-          ASSERT_TRUE(std::memcmp(&a, &b, sizeof a) == 0) << code << ", seed " << seed << ", dart " << d << ": " << a.x << " vs " << b.x;
+          ASSERT_TRUE(std::memcmp(&a, &b, sizeof a) == 0)
+              << code << ", seed " << seed << ", dart " << d << ": " << a.x << " vs " << b.x;
         ++compared;
       }
     }

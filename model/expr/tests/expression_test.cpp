@@ -6,9 +6,9 @@
 
 #include <cstdlib>
 
-#include "model/core/validity.hpp"
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
+#include "model/core/validity.hpp"
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/expr/parser.hpp"
@@ -60,8 +60,8 @@ StaticType type_of(const std::string& code, ValueType t) {
 TEST(ExpressionParser, RoundTripsThroughText) {
   for (const char* code :
        {"n0.position", "n0@1@0.position", "middle(<0,1>_position(n0))", "<>_position(n0)",
-        "(n0.position + n0@0.position) / 2", "0.25 * n0.position + 0.75 * n1.position", "-n0.normal",
-        "[middle(<0,1>_position(f)) | f in <1,2>/<0,1>(n0)]", "let k = 3 in k * k",
+        "(n0.position + n0@0.position) / 2", "0.25 * n0.position + 0.75 * n1.position",
+        "-n0.normal", "[middle(<0,1>_position(f)) | f in <1,2>/<0,1>(n0)]", "let k = 3 in k * k",
         "[x.position | x, k in (@0@1)*(n0)]", "colour(1, 0.5, 0)"}) {
     auto e = parse_expression(code);
     const std::string text = to_text(*e);
@@ -86,7 +86,8 @@ TEST(ExpressionParser, ErrorsNameTheColumn) {
   EXPECT_EQ(loc("<0,0>_position(n0)"), "rule r, R node n1, embedding position, column 1");
   EXPECT_EQ(loc("n0.position $"), "rule r, R node n1, embedding position, column 13");
   EXPECT_EQ(loc(""), "rule r, R node n1, embedding position, column 1");
-  EXPECT_EQ(loc("[n0.position | x on <0>/<1>(n0)]"), "rule r, R node n1, embedding position, column 18");
+  EXPECT_EQ(loc("[n0.position | x on <0>/<1>(n0)]"),
+            "rule r, R node n1, embedding position, column 18");
 }
 
 TEST(ExpressionParser, HostileInputStaysWithinTheLimits) {
@@ -109,7 +110,8 @@ TEST(ExpressionParser, HostileInputStaysWithinTheLimits) {
   } catch (const Error& e) {
     EXPECT_NE(e.message().find("longer than 4096"), std::string::npos) << e.message();
   }
-  const std::string nested = std::string(kMaxExpressionNesting - 1, '(') + "1" + std::string(kMaxExpressionNesting - 1, ')');
+  const std::string nested = std::string(kMaxExpressionNesting - 1, '(') + "1" +
+                             std::string(kMaxExpressionNesting - 1, ')');
   EXPECT_NO_THROW(parse_expression(nested));
   // A dimension far out of range in an orbit type (found by the fuzzer: a shift by 99999999).
   EXPECT_THROW(parse_expression("<0,99999999>_position(n0)"), Error);
@@ -130,31 +132,44 @@ TEST(ExpressionTypes, AffineMassesPointsAndVectors) {
   const auto [where, msg] = error_of("n0.position + n1.position", ValueType::Point);
   EXPECT_EQ(where, "test, column 1");
   EXPECT_NE(msg.find("affine combination of mass 2"), std::string::npos) << msg;
-  EXPECT_NE(error_of("n0.position", ValueType::Vector).second.find("is a point"), std::string::npos);
+  EXPECT_NE(error_of("n0.position", ValueType::Vector).second.find("is a point"),
+            std::string::npos);
 }
 
 TEST(ExpressionTypes, ColoursScalarsAndMultisets) {
-  EXPECT_EQ(type_of("clamp(0.5 * n0.colour + colour(1, 0, 0) / 2)", ValueType::Colour).str(), "colour");
+  EXPECT_EQ(type_of("clamp(0.5 * n0.colour + colour(1, 0, 0) / 2)", ValueType::Colour).str(),
+            "colour");
   EXPECT_EQ(type_of("count(<0,1>_colour(n0)) + cos(pi)", ValueType::Scalar).str(), "scalar");
-  EXPECT_NE(error_of("n0.colour + n0.position", ValueType::Colour).second.find("no operator colour + point"),
+  EXPECT_NE(error_of("n0.colour + n0.position", ValueType::Colour)
+                .second.find("no operator colour + point"),
             std::string::npos);
-  EXPECT_NE(error_of("<0,1>_position(n0)", ValueType::Point).second.find("multiset of point"), std::string::npos);
-  EXPECT_NE(error_of("2 * <0>_position(n0)", ValueType::Point).second.find("no operator"), std::string::npos);
-  EXPECT_NE(error_of("middle(n0.position)", ValueType::Point).second.find("takes a multiset"), std::string::npos);
+  EXPECT_NE(error_of("<0,1>_position(n0)", ValueType::Point).second.find("multiset of point"),
+            std::string::npos);
+  EXPECT_NE(error_of("2 * <0>_position(n0)", ValueType::Point).second.find("no operator"),
+            std::string::npos);
+  EXPECT_NE(error_of("middle(n0.position)", ValueType::Point).second.find("takes a multiset"),
+            std::string::npos);
   EXPECT_NE(error_of("dot(n0.position, n0.normal)", ValueType::Scalar).second.find("takes vectors"),
             std::string::npos);
 }
 
 TEST(ExpressionTypes, NamesAreResolved) {
-  EXPECT_EQ(error_of("n7.position", ValueType::Point), std::make_pair(std::string("test, column 1"), std::string("unknown node n7")));
-  EXPECT_NE(error_of("n2.position", ValueType::Point).second.find("added by the rule"), std::string::npos);
-  EXPECT_NE(error_of("n0.pos", ValueType::Point).second.find("unknown embedding 'pos'"), std::string::npos);
-  EXPECT_NE(error_of("n0@3.position", ValueType::Point).second.find("outside 0..2"), std::string::npos);
-  EXPECT_NE(error_of("frobnicate(n0.position)", ValueType::Point).second.find("unknown function"), std::string::npos);
+  EXPECT_EQ(error_of("n7.position", ValueType::Point),
+            std::make_pair(std::string("test, column 1"), std::string("unknown node n7")));
+  EXPECT_NE(error_of("n2.position", ValueType::Point).second.find("added by the rule"),
+            std::string::npos);
+  EXPECT_NE(error_of("n0.pos", ValueType::Point).second.find("unknown embedding 'pos'"),
+            std::string::npos);
+  EXPECT_NE(error_of("n0@3.position", ValueType::Point).second.find("outside 0..2"),
+            std::string::npos);
+  EXPECT_NE(error_of("frobnicate(n0.position)", ValueType::Point).second.find("unknown function"),
+            std::string::npos);
   EXPECT_EQ(error_of("n0.position + x", ValueType::Point).first, "test, column 15");
   // Comprehension variables shadow nodes and are scoped to their body.
   EXPECT_EQ(type_of("middle([n1.position | n1 in <1>/<>(n0)])", ValueType::Point).str(), "point");
-  EXPECT_EQ(error_of("middle([x.position | x in <1>/<>(n0)]) + x.position - n0.position", ValueType::Point).second,
+  EXPECT_EQ(error_of("middle([x.position | x in <1>/<>(n0)]) + x.position - n0.position",
+                     ValueType::Point)
+                .second,
             "unknown node x");
 }
 
@@ -200,7 +215,8 @@ TEST(ExpressionEvaluation, NeighboursReadLeftToRight) {
 
 TEST(ExpressionEvaluation, RunTimeMassIsChecked) {
   Square sq;
-  EXPECT_NO_THROW(sq.eval("let n = count(<0,1>_position(n0)) in (n0.position + (n - 1) * n0@0.position) / n", 0));
+  EXPECT_NO_THROW(sq.eval(
+      "let n = count(<0,1>_position(n0)) in (n0.position + (n - 1) * n0@0.position) / n", 0));
   try {
     sq.eval("let n = count(<0,1>_position(n0)) in (n0.position + n * n0@0.position) / n", 0);
     ADD_FAILURE() << "no error";
@@ -212,7 +228,9 @@ TEST(ExpressionEvaluation, RunTimeMassIsChecked) {
 
 namespace {
 
-scheme::RuleScheme vertex_insertion() { return io::read_scheme_file(source("tools/data/rules/vertex_insertion.json")); }
+scheme::RuleScheme vertex_insertion() {
+  return io::read_scheme_file(source("tools/data/rules/vertex_insertion.json"));
+}
 
 }  // namespace
 
@@ -231,7 +249,7 @@ TEST(ExpressionPropagation, VertexInsertionGivesMidpoints) {
     const Vec3 v = sq.m.find("position")->values.get(r);
     pts.insert({v[0], v[1]});
   }
-  const std::multiset<std::pair<double, double>> want = {{0, 0}, {1, 0},   {1, 1},   {0, 1},
+  const std::multiset<std::pair<double, double>> want = {{0, 0},   {1, 0},   {1, 1},   {0, 1},
                                                          {0.5, 0}, {1, 0.5}, {0.5, 1}, {0, 0.5}};
   EXPECT_EQ(pts, want);
 }
@@ -292,10 +310,12 @@ TEST(ExpressionReader, LocatesExpressionErrors) {
     io::parse_scheme(doc, "q.json");
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
-    EXPECT_EQ(e.location(), "q.json:$.right.nodes[1].expressions[0].code (rule q, node n1), column 28");
+    EXPECT_EQ(e.location(),
+              "q.json:$.right.nodes[1].expressions[0].code (rule q, node n1), column 28");
   }
   std::string undeclared = doc;
-  undeclared.replace(undeclared.find("\"embedding\": \"position\""), 23, "\"embedding\": \"colour\"");
+  undeclared.replace(undeclared.find("\"embedding\": \"position\""), 23,
+                     "\"embedding\": \"colour\"");
   try {
     io::parse_scheme(undeclared, "q.json");
     ADD_FAILURE() << "no error";
@@ -305,8 +325,10 @@ TEST(ExpressionReader, LocatesExpressionErrors) {
 }
 
 TEST(ExpressionReader, EmbeddingsRoundTrip) {
-  for (const char* f : {"quad_subdivision", "loop_subdivision", "sqrt3_subdivision", "doo_sabin_subdivision"}) {
-    const scheme::RuleScheme s = io::read_scheme_file(source(std::string("tools/data/rules/") + f + ".json"));
+  for (const char* f :
+       {"quad_subdivision", "loop_subdivision", "sqrt3_subdivision", "doo_sabin_subdivision"}) {
+    const scheme::RuleScheme s =
+        io::read_scheme_file(source(std::string("tools/data/rules/") + f + ".json"));
     ASSERT_EQ(s.embeddings.size(), 1u);
     EXPECT_EQ(io::parse_scheme(io::scheme_to_json_text(s)), s) << f;
     EXPECT_NO_THROW(compile_scheme(s));

@@ -3,6 +3,8 @@
 // the same error message at every dart of random surfaces, plain and in memo mode, for the
 // expressions of the four library subdivision schemes and for random expressions; constant
 // folding; fused combinations.
+#include "model/expr/program.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +18,6 @@
 #include "model/expr/compiled_scheme.hpp"
 #include "model/expr/evaluator.hpp"
 #include "model/expr/parser.hpp"
-#include "model/expr/program.hpp"
 #include "model/expr/type_check.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/testing/random_maps.hpp"
@@ -33,7 +34,7 @@ std::string rules_dir() {
 }
 
 const std::vector<EmbeddingSignature> kSigs{{"position", OrbitType{1, 2}, ValueType::Point},
-                                             {"weight", OrbitType{0, 1}, ValueType::Scalar}};
+                                            {"weight", OrbitType{0, 1}, ValueType::Scalar}};
 
 CheckContext context() {
   CheckContext ctx;
@@ -67,10 +68,14 @@ Surface random_surface(uint64_t seed) {
   opt.connected = seed % 3 != 0;
   Surface s;
   s.g = gt::random_glued_polygons(rng, opt);
-  auto coordinate = [&] { return static_cast<double>(gt::uniform(rng, 0, 1 << 20)) / 4096.0 - 128.0; };
-  for (Dart r : orbit_representatives(s.g, OrbitType{1, 2})) s.pos.values.set(s.g, r, {coordinate(), coordinate(), coordinate()});
+  auto coordinate = [&] {
+    return static_cast<double>(gt::uniform(rng, 0, 1 << 20)) / 4096.0 - 128.0;
+  };
+  for (Dart r : orbit_representatives(s.g, OrbitType{1, 2}))
+    s.pos.values.set(s.g, r, {coordinate(), coordinate(), coordinate()});
   for (Dart r : orbit_representatives(s.g, OrbitType{0, 1}))
-    if (!gt::chance(rng, 5)) s.weight.values.set(s.g, r, {static_cast<double>(gt::uniform(rng, 0, 8)), 0, 0});
+    if (!gt::chance(rng, 5))
+      s.weight.values.set(s.g, r, {static_cast<double>(gt::uniform(rng, 0, 8)), 0, 0});
   return s;
 }
 
@@ -93,7 +98,9 @@ Outcome outcome(Evaluator& ev, const E& e, Dart d, ValueType t) {
 
 bool bitwise(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 // A fused combination's value: the tree's up to rounding.
-bool close(double a, double b) { return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)}); }
+bool close(double a, double b) {
+  return std::fabs(a - b) <= 1e-12 * std::max({1.0, std::fabs(a), std::fabs(b)});
+}
 
 // Compares the program of `e` with the tree at every dart of 20 random surfaces, in both modes;
 // returns the number of values compared (errors included).
@@ -112,8 +119,8 @@ size_t compare_everywhere(const Expr& e, ValueType t, const std::string& what) {
       for (Dart d : s.g.darts()) {
         const Outcome a = outcome(tree, e, d, t);
         const Outcome b = outcome(flat, *p, d, t);
-        const std::string where = what + ", seed " + std::to_string(seed) + (memo ? ", memo" : "") + ", dart " +
-                                  std::to_string(d);
+        const std::string where = what + ", seed " + std::to_string(seed) + (memo ? ", memo" : "") +
+                                  ", dart " + std::to_string(d);
         EXPECT_EQ(a.error, b.error) << where;
         if (!a.error.empty() || !b.error.empty()) {
           ++compared;
@@ -121,7 +128,8 @@ size_t compare_everywhere(const Expr& e, ValueType t, const std::string& what) {
         }
         const double xa[4] = {a.v.x, a.v.y, a.v.z, a.v.w}, xb[4] = {b.v.x, b.v.y, b.v.z, b.v.w};
         for (int k = 0; k < 4; ++k)
-          EXPECT_TRUE(p->fused ? close(xa[k], xb[k]) : bitwise(xa[k], xb[k])) << where << ": " << xa[k] << " vs " << xb[k];
+          EXPECT_TRUE(p->fused ? close(xa[k], xb[k]) : bitwise(xa[k], xb[k]))
+              << where << ": " << xa[k] << " vs " << xb[k];
         ++compared;
         if (::testing::Test::HasFailure()) return compared;
       }
@@ -132,8 +140,8 @@ size_t compare_everywhere(const Expr& e, ValueType t, const std::string& what) {
 
 TEST(ExpressionProgram, SubdivisionSchemesMasksGiveTheTreesValues) {
   size_t expressions = 0, compared = 0;
-  for (const char* file : {"quad_subdivision.json", "loop_subdivision.json", "sqrt3_subdivision.json",
-                           "doo_sabin_subdivision.json"}) {
+  for (const char* file : {"quad_subdivision.json", "loop_subdivision.json",
+                           "sqrt3_subdivision.json", "doo_sabin_subdivision.json"}) {
     const scheme::RuleScheme s = io::read_scheme_file(rules_dir() + file);
     const CompiledScheme cs = compile_scheme(s);
     for (size_t k = 0; k < cs.embeddings.size(); ++k)
@@ -156,18 +164,25 @@ class RandomExpression {
   std::string point(int depth) {
     const unsigned k = static_cast<unsigned>(gt::uniform(rng_, 0, depth <= 0 ? 1 : 8));
     switch (k) {
-      case 0: return ref() + ".position";
-      case 1: return "middle(" + orbit() + "_position(" + ref() + "))";
-      case 2: return "(" + point(depth - 1) + " + " + point(depth - 1) + ") / 2";
-      case 3: return "(1 - " + unit(depth - 1) + ") * " + point(depth - 1) + " + " + unit(depth - 1) + " * " + point(depth - 1);
+      case 0:
+        return ref() + ".position";
+      case 1:
+        return "middle(" + orbit() + "_position(" + ref() + "))";
+      case 2:
+        return "(" + point(depth - 1) + " + " + point(depth - 1) + ") / 2";
+      case 3:
+        return "(1 - " + unit(depth - 1) + ") * " + point(depth - 1) + " + " + unit(depth - 1) +
+               " * " + point(depth - 1);
       case 4: {
         const std::string x = fresh();
         scope_.push_back(x);
         const std::string body = point(depth - 1);
         scope_.pop_back();
-        return "middle([" + body + " | " + x + " in " + orbit() + "/" + orbit() + "(" + ref() + ")])";
+        return "middle([" + body + " | " + x + " in " + orbit() + "/" + orbit() + "(" + ref() +
+               ")])";
       }
-      case 5: return point(depth - 1) + " + (" + point(depth - 1) + " - " + point(depth - 1) + ")";
+      case 5:
+        return point(depth - 1) + " + (" + point(depth - 1) + " - " + point(depth - 1) + ")";
       case 6: {
         const std::string x = fresh(), i = fresh();
         scope_.push_back(x);
@@ -176,24 +191,36 @@ class RandomExpression {
         return "middle([" + body + " | " + x + ", " + i + " in (@0@1)*(" + ref() + ")])";
       }
       case 7:  // an affine combination of node values with constant weights (fused)
-        return "(3 * " + ref() + ".position + " + point(depth - 1) + " - (" + ref() + ".position - " + ref() +
-               ".position)) / 4";
-      default: return "middle(" + point(depth - 1) + ", " + point(depth - 1) + ", " + point(depth - 1) + ")";
+        return "(3 * " + ref() + ".position + " + point(depth - 1) + " - (" + ref() +
+               ".position - " + ref() + ".position)) / 4";
+      default:
+        return "middle(" + point(depth - 1) + ", " + point(depth - 1) + ", " + point(depth - 1) +
+               ")";
     }
   }
   std::string scalar(int depth) {
     const unsigned k = static_cast<unsigned>(gt::uniform(rng_, 0, depth <= 0 ? 2 : 12));
     switch (k) {
-      case 0: return std::to_string(gt::uniform(rng_, 0, 9));
-      case 1: return ref() + ".weight";
-      case 2: return "pi";
-      case 3: return "count(" + orbit() + "_position(" + ref() + "))";
-      case 4: return "count([0 | e in " + orbit() + "/" + orbit() + "(" + ref() + ")])";
-      case 5: return "(" + scalar(depth - 1) + " + " + scalar(depth - 1) + ")";
-      case 6: return "(" + scalar(depth - 1) + " / " + scalar(depth - 1) + ")";
-      case 7: return "cos(" + scalar(depth - 1) + ")";
-      case 8: return "norm(" + point(depth - 1) + " - " + point(depth - 1) + ")";
-      case 9: return "sum(" + orbit() + "_weight(" + ref() + "))";
+      case 0:
+        return std::to_string(gt::uniform(rng_, 0, 9));
+      case 1:
+        return ref() + ".weight";
+      case 2:
+        return "pi";
+      case 3:
+        return "count(" + orbit() + "_position(" + ref() + "))";
+      case 4:
+        return "count([0 | e in " + orbit() + "/" + orbit() + "(" + ref() + ")])";
+      case 5:
+        return "(" + scalar(depth - 1) + " + " + scalar(depth - 1) + ")";
+      case 6:
+        return "(" + scalar(depth - 1) + " / " + scalar(depth - 1) + ")";
+      case 7:
+        return "cos(" + scalar(depth - 1) + ")";
+      case 8:
+        return "norm(" + point(depth - 1) + " - " + point(depth - 1) + ")";
+      case 9:
+        return "sum(" + orbit() + "_weight(" + ref() + "))";
       case 10: {
         const std::string x = fresh();
         const std::string value = scalar(depth - 1);
@@ -203,8 +230,10 @@ class RandomExpression {
         return "(let " + x + " = " + value + " in " + body + " * " + x + ")";
       }
       case 11:  // fused, node weights possibly missing (the error of the first met)
-        return "(" + ref() + ".weight - 2 * " + ref() + ".weight + " + scalar(depth - 1) + " / 3 + 1)";
-      default: return "sqrt(" + scalar(depth - 1) + " - 2)";
+        return "(" + ref() + ".weight - 2 * " + ref() + ".weight + " + scalar(depth - 1) +
+               " / 3 + 1)";
+      default:
+        return "sqrt(" + scalar(depth - 1) + " - 2)";
     }
   }
 
@@ -212,11 +241,14 @@ class RandomExpression {
   // A scalar in [0, 1] when the weights are (abs and cos keep most of them there).
   std::string unit(int depth) { return "abs(cos(" + scalar(depth) + "))"; }
   std::string orbit() {
-    static const char* kOrbits[] = {"<>", "<0>", "<1>", "<2>", "<0,1>", "<0,2>", "<1,2>", "<0,1,2>"};
+    static const char* kOrbits[] = {"<>",    "<0>",   "<1>",   "<2>",
+                                    "<0,1>", "<0,2>", "<1,2>", "<0,1,2>"};
     return kOrbits[gt::uniform(rng_, 0, 7)];
   }
   std::string ref() {
-    std::string r = scope_.empty() || gt::chance(rng_, 40) ? "n0" : scope_[gt::uniform(rng_, 0, scope_.size() - 1)];
+    std::string r = scope_.empty() || gt::chance(rng_, 40)
+                        ? "n0"
+                        : scope_[gt::uniform(rng_, 0, scope_.size() - 1)];
     const uint64_t steps = gt::uniform(rng_, 0, 2);
     for (uint64_t k = 0; k < steps; ++k) r += "@" + std::to_string(gt::uniform(rng_, 0, 2));
     return r;
@@ -254,10 +286,12 @@ TEST(ExpressionProgram, RandomExpressionsGiveTheTreesValuesAndErrors) {
 
 TEST(ExpressionProgram, ConstantsAreFoldedExceptWhatTheRunRejects) {
   {
-    const auto [e, p] = compile("5/8 - (3 + 2 * cos(2 * pi / 6)) * (3 + 2 * cos(2 * pi / 6)) / 64", ValueType::Scalar);
+    const auto [e, p] = compile("5/8 - (3 + 2 * cos(2 * pi / 6)) * (3 + 2 * cos(2 * pi / 6)) / 64",
+                                ValueType::Scalar);
     ASSERT_EQ(p.code.size(), 1u);
     EXPECT_EQ(p.code[0].op, Instruction::Op::Constant);
-    const double c = 5.0 / 8 - (3 + 2 * std::cos(2 * M_PI / 6)) * (3 + 2 * std::cos(2 * M_PI / 6)) * (1.0 / 64);
+    const double c =
+        5.0 / 8 - (3 + 2 * std::cos(2 * M_PI / 6)) * (3 + 2 * std::cos(2 * M_PI / 6)) * (1.0 / 64);
     EXPECT_DOUBLE_EQ(p.code[0].value[0], c);
     EXPECT_NEAR(p.code[0].value[0], 3.0 / 8, 1e-15);  // Loop's weight at valence 6
   }
@@ -267,7 +301,8 @@ TEST(ExpressionProgram, ConstantsAreFoldedExceptWhatTheRunRejects) {
   for (const char* code : {"1 / (2 - 2)", "sqrt(1 - 2)"}) {
     const auto [e, p] = compile(code, ValueType::Scalar);
     EXPECT_GT(p.code.size(), 1u) << code;  // not folded: the run reports it
-    const Outcome a = outcome(ev, *e, d, ValueType::Scalar), b = outcome(ev, p, d, ValueType::Scalar);
+    const Outcome a = outcome(ev, *e, d, ValueType::Scalar),
+                  b = outcome(ev, p, d, ValueType::Scalar);
     EXPECT_FALSE(a.error.empty()) << code;
     EXPECT_EQ(a.error, b.error) << code;
   }
@@ -279,8 +314,9 @@ TEST(ExpressionProgram, AffineCombinationsOfNodeValuesAreFused) {
   using Op = Instruction::Op;
   {
     // Loop's edge mask: one instruction, weights 3/8, 3/8, 1/8, 1/8 on the four node values.
-    const auto [e, p] = compile("(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8",
-                                ValueType::Point);
+    const auto [e, p] =
+        compile("(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8",
+                ValueType::Point);
     ASSERT_EQ(p.code.size(), 1u);
     EXPECT_EQ(p.code[0].op, Op::Combine);
     EXPECT_TRUE(p.fused);
@@ -290,29 +326,35 @@ TEST(ExpressionProgram, AffineCombinationsOfNodeValuesAreFused) {
     const std::vector<std::vector<uint8_t>> paths{{}, {0}, {1, 0}, {2, 1, 0}};
     for (size_t k = 0; k < 4; ++k) {
       EXPECT_EQ(p.loads[k].weight, w[k]) << k;
-      EXPECT_EQ(std::vector<uint8_t>(p.loads[k].path, p.loads[k].path + p.loads[k].length), paths[k]) << k;
+      EXPECT_EQ(std::vector<uint8_t>(p.loads[k].path, p.loads[k].path + p.loads[k].length),
+                paths[k])
+          << k;
     }
     for (int x = 0; x < 4; ++x) EXPECT_EQ(p.code[0].value[x], 0.0);  // no constant term
   }
   {
     // Catmull-Clark's edge point: the two node values fused, each barycentre accumulated with 1/4.
     const auto [e, p] = compile(
-        "(n0.position + n0@0.position + middle(<0,1>_position(n0)) + middle(<0,1>_position(n0@2))) / 4",
+        "(n0.position + n0@0.position + middle(<0,1>_position(n0)) + middle(<0,1>_position(n0@2))) "
+        "/ 4",
         ValueType::Point);
     std::vector<Op> ops;
     for (const Instruction& i : p.code) ops.push_back(i.op);
-    EXPECT_EQ(ops, (std::vector<Op>{Op::Combine, Op::AggregateSet, Op::Accumulate, Op::AggregateSet, Op::Accumulate}));
+    EXPECT_EQ(ops, (std::vector<Op>{Op::Combine, Op::AggregateSet, Op::Accumulate, Op::AggregateSet,
+                                    Op::Accumulate}));
     EXPECT_EQ(p.code[2].value[0], 0.25);
     EXPECT_EQ(p.code[0].count, 2u);
   }
   {
     // Constants become the offset; subtraction and negation negate weights; a second run of node
     // values after another operand is added to the accumulator.
-    const auto [e, p] = compile("n0.weight - 2 * n0@1.weight + count(<0>_position(n0)) - (-n0@0.weight) + 3",
-                                ValueType::Scalar);
+    const auto [e, p] =
+        compile("n0.weight - 2 * n0@1.weight + count(<0>_position(n0)) - (-n0@0.weight) + 3",
+                ValueType::Scalar);
     std::vector<Op> ops;
     for (const Instruction& i : p.code) ops.push_back(i.op);
-    EXPECT_EQ(ops, (std::vector<Op>{Op::Combine, Op::AggregateSet, Op::Accumulate, Op::CombineLoads}));
+    EXPECT_EQ(ops,
+              (std::vector<Op>{Op::Combine, Op::AggregateSet, Op::Accumulate, Op::CombineLoads}));
     EXPECT_EQ(p.code[0].value[0], 3.0);
     ASSERT_EQ(p.loads.size(), 3u);
     EXPECT_EQ(p.loads[0].weight, 1.0);
@@ -322,7 +364,8 @@ TEST(ExpressionProgram, AffineCombinationsOfNodeValuesAreFused) {
     Evaluator ev(s.g, kSigs, {&s.pos, &s.weight});
     size_t values = 0;
     for (Dart d : s.g.darts()) {
-      const Outcome a = outcome(ev, *e, d, ValueType::Scalar), b = outcome(ev, p, d, ValueType::Scalar);
+      const Outcome a = outcome(ev, *e, d, ValueType::Scalar),
+                    b = outcome(ev, p, d, ValueType::Scalar);
       EXPECT_EQ(a.error, b.error) << d;
       if (a.error.empty()) {
         EXPECT_TRUE(close(a.v.x, b.v.x)) << d << ": " << a.v.x << " vs " << b.v.x;
@@ -340,7 +383,8 @@ TEST(ExpressionProgram, AffineCombinationsOfNodeValuesAreFused) {
     for (const auto& [code, combines] : cases) {
       const auto [e, p] = compile(code, ValueType::Point);
       (void)e;
-      EXPECT_EQ(std::count_if(p.code.begin(), p.code.end(), [](const Instruction& i) { return i.op == Op::Combine; }),
+      EXPECT_EQ(std::count_if(p.code.begin(), p.code.end(),
+                              [](const Instruction& i) { return i.op == Op::Combine; }),
                 combines)
           << code;
       EXPECT_EQ(p.code.back().op, combines ? Op::Div : Op::Add) << code;
@@ -361,7 +405,8 @@ TEST(ExpressionProgram, DartFreeSubExpressionsKeepTheirLastResult) {
   const CheckContext ctx = context();
   using Op = Instruction::Op;
   auto pures = [](const Program& p) {
-    return std::count_if(p.code.begin(), p.code.end(), [](const Instruction& i) { return i.op == Op::Pure; });
+    return std::count_if(p.code.begin(), p.code.end(),
+                         [](const Instruction& i) { return i.op == Op::Pure; });
   };
   {
     // Loop's vertex point: the weight c of the valence k is one kept sub-expression; (1 - c) is too
@@ -371,7 +416,8 @@ TEST(ExpressionProgram, DartFreeSubExpressionsKeepTheirLastResult) {
     const std::optional<Program> p = compile_program(*cs.right[0][0]);
     ASSERT_TRUE(p.has_value());
     EXPECT_EQ(pures(*p), 1);
-    const auto at = std::find_if(p->code.begin(), p->code.end(), [](const Instruction& i) { return i.op == Op::Pure; });
+    const auto at = std::find_if(p->code.begin(), p->code.end(),
+                                 [](const Instruction& i) { return i.op == Op::Pure; });
     EXPECT_GE(at->index, 15u);
     EXPECT_EQ((at + at->index + 1)->op, Op::PureEnd);
   }
@@ -390,7 +436,8 @@ TEST(ExpressionProgram, DartFreeSubExpressionsKeepTheirLastResult) {
     Evaluator flat(s.g, kSigs, {&s.pos, &s.weight});
     for (Dart d : s.g.darts())
       for (int twice = 0; twice < 2; ++twice) {
-        const Outcome a = outcome(tree, *e, d, ValueType::Scalar), b = outcome(flat, *p, d, ValueType::Scalar);
+        const Outcome a = outcome(tree, *e, d, ValueType::Scalar),
+                      b = outcome(flat, *p, d, ValueType::Scalar);
         EXPECT_EQ(a.error, b.error) << d;
         EXPECT_TRUE(bitwise(a.v.x, b.v.x)) << d;
         ++(a.error.empty() ? values : errors);
@@ -400,12 +447,12 @@ TEST(ExpressionProgram, DartFreeSubExpressionsKeepTheirLastResult) {
   EXPECT_GT(values, 0u);
 }
 
-
 // The last kKeptEntries results of a dart-free sub-expression are kept: over a surface whose faces
 // have a few sizes, met in any order, the weight of a face size is computed once per size.
 TEST(ExpressionProgram, DartFreeSubExpressionsKeepOneResultPerFewLetValues) {
   const CheckContext ctx = context();
-  const std::string code = "let k = count(<0,1>_position(n0)) in cos(2 * pi / k) * (3 + 2 * cos(2 * pi / k))";
+  const std::string code =
+      "let k = count(<0,1>_position(n0)) in cos(2 * pi / k) * (3 + 2 * cos(2 * pi / k))";
   auto e = parse_expression(code);
   check_expression(*e, ctx, ValueType::Scalar);
   const std::optional<Program> p = compile_program(*e);
@@ -438,7 +485,8 @@ TEST(ExpressionProgram, DartFreeSubExpressionsKeepOneResultPerFewLetValues) {
 TEST(ExpressionProgram, CombinationsOfManyClassesGiveRunsValuesAndStopAtTheFirstError) {
   size_t compared = 0, stopped = 0;
   for (const auto& [code, t] : std::vector<std::pair<std::string, ValueType>>{
-           {"(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8", ValueType::Point},
+           {"(3 * (n0.position + n0@0.position) + n0@1@0.position + n0@2@1@0.position) / 8",
+            ValueType::Point},
            {"n0@1.position - n0@0@1.position", ValueType::Vector},
            {"2 * n0.weight - n0@2.weight / 4 + 1", ValueType::Scalar}}) {
     const auto [e, p] = compile(code, t);
@@ -454,7 +502,8 @@ TEST(ExpressionProgram, CombinationsOfManyClassesGiveRunsValuesAndStopAtTheFirst
       ASSERT_EQ(out.size(), done) << code;
       for (size_t j = 0; j < darts.size(); ++j) {
         const Outcome a = outcome(one, p, darts[j], t);
-        const std::string where = code + ", seed " + std::to_string(seed) + ", dart " + std::to_string(darts[j]);
+        const std::string where =
+            code + ", seed " + std::to_string(seed) + ", dart " + std::to_string(darts[j]);
         if (j == done) {
           EXPECT_FALSE(a.error.empty()) << where << ": stopped without an error";
           ++stopped;
@@ -470,7 +519,8 @@ TEST(ExpressionProgram, CombinationsOfManyClassesGiveRunsValuesAndStopAtTheFirst
   EXPECT_GT(compared, 1000u);
   EXPECT_GT(stopped, 0u);  // some weights are missing
   // Not one combination of node values: left to the run.
-  const auto [e, p] = compile("n0.position + (n0@0.position - n0@1.position) * count(<0>_position(n0))", ValueType::Point);
+  const auto [e, p] = compile(
+      "n0.position + (n0@0.position - n0@1.position) * count(<0>_position(n0))", ValueType::Point);
   EXPECT_FALSE(Evaluator::combines_node_values(p));
 }
 
@@ -523,8 +573,8 @@ VertexLists list_vertices(const Map& g) {
 // the batch holding the first class whose evaluation fails.
 TEST(ExpressionProgram, ClassesInLanesGiveRunsValuesAndStopAtTheBatchThatFails) {
   std::vector<std::pair<std::string, ValueType>> codes;
-  for (const char* file : {"quad_subdivision.json", "loop_subdivision.json", "sqrt3_subdivision.json",
-                           "doo_sabin_subdivision.json"}) {
+  for (const char* file : {"quad_subdivision.json", "loop_subdivision.json",
+                           "sqrt3_subdivision.json", "doo_sabin_subdivision.json"}) {
     const scheme::RuleScheme s = io::read_scheme_file(rules_dir() + file);
     for (const auto& node : s.right.nodes)
       for (const auto& x : node.expressions) codes.emplace_back(x.code, ValueType::Point);
@@ -532,7 +582,8 @@ TEST(ExpressionProgram, ClassesInLanesGiveRunsValuesAndStopAtTheBatchThatFails) 
   for (uint64_t seed = 0; seed < 40; ++seed) {
     gt::Rng rng(77000 + seed);
     RandomExpression gen(rng);
-    codes.emplace_back(seed % 2 == 0 ? gen.point(3) : gen.scalar(3), seed % 2 == 0 ? ValueType::Point : ValueType::Scalar);
+    codes.emplace_back(seed % 2 == 0 ? gen.point(3) : gen.scalar(3),
+                       seed % 2 == 0 ? ValueType::Point : ValueType::Scalar);
   }
   size_t programs = 0, compared = 0, stopped = 0, listed = 0;
   for (const auto& [code, t] : codes) {
@@ -552,18 +603,21 @@ TEST(ExpressionProgram, ClassesInLanesGiveRunsValuesAndStopAtTheBatchThatFails) 
         Evaluator one(s.g, kSigs, {&s.pos, &s.weight}), many(s.g, kSigs, {&s.pos, &s.weight});
         for (Evaluator* ev : {&one, &many}) {
           ev->memoise_collects(true);
-          if (vertices) ev->share_orbit_lists(DimMask(6), v.list.data(), v.start.data(), v.number.data());
+          if (vertices)
+            ev->share_orbit_lists(DimMask(6), v.list.data(), v.start.data(), v.number.data());
         }
         const std::vector<Dart> darts = vertices ? v.starts : s.g.darts();
         std::vector<Vec3> out;
         const size_t done = many.run_classes(*p, darts.data(), darts.size(), t, out);
         ASSERT_EQ(out.size(), done) << code;
-        const std::string where = code + ", seed " + std::to_string(seed) + (vertices ? ", vertices" : "");
+        const std::string where =
+            code + ", seed " + std::to_string(seed) + (vertices ? ", vertices" : "");
         for (size_t j = 0; j < done; ++j) {
           const Outcome a = outcome(one, *p, darts[j], t);
           ASSERT_TRUE(a.error.empty()) << where << ", dart " << darts[j] << ": " << a.error;
           const Vec3 x = Evaluator::to_storage(a.v);
-          for (int k = 0; k < 3; ++k) ASSERT_TRUE(bitwise(x[k], out[j][k])) << where << ", dart " << darts[j];
+          for (int k = 0; k < 3; ++k)
+            ASSERT_TRUE(bitwise(x[k], out[j][k])) << where << ", dart " << darts[j];
           ++compared;
           listed += vertices ? 1 : 0;
         }
@@ -571,7 +625,8 @@ TEST(ExpressionProgram, ClassesInLanesGiveRunsValuesAndStopAtTheBatchThatFails) 
           bool failed = false;
           for (size_t j = done; j < std::min(darts.size(), done + 64) && !failed; ++j)
             failed = !outcome(one, *p, darts[j], t).error.empty();
-          EXPECT_TRUE(failed) << where << ": stopped at " << done << " without an error in its batch";
+          EXPECT_TRUE(failed) << where << ": stopped at " << done
+                              << " without an error in its batch";
           ++stopped;
         }
       }

@@ -33,4 +33,6 @@ TEST(SubdivisionOracle, Sqrt3TetrahedronAndOctahedron) {
   check_meshes(Method::Sqrt3, {"tetrahedron.off", "octahedron.off"});
 }
 
-TEST(SubdivisionOracle, DooSabin) { check_meshes(Method::DooSabin, {"cube.off", "tetrahedron.off", "octahedron.off"}); }
+TEST(SubdivisionOracle, DooSabin) {
+  check_meshes(Method::DooSabin, {"cube.off", "tetrahedron.off", "octahedron.off"});
+}

@@ -4,11 +4,10 @@
 // within 1e-9 relative) under which the faces are the same cycles (up to rotation and reversal),
 // i.e. isomorphic meshes with equal positions.
 #pragma once
-#include <gtest/gtest.h>
-
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "model/expr/compiled_scheme.hpp"
 #include "model/core/embedded_map.hpp"
+#include "model/expr/compiled_scheme.hpp"
 #include "model/expr/propagation.hpp"
 #include "model/map_io/face_list.hpp"
 #include "model/map_io/off.hpp"
@@ -39,17 +38,22 @@ enum class Method { CatmullClark, Loop, Sqrt3, DooSabin };
 
 inline const char* rule_file(Method m) {
   switch (m) {
-    case Method::CatmullClark: return "quad_subdivision.json";
-    case Method::Loop: return "loop_subdivision.json";
-    case Method::Sqrt3: return "sqrt3_subdivision.json";
-    case Method::DooSabin: return "doo_sabin_subdivision.json";
+    case Method::CatmullClark:
+      return "quad_subdivision.json";
+    case Method::Loop:
+      return "loop_subdivision.json";
+    case Method::Sqrt3:
+      return "sqrt3_subdivision.json";
+    case Method::DooSabin:
+      return "doo_sabin_subdivision.json";
   }
   return "";
 }
 
 // gmr: `iterations` times the scheme at every dart, with positions.
 inline io::FaceList gmr_subdivide(const std::string& off, Method method, int iterations) {
-  const scheme::RuleScheme s = io::read_scheme_file(source_dir() + "/tools/data/rules/" + rule_file(method));
+  const scheme::RuleScheme s =
+      io::read_scheme_file(source_dir() + "/tools/data/rules/" + rule_file(method));
   const scheme::SchemeEngine engine(s);
   const CompiledScheme cs = compile_scheme(s);
   EmbeddedMap m = io::read_off_file(off);
@@ -70,10 +74,18 @@ inline io::FaceList cgal_subdivide(const std::string& off, Method method, int it
   namespace SM = CGAL::Subdivision_method_3;
   const auto np = CGAL::parameters::number_of_iterations(iterations);
   switch (method) {
-    case Method::CatmullClark: SM::CatmullClark_subdivision(mesh, np); break;
-    case Method::Loop: SM::Loop_subdivision(mesh, np); break;
-    case Method::Sqrt3: SM::Sqrt3_subdivision(mesh, np); break;
-    case Method::DooSabin: SM::DooSabin_subdivision(mesh, np); break;
+    case Method::CatmullClark:
+      SM::CatmullClark_subdivision(mesh, np);
+      break;
+    case Method::Loop:
+      SM::Loop_subdivision(mesh, np);
+      break;
+    case Method::Sqrt3:
+      SM::Sqrt3_subdivision(mesh, np);
+      break;
+    case Method::DooSabin:
+      SM::DooSabin_subdivision(mesh, np);
+      break;
   }
   io::FaceList fl;
   std::vector<uint32_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), 0);
@@ -84,7 +96,8 @@ inline io::FaceList cgal_subdivide(const std::string& off, Method method, int it
   }
   for (auto f : mesh.faces()) {
     std::vector<uint32_t> face;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) face.push_back(index[v.idx()]);
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      face.push_back(index[v.idx()]);
     fl.faces.push_back(face);
   }
   return fl;
@@ -107,13 +120,15 @@ inline std::vector<uint32_t> canonical(std::vector<uint32_t> f) {
 }
 
 // Compares the two meshes (see the header comment); `what` names the case in failures.
-inline void expect_same_mesh(const io::FaceList& ours, const io::FaceList& cgal, const std::string& what) {
+inline void expect_same_mesh(const io::FaceList& ours, const io::FaceList& cgal,
+                             const std::string& what) {
   ASSERT_EQ(ours.vertices.size(), cgal.vertices.size()) << what;
   ASSERT_EQ(ours.faces.size(), cgal.faces.size()) << what;
   // Vertex bijection by position: CGAL's vertices sorted by x, a window search per vertex.
   std::vector<uint32_t> order(cgal.vertices.size());
   for (uint32_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return cgal.vertices[a][0] < cgal.vertices[b][0]; });
+  std::sort(order.begin(), order.end(),
+            [&](uint32_t a, uint32_t b) { return cgal.vertices[a][0] < cgal.vertices[b][0]; });
   std::vector<uint32_t> to_cgal(ours.vertices.size(), UINT32_MAX);
   std::vector<bool> used(cgal.vertices.size(), false);
   size_t unmatched = 0;
@@ -146,8 +161,10 @@ inline void expect_same_mesh(const io::FaceList& ours, const io::FaceList& cgal,
 }
 
 inline void check(const std::string& off, Method method, int iterations) {
-  const std::string what = off + ", " + rule_file(method) + ", " + std::to_string(iterations) + " iteration(s)";
-  expect_same_mesh(gmr_subdivide(off, method, iterations), cgal_subdivide(off, method, iterations), what);
+  const std::string what =
+      off + ", " + rule_file(method) + ", " + std::to_string(iterations) + " iteration(s)";
+  expect_same_mesh(gmr_subdivide(off, method, iterations), cgal_subdivide(off, method, iterations),
+                   what);
 }
 
 }  // namespace gmr::expr::oracle

@@ -16,10 +16,10 @@ namespace {
 
 using gmr::testing::cgal_mesh;
 
-#define REQUIRE_MESH(var, name)                                                                       \
-  const std::string var = cgal_mesh(name);                                                           \
-  if (var.empty())                                                                                   \
-  GTEST_SKIP() << "CGAL's data meshes are not installed: Debian package libcgal-demo ("             \
+#define REQUIRE_MESH(var, name)                                                         \
+  const std::string var = cgal_mesh(name);                                              \
+  if (var.empty())                                                                      \
+  GTEST_SKIP() << "CGAL's data meshes are not installed: Debian package libcgal-demo (" \
                << gmr::testing::kCgalDataArchive << "), installed by tools/setup.sh"
 
 }  // namespace

@@ -1,15 +1,17 @@
 // The three local constraints on hand-made D-graphs (thesis Defs. 29–32): each violation detected
 // and located (node, dimension(s), path).
+#include "model/graph/constraints.hpp"
+
 #include <gtest/gtest.h>
 
 #include "model/core/builders.hpp"
-#include "model/graph/constraints.hpp"
 #include "model/core/error.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
 
-static bool has(const std::vector<ConstraintViolation>& vs, Constraint k, Node v, int i, int j = -1) {
+static bool has(const std::vector<ConstraintViolation>& vs, Constraint k, Node v, int i,
+                int j = -1) {
   for (const auto& c : vs)
     if (c.constraint == k && c.at == v.index() && c.i == i && c.j == j) return true;
   return false;

@@ -1,12 +1,13 @@
 // Products of Σ-graphs, arc deletion Δ_i and arc relabeling ℜ (thesis §4.2.1–4.2.2, Def. 41,
 // Ex. 42 / Fig. 4.12).
+#include "model/graph/graph_product.hpp"
+
 #include <gtest/gtest.h>
 
 #include <set>
 #include <tuple>
 
 #include "model/core/error.hpp"
-#include "model/graph/graph_product.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -113,10 +114,15 @@ TEST(F15, RelabelingIJIpJpKK) {
   EXPECT_EQ(Pr.num_arcs(), 3u);
   EXPECT_EQ(label_pair(kSigma, pair_label(kSigma, ip, jp)), (std::pair<int, int>{ip, jp}));
   // Swapping and identity: literal and direct agree on other relabelings too.
-  for (const Relabeling& r : std::vector<Relabeling>{{{i_, ip}, {ip, i_}}, {}, {{d_, d_}, {j_, i_}}, {{i_, i_}, {ip, ip}, {j_, j_}, {jp, jp}, {k_, k_}, {d_, d_}}}) {
+  for (const Relabeling& r :
+       std::vector<Relabeling>{{{i_, ip}, {ip, i_}},
+                               {},
+                               {{d_, d_}, {j_, i_}},
+                               {{i_, i_}, {ip, ip}, {j_, j_}, {jp, jp}, {k_, k_}, {d_, d_}}}) {
     EXPECT_EQ(arcs(relabel_literal(P, kSigma, r)), arcs(relabel(P, kSigma, r)));
   }
-  EXPECT_EQ(arcs(relabel(P, kSigma, {{i_, i_}, {ip, ip}, {j_, j_}, {jp, jp}, {k_, k_}, {d_, d_}})), arcs(P));
+  EXPECT_EQ(arcs(relabel(P, kSigma, {{i_, i_}, {ip, ip}, {j_, j_}, {jp, jp}, {k_, k_}, {d_, d_}})),
+            arcs(P));
   EXPECT_EQ(relabel(P, kSigma, {}).num_arcs(), 0u);
   // At most one image per letter.
   EXPECT_THROW(relabel(P, kSigma, {{i_, j_}, {i_, jp}}), Error);

@@ -1,7 +1,8 @@
 // Path-located JSON access (model/json_reader.hpp) and the JSON layout writer (json_writer.hpp).
+#include "model/map_io/json_reader.hpp"
+
 #include <gtest/gtest.h>
 
-#include "model/map_io/json_reader.hpp"
 #include "model/map_io/json_writer.hpp"
 
 using namespace gmr;
@@ -89,7 +90,10 @@ TEST(JsonWriter, LayoutKeepsOrderAndInlinesScalarArrays) {
   j["darts"] = std::vector<int>(200, 7);
   j["small"] = {{"dart", 0}, {"value", {1, 2, 3}}};
   const std::string text = dump_json(j);
-  EXPECT_EQ(text.rfind("{\n  \"format\": \"gmr.test\",\n  \"version\": 1,\n  \"darts\": [7,7,", 0), 0u) << text;
-  EXPECT_NE(text.find("  \"small\": {\"dart\":0,\"value\":[1,2,3]}\n}\n"), std::string::npos) << text;
+  EXPECT_EQ(text.rfind("{\n  \"format\": \"gmr.test\",\n  \"version\": 1,\n  \"darts\": [7,7,", 0),
+            0u)
+      << text;
+  EXPECT_NE(text.find("  \"small\": {\"dart\":0,\"value\":[1,2,3]}\n}\n"), std::string::npos)
+      << text;
   EXPECT_EQ(nlohmann::ordered_json::parse(text), j);
 }

@@ -12,7 +12,8 @@ namespace {
 
 TEST(AdaptiveMeshingCgal, ElephantFiveLevels) {
   const std::string off = testing::cgal_mesh("elephant");
-  if (off.empty()) GTEST_SKIP() << "CGAL's data meshes are not installed (libcgal-demo, tools/setup.sh)";
+  if (off.empty())
+    GTEST_SKIP() << "CGAL's data meshes are not installed (libcgal-demo, tools/setup.sh)";
   const testing::CgalSurface surface(off);
   ASSERT_TRUE(surface.closed());
   PatternStore store(Mode::Unoriented);

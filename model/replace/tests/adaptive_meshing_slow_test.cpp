@@ -15,15 +15,18 @@ namespace {
 
 TEST(AdaptiveMeshingSlow, ElephantEightLevels) {
   const std::string off = testing::cgal_mesh("elephant");
-  if (off.empty()) GTEST_SKIP() << "CGAL's data meshes are not installed (libcgal-demo, tools/setup.sh)";
+  if (off.empty())
+    GTEST_SKIP() << "CGAL's data meshes are not installed (libcgal-demo, tools/setup.sh)";
   const testing::CgalSurface surface(off);
   PatternStore store(Mode::Unoriented);
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
   const auto [lo, size] = surface.root_cube();
   FlaggedMap m = box_hexahedron(lo, size);
   const auto levels = refine_adaptively(m, store, 8, surface.box_test());
-  std::printf("elephant (%zu triangles)\n| level | #volumes | #f-replacements | #v-replacements | balance | time (s) |\n",
-              surface.triangles());
+  std::printf(
+      "elephant (%zu triangles)\n| level | #volumes | #f-replacements | #v-replacements | balance "
+      "| time (s) |\n",
+      surface.triangles());
   size_t volumes = 1;
   for (const MeshingLevel& l : levels) {
     std::printf("| %d | %zu | %zu | %zu | %zu | %.3f |\n", l.level, l.volumes, l.face_replacements,

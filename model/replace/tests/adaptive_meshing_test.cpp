@@ -1,7 +1,5 @@
 // Adaptive hexahedral meshing by query-replace (Alg. 5) around an analytic sphere: valid maps,
 // the level counts, and the balance (hexahedra sharing a vertex differ by at most one level).
-#include "model/replace/adaptive_hex_meshing.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 #include "model/core/orbit.hpp"
 #include "model/core/position.hpp"
 #include "model/core/validity.hpp"
+#include "model/replace/adaptive_hex_meshing.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 
 namespace gmr::replace {
@@ -33,8 +32,9 @@ TEST(AdaptiveMeshing, SphereFourLevelsValidAndBalanced) {
   for (auto& p : load_patterns(testing::patterns_dir("hex-subdivision"))) store.add(std::move(p));
   FlaggedMap m = box_hexahedron({-1, -1, -1}, 2);
   const Vec3 centre{0.1, -0.05, 0.07};
-  const auto levels =
-      refine_adaptively(m, store, 4, [&](const Vec3& lo, const Vec3& hi) { return sphere_meets(lo, hi, centre, 0.7); });
+  const auto levels = refine_adaptively(m, store, 4, [&](const Vec3& lo, const Vec3& hi) {
+    return sphere_meets(lo, hi, centre, 0.7);
+  });
   ASSERT_EQ(levels.size(), 4u);
   size_t volumes = 1;
   for (const MeshingLevel& l : levels) {

@@ -25,7 +25,8 @@ class CgalSurface {
  public:
   using K = CGAL::Simple_cartesian<double>;
   using Mesh = CGAL::Surface_mesh<K::Point_3>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  using Tree =
+      CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 
   explicit CgalSurface(const std::string& off) {
     std::ifstream in(off);
@@ -38,7 +39,8 @@ class CgalSurface {
   // The cube around the mesh's bounding box, 5 % larger on each side.
   std::pair<Vec3, double> root_cube() const {
     const CGAL::Bbox_3 b = tree_->bbox();
-    const double size = 1.1 * std::max({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
+    const double size =
+        1.1 * std::max({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
     const Vec3 c{(b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2, (b.zmin() + b.zmax()) / 2};
     return {Vec3{c[0] - size / 2, c[1] - size / 2, c[2] - size / 2}, size};
   }

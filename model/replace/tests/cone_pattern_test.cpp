@@ -5,14 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "model/core/error.hpp"
 #include "model/core/validity.hpp"
 #include "model/replace/coverage.hpp"
 #include "model/replace/query_replace.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
 #include "model/replace/unit_hex_positions.hpp"
-
-#include <cmath>
 
 namespace gmr::replace {
 namespace {
@@ -36,7 +36,8 @@ TEST(ConePattern, ConeOfTheCubeIsSixPyramidsWithTheCubeAsBoundary) {
     PatternStore s(mode);
     s.add(p);
     FlaggedMap target = testing::all_flagged(lift(make_cube(2), 3));
-    EXPECT_EQ(query_replace(target, s, 3, [&] { ASSERT_TRUE(is_valid(target.map)); }).replaced(), 1u);
+    EXPECT_EQ(query_replace(target, s, 3, [&] { ASSERT_TRUE(is_valid(target.map)); }).replaced(),
+              1u);
     EXPECT_EQ(count_cells(target.map, 3), 6u);
   }
   // With positions, the apex is the mean of the corners (here every vertex is one).
@@ -94,7 +95,8 @@ TEST(ConePattern, RefinesAHexahedronWithSplitEdgesAndACutFace) {
     edges.push_back(d);
     d = m.map.alpha(1, m.map.alpha(0, d));
   } while (d != 0);
-  edges.push_back(m.map.alpha(1, m.map.alpha(2, 0)));  // an edge from the face's corner, off the face
+  edges.push_back(
+      m.map.alpha(1, m.map.alpha(2, 0)));  // an edge from the face's corner, off the face
   split_edges(m, edges, 2);
   const std::vector<Dart> face{0};
   EXPECT_EQ(query_replace(m, store, 2, {}, {}, {}, &face).replaced(), 1u);
@@ -129,7 +131,8 @@ TEST(ConePattern, ApexAtTheCentreOfAPositionedHexahedron) {
   size_t at_apex = 0;
   for (Dart d = first_new; d < m.map.capacity(); ++d) {
     const Vec3& p = m.position[d];
-    if (std::abs(p[0] - centre[0]) + std::abs(p[1] - centre[1]) + std::abs(p[2] - centre[2]) < 1e-9) ++at_apex;
+    if (std::abs(p[0] - centre[0]) + std::abs(p[1] - centre[1]) + std::abs(p[2] - centre[2]) < 1e-9)
+      ++at_apex;
   }
   EXPECT_EQ(at_apex, boundary);  // t2(d) for every boundary dart d
   EXPECT_TRUE(is_valid(m.map));

@@ -1,5 +1,5 @@
-// Exhaustiveness (Damiand & Nivoliers 2022 §6.4): configuration classes by signatures, cross-checked
-// by group orbits of the split-edge sets (no signature involved).
+// Exhaustiveness (Damiand & Nivoliers 2022 §6.4): configuration classes by signatures,
+// cross-checked by group orbits of the split-edge sets (no signature involved).
 #include "model/replace/coverage.hpp"
 
 #include <gtest/gtest.h>
@@ -49,7 +49,8 @@ std::vector<std::vector<int>> cube_group(bool reflections) {
   std::vector<std::vector<int>> g;
   for (int p = 0; p < 6; ++p)
     for (int m = 0; m < 8; ++m) {
-      const int sign = (p < 3 ? 1 : -1) * (__builtin_popcount(static_cast<unsigned>(m)) % 2 ? -1 : 1);
+      const int sign =
+          (p < 3 ? 1 : -1) * (__builtin_popcount(static_cast<unsigned>(m)) % 2 ? -1 : 1);
       if (!reflections && sign < 0) continue;
       auto image = [&](int v) {
         int w = 0;

@@ -72,9 +72,11 @@ TEST(DirectHexSubdivision, ReservedSequenceEqualsTheDirectSubdivision) {
     for (int level = 1; level <= 2; ++level) {
       direct = subdivide_hexahedra(direct);
       const size_t darts = qr.map.size();
-      const size_t faces = replacement_room(qr.map, store, 2), volumes = replacement_room(qr.map, store, 3);
+      const size_t faces = replacement_room(qr.map, store, 2),
+                   volumes = replacement_room(qr.map, store, 3);
       EXPECT_EQ(replacement_room(qr.map, store, {2, 3}), faces + volumes);  // one sweep for both
-      EXPECT_EQ(replacement_room_bound(2 * darts, store, {2, 3}), faces + volumes);  // from the darts alone
+      EXPECT_EQ(replacement_room_bound(2 * darts, store, {2, 3}),
+                faces + volumes);  // from the darts alone
       qr.reserve(2 * darts + replacement_room(qr.map, store, {2, 3}));
       const Dart* links = qr.map.links(0).data();
       if (pre == Precondition::CheckValidity)

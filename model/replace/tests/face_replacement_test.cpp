@@ -61,7 +61,8 @@ TEST(EdgeSplit, SplitAllEdgesEqualsSplittingEveryEdge) {
     FlaggedMap a = all_flagged(make_stacked_cubes());
     a.position.resize(a.map.capacity());
     for (Dart v : orbit_representatives(a.map, cell_type(a.map, 0)))
-      for (Dart x : orbit(a.map, cell_type(a.map, 0), v)) a.position[x] = {double(v % 7), double(v % 5), double(v % 3)};
+      for (Dart x : orbit(a.map, cell_type(a.map, 0), v))
+        a.position[x] = {double(v % 7), double(v % 5), double(v % 3)};
     FlaggedMap b = a;
     const size_t before = a.map.size();
     split_each_edge(a, k);
@@ -105,7 +106,9 @@ TEST(EdgeSplit, SplitEdgesEqualsSplittingOneEdgeAfterTheOther) {
   FlaggedMap cube{lift(make_cube(2), 3), {}, {}};
   cube.flag.assign(cube.map.capacity(), 1);
   cube.position.resize(cube.map.capacity());
-  cube.map.for_each_dart([&](Dart d) { cube.position[d] = {double(d % 7), double(d % 5), double(d % 3)}; });
+  cube.map.for_each_dart([&](Dart d) {
+    cube.position[d] = {double(d % 7), double(d % 5), double(d % 3)};
+  });
   // A vertex position per vertex orbit (its smallest dart's made up position).
   for (Dart v : orbit_representatives(cube.map, cell_type(cube.map, 0)))
     for (Dart x : orbit(cube.map, cell_type(cube.map, 0), v)) cube.position[x] = cube.position[v];
@@ -165,7 +168,8 @@ TEST(FaceReplacement, CubeAndTetrahedronBoundaries) {
   for (auto& c : cases) {
     const auto cells = count_all_cells(c.polyhedron);
     FlaggedMap m = all_flagged(std::move(c.polyhedron));
-    const Pattern p = pattern_file(std::string(c.pattern) == "split4" ? "conformal-faces" : "tet-to-hex", c.pattern);
+    const Pattern p = pattern_file(
+        std::string(c.pattern) == "split4" ? "conformal-faces" : "tet-to-hex", c.pattern);
     const QueryReplaceReport r = subdivide(m, p);
     EXPECT_EQ(r.replaced(), cells[2]) << c.pattern;
     EXPECT_EQ(m.map.size(), c.darts);
@@ -173,7 +177,8 @@ TEST(FaceReplacement, CubeAndTetrahedronBoundaries) {
     const auto after = count_all_cells(m.map);
     EXPECT_EQ(after[0], cells[0] + cells[1] + cells[2]);  // corners, edge midpoints, face centres
     const BoundaryGraph b = cell_boundary(m.map, 3, 0, m.flag, orientation_classes(m.map));
-    const CellSignature o = minimal_signature(b, Mode::Oriented), u = minimal_signature(b, Mode::Unoriented);
+    const CellSignature o = minimal_signature(b, Mode::Oriented),
+                        u = minimal_signature(b, Mode::Unoriented);
     EXPECT_EQ(o.automorphisms, c.aut_oriented) << c.pattern;
     EXPECT_EQ(u.automorphisms, c.aut_unoriented) << c.pattern;
     EXPECT_EQ(u.word.size(), 4 * c.darts);
@@ -205,7 +210,8 @@ TEST(FaceReplacement, SharedFacesOfStackedCubes) {
 TEST(FaceReplacement, FlagsOfCopiedDartsComeFromThePattern) {
   const Pattern p = pattern_file("conformal-faces", "split4");
   size_t inner_flagged = 0;
-  p.map.map.for_each_dart([&](Dart d) { inner_flagged += !p.map.map.is_free(2, d) && p.map.flag[d]; });
+  p.map.map.for_each_dart(
+      [&](Dart d) { inner_flagged += !p.map.map.is_free(2, d) && p.map.flag[d]; });
   FlaggedMap m = all_flagged(make_cube(2));
   split_each_edge(m, 2);
   const size_t before = m.flagged();
@@ -218,14 +224,16 @@ TEST(FaceReplacement, UnmatchedFacesAreReportedAndKept) {
   FlaggedMap m = all_flagged(make_cube(2));
   split_edge(m, 0, 2);  // two faces now have one split edge; four have none
   const size_t darts = m.map.size();
-  const PatternStore store = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
+  const PatternStore store =
+      store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
   const QueryReplaceReport r = query_replace(m, store, 2);
   EXPECT_EQ(r.cells, 6u);
   EXPECT_EQ(r.replaced(), 0u);
   EXPECT_EQ(r.unmatched.size(), 6u);
   EXPECT_EQ(m.map.size(), darts);
   // With the one-split-edge pattern, exactly the two faces of the split edge match.
-  const PatternStore store1 = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split1")});
+  const PatternStore store1 =
+      store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split1")});
   const QueryReplaceReport r1 = query_replace(m, store1, 2, [&] { ASSERT_TRUE(is_valid(m.map)); });
   EXPECT_EQ(r1.replaced(), 2u);
   EXPECT_EQ(r1.unmatched.size(), 4u);
@@ -247,7 +255,8 @@ TEST(FaceReplacement, ConformalSetOnEveryEdgeSubsetOfACube) {
       size_t touched = 0;  // faces with a split edge: more than 8 darts
       for (Dart f : orbit_representatives(m.map, cell_type(m.map, 2)))
         touched += orbit(m.map, OrbitType{0, 1}, f).size() > 8;
-      const QueryReplaceReport r = query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); });
+      const QueryReplaceReport r =
+          query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); });
       EXPECT_EQ(r.replaced(), touched) << mask;
       EXPECT_EQ(r.unmatched.size(), 6 - touched) << mask;
       EXPECT_EQ(euler_characteristic(m.map), 2);
@@ -259,7 +268,8 @@ TEST(FaceReplacement, ConformalSetOnEveryEdgeSubsetOfACube) {
 TEST(FaceReplacement, OpenGridAndMapWithHoles) {
   FlaggedMap m = all_flagged(make_grid(2, 2));
   split_each_edge(m, 2);
-  const PatternStore store = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
+  const PatternStore store =
+      store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
   EXPECT_EQ(query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }).replaced(), 4u);
   EXPECT_EQ(count_cells(m.map, 2), 16u);
   // Deleted darts leave holes in the index range: build a square after a deleted component.
@@ -280,7 +290,8 @@ TEST(FaceReplacement, OpenGridAndMapWithHoles) {
 TEST(FaceReplacement, RefusesInvalidTargetsAndWrongDimensions) {
   FlaggedMap m = all_flagged(make_cube(2));
   m.map.set_alpha(0, 0, 5);  // breaks the involution
-  const PatternStore store = store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
+  const PatternStore store =
+      store_of(Mode::Unoriented, {pattern_file("conformal-faces", "split4")});
   EXPECT_THROW(query_replace(m, store, 2), Error);
   FlaggedMap one{Map(1), {}, {}};
   EXPECT_THROW(query_replace(one, store, 2), Error);
@@ -325,7 +336,8 @@ TEST(FaceReplacement, DuplicateSelectorChoosesAmongPatternsOfOneKey) {
   auto run = [&](const DuplicateSelector& select) {
     FlaggedMap m = all_flagged(make_cube(2));
     split_each_edge(m, 2);
-    const QueryReplaceReport r = query_replace(m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }, {}, select);
+    const QueryReplaceReport r = query_replace(
+        m, store, 2, [&] { ASSERT_TRUE(is_valid(m.map)); }, {}, select);
     EXPECT_EQ(r.ambiguous_keys, 6u);
     return std::make_pair(r, count_cells(m.map, 2));
   };
@@ -333,12 +345,14 @@ TEST(FaceReplacement, DuplicateSelectorChoosesAmongPatternsOfOneKey) {
   EXPECT_EQ(first.matched, (std::vector<size_t>{6, 0}));
   EXPECT_EQ(faces_first, 24u);
   // Every other face (by the parity of its dart) gets the pentagons.
-  const auto [chosen, faces_chosen] =
-      run([](const std::vector<StoreEntry>& c, const FlaggedMap&, Dart d) { return c.size() - 1 - (d % 2); });
+  const auto [chosen, faces_chosen] = run([](const std::vector<StoreEntry>& c, const FlaggedMap&,
+                                             Dart d) { return c.size() - 1 - (d % 2); });
   EXPECT_EQ(chosen.matched[0] + chosen.matched[1], 6u);
   EXPECT_GT(chosen.matched[1], 0u);
   EXPECT_EQ(faces_chosen, 4 * chosen.matched[0] + 2 * chosen.matched[1]);
-  EXPECT_THROW(run([](const std::vector<StoreEntry>& c, const FlaggedMap&, Dart) { return c.size(); }), Error);
+  EXPECT_THROW(
+      run([](const std::vector<StoreEntry>& c, const FlaggedMap&, Dart) { return c.size(); }),
+      Error);
 }
 
 }  // namespace

@@ -33,7 +33,8 @@ TEST(FlaggedWord, SquareAndTriangleWordsFromEveryStart) {
 TEST(FlaggedWord, AgreesWithCoreWordOnAClosedSurface) {
   const Map cube = make_cube(2);
   const BoundaryGraph b = cell_boundary(cube, 3, 0, {}, {});
-  for (uint32_t k = 0; k < b.size(); k += 7) EXPECT_EQ(boundary_word(b, k, false), bfs_word(cube, b.dart[k])) << k;
+  for (uint32_t k = 0; k < b.size(); k += 7)
+    EXPECT_EQ(boundary_word(b, k, false), bfs_word(cube, b.dart[k])) << k;
 }
 
 // A cell boundary is numbered breadth-first from its first dart: its word from local dart 0 reads
@@ -44,7 +45,8 @@ TEST(FlaggedWord, NumberedBoundaryWordIsTheWordFromTheFirstDart) {
   std::vector<uint32_t> flags(cube.capacity());
   for (Dart d = 0; d < cube.capacity(); ++d) flags[d] = d % 3;
   for (Dart d = 0; d < cube.capacity(); d += 5) {
-    const BoundaryGraph v = cell_boundary(cube, 3, d, flags, {}), f = cell_boundary(cube, 2, d, flags, {});
+    const BoundaryGraph v = cell_boundary(cube, 3, d, flags, {}),
+                        f = cell_boundary(cube, 2, d, flags, {});
     for (const BoundaryGraph* b : {&v, &f}) {
       Word read{7}, walked{7};
       numbered_boundary_word(*b, read);
@@ -70,7 +72,8 @@ TEST(FlaggedWord, CubeAutomorphismsAndFlaggedWordPrefix) {
   const std::vector<uint32_t> flags(cube.capacity(), 1);
   const BoundaryGraph b = cell_boundary(cube, 3, 0, flags, orientation_classes(cube));
   ASSERT_EQ(b.size(), 48u);
-  const CellSignature u = minimal_signature(b, Mode::Unoriented), o = minimal_signature(b, Mode::Oriented);
+  const CellSignature u = minimal_signature(b, Mode::Unoriented),
+                      o = minimal_signature(b, Mode::Oriented);
   EXPECT_EQ(u.automorphisms, 48u);
   EXPECT_EQ(o.automorphisms, 24u);
   EXPECT_EQ(u.word, o.word);  // the minimum is reached in both orientation classes

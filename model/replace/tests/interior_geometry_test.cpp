@@ -18,10 +18,12 @@ namespace {
 
 // x -> A x + t, a shear with scaling.
 Vec3 affine(const Vec3& p) {
-  return {2 * p[0] + 0.5 * p[1] + 1, -0.3 * p[0] + 1.5 * p[1] + 0.2 * p[2] - 2, 0.7 * p[2] + 0.1 * p[0] + 3};
+  return {2 * p[0] + 0.5 * p[1] + 1, -0.3 * p[0] + 1.5 * p[1] + 0.2 * p[2] - 2,
+          0.7 * p[2] + 0.1 * p[0] + 3};
 }
 
-// The unit cube of tools/data/cube.off, moved by `affine`, every dart flagged, lifted to dimension n.
+// The unit cube of tools/data/cube.off, moved by `affine`, every dart flagged, lifted to dimension
+// n.
 FlaggedMap affine_cube(int n) {
   const EmbeddedMap pm = io::read_off_file(::gmr::testing::source_path("tools/data/cube.off"));
   FlaggedMap m{lift(pm.map, n), {}, {}};
@@ -39,15 +41,18 @@ size_t grid_points(const FlaggedMap& m) {
     bool found = false;
     for (int g = 0; g < 27 && !found; ++g) {
       const Vec3 p = affine({(g % 3) / 2.0, (g / 3 % 3) / 2.0, (g / 9) / 2.0});
-      if (std::abs(p[0] - m.position[v][0]) + std::abs(p[1] - m.position[v][1]) + std::abs(p[2] - m.position[v][2]) < 1e-9) {
+      if (std::abs(p[0] - m.position[v][0]) + std::abs(p[1] - m.position[v][1]) +
+              std::abs(p[2] - m.position[v][2]) <
+          1e-9) {
         found = true;
         seen.insert({g % 3, g / 3 % 3, g / 9});
       }
     }
-    EXPECT_TRUE(found) << "vertex of dart " << v << " at " << m.position[v][0] << " " << m.position[v][1] << " "
-                       << m.position[v][2];
+    EXPECT_TRUE(found) << "vertex of dart " << v << " at " << m.position[v][0] << " "
+                       << m.position[v][1] << " " << m.position[v][2];
     // All darts of a vertex share its position.
-    for (Dart x : orbit(m.map, vertex_orbit_type(m.map), v)) EXPECT_EQ(m.position[x], m.position[v]);
+    for (Dart x : orbit(m.map, vertex_orbit_type(m.map), v))
+      EXPECT_EQ(m.position[x], m.position[v]);
   }
   return seen.size();
 }
@@ -80,7 +85,8 @@ TEST(InteriorGeometry, VolumePatternsReproduceAffineMaps) {
 // the face centroids and the centroid (Fig. 16).
 TEST(InteriorGeometry, TetrahedronToHexahedraPlacesCentroids) {
   const std::vector<Vec3> corner = {{0.3, -1, 2}, {4, 0.5, 1}, {1, 3, -0.5}, {0.5, 1, 5}};
-  FlaggedMap m{lift(surface_from_faces({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, 4), 3), {}, {}};
+  FlaggedMap m{
+      lift(surface_from_faces({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, 4), 3), {}, {}};
   std::vector<uint32_t> vertex;
   surface_from_faces({{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, 4, {}, &vertex);
   m.flag.assign(m.map.capacity(), 1);
@@ -91,7 +97,8 @@ TEST(InteriorGeometry, TetrahedronToHexahedraPlacesCentroids) {
   for (auto& p : load_patterns(testing::patterns_dir("tet-to-hex"))) store.add(std::move(p));
   query_replace(m, store, 2);
   EXPECT_EQ(query_replace(m, store, 3).replaced(), 1u);
-  // Expected points: centroids of every non-empty subset of corners (1: corners, 2: midpoints, ...).
+  // Expected points: centroids of every non-empty subset of corners (1: corners, 2: midpoints,
+  // ...).
   std::vector<Vec3> expected;
   for (int s = 1; s < 16; ++s) {
     Vec3 c{0, 0, 0};
@@ -106,7 +113,9 @@ TEST(InteriorGeometry, TetrahedronToHexahedraPlacesCentroids) {
   for (Dart v : reps) {
     bool found = false;
     for (const Vec3& e : expected)
-      found |= std::abs(e[0] - m.position[v][0]) + std::abs(e[1] - m.position[v][1]) + std::abs(e[2] - m.position[v][2]) < 1e-9;
+      found |= std::abs(e[0] - m.position[v][0]) + std::abs(e[1] - m.position[v][1]) +
+                   std::abs(e[2] - m.position[v][2]) <
+               1e-9;
     EXPECT_TRUE(found) << "vertex of dart " << v;
   }
 }

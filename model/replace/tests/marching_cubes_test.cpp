@@ -47,7 +47,8 @@ TEST(MarchingCubes, PatternSetCoversThe654ConfigurationsIn29Classes) {
     ASSERT_EQ(group.size(), 2u);
     const Pattern &a = u.patterns()[group[0]], &b = u.patterns()[group[1]];
     EXPECT_EQ(a.cell_dim, 3);
-    EXPECT_TRUE(is_isomorphic(a.map.map, b.map.map, &a.map.flag, &b.map.flag)) << a.name << " " << b.name;
+    EXPECT_TRUE(is_isomorphic(a.map.map, b.map.map, &a.map.flag, &b.map.flag))
+        << a.name << " " << b.name;
   }
   // The f-patterns cover the faces with an even number of cuts: of the 15 square configurations,
   // those with 1 or 3 split edges (2 classes) are missing.
@@ -109,7 +110,8 @@ TEST(MarchingCubes, VoxelisedSphereGivesAClosedSurface) {
     // The surface: faces whose vertices are all new (cut points).
     std::map<std::array<long long, 3>, size_t> vertex_id;
     auto id = [&](const Vec3& p) {
-      const std::array<long long, 3> k{std::llround(p[0] * 2), std::llround(p[1] * 2), std::llround(p[2] * 2)};
+      const std::array<long long, 3> k{std::llround(p[0] * 2), std::llround(p[1] * 2),
+                                       std::llround(p[2] * 2)};
       return vertex_id.emplace(k, vertex_id.size()).first->second;
     };
     std::map<std::pair<size_t, size_t>, size_t> edge_uses;
@@ -137,8 +139,8 @@ TEST(MarchingCubes, VoxelisedSphereGivesAClosedSurface) {
       surface_vertices.insert(e.second);
     }
     ASSERT_GT(polygons, 20u);
-    EXPECT_EQ(static_cast<long long>(surface_vertices.size()) - static_cast<long long>(edge_uses.size()) +
-                  static_cast<long long>(polygons),
+    EXPECT_EQ(static_cast<long long>(surface_vertices.size()) -
+                  static_cast<long long>(edge_uses.size()) + static_cast<long long>(polygons),
               2);
   }
 }

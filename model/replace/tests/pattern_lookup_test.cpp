@@ -16,8 +16,9 @@ namespace {
 
 // The configuration's volume, with its orientation classes in oriented mode.
 BoundaryGraph boundary_of(const Configuration& c, Mode mode = Mode::Unoriented) {
-  return cell_boundary(c.map.map, 3, c.cell, c.map.flag,
-                       mode == Mode::Oriented ? orientation_classes(c.map.map) : std::vector<uint8_t>{});
+  return cell_boundary(
+      c.map.map, 3, c.cell, c.map.flag,
+      mode == Mode::Oriented ? orientation_classes(c.map.map) : std::vector<uint8_t>{});
 }
 
 // Every start of the start set streamed on its own: the minimum, its first start and its count.
@@ -57,7 +58,7 @@ TEST(PatternLookup, StartSetIsRestrictedByFaceSizes) {
   const BoundaryGraph b = boundary_of(one, Mode::Oriented);
   const StartSet s = start_darts(b, Mode::Unoriented);
   EXPECT_EQ(s.invariant, uint64_t(8) << 32 | 8);  // two quads of 8 darts
-  EXPECT_LT(s.darts.size(), 48u);  // of the 48 flagged darts
+  EXPECT_LT(s.darts.size(), 48u);                 // of the 48 flagged darts
   // The cube's symmetries keeping edge 0: the half-turn about the axis through its midpoint, the
   // two mirrors containing or bisecting it, and the identity.
   EXPECT_EQ(minimal_signature(b, Mode::Unoriented).automorphisms, 4u);
@@ -67,8 +68,8 @@ TEST(PatternLookup, StartSetIsRestrictedByFaceSizes) {
 // Checks a lookup by the word from cell start s against the minimal signature: the same key's
 // patterns, and for each of them the ranks give an isomorphism from the pattern's boundary (in
 // its template order) onto the cell's, preserving neighbours, flags and, in oriented mode, D+.
-void expect_lookup_by_one_word(const PatternStore& store, const BoundaryGraph& b, int cell_dim, uint32_t s,
-                               const std::string& what) {
+void expect_lookup_by_one_word(const PatternStore& store, const BoundaryGraph& b, int cell_dim,
+                               uint32_t s, const std::string& what) {
   Word key{static_cast<uint32_t>(cell_dim)};
   boundary_word(b, s, key);
   const StoreMatch m = store.match_word(key, s);
@@ -89,7 +90,8 @@ void expect_lookup_by_one_word(const PatternStore& store, const BoundaryGraph& b
       if (store.mode() == Mode::Oriented) {
         ASSERT_EQ(b.positive[f[x]], pb.positive[x]) << what;
       }
-      for (int j = 0; j < b.arity; ++j) ASSERT_EQ(b.neighbour(f[x], j), f[pb.neighbour(x, j)]) << what;
+      for (int j = 0; j < b.arity; ++j)
+        ASSERT_EQ(b.neighbour(f[x], j), f[pb.neighbour(x, j)]) << what;
     }
   }
 }
@@ -105,7 +107,8 @@ TEST(PatternLookup, LookupByOneWordIsLookupBySignature) {
     for (const Configuration& c : set.configurations) {
       const Word key = store_key(boundary_of(c, mode), 3, mode);
       if (!classes.emplace(key, classes.size()).second || classes.size() % 2 == 0) continue;
-      store.add(make_pattern("class" + std::to_string(classes.size()), FlaggedMap{lift(c.map.map, 3), c.map.flag, {}}));
+      store.add(make_pattern("class" + std::to_string(classes.size()),
+                             FlaggedMap{lift(c.map.map, 3), c.map.flag, {}}));
     }
     size_t hits = 0, misses = 0;
     for (size_t i = 0; i < set.configurations.size(); i += 3) {
@@ -141,8 +144,9 @@ TEST(PatternLookup, LookupByOneWordOnThePatternSets) {
     const char* patterns;
     const char* configurations;
   };
-  for (const Case& k : {Case{"conformal-faces", "square-edges"}, Case{"tet-to-hex", "triangle-edges"},
-                        Case{"hex-subdivision", "square-edges"}, Case{"marching-cubes", "marching-cubes"}}) {
+  for (const Case& k :
+       {Case{"conformal-faces", "square-edges"}, Case{"tet-to-hex", "triangle-edges"},
+        Case{"hex-subdivision", "square-edges"}, Case{"marching-cubes", "marching-cubes"}}) {
     const std::vector<Pattern> ps = load_patterns(testing::patterns_dir(k.patterns));
     const ConfigurationSet set = generate_configurations(k.configurations);
     for (Mode mode : {Mode::Unoriented, Mode::Oriented}) {
@@ -151,10 +155,11 @@ TEST(PatternLookup, LookupByOneWordOnThePatternSets) {
       const std::string what = std::string(k.patterns) + " " + to_string(mode);
       size_t hits = 0;
       for (const Configuration& c : set.configurations) {
-        const BoundaryGraph b = cell_boundary(c.map.map, set.cell_dim, c.cell, c.map.flag,
-                                              mode == Mode::Oriented ? orientation_classes(c.map.map)
-                                                                     : std::vector<uint8_t>{});
-        for (uint32_t s : start_darts(b, mode).darts) expect_lookup_by_one_word(store, b, set.cell_dim, s, what);
+        const BoundaryGraph b = cell_boundary(
+            c.map.map, set.cell_dim, c.cell, c.map.flag,
+            mode == Mode::Oriented ? orientation_classes(c.map.map) : std::vector<uint8_t>{});
+        for (uint32_t s : start_darts(b, mode).darts)
+          expect_lookup_by_one_word(store, b, set.cell_dim, s, what);
         hits += store.match(b, set.cell_dim).hits != nullptr;
       }
       EXPECT_GT(hits, 0u) << what;

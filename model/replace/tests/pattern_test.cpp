@@ -3,11 +3,11 @@
 
 #include <fstream>
 
-#include "model/testing/scratch_dir.hpp"
 #include "model/core/builders.hpp"
 #include "model/map_io/map_json.hpp"
 #include "model/replace/pattern_store.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
+#include "model/testing/scratch_dir.hpp"
 
 namespace gmr::replace {
 namespace {
@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 struct TempDir {
   fs::path path;
-  explicit TempDir(const std::string& name) : path(gmr::testing::scratch_path("gmr_replace_" + name)) {
+  explicit TempDir(const std::string& name)
+      : path(gmr::testing::scratch_path("gmr_replace_" + name)) {
     fs::remove_all(path);
     fs::create_directories(path);
   }
@@ -60,7 +61,8 @@ TEST(PatternFolder, RejectsNonPatternsByName) {
       load_pattern(d.path / file);
       ADD_FAILURE() << file << " accepted";
     } catch (const Error& e) {
-      EXPECT_NE(e.location().find(file), std::string::npos) << file << ": " << e.location() << ": " << e.message();
+      EXPECT_NE(e.location().find(file), std::string::npos)
+          << file << ": " << e.location() << ": " << e.message();
       EXPECT_NE(e.message().find(why), std::string::npos) << e.message();
     }
   };
@@ -75,7 +77,8 @@ TEST(PatternFolder, RejectsNonPatternsByName) {
   });
   expect_reject("two.json", two, "not connected");
   // The sides of a square prism form an annulus: two boundary cycles.
-  expect_reject("annulus.json", surface_from_faces({{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}, 8),
+  expect_reject("annulus.json",
+                surface_from_faces({{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}, 8),
                 "not one cycle");
   EXPECT_THROW(load_patterns(d.path / "missing"), Error);
   TempDir empty("empty");

@@ -49,11 +49,13 @@ inline void split_each_edge(FlaggedMap& m, unsigned k) {
 
 // The per-dart positions, rounded to multiples of 1/scale and sorted (a multiset invariant under
 // dart renumbering).
-inline std::vector<std::array<long long, 3>> position_multiset(const FlaggedMap& m, double scale = 1e6) {
+inline std::vector<std::array<long long, 3>> position_multiset(const FlaggedMap& m,
+                                                               double scale = 1e6) {
   std::vector<std::array<long long, 3>> out;
   m.map.for_each_dart([&](Dart d) {
     const Vec3& p = m.position[d];
-    out.push_back({std::llround(p[0] * scale), std::llround(p[1] * scale), std::llround(p[2] * scale)});
+    out.push_back(
+        {std::llround(p[0] * scale), std::llround(p[1] * scale), std::llround(p[2] * scale)});
   });
   std::sort(out.begin(), out.end());
   return out;

@@ -31,13 +31,15 @@ size_t index_of_pattern(const PatternStore& store, const std::string& name) {
 }
 
 bool same_darts(const FlaggedMap& a, const FlaggedMap& b) {
-  if (a.map.capacity() != b.map.capacity() || a.flag != b.flag || a.position != b.position) return false;
+  if (a.map.capacity() != b.map.capacity() || a.flag != b.flag || a.position != b.position)
+    return false;
   for (int i = 0; i <= 3; ++i)
     if (a.map.links(i) != b.map.links(i)) return false;
   return true;
 }
 
-const std::vector<Voxel> kSixVoxels{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};
+const std::vector<Voxel> kSixVoxels{{0, 0, 0}, {1, 0, 0}, {2, 0, 0},
+                                    {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};
 
 // Every cell met at its smallest dart, a flagged corner dart: the boundary automorphisms of
 // split4 and hex8 are transitive on their flagged darts, so that dart matches the start. Two
@@ -52,8 +54,10 @@ TEST(ReplaceOnly, HexSubdivisionIsQueryReplaceDartForDart) {
     split_all_edges(only, 2);
     split_all_edges(qr, 2);
     auto valid = [&] { ASSERT_TRUE(is_valid(only.map)); };
-    const QueryReplaceReport f = replace_only(only, store, split4, nullptr, Precondition::CheckValidity, valid);
-    const QueryReplaceReport v = replace_only(only, store, hex8, nullptr, Precondition::AssumeValid, valid);
+    const QueryReplaceReport f =
+        replace_only(only, store, split4, nullptr, Precondition::CheckValidity, valid);
+    const QueryReplaceReport v =
+        replace_only(only, store, hex8, nullptr, Precondition::AssumeValid, valid);
     EXPECT_TRUE(f.unmatched.empty() && v.unmatched.empty());
     EXPECT_EQ(f.matched[split4], f.cells);
     EXPECT_EQ(v.matched[hex8], v.cells);
@@ -89,9 +93,11 @@ TEST(ReplaceOnly, ListedCellsFromOtherStartDarts) {
   auto valid = [&] { ASSERT_TRUE(is_valid(listed.map)); };
   const std::vector<Dart> faces = largest_flagged(2);
   EXPECT_NE(faces, orbit_representatives(listed.map, cell_type(listed.map, 2)));
-  const QueryReplaceReport f = replace_only(listed, store, split4, &faces, Precondition::CheckValidity, valid);
+  const QueryReplaceReport f =
+      replace_only(listed, store, split4, &faces, Precondition::CheckValidity, valid);
   const std::vector<Dart> volumes = largest_flagged(3);
-  const QueryReplaceReport v = replace_only(listed, store, hex8, &volumes, Precondition::CheckValidity, valid);
+  const QueryReplaceReport v =
+      replace_only(listed, store, hex8, &volumes, Precondition::CheckValidity, valid);
   EXPECT_TRUE(f.unmatched.empty() && v.unmatched.empty());
   EXPECT_EQ(v.cells, kSixVoxels.size());
   EXPECT_TRUE(is_isomorphic(direct.map, listed.map));

@@ -19,7 +19,8 @@ PatternStore folder_store(const std::string& set, Mode mode) {
   return s;
 }
 
-// Every dart flagged: the new cells' corners become the next level's (docs/query-replace.md, Flags).
+// Every dart flagged: the new cells' corners become the next level's (docs/query-replace.md,
+// Flags).
 void flag_all(FlaggedMap& m) { m.flag.assign(m.map.capacity(), 1); }
 
 // e-pattern (split in 2), then faces, then volumes; validity after every replacement.
@@ -33,9 +34,11 @@ std::pair<QueryReplaceReport, QueryReplaceReport> refine(FlaggedMap& m, const Pa
 
 // Every volume is a combinatorial hexahedron: its unflagged boundary signature is the cube's.
 void expect_all_hexahedra(const Map& g) {
-  const Word cube = minimal_signature(cell_boundary(make_cube(2), 3, 0, {}, {}), Mode::Unoriented, false).word;
+  const Word cube =
+      minimal_signature(cell_boundary(make_cube(2), 3, 0, {}, {}), Mode::Unoriented, false).word;
   for (Dart v : orbit_representatives(g, cell_type(g, 3)))
-    ASSERT_EQ(minimal_signature(cell_boundary(g, 3, v, {}, {}), Mode::Unoriented, false).word, cube) << "volume of dart " << v;
+    ASSERT_EQ(minimal_signature(cell_boundary(g, 3, v, {}, {}), Mode::Unoriented, false).word, cube)
+        << "volume of dart " << v;
 }
 
 TEST(VolumePatterns, BoundaryAutomorphismsOfTheHexAndTetPatterns) {
@@ -67,7 +70,7 @@ TEST(VolumeReplacement, TetrahedronToFourHexahedra) {
     EXPECT_TRUE(v.unmatched.empty());
     const auto a = count_all_cells(m.map);
     EXPECT_EQ(a[0], c[0] + c[1] + c[2] + c[3]);  // V' = V + E + F + T
-    EXPECT_EQ(a[3], 4 * c[3]);                    // #hex = 4 #tet
+    EXPECT_EQ(a[3], 4 * c[3]);                   // #hex = 4 #tet
     EXPECT_EQ(euler_characteristic(m.map), euler_characteristic(lift(make_tetrahedron(2), 3)));
     expect_all_hexahedra(m.map);
   }

@@ -1,6 +1,8 @@
 // A cell numbered along a known word (word_traversal.hpp), the half-cell count of the replacement
 // room (half_cells.hpp), and query-replace's lookup through the word the previous cell matched
 // (query_replace.cpp): each gives what the plain traversal, orbit count or lookup gives.
+#include "model/replace/word_traversal.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,13 +12,12 @@
 #include "model/core/builders.hpp"
 #include "model/core/orbit.hpp"
 #include "model/core/validity.hpp"
-#include "model/testing/random_maps.hpp"
 #include "model/replace/flagged_word.hpp"
 #include "model/replace/half_cells.hpp"
 #include "model/replace/query_replace.hpp"
 #include "model/replace/stride_prefetch.hpp"
 #include "model/replace/tests/replace_fixtures.hpp"
-#include "model/replace/word_traversal.hpp"
+#include "model/testing/random_maps.hpp"
 
 namespace gmr::replace {
 namespace {
@@ -54,7 +55,9 @@ TEST(WordTraversal, FollowsTheCellsOwnWordAsTheTraversalNumbersIt) {
         const Word w = word_from(g, i, d, flag);
         Bits bits(g.capacity());
         std::vector<Dart> out(b.size());
-        ASSERT_TRUE(follow_word(g, i, d, w.data(), b.size(), flag, bits.met(g.capacity()), out.data())) << i << " " << d;
+        ASSERT_TRUE(
+            follow_word(g, i, d, w.data(), b.size(), flag, bits.met(g.capacity()), out.data()))
+            << i << " " << d;
         EXPECT_EQ(out, b.dart);
         EXPECT_EQ(bits.count(), b.size());
         for (Dart x : b.dart) EXPECT_TRUE(bits.met(g.capacity()).test(x));
@@ -62,7 +65,8 @@ TEST(WordTraversal, FollowsTheCellsOwnWordAsTheTraversalNumbersIt) {
         std::vector<uint32_t> cut(flag.begin(), flag.begin() + (g.capacity() - 1) / 3 * 3 + 1);
         Bits again(g.capacity());
         std::vector<Dart> out_cut(b.size());
-        ASSERT_TRUE(follow_word(g, i, d, w.data(), b.size(), cut, again.met(g.capacity()), out_cut.data()));
+        ASSERT_TRUE(
+            follow_word(g, i, d, w.data(), b.size(), cut, again.met(g.capacity()), out_cut.data()));
         EXPECT_EQ(out_cut, b.dart);
       }
     }
@@ -82,7 +86,8 @@ TEST(WordTraversal, RefusesOtherWordsAndLeavesNothingMet) {
   const uint32_t n = static_cast<uint32_t>(cube.size());
   // Dart 0 is the only flagged dart: from any other dart the flags disagree.
   for (Dart d = 1; d < cube.capacity(); ++d) {
-    EXPECT_FALSE(follow_word(cube, 3, d, w0.data(), n, flag, bits.met(cube.capacity()), out.data())) << d;
+    EXPECT_FALSE(follow_word(cube, 3, d, w0.data(), n, flag, bits.met(cube.capacity()), out.data()))
+        << d;
     EXPECT_EQ(bits.count(), 0u);
   }
   // The volume's word on a face; a met dart met again.
@@ -97,11 +102,13 @@ TEST(WordTraversal, RefusesOtherWordsAndLeavesNothingMet) {
   const Word ws = word_from(square, 2, 0, none);
   Bits small(digon.capacity());
   std::vector<Dart> out2(8);
-  EXPECT_FALSE(follow_word(digon, 2, 0, ws.data(), 8, none, small.met(digon.capacity()), out2.data()));
+  EXPECT_FALSE(
+      follow_word(digon, 2, 0, ws.data(), 8, none, small.met(digon.capacity()), out2.data()));
   EXPECT_EQ(small.count(), 0u);
   // The 2-gon's own word does agree.
   const Word wd = word_from(digon, 2, 0, none);
-  EXPECT_TRUE(follow_word(digon, 2, 0, wd.data(), 4, none, small.met(digon.capacity()), out2.data()));
+  EXPECT_TRUE(
+      follow_word(digon, 2, 0, wd.data(), 4, none, small.met(digon.capacity()), out2.data()));
 }
 
 // The sweep's next unmet dart (MetBits::next_clear) is the first clear bit at or after a dart, as
@@ -137,7 +144,9 @@ TEST(WordTraversal, PredictedCellPrefetchChangesNothing) {
   const Dart cap = g.capacity();
   const std::vector<Dart> last{0, 5, cap - 1, 3, cap / 2, 1};
   const std::vector<Dart> before{0, 2, 0, 7, 1, cap - 1};  // strides 0, 3, beyond, below 0, ...
-  for (int i : {2, 3}) prefetch_predicted_cell(g, i, flag, last.data(), before.data(), static_cast<uint32_t>(last.size()));
+  for (int i : {2, 3})
+    prefetch_predicted_cell(g, i, flag, last.data(), before.data(),
+                            static_cast<uint32_t>(last.size()));
   EXPECT_TRUE(is_isomorphic(g, before_map));
   for (int i = 0; i <= 3; ++i) EXPECT_EQ(g.links(i), before_map.links(i));
   EXPECT_EQ(flag, std::vector<uint32_t>(cap / 2, 1));
@@ -149,12 +158,17 @@ TEST(WordTraversal, PredictedCellPrefetchChangesNothing) {
 // too.
 size_t halves_by_orbits(const Map& g, int i) {
   size_t h = 0;
-  for (Dart d : orbit_representatives(g, cell_type(g, i))) h += g.dimension() > i && !g.is_free(i + 1, d) ? 2 : 1;
+  for (Dart d : orbit_representatives(g, cell_type(g, i)))
+    h += g.dimension() > i && !g.is_free(i + 1, d) ? 2 : 1;
   return h;
 }
 
 TEST(HalfCells, CountIsTheCellsWithTheirTwoSides) {
-  std::vector<Map> maps{make_cube(2), make_cube(3), make_grid(3, 2), make_grid(3, 2, 3), make_polygon(5),
+  std::vector<Map> maps{make_cube(2),
+                        make_cube(3),
+                        make_grid(3, 2),
+                        make_grid(3, 2, 3),
+                        make_polygon(5),
                         make_stacked_cubes(),
                         make_polycube({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {3, 0, 0}})};
   {
@@ -187,7 +201,8 @@ TEST(HalfCells, CountIsTheCellsWithTheirTwoSides) {
     ASSERT_TRUE(is_valid(g));
     for (int i : {2, 3}) {
       if (g.dimension() != i && g.dimension() != i + 1) continue;
-      EXPECT_EQ(count_half_cells(g, i), halves_by_orbits(g, i)) << g.dimension() << " " << i << " " << g.size();
+      EXPECT_EQ(count_half_cells(g, i), halves_by_orbits(g, i))
+          << g.dimension() << " " << i << " " << g.size();
     }
     if (g.dimension() == 3) {  // both in one sweep (the free-dart maps: the faces swept apart)
       const HalfFacesAndVolumes h = count_half_faces_and_volumes(g);
@@ -224,7 +239,8 @@ TEST(HalfCells, CountIsTheCellsWithTheirTwoSides) {
 // of both orientation classes).
 TEST(QueryReplace, EachCellLookedUpAloneGivesTheSameMap) {
   auto same = [](const FlaggedMap& a, const FlaggedMap& b) {
-    if (a.map.capacity() != b.map.capacity() || a.flag != b.flag || a.position != b.position) return false;
+    if (a.map.capacity() != b.map.capacity() || a.flag != b.flag || a.position != b.position)
+      return false;
     for (int i = 0; i <= a.map.dimension(); ++i)
       if (a.map.links(i) != b.map.links(i)) return false;
     return true;
@@ -264,7 +280,8 @@ TEST(QueryReplace, EachCellLookedUpAloneGivesTheSameMap) {
           if (mask >> e & 1) split_edge(m, edges[e], 2);
         run(m, faces, 2);
       }
-      FlaggedMap block = all_flagged(shuffle(make_polycube({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}})));
+      FlaggedMap block =
+          all_flagged(shuffle(make_polycube({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}})));
       split_all_edges(block, 2);
       block = run(block, hexes, 2);
       run(block, hexes, 3);

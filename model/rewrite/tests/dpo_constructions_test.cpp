@@ -6,11 +6,11 @@
 
 #include <random>
 
-#include "model/testing/rule_family.hpp"
 #include "checker/semantic.hpp"
-#include "model/rewrite/dpo.hpp"
 #include "model/core/error.hpp"
 #include "model/core/signature.hpp"
+#include "model/rewrite/dpo.hpp"
+#include "model/testing/rule_family.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -20,7 +20,8 @@ using namespace gmr::testing;
 TEST(DpoConstructions, CategoricalEqualsInPlaceOnEveryApplication) {
   std::mt19937_64 rng(7);
   size_t applications = 0, map_results = 0;
-  for (auto [n, kind] : {std::pair{1, MapKind::GMap}, std::pair{2, MapKind::GMap}, std::pair{2, MapKind::OMap}}) {
+  for (auto [n, kind] :
+       {std::pair{1, MapKind::GMap}, std::pair{2, MapKind::GMap}, std::pair{2, MapKind::OMap}}) {
     const MapFamily fam = map_family(n, kind, 4);
     for (int k = 0; k < 300; ++k) {
       const Rule r = random_rule_from_maps(rng, fam, 4);

@@ -2,11 +2,11 @@
 #include <gtest/gtest.h>
 
 #include "model/core/builders.hpp"
-#include "model/rewrite/dpo.hpp"
 #include "model/core/error.hpp"
-#include "model/rule_io/rule_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
+#include "model/rewrite/dpo.hpp"
+#include "model/rule_io/rule_json.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -51,8 +51,9 @@ TEST(Match, AnchoredMatchingPropagates) {
   auto m = anchored_match(r.left(), dg, {{Node(0), Node(1)}, {Node(2), Node(3)}});
   ASSERT_TRUE(m);
   EXPECT_EQ(m->node, (NodeMap{Node(1), Node(0), Node(3), Node(2)}));
-  EXPECT_FALSE(anchored_match(r.left(), dg, {{Node(0), Node(1)}, {Node(2), Node(0)}}));  // injectivity
-  EXPECT_THROW(anchored_match(r.left(), dg, {{Node(0), Node(1)}}), Error);    // c, d unreachable
+  EXPECT_FALSE(
+      anchored_match(r.left(), dg, {{Node(0), Node(1)}, {Node(2), Node(0)}}));  // injectivity
+  EXPECT_THROW(anchored_match(r.left(), dg, {{Node(0), Node(1)}}), Error);      // c, d unreachable
   DGraph L;
   L.add_node("a");
   L.add_node("b");

@@ -1,13 +1,14 @@
 // Import of Jerboa .jme rule files: the real 50-rule fixture and located errors.
+#include "model/rule_io/jme_import.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <iostream>
 #include <set>
 
 #include "model/core/error.hpp"
-#include "model/rule_io/jme_import.hpp"
 #include "model/rule_io/jme_expression.hpp"
-#include <iostream>
 #include "model/scheme/scheme_engine.hpp"
 #include "model/testing/source_tree.hpp"
 
@@ -16,7 +17,9 @@ using namespace gmr::scheme;
 using namespace gmr::io;
 
 namespace {
-std::string fixture() { return gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme"); }
+std::string fixture() {
+  return gmr::testing::source_path("tools/data/jerboa/JerboaTrackingOrbit.jme");
+}
 }  // namespace
 
 TEST(Jme, OrbitAttribute) {
@@ -80,28 +83,37 @@ TEST(Jme, LocatedSchemaErrors) {
     }
     return std::string("no error");
   };
-  const std::string head = "<jerboamodelereditor>\n<modeler name='M' dimension='2'>\n<rules>\n<rule name='r'>\n";
-  const std::string left = "<left><nodes><node name='n0' orbit='0,1' kind='HOOK'/></nodes><arcs></arcs></left>\n";
+  const std::string head =
+      "<jerboamodelereditor>\n<modeler name='M' dimension='2'>\n<rules>\n<rule name='r'>\n";
+  const std::string left =
+      "<left><nodes><node name='n0' orbit='0,1' kind='HOOK'/></nodes><arcs></arcs></left>\n";
   const std::string tail = "</rule>\n</rules>\n</modeler>\n</jerboamodelereditor>\n";
   EXPECT_EQ(loc(head + left + "<right><nodes/><arcs/></right>\n" + tail), "no error");
-  EXPECT_NE(loc(head + left + "<right><nodes/><arcs>\n<arc dim='0' a='n0' b='zz'/></arcs></right>\n" + tail)
+  EXPECT_NE(loc(head + left +
+                "<right><nodes/><arcs>\n<arc dim='0' a='n0' b='zz'/></arcs></right>\n" + tail)
                 .find("m.jme:7 arc names unknown node \"n0\""),
             std::string::npos);
-  EXPECT_NE(loc(head + left + "<right><nodes/><arcs>\n<arcloop dim='x' node='n0'/></arcs></right>\n" + tail)
+  EXPECT_NE(loc(head + left +
+                "<right><nodes/><arcs>\n<arcloop dim='x' node='n0'/></arcs></right>\n" + tail)
                 .find("m.jme:7"),
             std::string::npos);
-  EXPECT_NE(loc(head + "<left><nodes>\n<node name='n0' orbit='0,q'/></nodes></left><right/>" + tail).find("m.jme:6"),
+  EXPECT_NE(loc(head + "<left><nodes>\n<node name='n0' orbit='0,q'/></nodes></left><right/>" + tail)
+                .find("m.jme:6"),
             std::string::npos);
-  EXPECT_NE(loc("<jerboamodelereditor><modeler dimension='2'><rules>\n<rule name='r'><left></rule>").find("m.jme:2"),
+  EXPECT_NE(loc("<jerboamodelereditor><modeler dimension='2'><rules>\n<rule name='r'><left></rule>")
+                .find("m.jme:2"),
             std::string::npos);
   EXPECT_NE(loc("<x/>").find("not a Jerboa"), std::string::npos);
   // Malformed XML is located too (model/rule_io/xml.hpp lists the cases).
-  EXPECT_EQ(loc(head + left + "<right><nodes/><arcs>\n<arc dim='0' a='n0' b='&zz;'/></arcs></right>\n" + tail),
+  EXPECT_EQ(loc(head + left +
+                "<right><nodes/><arcs>\n<arc dim='0' a='n0' b='&zz;'/></arcs></right>\n" + tail),
             "m.jme:7 malformed XML: unknown entity &zz; in attribute b");
 }
 
 TEST(Jme, DeepNestingIsALocatedError) {
-  std::string t = "<jerboamodelereditor>\n<modeler name='M' dimension='2'>\n<rules>\n<rule name='r'>\n<comment>";
+  std::string t =
+      "<jerboamodelereditor>\n<modeler name='M' dimension='2'>\n<rules>\n<rule "
+      "name='r'>\n<comment>";
   for (int i = 0; i < 20000; ++i) t += "<x>";
   for (int i = 0; i < 20000; ++i) t += "</x>";
   t += "</comment>\n</rule>\n</rules>\n</modeler>\n</jerboamodelereditor>\n";
@@ -137,18 +149,23 @@ TEST(Jme, ExpressionsTranslateOrSayWhyNot) {
   }
   EXPECT_EQ(translated + unsupported, 46u);
   EXPECT_GE(translated, 40u);
-  std::cout << "[ jme      ] " << translated << " of 46 expressions translated, " << unsupported << " unsupported\n";
+  std::cout << "[ jme      ] " << translated << " of 46 expressions translated, " << unsupported
+            << " unsupported\n";
 }
 
 TEST(Jme, TranslationOfTheJerboaForms) {
-  auto code = [](const std::string& java) { return translate_jerboa_expression(java).code.value_or("<none>"); };
+  auto code = [](const std::string& java) {
+    return translate_jerboa_expression(java).code.value_or("<none>");
+  };
   EXPECT_EQ(code("return Vec3.mid(n0.pos, n1.pos);"), "middle(n0.pos, n1.pos)");
   EXPECT_EQ(code("return new Vec3(0.5, 1.5,0);"), "point(0.5, 1.5, 0)");
   EXPECT_EQ(code("Vec3 res = new Vec3();\nres.barycenter(<0,1>_pos(n0));\nreturn res.addn(0,0,1);"),
             "((middle(<0,1>_pos(n0))) + vector(0, 0, 1))");
   EXPECT_EQ(code("return n0@1@0.pos.addn(1,0,0);"), "(n0@1@0.pos + vector(1, 0, 0))");
-  EXPECT_EQ(code("Color col = new Color(20,20,25);\nreturn col;"), "(colour(20 / 255, 20 / 255, 25 / 255))");
-  const auto w = translate_jerboa_expression("return new Vec3(Vec3.segmentABByWeight(n0.pos, n0@0.pos, weight));");
+  EXPECT_EQ(code("Color col = new Color(20,20,25);\nreturn col;"),
+            "(colour(20 / 255, 20 / 255, 25 / 255))");
+  const auto w = translate_jerboa_expression(
+      "return new Vec3(Vec3.segmentABByWeight(n0.pos, n0@0.pos, weight));");
   EXPECT_FALSE(w.code);
   EXPECT_EQ(w.unsupported, "Vec3.segmentABByWeight");
 }

@@ -1,12 +1,13 @@
 // gmr.rule reading/writing (model/rule_json.hpp), Assumption 4 and the joint representation.
+#include "model/rule_io/rule_json.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "model/testing/scratch_dir.hpp"
 #include "model/core/error.hpp"
-#include "model/rule_io/rule_json.hpp"
+#include "model/testing/scratch_dir.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -45,9 +46,11 @@ TEST(RuleJson, ReadsAndDeducesStatuses) {
   ASSERT_EQ(r.deleted_nodes().size(), 1u);
   EXPECT_EQ(r.left().name(r.deleted_nodes()[0]), "d");
   ASSERT_EQ(r.added_nodes().size(), 1u);
-  EXPECT_EQ(r.left_arc_status(ArcId(0)), ElemStatus::Preserved);  // a-0->b on both sides (Assumption 4)
+  EXPECT_EQ(r.left_arc_status(ArcId(0)),
+            ElemStatus::Preserved);  // a-0->b on both sides (Assumption 4)
   EXPECT_EQ(r.left_arc_status(ArcId(1)), ElemStatus::Deleted);
-  EXPECT_EQ(r.left_arc_status(ArcId(2)), ElemStatus::Deleted);    // the 2-loop (a link on one node = one arc)
+  EXPECT_EQ(r.left_arc_status(ArcId(2)),
+            ElemStatus::Deleted);  // the 2-loop (a link on one node = one arc)
   EXPECT_EQ(r.left().num_arcs(), 3u);
   EXPECT_EQ(r.right_arc_status(ArcId(1)), ElemStatus::Added);
 }
@@ -68,17 +71,22 @@ TEST(RuleJson, RoundTripAndAtomicWrite) {
 }
 
 TEST(RuleJson, LocatedErrors) {
-  EXPECT_EQ(error_of(edit("\"label\":1}", "\"label\":3}")), std::pair(ErrorCode::Schema, std::string("$.left.arcs[1].label")));
-  EXPECT_EQ(error_of(edit("\"to\":\"b\",\"label\":0},{\"from\":\"b\"", "\"to\":\"zz\",\"label\":0},{\"from\":\"b\"")).second,
+  EXPECT_EQ(error_of(edit("\"label\":1}", "\"label\":3}")),
+            std::pair(ErrorCode::Schema, std::string("$.left.arcs[1].label")));
+  EXPECT_EQ(error_of(edit("\"to\":\"b\",\"label\":0},{\"from\":\"b\"",
+                          "\"to\":\"zz\",\"label\":0},{\"from\":\"b\""))
+                .second,
             "$.right.arcs[0].to");
   EXPECT_EQ(error_of(edit("[\"a\",\"b\",\"d\"]", "[\"a\",\"b\",\"a\"]")).second, "$.left.nodes[2]");
   EXPECT_EQ(error_of(edit("[\"a\",\"b\",\"d\"]", "[\"a\",\"\",\"d\"]")).second, "$.left.nodes[1]");
   EXPECT_EQ(error_of(edit("\"concrete\"", "\"scheme\"")).second, "$.kind");
   EXPECT_EQ(error_of(edit("\"gmap\"", "\"cmap\"")).second, "$.map");
   EXPECT_EQ(error_of(edit("\"gmr.rule\"", "\"gmr.gmap\"")).second, "$.format");
-  EXPECT_EQ(error_of(edit("\"nodes\":[\"a\",\"a\"]", "\"nodes\":[\"a\"]")).second, "$.left.links[0].nodes");
+  EXPECT_EQ(error_of(edit("\"nodes\":[\"a\",\"a\"]", "\"nodes\":[\"a\"]")).second,
+            "$.left.links[0].nodes");
   EXPECT_EQ(error_of(edit("\"left\":{", "\"left\":{\"extra\":1,")).second, "$.left.extra");
-  EXPECT_EQ(error_of(edit("\"map\":\"gmap\"", "\"map\":\"omap\"")).second, "$.left.arcs[0].label");  // 0 not in 1..2
+  EXPECT_EQ(error_of(edit("\"map\":\"gmap\"", "\"map\":\"omap\"")).second,
+            "$.left.arcs[0].label");  // 0 not in 1..2
   EXPECT_EQ(error_of("{\"format\": ").first, ErrorCode::Parse);
   EXPECT_EQ(error_of("[1,2]").first, ErrorCode::Schema);
 }
@@ -104,9 +112,11 @@ TEST(RuleJson, JointRepresentationRoundTrip) {
   const Rule r = parse_rule(kGood);
   const JointRepresentation j = to_joint(r);
   EXPECT_EQ(j.graph.num_nodes(), r.left().num_nodes() + r.right().num_nodes());
-  EXPECT_EQ(j.graph.num_arcs(), r.left().num_arcs() + r.right().num_arcs() + r.preserved_nodes().size());
+  EXPECT_EQ(j.graph.num_arcs(),
+            r.left().num_arcs() + r.right().num_arcs() + r.preserved_nodes().size());
   EXPECT_EQ(rule_to_json(from_joint(j)), rule_to_json(r));
   JointRepresentation bad = j;
-  bad.graph.add_arc(Node(0), Node(static_cast<uint32_t>(r.left().num_nodes())), 0);  // crosses the sides
+  bad.graph.add_arc(Node(0), Node(static_cast<uint32_t>(r.left().num_nodes())),
+                    0);  // crosses the sides
   EXPECT_THROW(from_joint(bad), Error);
 }

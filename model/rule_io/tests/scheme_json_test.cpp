@@ -1,13 +1,14 @@
 // gmr.rule files of kind "scheme": round trips, atomic writing, located errors.
+#include "model/rule_io/scheme_json.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "model/testing/scratch_dir.hpp"
 #include "model/core/error.hpp"
-#include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"
+#include "model/testing/scratch_dir.hpp"
 
 using namespace gmr;
 using namespace gmr::scheme;
@@ -74,22 +75,31 @@ TEST(SchemeJson, LocatedErrors) {
     EXPECT_NE(p, std::string::npos) << from;
     return s.replace(p, from.size(), to);
   };
-  EXPECT_EQ(error_location(with("\"n1\", \"orbit\": \"<_,_,2>\"", "\"n1\", \"orbit\": \"<_,2>\"")).substr(0, 32),
+  EXPECT_EQ(error_location(with("\"n1\", \"orbit\": \"<_,_,2>\"", "\"n1\", \"orbit\": \"<_,2>\""))
+                .substr(0, 32),
             "t.json:$.right.nodes[1].orbit | ");
-  EXPECT_NE(error_location(with("[\"n0\", \"n1\"]", "[\"n0\", \"zz\"]")).find("$.right.arcs[0].nodes[1]"),
+  EXPECT_NE(
+      error_location(with("[\"n0\", \"n1\"]", "[\"n0\", \"zz\"]")).find("$.right.arcs[0].nodes[1]"),
+      std::string::npos);
+  EXPECT_NE(error_location(with("\"hooks\": [\"n0\"]", "\"hooks\": [\"n1\"]")).find("$.hooks[0]"),
             std::string::npos);
-  EXPECT_NE(error_location(with("\"hooks\": [\"n0\"]", "\"hooks\": [\"n1\"]")).find("$.hooks[0]"), std::string::npos);
-  EXPECT_NE(error_location(with("\"label\": 0", "\"label\": 3")).find("$.right.arcs[0].label"), std::string::npos);
-  EXPECT_NE(error_location(with("\"<0,1,2>\", \"hooks\"", "\"<0,_,2>\", \"hooks\"")).find("$.orbit"),
+  EXPECT_NE(error_location(with("\"label\": 0", "\"label\": 3")).find("$.right.arcs[0].label"),
             std::string::npos);
-  EXPECT_NE(error_location(with("\"kind\": \"scheme\"", "\"kind\": \"concrete\"")).find("$.kind"), std::string::npos);
-  EXPECT_NE(error_location(with("\"map\": \"gmap\"", "\"map\": \"omap\"")).find("$.map"), std::string::npos);
-  EXPECT_NE(error_location(with("\"n\": 2", "\"n\": 2, \"extra\": 1")).find("extra"), std::string::npos);
+  EXPECT_NE(
+      error_location(with("\"<0,1,2>\", \"hooks\"", "\"<0,_,2>\", \"hooks\"")).find("$.orbit"),
+      std::string::npos);
+  EXPECT_NE(error_location(with("\"kind\": \"scheme\"", "\"kind\": \"concrete\"")).find("$.kind"),
+            std::string::npos);
+  EXPECT_NE(error_location(with("\"map\": \"gmap\"", "\"map\": \"omap\"")).find("$.map"),
+            std::string::npos);
+  EXPECT_NE(error_location(with("\"n\": 2", "\"n\": 2, \"extra\": 1")).find("extra"),
+            std::string::npos);
   EXPECT_NE(error_location(with("{\"name\": \"n0\", \"orbit\": \"<_,1,2>\"}",
                                 "{\"name\": \"n1\", \"orbit\": \"<_,1,2>\"}"))
                 .find("$.right.nodes[1].name"),
             std::string::npos);
-  EXPECT_NE(error_location(with("\"orbit\": \"<_,1,2>\"", "\"orbit\": \"<_,1,\"")).find("$.right.nodes[0].orbit"),
+  EXPECT_NE(error_location(with("\"orbit\": \"<_,1,2>\"", "\"orbit\": \"<_,1,\""))
+                .find("$.right.nodes[0].orbit"),
             std::string::npos);
   EXPECT_NE(error_location("{\"format\": \"gmr.rule\",").find("t.json:1:"), std::string::npos);
 }

@@ -1,9 +1,10 @@
-// XML documents read by tinyxml2 (model/rule_io/xml.hpp): content, and every malformed case rejected
-// with its line.
+// XML documents read by tinyxml2 (model/rule_io/xml.hpp): content, and every malformed case
+// rejected with its line.
+#include "model/rule_io/xml.hpp"
+
 #include <gtest/gtest.h>
 
 #include "model/core/error.hpp"
-#include "model/rule_io/xml.hpp"
 
 using namespace gmr;
 using namespace gmr::io;
@@ -11,7 +12,8 @@ using namespace gmr::io;
 TEST(Xml, ElementsAttributesTextEntitiesCdata) {
   const char* t =
       "<?xml version=\"1.0\"?>\n<!-- head -->\n<a x=\"1\" y='&lt;&amp;&quot;&apos;&gt;'>\n"
-      "  <b/><b k=\"v\">hi &#65;&#x42; <![CDATA[<raw> & stuff]]></b>\n  <!-- c -->\n  <c>line\ntwo</c>\n</a>\n";
+      "  <b/><b k=\"v\">hi &#65;&#x42; <![CDATA[<raw> & stuff]]></b>\n  <!-- c -->\n  "
+      "<c>line\ntwo</c>\n</a>\n";
   const XmlDocument d(t);
   const tinyxml2::XMLElement& a = d.root();
   EXPECT_STREQ(a.Name(), "a");
@@ -48,7 +50,8 @@ TEST(Xml, ErrorsWithLines) {
   // tinyxml2 locates a mismatched end tag at the start tag it fails to close (<b>, line 2),
   // not at the end tag (</a>, line 3).
   EXPECT_EQ(loc("<a>\n<b>\n</a>").substr(0, 7), "f.xml:2");
-  EXPECT_NE(loc("<a>\n<b>\n</a>").find("closed by a different end tag (XMLElement name=b)"), std::string::npos);
+  EXPECT_NE(loc("<a>\n<b>\n</a>").find("closed by a different end tag (XMLElement name=b)"),
+            std::string::npos);
   EXPECT_EQ(loc("<a>\n\n<b x=1/></a>").substr(0, 7), "f.xml:3");
   EXPECT_NE(loc("<a>\n\n<b x=1/></a>").find("bad attribute"), std::string::npos);
   // Duplicate attribute: tinyxml2 reports it as any bad attribute.
@@ -57,7 +60,8 @@ TEST(Xml, ErrorsWithLines) {
   EXPECT_NE(loc("<a><!-- x </a>").find("unterminated comment"), std::string::npos);
   EXPECT_NE(loc("<a><![CDATA[ x </a>").find("unterminated CDATA"), std::string::npos);
   // Elements left open: located at the innermost start tag.
-  EXPECT_EQ(loc("<r>\n<a>\n\n"), "f.xml:2 malformed XML: element not closed, or a tag that cannot be read");
+  EXPECT_EQ(loc("<r>\n<a>\n\n"),
+            "f.xml:2 malformed XML: element not closed, or a tag that cannot be read");
   EXPECT_NE(loc("").find("no root"), std::string::npos);
   EXPECT_NE(loc(" \n<!-- only a comment -->\n").find("no root"), std::string::npos);
   // Checks tinyxml2 leaves out.
@@ -72,8 +76,10 @@ TEST(Xml, ErrorsWithLines) {
   EXPECT_NE(loc("<a>&#xZ;</a>").find("bad character reference"), std::string::npos);
   EXPECT_NE(loc("<a>a & b</a>").find("'&' that does not start a reference"), std::string::npos);
   // Of these checks, the first failing one in document order.
-  EXPECT_EQ(loc("<a>\n<b>\n<c x='&p;'/>\n</b>\n&q;</a>"), "f.xml:3 malformed XML: unknown entity &p; in attribute x");
-  EXPECT_NE(loc("<!DOCTYPE a [ <!ENTITY e 'x'> ]><a/>").find("text outside the root"), std::string::npos);
+  EXPECT_EQ(loc("<a>\n<b>\n<c x='&p;'/>\n</b>\n&q;</a>"),
+            "f.xml:3 malformed XML: unknown entity &p; in attribute x");
+  EXPECT_NE(loc("<!DOCTYPE a [ <!ENTITY e 'x'> ]><a/>").find("text outside the root"),
+            std::string::npos);
   // A CDATA section is not decoded, so '&' in it is no reference.
   EXPECT_EQ(loc("<a><![CDATA[&nbsp; &]]></a>"), "no error");
 }
@@ -92,7 +98,8 @@ TEST(Xml, DeepNestingIsALocatedError) {
   for (int i = 0; i < 20000; ++i) deep += "<x>";
   for (int i = 0; i < 20000; ++i) deep += "</x>";
   EXPECT_EQ(loc(deep), "f.xml:3 malformed XML: elements nested too deeply (tinyxml2's limit: " +
-                           std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) + " levels) (Element nesting is too deep.)");
+                           std::to_string(TINYXML2_MAX_ELEMENT_DEPTH) +
+                           " levels) (Element nesting is too deep.)");
   // The document counts as a level, so a little less than the limit in elements.
   std::string ok;
   for (int i = 0; i < TINYXML2_MAX_ELEMENT_DEPTH - 10; ++i) ok += "<x>";

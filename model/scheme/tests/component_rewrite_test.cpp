@@ -23,7 +23,8 @@ void expect_same_map(const Map& a, const Map& b, const std::string& where) {
   for (Dart d = 0; d < a.capacity(); ++d) {
     ASSERT_EQ(a.alive(d), b.alive(d)) << where << ", dart " << d;
     if (!a.alive(d)) continue;
-    for (int i = 0; i <= a.dimension(); ++i) ASSERT_EQ(a.alpha(i, d), b.alpha(i, d)) << where << ", dart " << d;
+    for (int i = 0; i <= a.dimension(); ++i)
+      ASSERT_EQ(a.alpha(i, d), b.alpha(i, d)) << where << ", dart " << d;
   }
   Map ca = a, cb = b;  // the next reused indices tell the free lists apart
   while (ca.has_holes()) ASSERT_EQ(ca.add_dart(), cb.add_dart()) << where;
@@ -98,10 +99,12 @@ TEST(ComponentRewrite, RandomCopiesSchemesOnSewnCellsAreTheEngineResult) {
 
 TEST(ComponentRewrite, OtherSchemesAndMapsTakeTheGeneralPath) {
   const Map square = make_polygon(4);
-  EXPECT_FALSE(rewrites_whole_components(SchemeEngine(fixtures::vertex_insertion()), square));  // L label <0>
+  EXPECT_FALSE(rewrites_whole_components(SchemeEngine(fixtures::vertex_insertion()),
+                                         square));  // L label <0>
   Map g3(3);
   g3.add_darts(2);
-  EXPECT_FALSE(rewrites_whole_components(SchemeEngine(fixtures::quad_subdivision()), g3));  // dimension
+  EXPECT_FALSE(
+      rewrites_whole_components(SchemeEngine(fixtures::quad_subdivision()), g3));  // dimension
   Map sq = square;
   EXPECT_THROW(apply_everywhere(SchemeEngine(fixtures::vertex_insertion()), sq,
                                 {.keep_tables = false, .path = EverywherePath::ByComponents}),

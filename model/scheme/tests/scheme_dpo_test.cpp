@@ -8,10 +8,10 @@
 
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
+#include "model/core/validity.hpp"
 #include "model/rule_io/jme_import.hpp"
 #include "model/rule_io/scheme_json.hpp"
 #include "model/scheme/tests/scheme_dpo_compare.hpp"
-#include "model/core/validity.hpp"
 #include "model/testing/source_tree.hpp"
 
 using namespace gmr;
@@ -32,7 +32,8 @@ std::pair<size_t, size_t> sweep(const Map& g, const RuleScheme& s, size_t sample
     for (size_t c = 0; c < hooks; ++c) hd.push_back(darts[(k * 7 + c * 13 + c * k) % darts.size()]);
     if (hooks == 0 && k > 0) break;
     EngineVsDpo r = compare_engine_dpo(g, s, hd);
-    EXPECT_TRUE(r.problem.empty()) << s.name << " at dart " << (hd.empty() ? 0 : hd[0]) << ": " << r.problem;
+    EXPECT_TRUE(r.problem.empty())
+        << s.name << " at dart " << (hd.empty() ? 0 : hd[0]) << ": " << r.problem;
     (r.engine_applied ? applied : refused)++;
   }
   return {applied, refused};
@@ -69,7 +70,8 @@ TEST(EngineVsDpo, JerboaFixtureRules) {
     }
     if (!e->not_combinatorial().empty()) continue;
     ++compared;
-    for (const Map& g : {make_stacked_cubes(), make_cube(3), make_polycube({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}})})
+    for (const Map& g : {make_stacked_cubes(), make_cube(3),
+                         make_polycube({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}})})
       applied += sweep(g, s, 10).first;
   }
   EXPECT_GE(compared, 40u);

@@ -1,4 +1,6 @@
 // Rule schemes: structure, instantiation (Defs. 88–89) and the application engine.
+#include "model/scheme/scheme_engine.hpp"
+
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -6,9 +8,8 @@
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
 #include "model/core/orbit.hpp"
-#include "model/scheme/scheme_engine.hpp"
-#include "model/scheme/scheme_instantiation.hpp"
 #include "model/core/validity.hpp"
+#include "model/scheme/scheme_instantiation.hpp"
 #include "model/scheme/tests/scheme_fixtures.hpp"
 
 using namespace gmr;

@@ -186,7 +186,7 @@ TEST(RandomMaps, ResewIsValid) {
   for (uint64_t seed = 0; seed < 60; ++seed) {
     Rng rng(seed);
     const Map g = random_map(rng, seed % 2 ? Generator::GluedPolygons : Generator::SewSequence,
-                               2 + int(seed % 3 == 0));
+                             2 + int(seed % 3 == 0));
     Map h = g;
     const Mutation m = resew_one_link(h, rng);
     EXPECT_TRUE(is_valid(h)) << m.str();
@@ -213,7 +213,8 @@ TEST(RandomMaps, RandomOMapsAreValid) {
     Rng r3(seed);
     GluedPolygonsOptions go;
     go.max_faces = 4;
-    const Map g = seed % 2 ? random_glued_polygons(r3, go) : double_along_boundary(random_polycube(r3, {1, 3}));
+    const Map g = seed % 2 ? random_glued_polygons(r3, go)
+                           : double_along_boundary(random_polycube(r3, {1, 3}));
     const Map o = oriented_components(g);
     ASSERT_TRUE(o.is_omap());
     ASSERT_EQ(o.dimension(), g.dimension());

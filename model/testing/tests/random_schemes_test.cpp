@@ -46,6 +46,7 @@ TEST(RandomSchemes, CopiesShape) {
     EXPECT_GE(s.right.size(), 1u);
     EXPECT_LE(s.right.size(), 3u);
     EXPECT_TRUE(s.right.arcs.empty());
-    for (const auto& v : s.right.nodes) EXPECT_TRUE(v.label == OrbitType({0, 1, 2}) || v.label == OrbitType({2, 1, 0}));
+    for (const auto& v : s.right.nodes)
+      EXPECT_TRUE(v.label == OrbitType({0, 1, 2}) || v.label == OrbitType({2, 1, 0}));
   }
 }

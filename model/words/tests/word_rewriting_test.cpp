@@ -1,5 +1,7 @@
 // Words, conjugates and the conjugate rewriting system R_{N,E} (thesis Defs. 43, 52; Lemmas 9–11;
 // Ex. 55/56/59).
+#include "model/words/word_rewriting.hpp"
+
 #include <gtest/gtest.h>
 
 #include <ostream>
@@ -8,7 +10,6 @@
 
 #include "checker/scheme_checker.hpp"
 #include "model/core/error.hpp"
-#include "model/words/word_rewriting.hpp"
 
 using namespace gmr;
 using namespace gmr::words;
@@ -57,8 +58,8 @@ TEST(Words, ParsePrintConjugate) {
 TEST(F14, Ex55RuleListExactly) {
   const RewritingSystem R = f14();
   const std::set<std::string> expected = {
-      "11->eps",   "33->eps",  "0~0->eps", "~00->eps", "2~2->eps", "~22->eps",   // cancellations
-      "10->~01",   "1~0->01",  "21->1~2",  "~21->12",  "31->13",   "20->~0~2", "~2~0->02"};
+      "11->eps", "33->eps", "0~0->eps", "~00->eps", "2~2->eps", "~22->eps",  // cancellations
+      "10->~01", "1~0->01", "21->1~2",  "~21->12",  "31->13",   "20->~0~2", "~2~0->02"};
   EXPECT_EQ(rule_strings(R), expected);
   // Ex. 56: mixed-polarity swaps are not rules (Lemma 11: R' would be unsound).
   EXPECT_EQ(R.rule_for({2, false}, {0, true}), nullptr);  // 2~0 -> 0~2
@@ -96,8 +97,8 @@ TEST(F14, Ex56NonConfluenceOf210) {
   const RewritingSystem R = f14();
   const auto step = R.one_step(w("210"));
   ASSERT_EQ(step.size(), 2u);
-  EXPECT_EQ(step[0], w("1~20"));  // 21 -> 1~2
-  EXPECT_EQ(step[1], w("2~01"));  // 10 -> ~01
+  EXPECT_EQ(step[0], w("1~20"));        // 21 -> 1~2
+  EXPECT_EQ(step[1], w("2~01"));        // 10 -> ~01
   EXPECT_TRUE(R.is_normal(w("1~20")));  // ~20 is not a rule
   EXPECT_TRUE(R.is_normal(w("2~01")));  // 2~0 is not a rule
   EXPECT_EQ(R.normal_forms(w("210")), (std::vector<PathWord>{w("1~20"), w("2~01")}));
@@ -111,7 +112,7 @@ TEST(F14, Ex59InOrientedSystem) {
   const RewritingSystem R({}, {1, 2}, {{1, 2}});
   EXPECT_EQ(R.normal_forms(w("1~11")), std::vector<PathWord>{w("1")});
   EXPECT_TRUE(R.congruent(w("1~11"), w("1")));
-  EXPECT_FALSE(R.congruent(w("11"), w("1")));  // Fig. 4.24b: `1` vs `11` (E9)
+  EXPECT_FALSE(R.congruent(w("11"), w("1")));    // Fig. 4.24b: `1` vs `11` (E9)
   EXPECT_FALSE(R.congruent(w("11"), w("eps")));  // 1 is oriented: 11 does not cancel
   EXPECT_EQ(rule_strings(R), (std::set<std::string>{"1~1->eps", "~11->eps", "2~2->eps", "~22->eps",
                                                     "21->~1~2", "~2~1->12"}));
@@ -120,8 +121,8 @@ TEST(F14, Ex59InOrientedSystem) {
 TEST(Systems, GmapRulesAndConfluence) {
   const RewritingSystem R = RewritingSystem::gmap(3);
   // §5.3: ii -> ε, ji -> ij for j >= i+2.
-  EXPECT_EQ(rule_strings(R), (std::set<std::string>{"00->eps", "11->eps", "22->eps", "33->eps", "20->02",
-                                                    "30->03", "31->13"}));
+  EXPECT_EQ(rule_strings(R), (std::set<std::string>{"00->eps", "11->eps", "22->eps", "33->eps",
+                                                    "20->02", "30->03", "31->13"}));
   EXPECT_TRUE(R.non_oriented() == (std::set<int>{0, 1, 2, 3}));
   EXPECT_TRUE(R.oriented().empty());
   // Confluence on every word of length <= 5 over 0..3 (Lemma: |O| <= 1 and E transitive).
@@ -146,7 +147,8 @@ TEST(Systems, GmapRulesAndConfluence) {
   }
   EXPECT_EQ(checked, 4u + 16 + 64 + 256 + 1024);
   EXPECT_EQ(R.normal_form(w("0202")), PathWord{});
-  EXPECT_EQ(R.normal_form(w("02")), w("02"));  // a length-2 cycle word is not ε (no rule of Def. 52 applies)
+  EXPECT_EQ(R.normal_form(w("02")),
+            w("02"));  // a length-2 cycle word is not ε (no rule of Def. 52 applies)
   EXPECT_EQ(R.normal_form(w("31303")), w("103"));  // 31303 -> 13303 -> 103 (1,0 do not commute)
 }
 
@@ -154,10 +156,11 @@ TEST(Systems, OmapRulesAndConfluence) {
   const RewritingSystem R = RewritingSystem::omap(4);
   // §5.3: 1~1, ~11, kk (k >= 2) -> ε; ji -> ij (i,j >= 2, j >= i+2); j1 -> ~1j, j~1 -> 1j (j >= 3).
   EXPECT_EQ(rule_strings(R),
-            (std::set<std::string>{"1~1->eps", "~11->eps", "22->eps", "33->eps", "44->eps", "42->24",
-                                   "31->~13", "3~1->13", "41->~14", "4~1->14"}));
+            (std::set<std::string>{"1~1->eps", "~11->eps", "22->eps", "33->eps", "44->eps",
+                                   "42->24", "31->~13", "3~1->13", "41->~14", "4~1->14"}));
   // 2-O-map: E = ∅, only the cancellations 1~1, ~11, 22.
-  EXPECT_EQ(rule_strings(RewritingSystem::omap(2)), (std::set<std::string>{"1~1->eps", "~11->eps", "22->eps"}));
+  EXPECT_EQ(rule_strings(RewritingSystem::omap(2)),
+            (std::set<std::string>{"1~1->eps", "~11->eps", "22->eps"}));
   // Confluence on all words of length <= 4 over {1,~1,2,3,4}.
   const std::vector<Letter> alphabet = {{1, false}, {1, true}, {2, false}, {3, false}, {4, false}};
   std::vector<PathWord> layer{PathWord{}};
@@ -218,7 +221,8 @@ TEST(Systems, AgreesWithSchemeCheckerGmapNormalForm) {
       for (int& d : dims) d = dim(rng);
       std::vector<int> nf_checker = reference_gmap_normal_form(dims);
       ASSERT_EQ(gmap_word_normal_form(n, dims), nf_checker);
-      ASSERT_EQ(word_of_dims(nf_checker), R.normal_form(word_of_dims(dims))) << "n=" << n << " " << to_string(word_of_dims(dims));
+      ASSERT_EQ(word_of_dims(nf_checker), R.normal_form(word_of_dims(dims)))
+          << "n=" << n << " " << to_string(word_of_dims(dims));
     }
   }
 }

@@ -1,5 +1,7 @@
 // Pattern functor, graph schemes with (w,d) labels, their instantiation and rule schemes (thesis
 // §4.2–4.4, Defs. 42–48).
+#include "model/words/word_scheme.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -10,15 +12,14 @@
 #include "checker/rule_check.hpp"
 #include "model/core/builders.hpp"
 #include "model/core/error.hpp"
-#include "model/rewrite/match.hpp"
 #include "model/core/orbit.hpp"
-#include "model/words/pattern_graph.hpp"
-#include "model/scheme/scheme_engine.hpp"
-#include "model/rule_io/scheme_json.hpp"
 #include "model/core/signature.hpp"
 #include "model/core/validity.hpp"
-#include "model/words/word_scheme.hpp"
+#include "model/rewrite/match.hpp"
+#include "model/rule_io/scheme_json.hpp"
+#include "model/scheme/scheme_engine.hpp"
 #include "model/testing/source_tree.hpp"
+#include "model/words/pattern_graph.hpp"
 
 using namespace gmr;
 using namespace gmr::graph;
@@ -55,12 +56,14 @@ DGraph f8_graph() {
   DGraph g;
   for (const char* n : {"a", "b", "c", "d", "e", "f", "g", "h"}) g.add_node(n);
   auto id = [&](const char* n) { return *g.find(n); };
-  for (auto [s, t] : {std::pair{"a", "b"}, {"b", "c"}, {"c", "d"}, {"d", "a"}}) g.add_arc(id(s), id(t), 1);
+  for (auto [s, t] : {std::pair{"a", "b"}, {"b", "c"}, {"c", "d"}, {"d", "a"}})
+    g.add_arc(id(s), id(t), 1);
   for (const char* n : {"a", "b", "c", "d", "g", "h"}) g.add_arc(id(n), id(n), 2);
   for (const char* n : {"e", "f"}) g.add_arc(id(n), id(n), 1);
   g.add_link(id("e"), id("f"), 2);
   g.add_link(id("g"), id("h"), 1);
-  for (auto [s, t] : {std::pair{"a", "e"}, {"b", "f"}, {"c", "g"}, {"d", "h"}}) g.add_link(id(s), id(t), 3);
+  for (auto [s, t] : {std::pair{"a", "e"}, {"b", "f"}, {"c", "g"}, {"d", "h"}})
+    g.add_link(id(s), id(t), 3);
   return g;
 }
 
@@ -156,7 +159,8 @@ TEST(PatternFunctor, Def48OnCubeGmapAndOmap) {
   for (Node v : P.graph.nodes()) {
     EXPECT_EQ(P.targets(v, w("eps")), std::vector<Node>{v});  // ε-loop
     for (int i = 0; i <= 2; ++i)
-      EXPECT_EQ(P.targets(v, PathWord{{i, false}}), std::vector<Node>{node_of(cube.alpha(i, dart_of(v)))});
+      EXPECT_EQ(P.targets(v, PathWord{{i, false}}),
+                std::vector<Node>{node_of(cube.alpha(i, dart_of(v)))});
   }
   EXPECT_EQ(components(P).size(), 1u);
   // Longer words follow the path: 01 then back with conj.
@@ -203,7 +207,8 @@ TEST(F8, PatternComponentsAndEpsLoops) {
     for (uint32_t x : l) v.push_back(Node(x));
     return v;
   };
-  EXPECT_EQ(components(P), (std::vector<std::vector<Node>>{ids({0, 1, 2, 3}), ids({4, 5}), ids({6, 7})}));
+  EXPECT_EQ(components(P),
+            (std::vector<std::vector<Node>>{ids({0, 1, 2, 3}), ids({4, 5}), ids({6, 7})}));
   const PatternGraph Pf = component(P, *G.find("f"));
   ASSERT_EQ(Pf.size(), 2u);
   EXPECT_EQ(Pf.graph.name(Node(0)), "f");
@@ -275,7 +280,8 @@ TEST(F8, Fig419aMatchAndDerivation) {
 }
 
 TEST(WordScheme, InstantiationOperationalForm) {
-  // ι(Π,1_W) = π_D(Π): on a one-node pattern with ε only, a (eps,d)-arc n -> n' gives d-arc n -> n'.
+  // ι(Π,1_W) = π_D(Π): on a one-node pattern with ε only, a (eps,d)-arc n -> n' gives d-arc n ->
+  // n'.
   DGraph one;
   one.add_node("u");
   const PatternGraph P1 = pattern_graph(one, {w("eps")});
@@ -363,7 +369,8 @@ TEST(F9, GmapQuadSubdivisionOnCubeAgreesWithJerboaEngine) {
   }
   EXPECT_TRUE(check_cycle(app.rule, 0, 2, diags));
   // Jerboa-scheme engine on tools/data/rules/quad_subdivision.json.
-  const RuleScheme js = read_scheme_file(gmr::testing::source_path("tools/data/rules/quad_subdivision.json"));
+  const RuleScheme js =
+      read_scheme_file(gmr::testing::source_path("tools/data/rules/quad_subdivision.json"));
   const auto [J, japp] = scheme::apply(SchemeEngine(js), std::as_const(cube), {0});
   ASSERT_TRUE(japp.applied) << japp.why;
   EXPECT_EQ(J.size(), 192u);

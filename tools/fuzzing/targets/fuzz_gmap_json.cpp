@@ -8,5 +8,6 @@ void gmr::fuzzing::fuzz_one(std::string_view text) {
   (void)check_validity(f.map, 10);
   if (f.map.size() > 4096) return;
   const EmbeddedMap back = io::read_map_json(io::write_map_json(f), "written.json");
-  if (back.map.size() != f.map.size()) __builtin_trap();  // the writer's output must read back alike
+  if (back.map.size() != f.map.size())
+    __builtin_trap();  // the writer's output must read back alike
 }

@@ -4,7 +4,8 @@
 #include "tools/fuzzing/fuzz_target.hpp"
 
 void gmr::fuzzing::fuzz_one(std::string_view text) {
-  static const rewrite::Rule rule = io::parse_rule(R"({"format": "gmr.rule", "version": 1, "kind": "concrete",
+  static const rewrite::Rule rule =
+      io::parse_rule(R"({"format": "gmr.rule", "version": 1, "kind": "concrete",
     "name": "unsew", "map": "gmap", "n": 2,
     "left": {"nodes": ["a", "b", "c", "d"], "links": [{"nodes": ["a", "b"], "label": 0}]},
     "right": {"nodes": ["a", "b", "c", "d"], "links": [{"nodes": ["a", "b"], "label": 0}]}})");
@@ -15,5 +16,6 @@ void gmr::fuzzing::fuzz_one(std::string_view text) {
   }();
   const auto pairs = cli::parse_match_pairs(rule, map, std::string(text));
   for (const auto& [node, dart] : pairs)
-    if (node.index() >= rule.left().num_nodes() || !map.alive(dart)) __builtin_trap();  // only valid pairs pass
+    if (node.index() >= rule.left().num_nodes() || !map.alive(dart))
+      __builtin_trap();  // only valid pairs pass
 }

@@ -4,5 +4,6 @@
 
 void gmr::fuzzing::fuzz_one(std::string_view text) {
   const OrbitType o = OrbitType::parse(text);
-  if (!(OrbitType::parse(o.str()) == o)) __builtin_trap();  // the printer's output parses back alike
+  if (!(OrbitType::parse(o.str()) == o))
+    __builtin_trap();  // the printer's output parses back alike
 }

@@ -6,7 +6,8 @@
 namespace {
 bool holds(const gmr::condition::RuleView& r) {
   for (const auto& v : r.left.nodes)
-    if (v.status == gmr::condition::Status::Deleted) throw std::runtime_error("deleted nodes are not supported");
+    if (v.status == gmr::condition::Status::Deleted)
+      throw std::runtime_error("deleted nodes are not supported");
   return true;
 }
 }  // namespace
