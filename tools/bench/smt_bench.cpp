@@ -28,8 +28,9 @@ Rule path_rule(int m) {
     R.add_node("a" + std::to_string(k));
   }
   for (int k = 0; k + 1 < m; ++k) {
-    L.add_link(k, k + 1, k % 2);
-    R.add_link(k, k + 1, k % 2);
+    const graph::Node a(static_cast<uint32_t>(k)), b(static_cast<uint32_t>(k + 1));
+    L.add_link(a, b, k % 2);
+    R.add_link(a, b, k % 2);
   }
   return Rule(std::move(L), std::move(R), 2, MapKind::GMap, "path" + std::to_string(m));
 }
