@@ -99,7 +99,8 @@ Format drawing_format(const std::string& path, const std::string& override) {
   const Format out = path == "-" && override.empty() ? Format::Dot : output_format(path, override);
   if (out != Format::Dot && out != Format::Svg && out != Format::Png)
     throw Error(ErrorCode::Usage,
-                std::string("gmr dot writes dot, svg or png, not ") + to_string(out), path);
+                std::string("drawings are written as dot, svg or png, not ") + to_string(out),
+                path);
   return out;
 }
 
@@ -123,6 +124,15 @@ void write_output(const std::string& path, const std::string& text) {
     return;
   }
   write_file_atomic(path, text);
+}
+
+void write_drawing(const std::string& path, const std::string& dot, Format format) {
+  if (format == Format::Dot) {
+    write_output(path, dot);
+    return;
+  }
+  if (path == "-") throw Error(ErrorCode::Usage, "images are not written to standard output", path);
+  render_dot_file(dot, format == Format::Svg ? ImageFormat::Svg : ImageFormat::Png, path);
 }
 
 namespace {

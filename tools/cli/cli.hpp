@@ -55,6 +55,9 @@ void save_map(const EmbeddedMap& f, const std::string& path, Format format,
               const DotOptions& dot = {}, size_t max_rendered_darts = kMaxRenderedDarts);
 // Writes text to `path` atomically, or to standard output for "-".
 void write_output(const std::string& path, const std::string& text);
+// Writes a drawing in `format` (drawing_format): the DOT text itself, or its SVG/PNG rendering
+// through Graphviz (Error(Usage) for an image on standard output).
+void write_drawing(const std::string& path, const std::string& dot, Format format);
 
 // The violations of a validity report, one per line, then "... and N more (--limit)".
 void print_violations(const ValidityReport& r);

@@ -56,6 +56,8 @@ std::string describe(const Rule& r, const Counterexample& c) {
 int run_verify(const VerifyArgs& a) {
   if (a.bound < 1 || a.bound > 16)
     throw Error(ErrorCode::Usage, "--bound must be in 1..16", "--bound");
+  // The drawing's format, from its extension, before the sweep.
+  const Format dot_format = a.dot.empty() ? Format::Dot : drawing_format(a.dot, "");
   std::vector<Engine> engines;
   if (a.engine == "smt" || a.engine == "both") engines.push_back(Engine::Smt);
   if (a.engine == "enum" || a.engine == "both") engines.push_back(Engine::Enum);
@@ -94,7 +96,7 @@ int run_verify(const VerifyArgs& a) {
   if (cex) {
     const auto& c = *cex->result.counterexample;
     if (!a.output.empty()) write_output(a.output, to_json(cex->rule(), a.bound, c).dump(2) + "\n");
-    if (!a.dot.empty()) write_output(a.dot, to_dot(cex->rule(), c));
+    if (!a.dot.empty()) write_drawing(a.dot, to_dot(cex->rule(), c), dot_format);
   }
   if (a.json) {
     nlohmann::ordered_json j;
@@ -164,7 +166,8 @@ void register_verify(CLI::App& app) {
   sub->add_option("-o,--output", args->output,
                   "Write the counterexample (gmr.counterexample JSON)");
   sub->add_option("--dot", args->dot,
-                  "Write the counterexample's G as DOT, offending darts highlighted");
+                  "Write the counterexample's G, offending darts highlighted: DOT, or SVG/PNG by "
+                  "the file's extension");
 }
 
 }  // namespace gmr::cli

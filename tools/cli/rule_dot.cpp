@@ -49,13 +49,7 @@ std::optional<int> dot_rule_input(const RuleDotArgs& a) {
     if (a.check) opt.highlights = dot_highlights(check_rule(*in.concrete));
     dot = to_dot(*in.concrete, opt);
   }
-  if (out == Format::Dot) {
-    write_output(a.output, dot);
-  } else {
-    if (a.output == "-")
-      throw Error(ErrorCode::Usage, "images are not written to standard output", a.output);
-    render_dot_file(dot, out == Format::Svg ? ImageFormat::Svg : ImageFormat::Png, a.output);
-  }
+  write_drawing(a.output, dot, out);
   return kExitOk;
 }
 

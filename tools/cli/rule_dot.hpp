@@ -1,7 +1,7 @@
 // `gmr dot` on rule files: concrete rules and rule schemes (gmr.rule JSON, .jme) drawn by
-// model/io_rule_dot.hpp, optionally with κ arcs, the checker's diagnostics or the static events of
-// one orbit type (checker/events/event_dot.hpp) overlaid. Called by
-// tools/cli/cmd_dot.cpp before its map path.
+// model/draw/rule_dot.hpp, optionally with κ arcs, the checker's diagnostics or the static events
+// of one orbit type (checker/events/event_dot.hpp) overlaid. Called by tools/cli/cmd_dot.cpp before
+// its map path.
 #pragma once
 #include <optional>
 #include <string>

@@ -74,6 +74,20 @@ TEST_F(CliVerify, CounterexampleFiles) {
   EXPECT_NE(dot.find("fillcolor=\"#ff6b6b\""), std::string::npos) << dot;
 }
 
+// The counterexample's drawing takes its format from the extension: SVG is rendered by Graphviz,
+// and a format that is not a drawing is refused before the sweep, with nothing written.
+TEST_F(CliVerify, CounterexampleDrawingByExtension) {
+  const std::string rule = q(source_dir() / "checker/tests/data/F3_ex37_non_orientation.json");
+  EXPECT_EQ(run("verify " + rule + " -k 4 --dot " + q(dir / "cex.svg")).code, 1);
+  const std::string svg = gmr::io::read_text_file(dir / "cex.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos) << svg.substr(0, 200);
+  EXPECT_EQ(svg.find("digraph"), std::string::npos);
+  const Result bad = run("verify " + rule + " -k 4 --dot " + q(dir / "cex.json"));
+  EXPECT_EQ(bad.code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("drawings are written as dot, svg or png"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "cex.json"));
+}
+
 TEST_F(CliVerify, RuleSchemeByInstantiation) {
   const Result r = run("verify " + q(source_dir() / "tools/data/jerboa/JerboaTrackingOrbit.jme") +
                        " --rule DeleteEdge --bound 6 --json");
