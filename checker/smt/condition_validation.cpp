@@ -96,4 +96,16 @@ ValidationReport validate_condition(const std::string& name, const ConditionEval
   return rep;
 }
 
+ValidationReport validate_condition(const BuiltinCondition& c, const ValidationOptions& opt) {
+  return validate_condition(
+      c.name,
+      [&](const std::vector<Rule>& rules) {
+        std::vector<bool> out;
+        out.reserve(rules.size());
+        for (const Rule& r : rules) out.push_back(c.holds(r));
+        return out;
+      },
+      opt);
+}
+
 }  // namespace gmr::smt

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "checker/smt/condition_registry.hpp"
 #include "checker/smt/rule_verifier.hpp"
 
 namespace gmr::smt {
@@ -69,5 +70,7 @@ struct ValidationReport {
 using ConditionEvaluator = std::function<std::vector<bool>(const std::vector<Rule>&)>;
 ValidationReport validate_condition(const std::string& name, const ConditionEvaluator& evaluate,
                                     const ValidationOptions& opt);
+// The same for a built-in condition (condition_registry.hpp), evaluated in process rule by rule.
+ValidationReport validate_condition(const BuiltinCondition& c, const ValidationOptions& opt);
 
 }  // namespace gmr::smt

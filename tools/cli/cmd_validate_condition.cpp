@@ -214,14 +214,7 @@ int run_validate_condition(const ValidateConditionArgs& a) {
     if (!c)
       throw Error(ErrorCode::Usage, "unknown condition '" + a.condition + "' (--list: the names)",
                   "--condition");
-    rep = validate_condition(
-        c->name,
-        [&](const std::vector<Rule>& rules) {
-          std::vector<bool> out;
-          for (const auto& r : rules) out.push_back(c->holds(r));
-          return out;
-        },
-        o);
+    rep = validate_condition(*c, o);
   }
   return report(a, rep);
 }

@@ -33,14 +33,7 @@ ValidationReport run(const std::string& name, int n, MapKind kind, std::vector<i
                             .max_nodes = max_nodes,
                             .bound = bound,
                             .engine = e};
-  return validate_condition(
-      name,
-      [&](const std::vector<Rule>& rules) {
-        std::vector<bool> out;
-        for (const auto& r : rules) out.push_back(c->holds(r));
-        return out;
-      },
-      o);
+  return validate_condition(*c, o);
 }
 
 size_t nodes(const Rule& r) { return r.left().num_nodes() + r.added_nodes().size(); }
@@ -118,14 +111,7 @@ TEST(ConditionValidation, ShardsPartitionTheSweep) {
   for (unsigned k = 0; k < 3; ++k) {
     o.shard = k;
     o.shards = 3;
-    const auto r = validate_condition(
-        c->name,
-        [&](const std::vector<Rule>& rs) {
-          std::vector<bool> out;
-          for (const auto& x : rs) out.push_back(c->holds(x));
-          return out;
-        },
-        o);
+    const auto r = validate_condition(*c, o);
     rules += r.rules;
     unsound += r.unsound;
     holds += r.holds;
@@ -139,14 +125,7 @@ TEST(ConditionValidation, ShardsPartitionTheSweep) {
 TEST(ConditionValidation, TimeLimitReportsCoverage) {
   const BuiltinCondition* c = find_builtin_condition("thesis");
   ValidationOptions o{.n = 1, .labels = {0}, .max_nodes = 3, .bound = 4, .time_limit = 0.3};
-  const auto r = validate_condition(
-      c->name,
-      [&](const std::vector<Rule>& rs) {
-        std::vector<bool> out;
-        for (const auto& x : rs) out.push_back(c->holds(x));
-        return out;
-      },
-      o);
+  const auto r = validate_condition(*c, o);
   EXPECT_TRUE(r.time_limit_hit);
   EXPECT_LT(r.checked, r.rules);
   EXPECT_LT(r.nodes_covered, 3);
@@ -219,12 +198,7 @@ TEST(ConditionValidation, RandomLargerRules) {
   const BuiltinCondition* c = find_builtin_condition("thesis");
   ValidationOptions o{
       .n = 1, .labels = {0, 1}, .max_nodes = 1, .bound = 6, .random = 300, .seed = 7};
-  auto eval = [&](const std::vector<Rule>& rs) {
-    std::vector<bool> out;
-    for (const auto& x : rs) out.push_back(c->holds(x));
-    return out;
-  };
-  const auto r = validate_condition(c->name, eval, o);
+  const auto r = validate_condition(*c, o);
   std::printf("%s", to_text(r).c_str());
   EXPECT_EQ(r.rules, count_rules(1, 2) + 300);
   EXPECT_TRUE(r.sound());
@@ -232,14 +206,14 @@ TEST(ConditionValidation, RandomLargerRules) {
   EXPECT_GT(r.holds, 0u);
   // The enumerator agrees on every count.
   o.engine = Engine::Enum;
-  const auto m = validate_condition(c->name, eval, o);
+  const auto m = validate_condition(*c, o);
   EXPECT_EQ(m.holds, r.holds);
   EXPECT_EQ(m.vacuous, r.vacuous);
   EXPECT_EQ(m.unsound, r.unsound);
   EXPECT_EQ(m.incomplete, r.incomplete);
   o.engine = Engine::Smt;
   // Deterministic: the same seed gives the same counts.
-  const auto again = validate_condition(c->name, eval, o);
+  const auto again = validate_condition(*c, o);
   EXPECT_EQ(again.holds, r.holds);
   EXPECT_EQ(again.incomplete, r.incomplete);
 }

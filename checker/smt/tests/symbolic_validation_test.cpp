@@ -32,14 +32,7 @@ ValidationOptions sym_options(int n, MapKind kind, std::vector<int> labels, int 
 
 ValidationReport family_report(const std::string& name, const ValidationOptions& o) {
   const BuiltinCondition* c = find_builtin_condition(name);
-  return validate_condition(
-      name,
-      [&](const std::vector<Rule>& rules) {
-        std::vector<bool> out;
-        for (const auto& r : rules) out.push_back(c->holds(r));
-        return out;
-      },
-      o);
+  return validate_condition(*c, o);
 }
 
 size_t rule_nodes(const Rule& r) { return r.left().num_nodes() + r.added_nodes().size(); }
